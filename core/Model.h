@@ -1,0 +1,95 @@
+#pragma once
+// The finite element model: nodes, boundary conditions, proportional loads and
+// prescribed values, material sets, elements, joints, ground contact, gravity.
+// Node and element numbers are 0-based here; the deck's are 1-based.
+#include <array>
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/Element.h"
+#include "core/MaterialSet.h"
+#include "core/Types.h"
+
+namespace c2d {
+
+// Revolute joint between two coincident nodes: same translations, free relative rotation.
+enum class JointForm {
+  Condensed,  // the paper's: slave rotation = master + relative rotation, condensed in the element
+  Shared,     // the slave keeps its own rotation dof and shares the master's translation dofs
+};
+
+struct Joint {
+  int master = -1, slave = -1;
+  JointForm form = JointForm::Condensed;
+};
+
+// Frictionless rigid ground y = y0 with penalty stiffness k; alpha is the
+// dissipation of the mid-point contact force (negative: the integrator's alpha).
+struct Ground {
+  double y0 = 0, k = 0, alpha = -1;
+};
+
+class Model {
+ public:
+  // --- nodes ---
+  int numNodes() const { return static_cast<int>(coords_.size()); }
+  void resizeNodes(int n);
+  const Vec2& coord(int node) const { return coords_[node]; }
+  void setCoord(int node, const Vec2& x) {
+    coords_[node] = x;
+    defined_[node] = 1;
+  }
+  bool hasCoord(int node) const { return defined_[node]; }
+  int addNode(const Vec2& x);  // appends a node with the same data layout; returns its index
+
+  // Restraint codes (nonzero = restrained), proportional nodal forces and prescribed values.
+  std::array<int, kNodeDofs>& bound(int node) { return bound_[node]; }
+  const std::array<int, kNodeDofs>& bound(int node) const { return bound_[node]; }
+  std::array<double, kNodeDofs>& force(int node) { return force_[node]; }
+  const std::array<double, kNodeDofs>& force(int node) const { return force_[node]; }
+  std::array<double, kNodeDofs>& disp(int node) { return disp_[node]; }
+  const std::array<double, kNodeDofs>& disp(int node) const { return disp_[node]; }
+
+  // --- materials and elements ---
+  std::map<int, MaterialSet>& materials() { return materials_; }
+  const std::map<int, MaterialSet>& materials() const { return materials_; }
+  const MaterialSet* material(int number) const;
+
+  int numElements() const { return static_cast<int>(elements_.size()); }
+  Element& element(int e) { return *elements_[e]; }
+  const Element& element(int e) const { return *elements_[e]; }
+  void setElement(int e, std::unique_ptr<Element> el);  // grows the list as needed
+  std::vector<std::unique_ptr<Element>>& elements() { return elements_; }
+
+  // --- collapse-phase features ---
+  std::vector<Joint>& joints() { return joints_; }
+  const std::vector<Joint>& joints() const { return joints_; }
+  std::optional<Ground>& ground() { return ground_; }
+  const std::optional<Ground>& ground() const { return ground_; }
+  Vec2& gravity() { return gravity_; }
+  const Vec2& gravity() const { return gravity_; }
+
+  // Bumped whenever the dof structure may change (MESH re-entry, HINGE2JOINT):
+  // the dof map, sparsity pattern and symbolic factorization are rebuilt.
+  int topologyVersion() const { return topologyVersion_; }
+  void bumpTopology() { ++topologyVersion_; }
+
+  // Mesh size used for coordinate matching tolerances (EBOU, CBOU).
+  double characteristicLength() const;
+
+ private:
+  std::vector<Vec2> coords_;
+  std::vector<char> defined_;
+  std::vector<std::array<int, kNodeDofs>> bound_;
+  std::vector<std::array<double, kNodeDofs>> force_, disp_;
+  std::map<int, MaterialSet> materials_;
+  std::vector<std::unique_ptr<Element>> elements_;
+  std::vector<Joint> joints_;
+  std::optional<Ground> ground_;
+  Vec2 gravity_ = Vec2::Zero();
+  int topologyVersion_ = 0;
+};
+
+}  // namespace c2d

@@ -1,0 +1,24 @@
+#pragma once
+// The analysis state: nodal values for every node dof (index node*3 + dof),
+// trial (t_{n+1}) and committed (t_n). Stored per node dof rather than per
+// equation so that it survives a renumbering when the topology changes.
+#include <Eigen/Core>
+
+namespace c2d {
+
+struct State {
+  Eigen::VectorXd u, v, a;     // trial: total displacement, velocity, acceleration
+  Eigen::VectorXd un, vn, an;  // committed
+  double t = 0, tn = 0;        // time (pseudo-time in statics)
+  double dt = 0;
+  double prop = 0, propn = 0;  // proportional load factor at t and t_n
+  double arcLambda = 0;        // extra load factor driven by arc-length (multiplies FORCe)
+  double arcLambdan = 0;
+  int step = 0;                // number of committed steps
+
+  void resize(int numNodes);   // keeps existing values, zero-fills new nodes
+  void commit();               // trial -> committed
+  void revert();               // committed -> trial
+};
+
+}  // namespace c2d

@@ -1,0 +1,18 @@
+#pragma once
+// Builds the element a material set asks for.
+#include <array>
+#include <memory>
+
+#include "core/Element.h"
+#include "core/MaterialSet.h"
+
+namespace c2d {
+
+// FRAMe + SMALl, elastic: LinearFrame (Timoshenko with SHEAr ON, Euler-Bernoulli with OFF);
+// FRAMe + SMALl with HARDening and/or SOFTening: InelasticFrame (Timoshenko, hinge);
+// FRAMe + FINIte: ReissnerFrame (geometrically exact).
+// x1, x2 are the reference coordinates of the two nodes.
+std::unique_ptr<Element> makeElement(const MaterialSet& mat, const std::array<int, 2>& nodes,
+                                     const Vec2& x1, const Vec2& x2);
+
+}  // namespace c2d
