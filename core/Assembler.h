@@ -1,0 +1,61 @@
+#pragma once
+// Assembles the residual and the tangent of the whole model at a trial state.
+//
+// The residual per node dof is r = f_int + M a_eff - f_ext - f_contact. At a free
+// dof it must vanish; at a restrained dof it is the reaction. f_ext is
+// lambda*FORCe plus self-weight, with lambda the load factor of the step rule's
+// load point (t_n+1, or the mid-point for the mid-point scheme).
+//
+// The sparsity pattern and the scatter positions of every element are computed
+// once per topology version; assemble() allocates nothing.
+#include <array>
+#include <vector>
+
+#include "core/DofMap.h"
+#include "core/Model.h"
+#include "core/State.h"
+#include "solvers/LinearSolver.h"
+
+namespace c2d {
+
+class Assembler {
+ public:
+  explicit Assembler(Model& model);
+
+  // Rebuilds dof map, pattern and scatter maps when the model's topology version
+  // changed; returns true when it did.
+  bool refresh();
+  const DofMap& dofs() const { return dofs_; }
+  int patternVersion() const { return patternVersion_; }
+
+  // Evaluates every element and the ground contact. loadFactor multiplies FORCe.
+  Status assemble(const State& s, const StepRule& rule, double loadFactor, bool wantTangent);
+
+  const SparseMatrix& tangent() const { return K_; }
+  const Eigen::VectorXd& nodalResidual() const { return r_; }  // size numNodes*3
+  // External load vector (FORCe pattern, unit factor) per node dof.
+  const Eigen::VectorXd& referenceLoad() const { return fRef_; }
+  const Eigen::VectorXd& gravityLoad() const { return fGrav_; }
+
+  // Scatter a node-dof vector to equations (and back).
+  void toEquations(const Eigen::VectorXd& nodal, Eigen::VectorXd& eqs) const;
+
+  // Energies at the last assembled state.
+  double strainEnergy() const;
+  double contactEnergy(const State& s) const;
+  double kineticEnergy(const State& s) const;
+
+ private:
+  void buildPattern();
+  void gather(const Element& e, const State& s, ElementKinematics& kin) const;
+
+  Model& model_;
+  DofMap dofs_;
+  SparseMatrix K_;
+  std::vector<std::array<int, kElemDofs * kElemDofs>> elemPos_;  // index into K_ values, -1: none
+  std::vector<int> diagPos_;                                     // per equation
+  Eigen::VectorXd r_, fRef_, fGrav_;
+  int patternVersion_ = -1;
+};
+
+}  // namespace c2d

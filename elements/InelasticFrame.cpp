@@ -1,0 +1,213 @@
+#include "elements/InelasticFrame.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace c2d {
+
+namespace {
+
+BilinearHardening makeBending(const MaterialSet& mat) {
+  if (!mat.hardening) return BilinearHardening::elastic(mat.EI());
+  const HardeningData& h = *mat.hardening;
+  return {mat.EI(), h.Mc, h.My, h.Kh1, h.Kh2};
+}
+
+std::optional<LinearSoftening> makeSoftening(const MaterialSet& mat) {
+  if (!mat.softening) return std::nullopt;
+  return LinearSoftening(mat.softening->Mu, mat.softening->Ks);
+}
+
+// Strain-displacement rows at the midpoint, element frame, dof order
+// (u1, v1, theta1, u2, v2, theta2).
+struct Rows {
+  ElemVec eps, gamma, kappa;
+};
+
+Rows midpointRows(double l) {
+  Rows b;
+  b.eps << -1 / l, 0, 0, 1 / l, 0, 0;
+  b.gamma << 0, -1 / l, -0.5, 0, 1 / l, -0.5;
+  b.kappa << 0, 0, -1 / l, 0, 0, 1 / l;
+  return b;
+}
+
+}  // namespace
+
+InelasticFrame::InelasticFrame(const MaterialSet& mat, const std::array<int, 2>& nodes,
+                               const Vec2& x1, const Vec2& x2)
+    : nodes_(nodes),
+      material_(mat.number),
+      length_((x2 - x1).norm()),
+      c_(0),
+      s_(0),
+      EA_(mat.EA()),
+      GA_(mat.GA()),
+      rhoA_(mat.rhoA()),
+      bending_(makeBending(mat)),
+      softening_(makeSoftening(mat)) {
+  if (!(length_ > 0)) throw std::invalid_argument("frame element with coincident nodes");
+  if (!(EA_ > 0) || !(GA_ > 0))
+    throw std::invalid_argument("frame element needs positive EA and GA");
+  c_ = (x2.x() - x1.x()) / length_;
+  s_ = (x2.y() - x1.y()) / length_;
+
+  rotation_.setZero();
+  for (int n = 0; n < 2; ++n) {
+    const int o = kNodeDofs * n;
+    rotation_(o, o) = c_;
+    rotation_(o, o + 1) = s_;
+    rotation_(o + 1, o) = -s_;
+    rotation_(o + 1, o + 1) = c_;
+    rotation_(o + 2, o + 2) = 1;
+  }
+
+  // Translational mass is isotropic, so the same matrix holds in the global frame.
+  mass_.setZero();
+  const double mA = mat.rhoA() * length_, mI = mat.rhoI() * length_;
+  for (int dof = 0; dof < kNodeDofs; ++dof) {
+    const double m = dof == 2 ? mI : mA;
+    const int a = dof, b = kNodeDofs + dof;
+    if (mat.mass == MassType::Lumped) {
+      mass_(a, a) = mass_(b, b) = m / 2;
+    } else {
+      mass_(a, a) = mass_(b, b) = m / 3;
+      mass_(a, b) = mass_(b, a) = m / 6;
+    }
+  }
+}
+
+Status InelasticFrame::respond(const ElemVec& dl, const PointState& from, bool activeHinge,
+                               double hingeSign, PointState& to, double& bendingTangent) const {
+  const double l = length_;
+  const double EI = bending_.EI();
+  const Rows b = midpointRows(l);
+  const double eps = b.eps.dot(dl), gamma = b.gamma.dot(dl), kappaD = b.kappa.dot(dl);
+
+  to = from;
+  to.hingeActive = activeHinge;
+  double M = 0;
+  if (!activeHinge) {
+    const BendingResponse r = bending_.returnMap(from.bulk, kappaD);
+    M = r.M;
+    bendingTangent = r.tangent;
+    to.bulk = r.state;
+    to.hingeFailed = false;
+  } else {
+    // Bulk elastic with frozen plastic curvature (eq 33); kappa = kappaD - alpha/l.
+    const double k = EI / l;  // condensation term EI*Gbar^2*l
+    const LinearSoftening& law = *softening_;
+    if (law.capacity(from.jump.xi) > 0 && !(k + law.Ks() > 0)) {
+      std::ostringstream msg;
+      msg << "softening hinge: element length l_e = " << l << " must be below EI/|Ks| = "
+          << EI / -law.Ks() << " (K_alpha_alpha = EI/l_e + Ks = " << k + law.Ks()
+          << " is not positive); refine the mesh";
+      return Status::failure(msg.str());
+    }
+    if (!from.hingeActive) {
+      to.hingeSign = hingeSign;
+      const double xiU = bending_.hardeningAt(law.Mu());
+      if (std::isfinite(xiU) && xiU > to.bulk.xi) {
+        to.bulk.kp += hingeSign * (xiU - to.bulk.xi);
+        to.bulk.xi = xiU;
+      }
+    }
+    const double mTrial = EI * (kappaD - from.jump.alpha / l - to.bulk.kp);
+    SofteningResponse r;
+    if (Status st = law.returnMap(from.jump, mTrial, k, r); !st) return st;
+    M = r.t;  // hinge equation h = -M + t = 0
+    bendingTangent = EI * r.tangent;
+    to.jump = r.state;
+    to.hingeFailed = r.failed;
+  }
+  to.forces.N = EA_ * eps;
+  to.forces.V = GA_ * gamma;
+  to.forces.M = M;
+  if (!std::isfinite(M) || !std::isfinite(to.forces.N) || !std::isfinite(to.forces.V) ||
+      !std::isfinite(bendingTangent))
+    return Status::failure("inelastic frame: non-finite section forces");
+  return Status::success();
+}
+
+Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& rule,
+                                bool wantTangent, ElemVec& residual, ElemMat& tangent) {
+  const ElemVec dl = rotation_ * kin.d;
+  PointState next;
+  double kt = 0;
+  const bool active = committed_.hingeActive || trial_.hingeActive;
+  const double sign = committed_.hingeActive ? committed_.hingeSign : trial_.hingeSign;
+  if (Status st = respond(dl, committed_, active, sign, next, kt); !st) return st;
+  trial_ = next;
+
+  const double l = length_;
+  const Rows b = midpointRows(l);
+  // The mid-point scheme takes the stress resultants between t_n and t_n+1: for
+  // the elastic axial and shear parts the weighted strains, for the bending
+  // moment the weighted moments of the committed and the trial state.
+  const double w = rule.scheme == Scheme::MidPoint ? 0.5 + rule.alpha : 1.0;
+  const ElemVec dln = rotation_ * kin.dn;
+  const SectionForces& f1 = trial_.forces;
+  const double N = w * f1.N + (1 - w) * EA_ * b.eps.dot(dln);
+  const double V = w * f1.V + (1 - w) * GA_ * b.gamma.dot(dln);
+  const double M = w * f1.M + (1 - w) * committed_.forces.M;
+  const ElemVec fLocal = l * (N * b.eps + V * b.gamma + M * b.kappa);
+  residual = rotation_.transpose() * fLocal;
+  if (rule.dynamic()) {
+    const ElemVec dd = kin.d - kin.dn;
+    const ElemVec aEff = rule.acceleration(dd, kin.vn, kin.an);
+    residual += mass_ * aEff;
+  }
+
+  if (wantTangent) {
+    const ElemMat kLocal = l * w *
+                           (EA_ * b.eps * b.eps.transpose() + GA_ * b.gamma * b.gamma.transpose() +
+                            kt * b.kappa * b.kappa.transpose());
+    tangent = rotation_.transpose() * kLocal * rotation_;
+    if (rule.dynamic()) tangent += rule.ca * mass_;
+  }
+  if (!residual.allFinite() || (wantTangent && !tangent.allFinite()))
+    return Status::failure("inelastic frame: non-finite residual or tangent");
+  return Status::success();
+}
+
+ElemVec InelasticFrame::bodyLoad(const Vec2& g) const {
+  // Uniform weight rhoA*g: half to each node, no nodal moments (consistent for linear shape functions).
+  ElemVec f = ElemVec::Zero();
+  const double w = 0.5 * rhoA_ * length_;
+  f.segment<2>(0) = w * g;
+  f.segment<2>(kNodeDofs) = w * g;
+  return f;
+}
+
+double InelasticFrame::strainEnergy() const {
+  const SectionForces& f = trial_.forces;
+  return 0.5 * length_ * (f.N * f.N / EA_ + f.V * f.V / GA_ + f.M * f.M / bending_.EI());
+}
+
+SectionForces InelasticFrame::sectionForces() const { return trial_.forces; }
+
+double InelasticFrame::hingeDemand() const {
+  if (!softening_ || trial_.hingeActive) return 0;
+  return std::abs(trial_.forces.M) / softening_->Mu();
+}
+
+void InelasticFrame::activateHinge() {
+  if (!softening_ || trial_.hingeActive) return;
+  trial_.hingeActive = true;
+  trial_.hingeSign = trial_.forces.M >= 0 ? 1.0 : -1.0;
+}
+
+HingeInfo InelasticFrame::hinge() const {
+  HingeInfo h;
+  h.active = trial_.hingeActive;
+  h.failed = trial_.hingeFailed;
+  h.position = 0.5;
+  h.jump = trial_.jump.alpha;
+  h.moment = trial_.forces.M;
+  h.softening = trial_.jump.xi;
+  return h;
+}
+
+}  // namespace c2d

@@ -1,0 +1,94 @@
+#pragma once
+// Geometrically linear 2-node Timoshenko frame element for the failure phase
+// (paper section 2): linear interpolation of u, v, theta, one integration point
+// at the midpoint, axial and shear elastic, bending elastoplastic with bilinear
+// hardening (BilinearHardening), plus an embedded rotation discontinuity
+// (softening plastic hinge, LinearSoftening) at the midpoint.
+//
+// Enhanced kinematics (eqs 20-24) with Gbar = -1/l_e: in the element frame
+//   eps = (u2 - u1)/l,  gamma = (v2 - v1)/l - (theta1 + theta2)/2,
+//   kappa = (theta2 - theta1)/l - alpha/l.
+// The local (hinge) equation h = -M + t = 0 makes the hinge moment t equal to the
+// bulk moment M at the midpoint. alpha is solved in closed form inside evaluate()
+// and condensed statically (eq 32), so the residual depends on d alone and the
+// tangent is its exact derivative. Once the hinge is active the bulk plastic
+// curvature is frozen (eq 33) and the bulk is elastic. It freezes at the value
+// where the bulk's yield radius reaches Mu (the plastic curvature kappa_p,u of
+// verification.md V2), continuing the committed state along the hardening law in
+// the direction of the moment at activation; a committed state already past Mu
+// keeps its own. So the post-peak response does not depend on the step in which
+// the solver happens to activate the hinge.
+//
+// The hinge never activates by itself: the solver asks hingeDemand() and calls
+// activateHinge() on one element at a time.
+#include <array>
+#include <optional>
+
+#include "core/Element.h"
+#include "core/Hinge.h"
+#include "core/MaterialSet.h"
+#include "materials/BilinearHardening.h"
+#include "materials/LinearSoftening.h"
+
+namespace c2d {
+
+class InelasticFrame final : public Element, public HingeCarrier {
+ public:
+  // x1, x2: reference coordinates of the nodes. Bending uses the HARDening data
+  // when given (elastic otherwise); the hinge exists only with SOFTening data.
+  InelasticFrame(const MaterialSet& mat, const std::array<int, 2>& nodes, const Vec2& x1,
+                 const Vec2& x2);
+
+  std::array<int, 2> nodes() const override { return nodes_; }
+  void setNodes(const std::array<int, 2>& n) override { nodes_ = n; }
+  int materialNumber() const override { return material_; }
+  std::string typeName() const override { return "frame-timoshenko-inelastic"; }
+
+  Status evaluate(const ElementKinematics& kin, const StepRule& rule, bool wantTangent,
+                  ElemVec& residual, ElemMat& tangent) override;
+  ElemMat mass() const override { return mass_; }
+  ElemVec bodyLoad(const Vec2& g) const override;
+  void commit() override { committed_ = trial_; }
+  void revert() override { trial_ = committed_; }
+  // Elastic stored energy of the last evaluated state: l/2 (N^2/EA + V^2/GA + M^2/EI).
+  // Plastically dissipated and hardening energies are not included.
+  double strainEnergy() const override;
+  SectionForces sectionForces() const override;
+
+  double hingeDemand() const override;
+  void activateHinge() override;
+  HingeInfo hinge() const override;
+
+  double length() const { return length_; }
+
+ private:
+  // History of the integration point: value type, committed and trial copies.
+  struct PointState {
+    BendingState bulk;
+    SofteningState jump;
+    bool hingeActive = false;
+    bool hingeFailed = false;
+    double hingeSign = 1;  // sign of the bulk moment when the hinge was activated
+    SectionForces forces;  // at the state's displacements (element frame)
+  };
+
+  // Section response at local nodal displacements dl from the committed history
+  // `from`, with the hinge active or not (hingeSign: its sign at activation);
+  // fills the trial state and dM/d(kappa_d), kappa_d = (theta2 - theta1)/l.
+  Status respond(const ElemVec& dl, const PointState& from, bool activeHinge, double hingeSign,
+                 PointState& to, double& bendingTangent) const;
+
+  std::array<int, 2> nodes_;
+  int material_;
+  double length_;
+  double c_, s_;  // direction cosines of the element axis
+  double EA_, GA_;
+  double rhoA_;  // mass per unit length
+  BilinearHardening bending_;
+  std::optional<LinearSoftening> softening_;
+  ElemMat rotation_;  // global -> element frame, block diagonal
+  ElemMat mass_;
+  PointState committed_, trial_;
+};
+
+}  // namespace c2d

@@ -1,0 +1,214 @@
+#include "elements/ReissnerFrame.h"
+
+#include <cassert>
+#include <cmath>
+
+namespace c2d {
+
+namespace {
+
+using Mat2 = Eigen::Matrix2d;
+using Mat26 = Eigen::Matrix<double, 2, kElemDofs>;
+using Row6 = Eigen::Matrix<double, 1, kElemDofs>;
+
+// Counterclockwise quarter turn: d Lambda(psi)/d psi = W Lambda(psi).
+const Mat2 kW = (Mat2() << 0, -1, 1, 0).finished();
+
+Mat2 rot(double psi) {
+  const double c = std::cos(psi), s = std::sin(psi);
+  return (Mat2() << c, -s, s, c).finished();
+}
+
+// sin(x)/x and its derivative; series below |x| = 0.1 where the closed forms
+// lose digits to cancellation (truncation error there is below 1e-19).
+double sinc(double x) {
+  if (std::abs(x) < 0.1) {
+    const double x2 = x * x;
+    return 1 - x2 / 6 * (1 - x2 / 20 * (1 - x2 / 42 * (1 - x2 / 72 * (1 - x2 / 110))));
+  }
+  return std::sin(x) / x;
+}
+
+double sincPrime(double x) {
+  if (std::abs(x) < 0.1) {
+    // d/dx sum_k (-1)^k x^{2k}/(2k+1)!
+    const double x2 = x * x;
+    return -x / 3 * (1 - x2 / 10 * (1 - x2 / 28 * (1 - x2 / 54 * (1 - x2 / 88))));
+  }
+  return (x * std::cos(x) - std::sin(x)) / (x * x);
+}
+
+// Node a of the element: translation dofs start at 3a, rotation at 3a + 2;
+// sign of the node in phi' = (phi_2 - phi_1)/l.
+constexpr int uDof(int a) { return kNodeDofs * a; }
+constexpr int thDof(int a) { return kNodeDofs * a + 2; }
+constexpr double nodeSign(int a) { return a == 0 ? -1.0 : 1.0; }
+
+}  // namespace
+
+ReissnerFrame::ReissnerFrame(const MaterialSet& mat, const std::array<int, 2>& nodes,
+                             const Vec2& x1, const Vec2& x2)
+    : nodes_(nodes),
+      materialNumber_(mat.number),
+      x1_(x1),
+      x2_(x2),
+      length_((x2 - x1).norm()),
+      beta0_(std::atan2(x2.y() - x1.y(), x2.x() - x1.x())),
+      ea_(mat.EA()),
+      ga_(mat.GA()),
+      ei_(mat.EI()),
+      rhoA_(mat.rhoA()) {
+  assert(length_ > 0 && "element of zero length");
+  // Rotation is additive in 2D: the kinetic energy is quadratic in the nodal
+  // velocities, so the mass matrix is constant (linear shape functions).
+  const double rhoI = mat.rhoI();
+  mass_.setZero();
+  for (int i = 0; i < kNodeDofs; ++i) {
+    const double mu = (i < 2 ? rhoA_ : rhoI) * length_;
+    if (mat.mass == MassType::Lumped) {
+      mass_(i, i) = mass_(i + 3, i + 3) = mu / 2;
+    } else {
+      mass_(i, i) = mass_(i + 3, i + 3) = mu / 3;
+      mass_(i, i + 3) = mass_(i + 3, i) = mu / 6;
+    }
+  }
+}
+
+Vec3 ReissnerFrame::strains(const ElemVec& d) const {
+  const Vec2 g = (x2_ + d.segment<2>(3) - x1_ - d.segment<2>(0)) / length_;
+  const Vec2 e = rot(beta0_ + 0.5 * (d(2) + d(5))).transpose() * g - Vec2::UnitX();
+  return {e.x(), e.y(), (d(5) - d(2)) / length_};
+}
+
+double ReissnerFrame::energy(const ElemVec& d) const {
+  const Vec3 e = strains(d);
+  return 0.5 * length_ * (ea_ * e(0) * e(0) + ga_ * e(1) * e(1) + ei_ * e(2) * e(2));
+}
+
+// Internal force grad W(d) and its (symmetric) derivative.
+void ReissnerFrame::staticForce(const ElemVec& d, bool wantTangent, ElemVec& f,
+                                ElemMat& k) const {
+  const double l = length_;
+  const Vec2 g = (x2_ + d.segment<2>(3) - x1_ - d.segment<2>(0)) / l;
+  const Mat2 lam = rot(beta0_ + 0.5 * (d(2) + d(5)));
+  const Vec2 h = lam.transpose() * g;  // Lambda^T phi'
+  const Vec2 n(ea_ * (h.x() - 1), ga_ * h.y());
+  const double m = ei_ * (d(5) - d(2)) / l;
+
+  // dE/dd: dh/dphi' = Lambda^T, dh/dpsi = -W h, dpsi/dtheta_a = 1/2.
+  Mat26 b = Mat26::Zero();
+  Row6 bk = Row6::Zero();
+  for (int a = 0; a < 2; ++a) {
+    b.block<2, 2>(0, uDof(a)) = nodeSign(a) / l * lam.transpose();
+    b.col(thDof(a)) = -0.5 * kW * h;
+    bk(thDof(a)) = nodeSign(a) / l;
+  }
+  f = l * (b.transpose() * n + bk.transpose() * m);
+  if (!wantTangent) return;
+
+  const Vec2 c(ea_, ga_);
+  k = l * (b.transpose() * c.asDiagonal() * b + ei_ * bk.transpose() * bk);
+  // Geometric part n . d(b_j)/d(d_k).
+  const Vec2 q = lam * kW.transpose() * n;  // q_i = n . (W Lambda^T e_i)
+  const double nh = n.dot(h);
+  for (int a = 0; a < 2; ++a) {
+    for (int bn = 0; bn < 2; ++bn) {
+      k(thDof(a), thDof(bn)) += -0.25 * l * nh;
+      for (int i = 0; i < 2; ++i) {
+        const double gk = -0.5 * nodeSign(a) * q(i);
+        k(uDof(a) + i, thDof(bn)) += gk;
+        k(thDof(bn), uDof(a) + i) += gk;
+      }
+    }
+  }
+}
+
+// Energy conserving/decaying internal force between dn and d, and its exact
+// derivative with respect to d. With Lambda_{n+1} = Lambda_mid R(Delta/2) and
+// Lambda_n = Lambda_mid R(-Delta/2), R(x) = cos x + sin x W:
+//   E_{n+1} - E_n = cos(Delta/2) Lambda_mid^T (g_{n+1} - g_n)
+//                   - sinc(Delta/2) W Lambda_mid^T g_mid Delta,
+// which defines B_alg (Delta = theta_m,n+1 - theta_m,n, g = phi').
+void ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double alpha,
+                                  bool wantTangent, ElemVec& f, ElemMat& k) const {
+  const double l = length_;
+  const Vec2 g1 = (x2_ + d.segment<2>(3) - x1_ - d.segment<2>(0)) / l;
+  const Vec2 g0 = (x2_ + dn.segment<2>(3) - x1_ - dn.segment<2>(0)) / l;
+  const double th1 = 0.5 * (d(2) + d(5)), th0 = 0.5 * (dn(2) + dn(5));
+  const double x = 0.5 * (th1 - th0);  // Delta/2
+  const Mat2 lamM = rot(beta0_ + 0.5 * (th1 + th0));
+  const Vec2 aM = lamM.transpose() * (0.5 * (g1 + g0));
+  const double cx = std::cos(x), sx = std::sin(x), sc = sinc(x);
+
+  const Vec3 e1 = strains(d), e0 = strains(dn);
+  const Vec3 eAlg = (0.5 + alpha) * e1 + (0.5 - alpha) * e0;
+  const Vec2 n(ea_ * eAlg(0), ga_ * eAlg(1));
+  const double m = ei_ * eAlg(2);
+
+  Mat26 b = Mat26::Zero();
+  Row6 bk = Row6::Zero();
+  for (int a = 0; a < 2; ++a) {
+    b.block<2, 2>(0, uDof(a)) = nodeSign(a) * cx / l * lamM.transpose();
+    b.col(thDof(a)) = -0.5 * sc * kW * aM;
+    bk(thDof(a)) = nodeSign(a) / l;
+  }
+  f = l * (b.transpose() * n + bk.transpose() * m);
+  if (!wantTangent) return;
+
+  // dE_{n+1}/dd: the consistent operator at d.
+  const Mat2 lam1 = rot(beta0_ + th1);
+  const Vec2 h1 = lam1.transpose() * g1;
+  Mat26 b1 = Mat26::Zero();
+  for (int a = 0; a < 2; ++a) {
+    b1.block<2, 2>(0, uDof(a)) = nodeSign(a) / l * lam1.transpose();
+    b1.col(thDof(a)) = -0.5 * kW * h1;
+  }
+  const Vec2 c(ea_, ga_);
+  k = (0.5 + alpha) * l *
+      (b.transpose() * c.asDiagonal() * b1 + ei_ * bk.transpose() * bk);
+
+  // Geometric part n . d(b_alg,j)/d(d_k); x, psi_mid and g_mid each move with
+  // d: dx/dtheta_a = dpsi_mid/dtheta_a = 1/4, dg_mid/du_a = sign_a/(2l).
+  const Vec2 q = lamM * kW.transpose() * n;  // q_i = n . (W Lambda_mid^T e_i)
+  const Vec2 p = lamM * n;                    // p_i = n . (Lambda_mid^T e_i)
+  const double kThTh = -0.125 * l * (sincPrime(x) * n.dot(kW * aM) + sc * n.dot(aM));
+  for (int a = 0; a < 2; ++a) {
+    for (int bn = 0; bn < 2; ++bn) {
+      k(thDof(a), thDof(bn)) += kThTh;
+      for (int i = 0; i < 2; ++i) {
+        k(uDof(a) + i, thDof(bn)) += 0.25 * nodeSign(a) * (-sx * p(i) - cx * q(i));
+        k(thDof(bn), uDof(a) + i) += -0.25 * nodeSign(a) * sc * q(i);
+      }
+    }
+  }
+}
+
+Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rule,
+                               bool wantTangent, ElemVec& residual, ElemMat& tangent) {
+  if (rule.scheme == Scheme::MidPoint)
+    midPointForce(kin.d, kin.dn, rule.alpha, wantTangent, residual, tangent);
+  else
+    staticForce(kin.d, wantTangent, residual, tangent);
+  if (rule.dynamic()) {
+    const ElemVec dd = kin.d - kin.dn;
+    const ElemVec aEff = rule.acceleration(dd, kin.vn, kin.an);
+    residual += mass_ * aEff;
+    if (wantTangent) tangent += rule.ca * mass_;
+  }
+  if (!residual.allFinite() || (wantTangent && !tangent.allFinite()))
+    return Status::failure("frame-reissner element: non-finite residual or tangent");
+
+  const Vec3 e = strains(kin.d);
+  trial_.energy = 0.5 * length_ * (ea_ * e(0) * e(0) + ga_ * e(1) * e(1) + ei_ * e(2) * e(2));
+  trial_.forces = {ea_ * e(0), ga_ * e(1), ei_ * e(2)};
+  return Status::success();
+}
+
+ElemVec ReissnerFrame::bodyLoad(const Vec2& g) const {
+  ElemVec f = ElemVec::Zero();
+  f.segment<2>(0) = 0.5 * rhoA_ * length_ * g;
+  f.segment<2>(3) = 0.5 * rhoA_ * length_ * g;
+  return f;
+}
+
+}  // namespace c2d

@@ -1,0 +1,78 @@
+#pragma once
+// Geometrically exact 2-node Reissner beam (deck: FRAMe + FINIte), total
+// Lagrangian, linear interpolation and one-point (midpoint) integration.
+//
+// The cross-section angle is psi = beta0 + theta with beta0 the reference
+// angle of the element axis; theta is the nodal rotation dof, additive and
+// unbounded, so rotations far beyond +-pi are fine. With phi the deformed
+// position, Lambda(psi) the rotation by psi and e1 = (1, 0):
+//   material strains   (Sigma, Gamma) = Lambda(psi)^T phi' - e1,  K = psi'
+//   resultants         N = EA Sigma, T = GA Gamma, M = EI K
+//   stored energy      W = l/2 (EA Sigma^2 + GA Gamma^2 + EI K^2)
+// evaluated at the element midpoint (l is the reference length).
+//
+// Under Scheme::MidPoint the internal force is the energy conserving/decaying
+// one: resultants from C((1/2+alpha) E_{n+1} + (1/2-alpha) E_n) and a strain
+// operator B_alg with B_alg (d_{n+1} - d_n) = E_{n+1} - E_n exactly, so that
+// (d_{n+1} - d_n).f_int = W_{n+1} - W_n + alpha l dE.C.dE.
+#include <array>
+#include <string>
+
+#include "core/Element.h"
+#include "core/MaterialSet.h"
+
+namespace c2d {
+
+class ReissnerFrame final : public Element {
+ public:
+  ReissnerFrame(const MaterialSet& mat, const std::array<int, 2>& nodes, const Vec2& x1,
+                const Vec2& x2);
+
+  std::array<int, 2> nodes() const override { return nodes_; }
+  void setNodes(const std::array<int, 2>& n) override { nodes_ = n; }
+  int materialNumber() const override { return materialNumber_; }
+  std::string typeName() const override { return "frame-reissner"; }
+
+  Status evaluate(const ElementKinematics& kin, const StepRule& rule, bool wantTangent,
+                  ElemVec& residual, ElemMat& tangent) override;
+
+  ElemMat mass() const override { return mass_; }
+  ElemVec bodyLoad(const Vec2& g) const override;
+
+  void commit() override { committed_ = trial_; }
+  void revert() override { trial_ = committed_; }
+
+  // W at the last evaluated d_{n+1}.
+  double strainEnergy() const override { return trial_.energy; }
+  // Material resultants N, T (as V), M at the midpoint of the last evaluated
+  // d_{n+1}, for every scheme (not the mid-point algorithmic averages).
+  SectionForces sectionForces() const override { return trial_.forces; }
+
+  double length() const { return length_; }
+  double referenceAngle() const { return beta0_; }
+  // Material strains (Sigma, Gamma, K) at the midpoint for nodal displacements d.
+  Vec3 strains(const ElemVec& d) const;
+  // Stored energy W(d).
+  double energy(const ElemVec& d) const;
+
+ private:
+  struct Report {
+    double energy = 0;
+    SectionForces forces;
+  };
+
+  void staticForce(const ElemVec& d, bool wantTangent, ElemVec& f, ElemMat& k) const;
+  void midPointForce(const ElemVec& d, const ElemVec& dn, double alpha, bool wantTangent,
+                     ElemVec& f, ElemMat& k) const;
+
+  std::array<int, 2> nodes_;
+  int materialNumber_ = 0;
+  Vec2 x1_, x2_;
+  double length_ = 0;
+  double beta0_ = 0;
+  double ea_ = 0, ga_ = 0, ei_ = 0, rhoA_ = 0;
+  ElemMat mass_;  // global frame
+  Report trial_, committed_;
+};
+
+}  // namespace c2d

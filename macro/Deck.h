@@ -1,0 +1,81 @@
+#pragma once
+// The parsed deck (section 3 of the deck language):
+//   [PARAmeter blocks, top-level LOOP ... NEXT]
+//   FEAP title / control record / mesh commands / END
+//   BATCh ... END / data records / [more BATCh ... END] / [FEAP ...] / STOP
+// Structure only: expressions are parsed (syntax checked) but evaluated when
+// the deck runs, so that a top-level LOOP with a PARAmeter block inside can
+// change them from one pass to the next.
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "macro/Expression.h"
+#include "macro/Parameters.h"
+#include "macro/Record.h"
+
+namespace c2d {
+
+// name = expression
+struct ParamAssign {
+  std::string name;  // lower case
+  Expression value;
+  Record record;
+};
+
+// PARAmeter (or CONStant) and its records up to the blank record.
+struct ParamBlock {
+  Record head;
+  std::vector<ParamAssign> assigns;
+
+  // Evaluates the assignments in order (a later one may use an earlier one).
+  void apply(Parameters& params) const {
+    for (const auto& a : assigns) params.set(a.name, a.value.eval(params));
+  }
+};
+
+// A mesh command record and its data records (without the blank that ends them).
+struct MeshCommand {
+  Record head;
+  std::vector<Record> data;
+};
+
+using MeshItem = std::variant<MeshCommand, ParamBlock>;
+
+struct BatchBlock {
+  Record head;                   // BATCh
+  std::vector<Record> commands;  // between BATCh and END, blank records dropped
+  Record end;                    // the END record
+  // Records after END up to the next BATCh, FEAP, STOP, LOOP or NEXT (or a
+  // top-level PARAmeter block before them), blank records kept: they end data sets.
+  std::vector<Record> data;
+};
+
+struct Problem {
+  Record head;        // FEAP record
+  std::string title;  // the FEAP record after its first word
+  Record control;     // numnp numel nummat ndm ndf nen
+  std::vector<MeshItem> mesh;
+  Record meshEnd;     // END of the mesh input
+  std::vector<BatchBlock> batches;
+};
+
+struct TopLoop;
+using TopItem = std::variant<ParamBlock, Problem, TopLoop>;
+
+// LOOP,,n ... NEXT around whole problems: FEAP's parameter study.
+struct TopLoop {
+  Record head;
+  Expression count;
+  std::vector<TopItem> body;
+  Record next;
+};
+
+struct Deck {
+  std::string path;
+  std::vector<TopItem> items;
+  std::optional<Record> stop;  // absent when the file ends without STOP
+};
+
+}  // namespace c2d

@@ -1,0 +1,360 @@
+#include "macro/DeckParser.h"
+
+#include <cctype>
+
+#include "macro/DeckReader.h"
+#include "macro/MeshCommands.h"
+#include "macro/Parameters.h"
+
+namespace c2d {
+
+namespace {
+
+// Words that structure a deck: a record starting with one of them is never data
+// of a mesh command.
+bool isStructural(const Record& r) {
+  return r.is("FEAP") || r.is("BATCh") || r.is("STOP") || r.is("END") || r.is("LOOP") ||
+         r.is("NEXT");
+}
+
+bool isParamHead(const Record& r) { return r.is("PARAmeter") || r.is("CONStant"); }
+
+// Is the first field followed by '=' (then the record is an assignment, even if
+// its name looks like a keyword)?
+bool hasEquals(const Record& r) {
+  if (r.blank() || !r.line) return false;
+  const std::string& s = *r.line;
+  std::size_t p = static_cast<std::size_t>(r[0].loc.col - 1) + r[0].text.size();
+  while (p < s.size() && s[p] == ' ') ++p;
+  return p < s.size() && s[p] == '=';
+}
+
+std::string where(const Record& r) { return "line " + std::to_string(r.loc.line); }
+
+std::string lineRef(const Record& r) {
+  return r.loc.file + ":" + std::to_string(r.loc.line);
+}
+
+// The text of a record after its first field (the FEAP title).
+std::string restOfLine(const Record& r, std::size_t field) {
+  if (field >= r.size() || !r.line) return {};
+  const std::string& s = *r.line;
+  std::size_t p = static_cast<std::size_t>(r[field].loc.col - 1);
+  return p < s.size() ? s.substr(p) : std::string();
+}
+
+bool looksNumeric(const std::string& t) {
+  return !t.empty() && (std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '.' ||
+                        t[0] == '-' || t[0] == '+' || t[0] == '(');
+}
+
+}  // namespace
+
+DeckParser::DeckParser(std::vector<Record> records, std::string path,
+                       const CommandRegistry& meshCommands, const CommandRegistry& subRecords)
+    : records_(std::move(records)), path_(std::move(path)), mesh_(meshCommands), sub_(subRecords) {}
+
+void DeckParser::skipBlanks() {
+  while (!atEnd() && peek().blank()) ++pos_;
+}
+
+Deck DeckParser::parse() {
+  Deck deck;
+  deck.path = path_;
+  deck.items = parseTopItems(nullptr);
+  if (!atEnd() && peek().is("STOP")) deck.stop = next();
+  return deck;
+}
+
+ParamAssign DeckParser::parseAssignment(const Record& rec) {
+  const Field& name = rec[0];
+  if (!Parameters::validName(name.text))
+    throw DeckError(name.loc, "expected 'name = expression', and '" + name.text +
+                                  "' is not a parameter name",
+                    rec.excerpt(name.loc),
+                    "a name starts with a letter or '_' and goes on with letters, digits or '_'");
+  if (rec.size() < 2 || rec[1].text.empty())
+    throw DeckError(rec.fieldLoc(1), "parameter '" + name.text + "' has no value",
+                    rec.excerpt(rec.fieldLoc(1)), "write " + name.text + " = expression");
+  // The expression is the rest of the record: blanks inside it are allowed here.
+  const std::string text = restOfLine(rec, 1);
+  ParamAssign a;
+  a.name = toLower(name.text);
+  a.value = Expression::parse(text, rec[1].loc, rec.line);
+  a.record = rec;
+  return a;
+}
+
+ParamBlock DeckParser::parseParamBlock(const Record& head, const std::vector<Record>& body) {
+  ParamBlock b;
+  b.head = head;
+  for (const auto& r : body) b.assigns.push_back(parseAssignment(r));
+  return b;
+}
+
+Expression DeckParser::loopCount(const Record& rec) {
+  if (rec.size() >= 3 && !rec[2].text.empty()) return Expression::parse(rec[2]);
+  if (rec.size() == 2 && !rec[1].text.empty()) return Expression::parse(rec[1]);
+  throw DeckError(rec.fieldLoc(2), "LOOP needs a repeat count", rec.excerpt(rec.fieldLoc(2)),
+                  "write LOOP,,n");
+}
+
+ParamBlock DeckParser::parseParams() {
+  const Record head = next();
+  std::vector<Record> body;
+  while (true) {
+    if (atEnd())
+      throw DeckError(head[0].loc, "PARAmeter block is not ended by a blank record (end of file)",
+                      head.excerpt(head[0].loc), "end the block with a blank record");
+    const Record& r = peek();
+    if (r.blank()) {
+      ++pos_;
+      break;
+    }
+    if (!hasEquals(r) && (isStructural(r) || isParamHead(r) || mesh_.find(r[0].text)))
+      throw DeckError(r[0].loc,
+                      "PARAmeter block (" + where(head) + ") is not ended by a blank record",
+                      r.excerpt(r[0].loc), "insert a blank record before this one");
+    body.push_back(next());
+  }
+  return parseParamBlock(head, body);
+}
+
+std::vector<TopItem> DeckParser::parseTopItems(const Record* loopHead) {
+  std::vector<TopItem> items;
+  while (true) {
+    skipBlanks();
+    if (atEnd()) {
+      if (loopHead)
+        throw DeckError((*loopHead)[0].loc, "LOOP without NEXT", loopHead->excerpt((*loopHead)[0].loc),
+                        "close the loop with NEXT");
+      return items;
+    }
+    const Record& r = peek();
+    if (r.is("STOP")) {
+      if (loopHead)
+        throw DeckError(r[0].loc, "STOP inside the LOOP of " + lineRef(*loopHead) + " (no NEXT before it)",
+                        r.excerpt(r[0].loc), "close the loop with NEXT before STOP");
+      return items;
+    }
+    if (r.is("NEXT")) {
+      if (!loopHead) throw DeckError(r[0].loc, "NEXT without LOOP", r.excerpt(r[0].loc));
+      return items;
+    }
+    if (r.is("LOOP")) {
+      TopLoop loop;
+      loop.head = next();
+      loop.count = loopCount(loop.head);
+      loop.body = parseTopItems(&loop.head);
+      loop.next = next();  // parseTopItems stops only at NEXT inside a loop
+      items.emplace_back(std::move(loop));
+      continue;
+    }
+    if (isParamHead(r)) {
+      items.emplace_back(parseParams());
+      continue;
+    }
+    if (r.is("FEAP")) {
+      items.emplace_back(parseProblem());
+      continue;
+    }
+    std::string hint;
+    if (mesh_.find(r[0].text))
+      hint = "mesh commands follow a FEAP title record and its control record";
+    else if (r.is("BATCh"))
+      hint = "BATCh follows the END of a problem's mesh input";
+    else if (r.is("END"))
+      hint = "this END closes nothing";
+    else
+      hint = "a problem starts with a record 'FEAP * * title'";
+    throw DeckError(r[0].loc,
+                    "unexpected record '" + r[0].text +
+                        "': expected FEAP, PARAmeter, LOOP, NEXT or STOP",
+                    r.excerpt(r[0].loc), hint);
+  }
+}
+
+Problem DeckParser::parseProblem() {
+  Problem p;
+  p.head = next();
+  p.title = restOfLine(p.head, 1);
+  if (atEnd())
+    throw DeckError(p.head[0].loc, "FEAP record without control record", p.head.excerpt(p.head[0].loc),
+                    "the next record is: numnp numel nummat ndm ndf nen");
+  p.control = next();
+  if (!p.control.blank()) {
+    const std::string& w = p.control[0].text;
+    if (!looksNumeric(w) && (isStructural(p.control) || mesh_.find(w)))
+      throw DeckError(p.control[0].loc, "missing control record after the FEAP title record",
+                      p.control.excerpt(p.control[0].loc),
+                      "insert 'numnp numel nummat ndm ndf nen' (e.g. 0 0 0 2 3 2) before this record");
+    for (const auto& f : p.control.fields) Expression::parse(f);
+  }
+  parseMesh(p);
+
+  while (true) {
+    skipBlanks();
+    if (atEnd()) break;
+    const Record& r = peek();
+    if (r.is("BATCh")) {
+      p.batches.push_back(parseBatch());
+      continue;
+    }
+    if (r.is("FEAP") || r.is("STOP") || r.is("LOOP") || r.is("NEXT") || isParamHead(r)) break;
+    throw DeckError(r[0].loc, "expected BATCh after the END of the mesh input, found '" + r[0].text + "'",
+                    r.excerpt(r[0].loc), r.is("END") ? "this END closes nothing" : std::string());
+  }
+  return p;
+}
+
+void DeckParser::parseMesh(Problem& p) {
+  const Record* lastBlank = nullptr;
+  const Record* lastCommand = nullptr;
+  while (true) {
+    if (atEnd())
+      throw DeckError(p.head[0].loc, "the mesh input of this problem has no END",
+                      p.head.excerpt(p.head[0].loc),
+                      "end the mesh commands with END");
+    const Record& r = peek();
+    if (r.blank()) {
+      lastBlank = &r;
+      ++pos_;
+      continue;
+    }
+    if (r.is("END")) {
+      p.meshEnd = next();
+      return;
+    }
+    if (isParamHead(r)) {
+      p.mesh.emplace_back(parseParams());
+      lastCommand = nullptr;
+      continue;
+    }
+    if (r.is("BATCh") || r.is("FEAP") || r.is("STOP"))
+      throw DeckError(r[0].loc, "missing END of the mesh input before '" + r[0].text + "'",
+                      r.excerpt(r[0].loc), "end the mesh commands with END");
+    const CommandSpec* spec = mesh_.find(r[0].text);
+    if (!spec) {
+      if (looksNumeric(r[0].text)) {
+        std::string hint = "data records follow their command";
+        if (lastCommand && lastBlank && lastBlank->loc.line > lastCommand->loc.line)
+          hint = "the blank record at " + where(*lastBlank) + " ended the data set of '" +
+                 (*lastCommand)[0].text + "' (" + where(*lastCommand) + ")";
+        throw DeckError(r[0].loc, "data record outside a data set, expected a mesh command",
+                        r.excerpt(r[0].loc), hint);
+      }
+      std::string hint = mesh_.suggest(r[0].text);
+      throw DeckError(r[0].loc, "unknown mesh command '" + r[0].text + "'", r.excerpt(r[0].loc),
+                      hint.empty() ? "see collapse2d --help for the mesh commands" : hint);
+    }
+    lastCommand = &r;
+    p.mesh.emplace_back(parseMeshCommand(*spec));
+  }
+}
+
+void DeckParser::checkDataRecord(const Record& rec, const Record& head,
+                                 const CommandSpec& spec) const {
+  const std::string& w = rec[0].text;
+  const bool material = spec.key() == "mate";
+  bool command = false;
+  if (Parameters::validName(w) && !hasEquals(rec)) {
+    if (isStructural(rec) || isParamHead(rec))
+      command = true;
+    else if (mesh_.find(w))
+      command = !(material && sub_.find(w));
+  }
+  if (command)
+    throw DeckError(rec[0].loc,
+                    "the data set of '" + head[0].text + "' (" + where(head) +
+                        ") is not ended by a blank record",
+                    rec.excerpt(rec[0].loc), "insert a blank record before this one");
+  // Syntax check now; text fields (CARTesian, GROUnd, ISOTropic) are plain names.
+  for (const auto& f : rec.fields) Expression::parse(f);
+}
+
+MeshCommand DeckParser::parseMeshCommand(const CommandSpec& spec) {
+  MeshCommand c;
+  c.head = next();
+  for (std::size_t i = 1; i < c.head.size() && i <= spec.fields.size(); ++i)
+    if (spec.fields[i - 1].kind != FieldKind::Text) Expression::parse(c.head[i]);
+  if (spec.data == DataForm::None) return c;
+  while (true) {
+    if (atEnd())
+      throw DeckError(c.head[0].loc,
+                      "the data set of '" + c.head[0].text +
+                          "' is not ended by a blank record (end of file)",
+                      c.head.excerpt(c.head[0].loc), "end the data records with a blank record");
+    const Record& r = peek();
+    if (r.blank()) {
+      ++pos_;
+      break;
+    }
+    checkDataRecord(r, c.head, spec);
+    c.data.push_back(next());
+  }
+  return c;
+}
+
+bool DeckParser::topLevelParamsAhead() const {
+  std::size_t p = pos_;
+  while (p < records_.size() && isParamHead(records_[p])) {
+    ++p;
+    while (p < records_.size() && !records_[p].blank()) ++p;
+    if (p >= records_.size()) return false;
+    while (p < records_.size() && records_[p].blank()) ++p;
+  }
+  return p < records_.size() && (records_[p].is("FEAP") || records_[p].is("LOOP"));
+}
+
+bool DeckParser::endsBatchData() const {
+  const Record& r = peek();
+  if (r.blank()) return false;
+  if (r.is("BATCh") || r.is("FEAP") || r.is("STOP") || r.is("LOOP") || r.is("NEXT")) return true;
+  return isParamHead(r) && topLevelParamsAhead();
+}
+
+BatchBlock DeckParser::parseBatch() {
+  BatchBlock b;
+  b.head = next();
+  while (true) {
+    if (atEnd())
+      throw DeckError(b.head[0].loc, "BATCh block without END", b.head.excerpt(b.head[0].loc),
+                      "end the solution commands with END");
+    const Record& r = peek();
+    if (r.blank()) {
+      ++pos_;
+      continue;
+    }
+    if (r.is("END")) {
+      b.end = next();
+      break;
+    }
+    if (r.is("BATCh") || r.is("FEAP") || r.is("STOP"))
+      throw DeckError(r[0].loc,
+                      "the BATCh block of " + where(b.head) + " has no END before '" + r[0].text + "'",
+                      r.excerpt(r[0].loc), "end the solution commands with END");
+    b.commands.push_back(next());
+  }
+  while (!atEnd() && !endsBatchData()) b.data.push_back(next());
+  return b;
+}
+
+namespace {
+
+Deck parseRecords(std::vector<Record> records, const std::string& path) {
+  CommandRegistry mesh("Mesh commands");
+  registerMeshCommands(mesh);
+  CommandRegistry sub("Material records");
+  registerMaterialSubRecords(sub);
+  return DeckParser(std::move(records), path, mesh, sub).parse();
+}
+
+}  // namespace
+
+Deck parseDeck(const std::string& path) { return parseRecords(DeckReader::readFile(path), path); }
+
+Deck parseDeckText(const std::string& text, const std::string& name, const std::string& baseDir) {
+  return parseRecords(DeckReader::readString(text, name, baseDir), name);
+}
+
+}  // namespace c2d

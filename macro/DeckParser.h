@@ -1,0 +1,62 @@
+#pragma once
+// The second phase: the flat record stream to the deck structure (Deck.h).
+// Problems, mesh commands and their data sets, BATCh blocks and top-level
+// LOOP/NEXT are matched here; every expression is parsed, so that any syntax
+// error, unknown mesh command, unmatched LOOP/NEXT or missing END is reported
+// with its file:line:col before anything is computed.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "macro/CommandSpec.h"
+#include "macro/Deck.h"
+#include "macro/Record.h"
+
+namespace c2d {
+
+class DeckParser {
+ public:
+  // meshCommands: the mesh command registry; subRecords: material sub-records
+  // and element types (both from macro/MeshCommands.h).
+  DeckParser(std::vector<Record> records, std::string path, const CommandRegistry& meshCommands,
+             const CommandRegistry& subRecords);
+
+  Deck parse();
+
+  // One "name = expression" record (also used for PARA in the solution phase).
+  static ParamAssign parseAssignment(const Record& rec);
+  // PARAmeter head record and the records up to (not including) the blank one.
+  static ParamBlock parseParamBlock(const Record& head, const std::vector<Record>& body);
+  // The count of a top-level LOOP record: LOOP,,n (or LOOP,n).
+  static Expression loopCount(const Record& rec);
+
+ private:
+  bool atEnd() const { return pos_ >= records_.size(); }
+  const Record& peek() const { return records_[pos_]; }
+  const Record& next() { return records_[pos_++]; }
+  void skipBlanks();
+
+  std::vector<TopItem> parseTopItems(const Record* loopHead);
+  ParamBlock parseParams();
+  Problem parseProblem();
+  void parseMesh(Problem& p);
+  MeshCommand parseMeshCommand(const CommandSpec& spec);
+  BatchBlock parseBatch();
+  bool endsBatchData() const;
+  bool topLevelParamsAhead() const;
+  void checkDataRecord(const Record& rec, const Record& head, const CommandSpec& spec) const;
+
+  std::vector<Record> records_;
+  std::string path_;
+  const CommandRegistry& mesh_;
+  const CommandRegistry& sub_;
+  std::size_t pos_ = 0;
+};
+
+// Reads (INCLude expanded) and parses a deck file. Throws DeckError.
+Deck parseDeck(const std::string& path);
+// The same for deck text in memory (tests, generated decks).
+Deck parseDeckText(const std::string& text, const std::string& name = "<deck>",
+                   const std::string& baseDir = ".");
+
+}  // namespace c2d

@@ -1,0 +1,89 @@
+#pragma once
+// The mesh commands (deck language sections 4 and 5): their specs and the
+// functions that apply them to a Model, following FEAP's generation rules.
+// Node, element and material numbers are 1-based in the deck, 0-based in Model.
+#include <array>
+#include <functional>
+#include <iosfwd>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/Model.h"
+#include "macro/CommandSpec.h"
+#include "macro/Deck.h"
+#include "macro/Parameters.h"
+
+namespace c2d {
+
+// State of one mesh input, shared by the appliers. Values are evaluated when
+// their record is applied (a later PARAmeter block cannot change them), even
+// for the parts FEAP applies at the end of the mesh input (elements, edge and
+// coordinate commands, joints).
+struct MeshContext {
+  MeshContext(Model& m, Parameters& p, std::ostream* e) : model(m), params(p), echo(e) {}
+
+  Model& model;
+  Parameters& params;
+  std::ostream* echo;  // mesh echo, null for none
+  bool print = true;   // PRINt / NOPRint
+
+  // Limits from the control record; 0: count them (the model grows as needed).
+  int maxNodes = 0, maxElements = 0, maxMaterials = 0;
+
+  struct PendingElement {
+    int material = 0;
+    std::array<int, 2> nodes{};  // deck numbers
+    Record origin;               // the record that gave (or generated) it
+    bool generated = false;
+  };
+  std::map<int, PendingElement> elements;  // by deck element number
+
+  struct PendingJoint {
+    int master = 0, slave = 0;  // deck numbers
+    Record origin;
+  };
+  std::vector<PendingJoint> joints;
+
+  // Edge and coordinate commands, run in deck order once the mesh is complete.
+  std::vector<std::function<void(MeshContext&)>> deferred;
+  // Nodes given loads or boundary codes: they must get coordinates.
+  std::map<int, Record> referencedNodes;
+
+  int highestNode = 0, highestElement = 0, lastBlockMaterial = 0;
+  bool topologyChanged = false;
+
+  std::ostream* out() const { return print ? echo : nullptr; }
+
+  // Value of field i (0 when absent or empty).
+  double number(const Record& r, std::size_t i) const;
+  int integer(const Record& r, std::size_t i, std::string_view what) const;
+  // A node number in field i: positive, within numnp; grows the model when counting.
+  int node(const Record& r, std::size_t i, std::string_view what = "node number");
+  void ensureNode(int n, const Record& r, std::size_t i);
+  int elementNumber(const Record& r, std::size_t i);
+  int materialNumber(const Record& r, std::size_t i);
+  // DeckError when the record has more than max fields.
+  void maxFields(const Record& r, std::size_t max, std::string_view syntax) const;
+};
+
+using MeshApplier = void (*)(MeshContext&, const MeshCommand&);
+
+struct MeshCommandEntry {
+  CommandSpec spec;
+  MeshApplier apply = nullptr;  // null: handled by the parser (END, PARAmeter, INCLude)
+};
+
+// The mesh commands, in the order --help lists them.
+std::vector<MeshCommandEntry> meshCommandTable();
+void registerMeshCommands(CommandRegistry& registry);
+// Element types (FRAMe) and material sub-records (ELAStic, CROSs, ...).
+void registerMaterialSubRecords(CommandRegistry& registry);
+
+// End of a mesh input: build the elements, run the deferred commands, add the
+// joints and check that nothing is left undefined; where locates the errors
+// that belong to no single record.
+void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whereText);
+
+}  // namespace c2d

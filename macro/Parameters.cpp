@@ -1,0 +1,44 @@
+#include "macro/Parameters.h"
+
+#include <cctype>
+#include <stdexcept>
+
+#include "macro/Record.h"
+
+namespace c2d {
+
+void Parameters::set(std::string_view name, double value) { values_[toLower(name)] = value; }
+
+bool Parameters::has(std::string_view name) const { return values_.count(toLower(name)) != 0; }
+
+double Parameters::get(std::string_view name) const {
+  auto it = values_.find(toLower(name));
+  if (it == values_.end()) throw std::out_of_range("undefined parameter '" + std::string(name) + "'");
+  return it->second;
+}
+
+std::optional<double> Parameters::find(std::string_view name) const {
+  auto it = values_.find(toLower(name));
+  if (it == values_.end()) return std::nullopt;
+  return it->second;
+}
+
+std::vector<std::string> Parameters::names() const {
+  std::vector<std::string> out;
+  out.reserve(values_.size());
+  for (const auto& [name, value] : values_) out.push_back(name);
+  return out;
+}
+
+bool Parameters::validName(std::string_view name) {
+  if (name.empty()) return false;
+  const auto first = static_cast<unsigned char>(name[0]);
+  if (!std::isalpha(first) && first != '_') return false;
+  for (char ch : name) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (!std::isalnum(c) && c != '_') return false;
+  }
+  return true;
+}
+
+}  // namespace c2d

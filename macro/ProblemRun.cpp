@@ -1,0 +1,457 @@
+#include "macro/ProblemRun.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "macro/DeckParser.h"
+#include "macro/DeckReader.h"
+#include "macro/MeshBinder.h"
+#include "macro/MeshCommands.h"
+#include "macro/Report.h"
+#include "solvers/ProportionalLoad.h"
+
+namespace c2d {
+
+namespace {
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+}  // namespace
+
+ProblemRun::ProblemRun(const Problem& problem, Parameters& params, const SolutionCommands& table,
+                       RunOptions options, std::ostream& log)
+    : problem_(problem), params_(params), table_(table), options_(std::move(options)), log_(log) {}
+
+ProblemRun::~ProblemRun() = default;
+
+void ProblemRun::bind(bool echo) {
+  model_ = buildModel(problem_, params_, echo ? &log_ : nullptr);
+  Parameters scratch = params_;
+  batches_.clear();
+  for (const BatchBlock& b : problem_.batches)
+    batches_.push_back(bindBatch(b.commands, b.data, table_, scratch));
+}
+
+void ProblemRun::run() {
+  start_ = lastProgress_ = std::chrono::steady_clock::now();
+  analysis_ = std::make_unique<Analysis>(model_);
+  if (!analysis_->setLinearSolver(options_.solver))
+    throw AnalysisError("unknown linear solver '" + options_.solver + "'");
+  hingeStep_.assign(model_.numElements(), 0);
+  analysis_->onCommit = [this] { onCommit(); };
+  analysis_->onHingeActivated = [this](int e, const HingeInfo& h) {
+    log_ << "  hinge  element " << e + 1 << " activated at t = " << fmt("%.6e", analysis_->state().t)
+         << ", M = " << fmt("%.6e", h.moment) << "\n";
+  };
+  for (const auto& batch : batches_)
+    if (execList(batch, true) == Flow::Stop) break;
+  const Status st = analysis_->commit();
+  if (!st) throw AnalysisError("final commit: " + st.why);
+  if (history_) {
+    history_->record(*analysis_, true);
+    history_->finish();
+  }
+  progress(true);
+}
+
+RunSummary ProblemRun::summary() const {
+  RunSummary s;
+  if (!analysis_) return s;
+  s.steps = analysis_->state().step;
+  s.iterations = analysis_->totalIterations();
+  s.cuts = cuts_;
+  s.hinges = hingeCount_;
+  s.energyError = energyError_;
+  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  return s;
+}
+
+// ------------------------------------------------------------------ control flow
+
+Flow ProblemRun::execList(const std::vector<Macro>& list, bool topLevel) {
+  for (const Macro& m : list) {
+    const Flow f = m.command->run(m, *this);
+    // Outside any loop a converged iteration or a reached tmax has no loop to leave.
+    if (f == Flow::Stop || (f == Flow::ExitLoop && !topLevel)) return f;
+  }
+  return Flow::Next;
+}
+
+Flow ProblemRun::runLoop(const Macro& m) {
+  const int n = m.has(0) ? m.numbers[0].evalInt(params_, "loop count") : 1;
+  const bool newton = m.newtonLoop();
+  diverged_ = false;
+  for (int i = 0; i < n; ++i) {
+    const Flow f = execList(m.body);
+    if (f == Flow::Stop) return f;
+    if (f == Flow::ExitLoop || diverged_) break;
+  }
+  if (newton && !analysis_->stepConverged()) {
+    const std::string why = diverged_ ? "diverged" : "did not converge in " + std::to_string(n) + " iterations";
+    return retryWithCut(m, why);
+  }
+  return Flow::Next;
+}
+
+std::string ProblemRun::historyText() const {
+  std::ostringstream os;
+  os << "    iteration      residual   energy |du.R|\n";
+  for (const IterationInfo& i : analysis_->stepHistory()) {
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "    %9d  %12.5e  %12.5e\n", i.iteration, i.residual, i.energy);
+    os << buf;
+  }
+  return os.str();
+}
+
+Flow ProblemRun::retryWithCut(const Macro& loop, const std::string& why) {
+  const State& s = analysis_->state();
+  std::ostringstream msg;
+  msg << "Newton iteration " << why << " in step " << s.step + 1 << " (t = " << fmt("%.6e", s.t)
+      << ", dt = " << fmt("%.4e", s.dt) << ")";
+  log_ << "  *** " << msg.str() << "\n" << historyText();
+  if (!cutting_)
+    throw AnalysisError(loop.record.loc.str() + ": error: " + msg.str() + "\n" + historyText());
+  for (;;) {
+    const double dt = 0.5 * analysis_->state().dt;
+    if (dt < dtMin_)
+      throw AnalysisError(loop.record.loc.str() + ": error: " + msg.str() +
+                          "; step cutting gave up at the minimum step " + fmt("%.4e", dtMin_) +
+                          "\n" + historyText());
+    ++cuts_;
+    stepsSinceCut_ = 0;
+    analysis_->back();
+    analysis_->setDt(dt);
+    log_ << "  cut    step to dt = " << fmt("%.4e", dt) << "\n";
+    const Status st = analysis_->advance();
+    if (!st) throw AnalysisError(loop.record.loc.str() + ": error: " + st.why);
+    const int n = loop.has(0) ? loop.numbers[0].evalInt(params_, "loop count") : 1;
+    diverged_ = false;
+    for (int i = 0; i < n; ++i) {
+      const Flow f = execList(loop.body);
+      if (f == Flow::Stop) return f;
+      if (f == Flow::ExitLoop || diverged_) break;
+    }
+    if (analysis_->stepConverged()) return Flow::Next;
+  }
+}
+
+void ProblemRun::fail(const Macro& m, const std::string& what) const {
+  const State& s = analysis_->state();
+  throw AnalysisError(m.record.loc.str() + ": error: " + m.record.text(0) + " in step " +
+                      std::to_string(s.step + 1) + " (t = " + fmt("%.6e", s.t) + "): " + what);
+}
+
+Flow ProblemRun::newtonIteration(const Macro& m, bool update, bool lineSearch, bool symmetric) {
+  if (!update) {
+    const Status st = analysis_->formTangent(symmetric);
+    if (!st) fail(m, st.why);
+    log_ << "  TANG   tangent formed\n";
+    return Flow::Next;
+  }
+  IterationInfo info;
+  const Status st = analysis_->iterate(lineSearch, symmetric, info);
+  const State& s = analysis_->state();
+  if (!st) {
+    if (cutting_) {
+      log_ << "  *** " << st.why << "\n";
+      diverged_ = true;
+      return Flow::ExitLoop;
+    }
+    fail(m, st.why + "\n" + historyText());
+  }
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "  %-5s  step %5d  t = %12.5e  it %3d  |R| = %11.4e  |du.R| = %11.4e%s\n",
+                symmetric ? "TANG" : "UTAN", s.step + 1, s.t, info.iteration, info.residual,
+                info.energy, info.converged ? "  converged" : "");
+  log_ << buf;
+  const auto& h = analysis_->stepHistory();
+  if (h.size() > 4 && info.energy > 1e30 * h.front().energy) {
+    diverged_ = true;
+    return Flow::ExitLoop;
+  }
+  return info.converged ? Flow::ExitLoop : Flow::Next;
+}
+
+Flow ProblemRun::formResidual(const Macro& m) {
+  double norm = 0;
+  const Status st = analysis_->formResidual(norm);
+  if (!st) fail(m, st.why);
+  log_ << "  FORM   |R| = " << fmt("%.6e", norm) << "\n";
+  return Flow::Next;
+}
+
+Flow ProblemRun::solveOnly(const Macro& m) {
+  IterationInfo info;
+  const Status st = analysis_->solveOnly(info);
+  if (!st) fail(m, st.why);
+  log_ << "  SOLV   it " << info.iteration << "  |du.R| = " << fmt("%.4e", info.energy)
+       << (info.converged ? "  converged\n" : "\n");
+  return info.converged ? Flow::ExitLoop : Flow::Next;
+}
+
+Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax) {
+  State& s = analysis_->state();
+  if (tmax && s.t >= *tmax - 1e-10 * std::max(1.0, std::abs(*tmax))) return Flow::ExitLoop;
+  if (cutting_ && s.dt < dtNominal_ && ++stepsSinceCut_ >= 2) {
+    analysis_->setDt(std::min(2 * s.dt, dtNominal_));
+    stepsSinceCut_ = 0;
+  }
+  if (cutting_ && tmax && s.t + s.dt > *tmax) analysis_->setDt(*tmax - s.t);
+  const Status st = analysis_->advance();
+  if (!st) fail(m, st.why);
+  log_ << "  TIME   t = " << fmt("%.6e", s.t) << "  prop = " << fmt("%.6e", analysis_->loadFactor())
+       << "\n";
+  return Flow::Next;
+}
+
+void ProblemRun::setDt(double dt) {
+  analysis_->setDt(dt);
+  dtNominal_ = dt;
+}
+
+void ProblemRun::setStepCutting(bool on, double dtMin) {
+  cutting_ = on;
+  dtNominal_ = analysis_->state().dt;
+  dtMin_ = dtMin > 0 ? dtMin : dtNominal_ / 1024;
+  log_ << "  AUTO   step cutting " << (on ? "on, dtmin = " + fmt("%.4e", dtMin_) : "off") << "\n";
+}
+
+void ProblemRun::setIntegrator(const TimeIntegrator& ti) {
+  analysis_->setIntegrator(ti);
+  log_ << "  DYNA   " << ti.describe() << "\n";
+}
+
+void ProblemRun::setProportionalLoad(const Macro& m) {
+  const Record& first = m.data.front();
+  if (first.blank()) {
+    analysis_->setLoadFunction(ProportionalLoad::ramp());
+    log_ << "  PROP   ramp p = t\n";
+    return;
+  }
+  auto value = [&](const Record& r, std::size_t i) {
+    return i < r.size() ? Expression::parse(r[i]).eval(params_) : 0.0;
+  };
+  const int type = static_cast<int>(value(first, 0));
+  if (type == 1) {
+    std::array<double, 5> a{};
+    for (int i = 0; i < 5; ++i) a[i] = value(first, 4 + i);
+    const int k = static_cast<int>(value(first, 1));
+    analysis_->setLoadFunction(ProportionalLoad::formula(k == 0 ? 1 : k, value(first, 2),
+                                                         value(first, 3), a));
+    log_ << "  PROP   type 1\n";
+    return;
+  }
+  std::vector<std::pair<double, double>> pts;
+  for (std::size_t r = 1; r < m.data.size(); ++r)
+    for (std::size_t i = 0; i + 1 < m.data[r].size(); i += 2)
+      pts.emplace_back(value(m.data[r], i), value(m.data[r], i + 1));
+  analysis_->setLoadFunction(ProportionalLoad::table(std::move(pts)));
+  log_ << "  PROP   type 2 table\n";
+}
+
+void ProblemRun::setPathFollowing(const Macro& m) {
+  if (m.option == "off") {
+    analysis_->setPathFollowing(std::nullopt);
+    log_ << "  ARCL   off\n";
+    return;
+  }
+  const int kfl = m.numbers[0].evalInt(params_, "ARCL kfl");
+  const Record& rec = m.data.front();
+  auto value = [&](std::size_t i) { return Expression::parse(rec[i]).eval(params_); };
+  if (kfl >= 4) {
+    const int node = Expression::parse(rec[0]).evalInt(params_, "node number");
+    const int dof = Expression::parse(rec[1]).evalInt(params_, "dof");
+    if (node < 1 || node > model_.numNodes() || dof < 1 || dof > 3)
+      throw DeckError(rec.loc, "ARCL: no node " + std::to_string(node) + " dof " + std::to_string(dof),
+                      rec.lineText());
+    analysis_->assembler().refresh();
+    const int eq = analysis_->assembler().dofs().eq(node - 1, dof - 1);
+    if (eq < 0)
+      throw DeckError(rec.loc, "ARCL: node " + std::to_string(node) + " dof " + std::to_string(dof) +
+                                   " is restrained (displacement control needs a free dof)",
+                      rec.lineText());
+    analysis_->setPathFollowing(PathFollowing::displacementControl(eq, value(2)));
+    log_ << "  ARCL   displacement control of node " << node << " dof " << dof << "\n";
+  } else {
+    analysis_->setPathFollowing(PathFollowing::arcLength(value(0)));
+    log_ << "  ARCL   arc length\n";
+  }
+}
+
+void ProblemRun::setTimeHistory(const Macro& m) {
+  std::vector<TimeHistory::Column> cols;
+  for (const Record& rec : m.data) {
+    const std::string k = commandKey(rec.text(0));
+    TimeHistory::Column c{TimeHistory::Kind::Ener};
+    if (k == "arcl") c.kind = TimeHistory::Kind::Arcl;
+    if (k != "ener" && k != "arcl") {
+      c.kind = k == "disp"   ? TimeHistory::Kind::Disp
+               : k == "velo" ? TimeHistory::Kind::Velo
+               : k == "acce" ? TimeHistory::Kind::Acce
+               : k == "reac" ? TimeHistory::Kind::Reac
+                             : TimeHistory::Kind::Stre;
+      c.index = Expression::parse(rec[1]).evalInt(params_, "number") - 1;
+      c.component = Expression::parse(rec[2]).evalInt(params_, "component") - 1;
+      const int limit = c.kind == TimeHistory::Kind::Stre ? model_.numElements() : model_.numNodes();
+      if (c.index < 0 || c.index >= limit || c.component < 0 || c.component > 2)
+        throw DeckError(rec[1].loc, "TPLOt: no such " +
+                                        std::string(c.kind == TimeHistory::Kind::Stre ? "element" : "node") +
+                                        " or component",
+                        rec.excerpt(rec[1].loc));
+    }
+    cols.push_back(c);
+  }
+  const int every = m.has(0) ? m.numbers[0].evalInt(params_, "TPLOt increment") : 1;
+  history_ = std::make_unique<TimeHistory>(options_.outDir / (options_.stem + "_tplot.csv"),
+                                           std::move(cols), every);
+}
+
+namespace {
+
+// Mesh commands of a MESH re-entry, parsed as the mesh input of a problem.
+std::vector<MeshItem> parseMeshItems(std::vector<Record> records, const Record& origin) {
+  const std::string& file = origin.loc.file;
+  records.insert(records.begin(), DeckReader::lexLine("0 0 0 2 3 2", file, origin.loc.line));
+  records.insert(records.begin(), DeckReader::lexLine("FEAP * * MESH", file, origin.loc.line));
+  if (records.empty() || !records.back().is("END"))
+    records.push_back(DeckReader::lexLine("END", file, origin.loc.line));
+  CommandRegistry mesh, sub;
+  registerMeshCommands(mesh);
+  registerMaterialSubRecords(sub);
+  Deck deck = DeckParser(std::move(records), file, mesh, sub).parse();
+  for (TopItem& item : deck.items)
+    if (auto* p = std::get_if<Problem>(&item)) return std::move(p->mesh);
+  return {};
+}
+
+std::vector<MeshItem> meshReentryItems(const Macro& m) {
+  std::vector<Record> records;
+  if (!m.optionText.empty()) {
+    const std::filesystem::path base = std::filesystem::path(m.record.loc.file).parent_path();
+    const std::filesystem::path file = base / m.optionText;
+    if (!std::filesystem::exists(file))
+      throw DeckError(m.record.fieldLoc(1), "MESH: no file '" + file.string() + "'",
+                      m.record.excerpt(m.record.fieldLoc(1)));
+    records = DeckReader::readFile(file.string());
+  } else {
+    records = m.data;
+  }
+  return parseMeshItems(records, m.record);
+}
+
+}  // namespace
+
+void ProblemRun::reenterMesh(const Macro& m) {
+  const std::vector<MeshItem> items = meshReentryItems(m);
+  const Status st = analysis_->commit();
+  if (!st) fail(m, st.why);
+  applyMesh(items, params_, model_, &log_);
+  model_.bumpTopology();
+  analysis_->topologyChanged();
+  hingeStep_.resize(model_.numElements(), 0);
+  log_ << "  MESH   re-entered: " << model_.numNodes() << " nodes, " << model_.numElements()
+       << " elements, " << analysis_->assembler().dofs().numEquations() << " equations\n";
+}
+
+// ------------------------------------------------------------------ output
+
+std::vector<int> ProblemRun::selection(const Macro& m, int count) const {
+  std::vector<int> out;
+  const bool all = m.option == "all" || m.numbers.empty() || m.record.text(2).empty();
+  if (all) {
+    for (int i = 0; i < count; ++i) out.push_back(i);
+    return out;
+  }
+  const int n1 = m.numbers[0].evalInt(params_, "first number");
+  int n2 = m.has(1) && !m.record.text(3).empty() ? m.numbers[1].evalInt(params_, "last number") : n1;
+  int inc = m.has(2) && !m.record.text(4).empty() ? m.numbers[2].evalInt(params_, "increment") : 1;
+  if (inc <= 0) inc = 1;
+  n2 = std::min(n2, count);
+  for (int i = std::max(n1, 1); i <= n2; i += inc) out.push_back(i - 1);
+  return out;
+}
+
+void ProblemRun::printNodal(const Macro& m) {
+  const State& s = analysis_->state();
+  std::vector<int> nodes;
+  for (int n : selection(m, model_.numNodes()))
+    if (analysis_->assembler().dofs().used(n) || model_.hasCoord(n)) nodes.push_back(n);
+  if (m.is("reac")) {
+    Eigen::VectorXd r;
+    const Status st = analysis_->reactions(r);
+    if (!st) fail(m, st.why);
+    printNodalTable(log_, NodalQuantity::Reaction, model_, s, analysis_->loadFactor(), r, nodes);
+  } else if (m.is("velo")) {
+    printNodalTable(log_, NodalQuantity::Velocity, model_, s, analysis_->loadFactor(), s.v, nodes);
+  } else if (m.is("acce")) {
+    printNodalTable(log_, NodalQuantity::Acceleration, model_, s, analysis_->loadFactor(), s.a, nodes);
+  } else {
+    printNodalTable(log_, NodalQuantity::Displacement, model_, s, analysis_->loadFactor(), s.u, nodes);
+  }
+}
+
+void ProblemRun::printStresses(const Macro& m) {
+  Eigen::VectorXd r;
+  const Status st = analysis_->reactions(r);  // evaluates every element at the current state
+  if (!st) fail(m, st.why);
+  printStressTable(log_, model_, analysis_->state(), analysis_->loadFactor(),
+                   selection(m, model_.numElements()));
+}
+
+void ProblemRun::printHinges() {
+  printHingeTable(log_, model_, analysis_->state(), analysis_->loadFactor(), hingeStep_);
+}
+
+void ProblemRun::onCommit() {
+  const State& s = analysis_->state();
+  for (int e = 0; e < model_.numElements(); ++e) {
+    const auto* h = dynamic_cast<const HingeCarrier*>(&model_.element(e));
+    if (!h || hingeStep_[e] != 0) continue;
+    const HingeInfo info = h->hinge();
+    if (!info.active) continue;
+    hingeStep_[e] = s.step;
+    ++hingeCount_;
+    log_ << "  hinge  formed in element " << e + 1 << " at step " << s.step << " (t = "
+         << fmt("%.6e", s.t) << ", M = " << fmt("%.6e", info.moment) << ")\n";
+  }
+  if (history_) history_->record(*analysis_);
+  if (analysis_->integrator().dynamic()) {
+    const Energy en = analysis_->energy();
+    const double scale = std::abs(en.kinetic) + std::abs(en.strain) + std::abs(en.contact) +
+                         std::abs(en.external);
+    if (!energyStarted_) {
+      energy0_ = en.total();
+      energyStarted_ = true;
+    }
+    energyScale_ = std::max(energyScale_, scale);
+    if (energyScale_ > 0)
+      energyError_ = std::max(energyError_, std::abs(en.total() - energy0_) / energyScale_);
+  }
+  progress(false);
+}
+
+void ProblemRun::progress(bool final) {
+  if (!options_.progress) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (!final && now - lastProgress_ < std::chrono::milliseconds(100)) return;
+  lastProgress_ = now;
+  const State& s = analysis_->state();
+  const auto& h = analysis_->stepHistory();
+  std::fprintf(stderr, "\r  %s: step %d  t = %.4e  load %.4e  it %d  hinges %d  cuts %d   ",
+               options_.stem.c_str(), s.step, s.t, analysis_->loadFactor(),
+               h.empty() ? 0 : h.back().iteration, hingeCount_, cuts_);
+  if (final) std::fprintf(stderr, "\n");
+  std::fflush(stderr);
+  progressShown_ = true;
+}
+
+}  // namespace c2d

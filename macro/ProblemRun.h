@@ -1,0 +1,104 @@
+#pragma once
+// One problem of a deck (FEAP ... END, BATCh blocks) bound and run: the mesh
+// built into a Model, the BATCh blocks bound into command trees (every deck
+// error found before computing), then executed against an Analysis.
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "core/Model.h"
+#include "macro/Deck.h"
+#include "macro/SolutionCommand.h"
+#include "macro/TimeHistory.h"
+#include "solvers/Analysis.h"
+
+namespace c2d {
+
+struct RunOptions {
+  std::filesystem::path outDir = ".";
+  std::string stem = "run";   // base name of the output files of this run
+  bool progress = false;      // a single updating progress line on stderr
+  std::string solver = "auto";
+};
+
+struct RunSummary {
+  int steps = 0, iterations = 0, cuts = 0, hinges = 0;
+  double energyError = 0;  // max |total energy - initial| / max energy scale (dynamic runs)
+  double seconds = 0;
+};
+
+class ProblemRun {
+ public:
+  ProblemRun(const Problem& problem, Parameters& params, const SolutionCommands& table,
+             RunOptions options, std::ostream& log);
+  ~ProblemRun();
+
+  // Build the mesh and bind every BATCh block (no computing): throws DeckError.
+  void bind(bool echo);
+  // Execute the bound BATCh blocks; throws AnalysisError when the analysis fails.
+  void run();
+  RunSummary summary() const;
+
+  // --- used by the solution commands ---
+  Model& model() { return model_; }
+  Analysis& analysis() { return *analysis_; }
+  Parameters& params() { return params_; }
+  std::ostream& log() { return log_; }
+
+  Flow runLoop(const Macro& m);
+  Flow newtonIteration(const Macro& m, bool update, bool lineSearch, bool symmetric);
+  Flow formResidual(const Macro& m);
+  Flow solveOnly(const Macro& m);
+  Flow advanceTime(const Macro& m, std::optional<double> tmax);
+  void setDt(double dt);
+  void setProportionalLoad(const Macro& m);
+  void setIntegrator(const TimeIntegrator& ti);
+  void setStepCutting(bool on, double dtMin);
+  void setPathFollowing(const Macro& m);
+  void setTimeHistory(const Macro& m);
+  void reenterMesh(const Macro& m);
+  void printNodal(const Macro& m);
+  void printStresses(const Macro& m);
+  void printHinges();
+
+ private:
+  Flow execList(const std::vector<Macro>& list, bool topLevel = false);
+  Flow retryWithCut(const Macro& loop, const std::string& why);
+  [[noreturn]] void fail(const Macro& m, const std::string& what) const;
+  std::string historyText() const;
+  std::vector<int> selection(const Macro& m, int count) const;
+  void onCommit();
+  void progress(bool final);
+
+  const Problem& problem_;
+  Parameters& params_;
+  const SolutionCommands& table_;
+  RunOptions options_;
+  std::ostream& log_;
+
+  Model model_;
+  std::unique_ptr<Analysis> analysis_;
+  std::vector<std::vector<Macro>> batches_;
+  std::unique_ptr<TimeHistory> history_;
+
+  // Step cutting (AUTO,CUT).
+  bool cutting_ = false;
+  double dtMin_ = 0, dtNominal_ = 0;
+  int stepsSinceCut_ = 0;
+  int cuts_ = 0;
+  bool diverged_ = false;
+
+  std::vector<int> hingeStep_;  // step at which each element's hinge formed
+  int hingeCount_ = 0;
+  double energy0_ = 0, energyScale_ = 0, energyError_ = 0;
+  bool energyStarted_ = false;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point lastProgress_;
+  bool progressShown_ = false;
+};
+
+}  // namespace c2d

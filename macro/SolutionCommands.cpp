@@ -1,0 +1,582 @@
+// The solution commands of the BATCh language (deck language section 6): one
+// small class each, with its declared spec, its bind step and its run step.
+#include <cmath>
+
+#include "macro/DeckParser.h"
+#include "macro/ProblemRun.h"
+#include "macro/SolutionCommand.h"
+
+namespace c2d {
+
+namespace {
+
+FieldSpec num(std::string name, std::string doc, std::string def = {}) {
+  return {std::move(name), FieldKind::Expression, std::move(def), std::move(doc)};
+}
+FieldSpec word(std::string name, std::string doc, std::string def = {}) {
+  return {std::move(name), FieldKind::Text, std::move(def), std::move(doc)};
+}
+CommandSpec solution(std::string name, std::string doc, std::vector<FieldSpec> fields,
+                     std::string dataSyntax = {}) {
+  CommandSpec s;
+  s.name = std::move(name);
+  s.doc = std::move(doc);
+  s.fields = std::move(fields);
+  s.section = CommandSection::Solution;
+  if (!dataSyntax.empty()) {
+    s.data = DataForm::Records;
+    s.dataSyntax = std::move(dataSyntax);
+  }
+  return s;
+}
+
+[[noreturn]] void fail(const Macro& m, std::size_t field, const std::string& what) {
+  throw DeckError(m.record.fieldLoc(field), what, m.record.excerpt(m.record.fieldLoc(field)));
+}
+
+// ---------------------------------------------------------------- control
+
+class LoopCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("LOOP", "Repeat the commands up to the matching NEXT n times. A converged "
+                    "Newton iteration (TANG,,1 / UTAN,,1 / SOLV) leaves the innermost loop.",
+                    {word("label", "optional label matched by NEXT"), num("n", "repetitions", "1")});
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    if (m.has(0) && m.numbers[0].evalInt(ctx.params(), "loop count") < 0)
+      fail(m, 2, "negative loop count");
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override { return r.runLoop(m); }
+};
+
+class NextCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("NEXT", "End of a LOOP.", {word("label", "label of the matching LOOP")});
+  }
+  Flow run(const Macro&, ProblemRun&) const override { return Flow::Next; }
+};
+
+class StopCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override { return solution("STOP", "End the run here.", {}); }
+  Flow run(const Macro&, ProblemRun&) const override { return Flow::Stop; }
+};
+
+class ParaCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("PARAmeter",
+                    "Set a parameter: PARA,name,expression; or PARA alone with a block of "
+                    "'name = expression' records after END, ended by a blank record.",
+                    {word("name", "parameter name"), num("value", "expression")},
+                    "name = expression");
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    if (m.optionText.empty()) {
+      m.data = ctx.takeSet(m.record, "PARA block");
+    } else if (!Parameters::validName(m.optionText)) {
+      fail(m, 1, "invalid parameter name '" + m.optionText + "'");
+    }
+    apply(m, ctx.params());
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    apply(m, r.params());
+    return Flow::Next;
+  }
+
+ private:
+  static void apply(const Macro& m, Parameters& p) {
+    if (!m.optionText.empty()) {
+      p.set(toLower(m.optionText), m.has(0) ? m.numbers[0].eval(p) : 0.0);
+      return;
+    }
+    for (const Record& rec : m.data) {
+      const ParamAssign a = DeckParser::parseAssignment(rec);
+      p.set(a.name, a.value.eval(p));
+    }
+  }
+};
+
+class MeshCommandMacro final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("MESH",
+                    "Re-enter mesh input (loads, boundary conditions, materials, joints, "
+                    "contact, gravity): mesh commands read after END up to an END record, or "
+                    "from the file named.",
+                    {word("file", "optional file holding the mesh commands")}, "mesh commands, END");
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    if (!m.optionText.empty()) return;
+    for (;;) {
+      const Record& rec = ctx.take(m.record, "mesh input ended by END");
+      m.data.push_back(rec);
+      if (rec.is("END")) break;
+    }
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    r.reenterMesh(m);
+    return Flow::Next;
+  }
+};
+
+// ---------------------------------------------------------------- Newton
+
+class TangCommand final : public SolutionCommand {
+ public:
+  explicit TangCommand(bool symmetric) : symmetric_(symmetric) {}
+  CommandSpec spec() const override {
+    if (symmetric_)
+      return solution("TANGent",
+                      "Form and factor the tangent; with ,1 one Newton iteration (residual, "
+                      "solve, update); TANG,LINE,1 with a line search.",
+                      {word("option", "LINE: line search"), num("n", "1: solve and update", "0")});
+    return solution("UTANgent", "As TANG, for an unsymmetric tangent.",
+                    {word("option", "LINE: line search"), num("n", "1: solve and update", "0")});
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    if (!m.option.empty() && m.option.rfind("line", 0) != 0)
+      fail(m, 1, "unknown option '" + m.optionText + "' (LINE is the only one)");
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    const bool update = m.has(0) && m.numbers[0].eval(r.params()) != 0;
+    return r.newtonIteration(m, update, m.option.rfind("line", 0) == 0, symmetric_);
+  }
+
+ private:
+  bool symmetric_;
+};
+
+class FormCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("FORM", "Form the residual at the current state and print its norm.", {});
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override { return r.formResidual(m); }
+};
+
+class SolvCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("SOLV", "Solve with the current factors for the current residual and update.",
+                    {});
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override { return r.solveOnly(m); }
+};
+
+class TolCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("TOL", "Energy convergence tolerance: |du.R| <= tol times the first "
+                    "iteration's value of the step (FEAP's test).",
+                    {word("-", ""), num("tol", "tolerance", "1e-16")});
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    const double tol = m.numbers.empty() ? 1e-16 : m.numbers[0].eval(r.params());
+    if (!(tol > 0)) fail(m, 2, "the tolerance must be positive");
+    r.analysis().setTolerance(tol);
+    return Flow::Next;
+  }
+};
+
+// ---------------------------------------------------------------- time
+
+class DtCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("DT", "Time step.", {word("-", ""), num("dt", "time step")});
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    const double dt = m.has(0) ? m.numbers[0].eval(r.params()) : 0.0;
+    if (!(dt > 0)) fail(m, 2, "the time step must be positive");
+    r.setDt(dt);
+    return Flow::Next;
+  }
+};
+
+class TimeCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("TIME", "Commit the converged step and advance the time by dt; with tmax the "
+                    "enclosing loop ends once the time has reached tmax.",
+                    {word("-", ""), num("tmax", "end time (optional)")});
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    const bool hasMax = m.has(0) && !m.record.text(2).empty();
+    return r.advanceTime(m, hasMax ? std::optional<double>(m.numbers[0].eval(r.params()))
+                                   : std::nullopt);
+  }
+};
+
+class BackCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("BACK", "Return to the last committed step (optionally with a new dt).",
+                    {word("-", ""), num("dt", "new time step (optional)")});
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    r.analysis().back();
+    if (m.has(0) && !m.record.text(2).empty()) r.setDt(m.numbers[0].eval(r.params()));
+    r.log() << "  BACK  to t = " << r.analysis().state().t << "\n";
+    return Flow::Next;
+  }
+};
+
+class PropCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("PROPortional",
+                    "Proportional load table, data after END: a blank record (ramp p = t); "
+                    "'1 k tmin tmax a1 a2 a3 a4 a5' (p = a1 + a2*tau + a3*sin(a4*tau + a5)^k, "
+                    "tau = t - tmin, on [tmin, tmax]); or '2' then 't p' pairs, blank.",
+                    {word("-", ""), num("n", "table number", "1")},
+                    "type ... (see the command's doc)");
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    const Record& first = ctx.take(m.record, "proportional load data");
+    m.data.push_back(first);
+    if (first.blank()) return;
+    const Expression type = Expression::parse(first[0]);
+    const int t = type.evalInt(ctx.params(), "proportional load type");
+    if (t == 1) {
+      ctx.skipBlank();
+    } else if (t == 2) {
+      for (const Record& rec : ctx.takeSet(m.record, "proportional load table")) m.data.push_back(rec);
+    } else {
+      throw DeckError(first[0].loc, "unknown proportional load type " + std::to_string(t) +
+                                        " (1: formula, 2: table, blank record: ramp)",
+                      first.excerpt(first[0].loc));
+    }
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    r.setProportionalLoad(m);
+    return Flow::Next;
+  }
+};
+
+class DynaCommand final : public SolutionCommand {
+ public:
+  explicit DynaCommand(bool feapName) : feapName_(feapName) {}
+  CommandSpec spec() const override {
+    if (feapName_)
+      return solution("TRANsient", "FEAPpv's name for DYNA: TRAN,NEWMark,beta,gamma / TRAN,OFF.",
+                      {word("scheme", "NEWMark, ENERgy or OFF"), num("p1", ""), num("p2", "")});
+    return solution("DYNAmic",
+                    "Time integrator: DYNA,NEWMark,beta,gamma (default 0.25, 0.5); "
+                    "DYNA,ENERgy,alpha,beta: energy conserving (0, 0) or decaying (alpha, beta in "
+                    "(0, 1/2]) mid-point scheme; DYNA,OFF: static.",
+                    {word("scheme", "NEWMark, ENERgy or OFF"), num("p1", "beta / alpha"),
+                     num("p2", "gamma / beta")});
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    const std::string k = m.option.substr(0, 4);
+    if (k != "newm" && k != "ener" && k != "off" && k != "")
+      fail(m, 1, "unknown time integrator '" + m.optionText + "' (NEWMark, ENERgy, OFF)");
+    if (k == "ener")
+      for (std::size_t i = 0; i < 2 && i < m.numbers.size(); ++i) {
+        const double v = m.numbers[i].eval(ctx.params());
+        if (v < 0 || v > 0.5) fail(m, 2 + i, "alpha and beta of the mid-point scheme lie in [0, 1/2]");
+      }
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    const std::string k = m.option.substr(0, 4);
+    auto value = [&](std::size_t i, double def) {
+      return m.has(i) && !m.record.text(2 + i).empty() ? m.numbers[i].eval(r.params()) : def;
+    };
+    TimeIntegrator ti;
+    if (k == "off")
+      ti = TimeIntegrator::statics();
+    else if (k == "ener")
+      ti = TimeIntegrator::midPoint(value(0, 0.0), value(1, 0.0));
+    else
+      ti = TimeIntegrator::newmark(value(0, 0.25), value(1, 0.5));
+    r.setIntegrator(ti);
+    return Flow::Next;
+  }
+
+ private:
+  bool feapName_;
+};
+
+class AutoCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("AUTOmatic",
+                    "Automatic step cutting: AUTO,CUT,dtmin: a Newton loop that ends unconverged "
+                    "(or a singular tangent) returns to the last committed step, halves dt and "
+                    "retries, down to dtmin; dt grows back after converged steps. AUTO,OFF.",
+                    {word("mode", "CUT or OFF"), num("dtmin", "smallest step", "dt/1024")});
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    const std::string k = m.option.substr(0, 3);
+    if (k != "cut" && k != "off") fail(m, 1, "AUTO,CUT,dtmin or AUTO,OFF");
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    if (m.option.rfind("off", 0) == 0) {
+      r.setStepCutting(false, 0);
+    } else {
+      r.setStepCutting(true, m.has(0) && !m.record.text(2).empty() ? m.numbers[0].eval(r.params())
+                                                                    : 0.0);
+    }
+    return Flow::Next;
+  }
+};
+
+class ArclCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("ARCLength",
+                    "Path following, data after END. ARCL,,4 (or 5): displacement control, data "
+                    "'node dof increment'; ARCL,,1 (or 2): cylindrical arc length, data "
+                    "'dlambda0' (load increment of the first step, which sets the arc length); "
+                    "ARCL,OFF.",
+                    {word("option", "OFF to switch off"), num("kfl", "1/2 arc length, 4/5 "
+                                                          "displacement control")},
+                    "node dof increment | dlambda0");
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    if (m.option == "off") return;
+    const int kfl = m.has(0) ? m.numbers[0].evalInt(ctx.params(), "ARCL kfl") : 0;
+    if (kfl != 1 && kfl != 2 && kfl != 4 && kfl != 5)
+      fail(m, 2, "ARCL kfl must be 1, 2 (arc length) or 4, 5 (displacement control)");
+    const Record& rec = ctx.take(m.record, "ARCL data");
+    if (rec.blank()) throw DeckError(rec.loc, "ARCL data record expected", m.record.lineText());
+    const std::size_t want = (kfl >= 4) ? 3 : 1;
+    if (rec.size() < want)
+      throw DeckError(rec.fieldLoc(rec.size()),
+                      kfl >= 4 ? "ARCL displacement control needs 'node dof increment'"
+                               : "ARCL arc length needs 'dlambda0'",
+                      rec.excerpt(rec.fieldLoc(rec.size())));
+    for (std::size_t i = 0; i < want; ++i) Expression::parse(rec[i]).eval(ctx.params());
+    m.data.push_back(rec);
+    ctx.skipBlank();
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    r.setPathFollowing(m);
+    return Flow::Next;
+  }
+};
+
+// ---------------------------------------------------------------- output
+
+class PrintNodalCommand final : public SolutionCommand {
+ public:
+  PrintNodalCommand(std::string name, std::string doc) : name_(std::move(name)), doc_(std::move(doc)) {}
+  CommandSpec spec() const override {
+    return solution(name_, doc_ + " Nodes n1 to n2 step inc; ,ALL or no numbers: every node.",
+                    {word("option", "ALL"), num("n1", "first node"), num("n2", "last node", "n1"),
+                     num("inc", "increment", "1")});
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    r.printNodal(m);
+    return Flow::Next;
+  }
+
+ private:
+  std::string name_, doc_;
+};
+
+class StreCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("STREss",
+                    "Print element section forces N, V, M (elements n1 to n2 step inc; ,ALL or "
+                    "no numbers: all); STRE,HINGe: the table of softening hinges.",
+                    {word("option", "ALL or HINGe"), num("n1", "first element"),
+                     num("n2", "last element", "n1"), num("inc", "increment", "1")});
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    if (m.option.rfind("hing", 0) == 0)
+      r.printHinges();
+    else
+      r.printStresses(m);
+    return Flow::Next;
+  }
+};
+
+class TplotCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("TPLOt",
+                    "Time histories written every inc steps to <stem>_tplot.csv; records after "
+                    "END up to a blank: disp,n,d  velo,n,d  acce,n,d  reac,n,d  stre,e,c "
+                    "(c = 1 N, 2 V, 3 M)  ener  arcl.",
+                    {word("-", ""), num("inc", "output every inc steps", "1")},
+                    "kind,n,d");
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    m.data = ctx.takeSet(m.record, "TPLOt records");
+    for (const Record& rec : m.data) {
+      const std::string k = commandKey(rec.text(0));
+      if (k == "ener" || k == "arcl") continue;
+      if (k != "disp" && k != "velo" && k != "acce" && k != "reac" && k != "stre")
+        throw DeckError(rec[0].loc, "unknown TPLOt quantity '" + rec.text(0) +
+                                        "' (disp velo acce reac stre ener arcl)",
+                        rec.excerpt(rec[0].loc));
+      if (rec.size() < 3)
+        throw DeckError(rec.fieldLoc(rec.size()), "TPLOt record needs 'kind,number,component'",
+                        rec.excerpt(rec.fieldLoc(rec.size())));
+      for (std::size_t i = 1; i < 3; ++i) Expression::parse(rec[i]).evalInt(ctx.params(), "number");
+    }
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    r.setTimeHistory(m);
+    return Flow::Next;
+  }
+};
+
+}  // namespace
+
+// ---------------------------------------------------------------- plumbing
+
+const Record& BindContext::take(const Record& who, const char* what) {
+  if (atEnd())
+    throw DeckError(who.loc, std::string("missing ") + what + " after the BATCh END",
+                    who.lineText());
+  return data_[pos_++];
+}
+
+std::vector<Record> BindContext::takeSet(const Record& who, const char* what) {
+  std::vector<Record> out;
+  for (;;) {
+    if (atEnd())
+      throw DeckError(who.loc, std::string("the ") + what +
+                                   " after the BATCh END must end with a blank record",
+                      who.lineText());
+    const Record& rec = data_[pos_++];
+    if (rec.blank()) break;
+    out.push_back(rec);
+  }
+  return out;
+}
+
+void SolutionCommand::bind(Macro& m, BindContext& ctx) const {
+  for (const Expression& e : m.numbers) e.eval(ctx.params());
+}
+
+bool Macro::newtonLoop() const {
+  for (const Macro& b : body)
+    if (b.is("tang") || b.is("utan") || b.is("solv")) return true;
+  return false;
+}
+
+SolutionCommands::SolutionCommands() : registry_("Solution commands (BATCh ... END)") {
+  add(std::make_unique<LoopCommand>());
+  add(std::make_unique<NextCommand>());
+  add(std::make_unique<TangCommand>(true));
+  add(std::make_unique<TangCommand>(false));
+  add(std::make_unique<FormCommand>());
+  add(std::make_unique<SolvCommand>());
+  add(std::make_unique<TolCommand>());
+  add(std::make_unique<DtCommand>());
+  add(std::make_unique<TimeCommand>());
+  add(std::make_unique<BackCommand>());
+  add(std::make_unique<PropCommand>());
+  add(std::make_unique<ArclCommand>());
+  add(std::make_unique<AutoCommand>());
+  add(std::make_unique<DynaCommand>(false));
+  add(std::make_unique<DynaCommand>(true));
+  add(std::make_unique<PrintNodalCommand>("DISPlacement", "Print nodal displacements."));
+  add(std::make_unique<PrintNodalCommand>("VELOcity", "Print nodal velocities."));
+  add(std::make_unique<PrintNodalCommand>("ACCEleration", "Print nodal accelerations."));
+  add(std::make_unique<PrintNodalCommand>("REACtion",
+                                          "Print nodal reactions (the residual at every dof) "
+                                          "and their sums."));
+  add(std::make_unique<StreCommand>());
+  add(std::make_unique<TplotCommand>());
+  add(std::make_unique<MeshCommandMacro>());
+  add(std::make_unique<ParaCommand>());
+  add(std::make_unique<StopCommand>());
+}
+
+void SolutionCommands::add(std::unique_ptr<SolutionCommand> c) {
+  registry_.add(c->spec());
+  commands_.push_back(std::move(c));
+}
+
+const SolutionCommand* SolutionCommands::find(const std::string& word) const {
+  const CommandSpec* s = registry_.find(word);
+  if (!s) return nullptr;
+  for (const auto& c : commands_)
+    if (c->spec().key() == s->key()) return c.get();
+  return nullptr;
+}
+
+namespace {
+
+Macro makeMacro(const Record& rec, const SolutionCommands& table) {
+  Macro m;
+  m.record = rec;
+  m.command = table.find(rec.text(0));
+  if (!m.command) {
+    const std::string hint = table.registry().suggest(rec.text(0));
+    throw DeckError(rec[0].loc, "unknown solution command '" + rec.text(0) + "'",
+                    rec.excerpt(rec[0].loc), hint);
+  }
+  m.key = m.command->spec().key();
+  m.optionText = rec.text(1);
+  m.option = toLower(m.optionText);
+  for (std::size_t i = 2; i < rec.size(); ++i) m.numbers.push_back(Expression::parse(rec[i]));
+  return m;
+}
+
+// Builds the command tree with LOOP/NEXT matched; returns at the NEXT closing `loop`.
+std::vector<Macro> buildTree(const std::vector<Record>& recs, std::size_t& pos,
+                             const SolutionCommands& table, Macro* loop) {
+  std::vector<Macro> out;
+  while (pos < recs.size()) {
+    const Record& rec = recs[pos++];
+    if (rec.blank()) continue;
+    Macro m = makeMacro(rec, table);
+    if (m.is("next")) {
+      if (!loop) throw DeckError(rec.loc, "NEXT without a matching LOOP", rec.lineText());
+      if (!m.optionText.empty() && !loop->optionText.empty() && m.option != loop->option)
+        throw DeckError(rec[1].loc,
+                        "NEXT," + m.optionText + " closes LOOP," + loop->optionText + " (" +
+                            loop->record.loc.str() + ")",
+                        rec.excerpt(rec[1].loc));
+      loop->next = rec;
+      return out;
+    }
+    if (m.is("loop")) {
+      m.body = buildTree(recs, pos, table, &m);
+      if (m.next.blank()) throw DeckError(rec.loc, "LOOP without a matching NEXT", rec.lineText());
+    }
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+void bindTree(std::vector<Macro>& list, BindContext& ctx) {
+  for (Macro& m : list) {
+    m.command->bind(m, ctx);
+    if (m.is("loop")) bindTree(m.body, ctx);
+  }
+}
+
+}  // namespace
+
+std::vector<Macro> bindBatch(const std::vector<Record>& commands, const std::vector<Record>& data,
+                             const SolutionCommands& table, Parameters& params) {
+  std::size_t pos = 0;
+  std::vector<Macro> tree = buildTree(commands, pos, table, nullptr);
+  BindContext ctx(data, params);
+  bindTree(tree, ctx);
+  while (!ctx.atEnd()) {
+    const Record& rec = ctx.peek();
+    if (!rec.blank())
+      throw DeckError(rec.loc, "data record not read by any solution command", rec.lineText());
+    ctx.skipBlank();
+  }
+  return tree;
+}
+
+}  // namespace c2d

@@ -1,0 +1,47 @@
+#pragma once
+// TPLOt: time histories written every inc steps to <stem>_tplot.csv, with a
+// header row: time, prop, then one column per requested quantity
+// (disp_n_d, velo_n_d, acce_n_d, reac_n_d, stre_e_c; ener gives kinetic,
+// strain, contact, external, total; arcl gives the arc-length load factor).
+// The file is written under "<name>.part" and renamed when the run completes,
+// so an interrupted run leaves nothing that looks complete.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/AtomicFile.h"
+#include "solvers/Analysis.h"
+
+namespace c2d {
+
+class TimeHistory {
+ public:
+  enum class Kind { Disp, Velo, Acce, Reac, Stre, Ener, Arcl };
+  struct Column {
+    Kind kind;
+    int index = 0;      // 0-based node or element
+    int component = 0;  // 0-based dof or section force (N, V, M)
+  };
+
+  TimeHistory(std::filesystem::path path, std::vector<Column> columns, int every);
+  // Writes a row for the committed step when step % every == 0 (reactions from
+  // the residual the commit assembled).
+  void record(Analysis& analysis, bool force = false);
+  void finish();  // rename into place
+  const std::filesystem::path& path() const { return file_.path(); }
+  const std::vector<Column>& columns() const { return columns_; }
+  // The values of the last row written (for plots and summaries).
+  const std::vector<std::vector<double>>& rows() const { return rows_; }
+  const std::vector<std::string>& header() const { return header_; }
+
+ private:
+  AtomicFile file_;
+  std::vector<Column> columns_;
+  std::vector<std::string> header_;
+  std::vector<std::vector<double>> rows_;
+  int every_ = 1;
+  int lastStep_ = -1;
+};
+
+}  // namespace c2d

@@ -1,0 +1,325 @@
+#include "solvers/Analysis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace c2d {
+
+Analysis::Analysis(Model& model) : model_(model), assembler_(model) {
+  setLinearSolver("auto");
+  prop_ = [](double) { return 1.0; };
+  state_.prop = state_.propn = 1.0;  // FEAP: loads at full value until a PROP table is given
+  topologyChanged();
+}
+
+bool Analysis::setLinearSolver(const std::string& name) {
+  auto s = makeLinearSolver(name);
+  if (!s) return false;
+  solver_ = std::move(s);
+  solverName_ = name;
+  analyzedVersion_ = -1;
+  return true;
+}
+
+void Analysis::setLoadFunction(std::function<double(double)> f) {
+  prop_ = std::move(f);
+  state_.prop = prop_(state_.t);
+}
+
+void Analysis::setPathFollowing(std::optional<PathFollowing> p) {
+  path_ = std::move(p);
+  if (path_ && state_.arcLambda == 0 && state_.arcLambdan == 0) {
+    state_.arcLambda = state_.arcLambdan = 0;
+  }
+}
+
+void Analysis::topologyChanged() {
+  state_.resize(model_.numNodes());
+  assembler_.refresh();
+  const int neq = assembler_.dofs().numEquations();
+  const Eigen::Index nd = static_cast<Eigen::Index>(model_.numNodes()) * kNodeDofs;
+  R_.setZero(neq);
+  du_.setZero(neq);
+  duF_.setZero(neq);
+  F_.setZero(neq);
+  stepInc_.setZero(neq);
+  rNodal_.setZero(nd);
+  rRest_n_.setZero(nd);
+  analyzedVersion_ = -1;
+  collectHingeCarriers();
+}
+
+void Analysis::collectHingeCarriers() {
+  hinges_.clear();
+  for (int e = 0; e < model_.numElements(); ++e)
+    if (auto* h = dynamic_cast<HingeCarrier*>(&model_.element(e))) hinges_.emplace_back(e, h);
+  hingesVersion_ = model_.topologyVersion();
+}
+
+double Analysis::loadFactor() const { return state_.prop * (path_ ? state_.arcLambda : 1.0); }
+
+double Analysis::stepLoadFactor(const StepRule& rule) const {
+  const double now = loadFactor();
+  if (rule.scheme != Scheme::MidPoint) return now;
+  const double before = state_.propn * (path_ ? state_.arcLambdan : 1.0);
+  return 0.5 * (now + before);
+}
+
+void Analysis::applyPrescribed() {
+  const DofMap& dofs = assembler_.dofs();
+  for (int n = 0; n < model_.numNodes(); ++n) {
+    if (!dofs.used(n)) continue;
+    for (int d = 0; d < kNodeDofs; ++d)
+      if (dofs.restrained(n, d)) state_.u[n * kNodeDofs + d] = state_.prop * model_.disp(n)[d];
+  }
+}
+
+void Analysis::updateRates() {
+  const StepRule rule = integrator_.rule(state_.dt);
+  if (!rule.dynamic()) {
+    state_.v.setZero();
+    state_.a.setZero();
+    return;
+  }
+  state_.v = rule.cv * (state_.u - state_.un) + rule.vv * state_.vn + rule.va * state_.an;
+  state_.a = rule.ca * (state_.u - state_.un) + rule.av * state_.vn + rule.aa * state_.an;
+}
+
+Status Analysis::advance() {
+  Status st = commit();
+  if (!st) return st;
+  state_.t = state_.tn + state_.dt;
+  state_.prop = prop_(state_.t);
+  applyPrescribed();
+  updateRates();
+  history_.clear();
+  energy0_ = 0;
+  converged_ = false;
+  stepInc_.setZero();
+  stepDlambda_ = 0;
+  if (path_) path_->beginStep();
+  dirty_ = true;
+  return Status::success();
+}
+
+Status Analysis::assembleAndFactor(bool symmetric) {
+  if (assembler_.patternVersion() != model_.topologyVersion() ||
+      R_.size() != assembler_.dofs().numEquations())
+    topologyChanged();
+  const StepRule rule = integrator_.rule(state_.dt);
+  Status st = assembler_.assemble(state_, rule, stepLoadFactor(rule), true);
+  if (!st) return st;
+  assembler_.toEquations(assembler_.nodalResidual(), R_);
+  R_ = -R_;
+  if (!R_.allFinite()) return Status::failure("non-finite residual");
+  if (analyzedVersion_ != assembler_.patternVersion() || analyzedSymmetric_ != symmetric) {
+    st = solver_->analyze(assembler_.tangent(), symmetric);
+    if (!st) return st;
+    analyzedVersion_ = assembler_.patternVersion();
+    analyzedSymmetric_ = symmetric;
+  }
+  st = solver_->factorize(assembler_.tangent());
+  if (!st) return Status::failure("singular tangent: " + st.why);
+  return Status::success();
+}
+
+void Analysis::applyIncrement(const Eigen::VectorXd& du, double scale) {
+  const DofMap& dofs = assembler_.dofs();
+  const Eigen::Index nd = state_.u.size();
+  for (Eigen::Index i = 0; i < nd; ++i) {
+    const int eq = dofs.eq(static_cast<int>(i));
+    if (eq >= 0) state_.u[i] += scale * du[eq];
+  }
+  stepInc_ += scale * du;
+  updateRates();
+}
+
+int Analysis::activateCriticalHinge() {
+  if (hingesVersion_ != model_.topologyVersion()) collectHingeCarriers();
+  int best = -1;
+  double demand = 1.0 + 1e-9;
+  for (const auto& [e, h] : hinges_) {
+    const double d = h->hingeDemand();
+    if (d > demand) {
+      demand = d;
+      best = e;
+    }
+  }
+  if (best < 0) return -1;
+  for (const auto& [e, h] : hinges_)
+    if (e == best) {
+      h->activateHinge();
+      if (onHingeActivated) onHingeActivated(e, h->hinge());
+    }
+  return best;
+}
+
+Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
+  info = IterationInfo{};
+  info.iteration = static_cast<int>(history_.size()) + 1;
+  Status st = assembleAndFactor(symmetric);
+  if (!st) return st;
+  info.residual = R_.norm();
+  st = solver_->solve(R_, du_);
+  if (!st) return Status::failure("linear solve failed: " + st.why);
+  if (path_) {
+    assembler_.toEquations(assembler_.referenceLoad(), F_);
+    const StepRule rule = integrator_.rule(state_.dt);
+    F_ *= state_.prop * rule.loadWeight();
+    st = solver_->solve(F_, duF_);
+    if (!st) return Status::failure("linear solve failed: " + st.why);
+    double dlambda = 0;
+    st = path_->correction(stepInc_, du_, duF_, dlambda);
+    if (!st) return Status::failure("path following: " + st.why);
+    du_ += dlambda * duF_;
+    state_.arcLambda += dlambda;
+    stepDlambda_ += dlambda;
+  }
+  info.energy = std::abs(du_.dot(R_));
+  if (!std::isfinite(info.energy)) return Status::failure("non-finite solution increment");
+  if (info.iteration == 1) energy0_ = info.energy;
+
+  double s = 1.0;
+  if (lineSearch && !path_ && info.iteration > 1 && info.energy > 0) {
+    // Secant search on g(s) = du . R(u + s du), accepted when |g(s)| <= 0.8 |g(0)|.
+    const StepRule rule = integrator_.rule(state_.dt);
+    const double g0 = du_.dot(R_);
+    auto g = [&](double step, double& out) -> Status {
+      applyIncrement(du_, step);
+      Status s2 = assembler_.assemble(state_, rule, stepLoadFactor(rule), false);
+      Eigen::VectorXd& Rt = duF_;  // reuse work vector
+      assembler_.toEquations(assembler_.nodalResidual(), Rt);
+      out = -du_.dot(Rt);
+      applyIncrement(du_, -step);
+      return s2;
+    };
+    double g1 = 0;
+    if (g(1.0, g1) && std::abs(g1) > 0.8 * std::abs(g0)) {
+      double sa = 0, ga = g0, sb = 1, gb = g1;
+      for (int k = 0; k < 6; ++k) {
+        if (gb == ga) break;
+        double sn = sb - gb * (sb - sa) / (gb - ga);
+        sn = std::clamp(sn, 0.05, 2.0);
+        double gn = 0;
+        if (!g(sn, gn)) break;
+        sa = sb;
+        ga = gb;
+        sb = sn;
+        gb = gn;
+        if (std::abs(gn) <= 0.8 * std::abs(g0)) break;
+      }
+      s = sb;
+    }
+  }
+  applyIncrement(du_, s);
+  dirty_ = true;
+  ++totalIterations_;
+
+  info.converged = energy0_ == 0 || info.energy <= tol_ * energy0_;
+  if (info.converged) {
+    const int h = activateCriticalHinge();
+    if (h >= 0) {
+      info.converged = false;
+      info.hingeActivated = h;
+    }
+  }
+  converged_ = info.converged;
+  history_.push_back(info);
+  return Status::success();
+}
+
+Status Analysis::formResidual(double& norm) {
+  if (assembler_.patternVersion() != model_.topologyVersion()) topologyChanged();
+  const StepRule rule = integrator_.rule(state_.dt);
+  Status st = assembler_.assemble(state_, rule, stepLoadFactor(rule), false);
+  if (!st) return st;
+  assembler_.toEquations(assembler_.nodalResidual(), R_);
+  R_ = -R_;
+  norm = R_.norm();
+  return Status::success();
+}
+
+Status Analysis::solveOnly(IterationInfo& info) {
+  info = IterationInfo{};
+  info.iteration = static_cast<int>(history_.size()) + 1;
+  info.residual = R_.norm();
+  if (analyzedVersion_ != assembler_.patternVersion())
+    return Status::failure("SOLV without a factored tangent (use TANG first)");
+  Status st = solver_->solve(R_, du_);
+  if (!st) return st;
+  info.energy = std::abs(du_.dot(R_));
+  if (info.iteration == 1) energy0_ = info.energy;
+  applyIncrement(du_, 1.0);
+  dirty_ = true;
+  info.converged = energy0_ == 0 || info.energy <= tol_ * energy0_;
+  converged_ = info.converged;
+  history_.push_back(info);
+  return Status::success();
+}
+
+void Analysis::back() {
+  for (auto& el : model_.elements()) el->revert();
+  state_.revert();
+  history_.clear();
+  energy0_ = 0;
+  converged_ = false;
+  stepInc_.setZero();
+  stepDlambda_ = 0;
+  if (path_) path_->beginStep();
+  dirty_ = false;
+}
+
+Status Analysis::commit() {
+  if (!dirty_) return Status::success();
+  if (assembler_.patternVersion() != model_.topologyVersion()) topologyChanged();
+  const StepRule rule = integrator_.rule(state_.dt);
+  const double lam = stepLoadFactor(rule);
+  Status st = assembler_.assemble(state_, rule, lam, false);
+  if (!st) return st;
+  // External work of the step: loads at the step's load point, reactions on the
+  // prescribed dofs (mid-point: the algorithmic ones; otherwise the trapezoidal rule).
+  const Eigen::VectorXd& r = assembler_.nodalResidual();
+  const DofMap& dofs = assembler_.dofs();
+  const double lamLoads = rule.scheme == Scheme::MidPoint
+                              ? lam
+                              : 0.5 * (lam + state_.propn * (path_ ? state_.arcLambdan : 1.0));
+  double work = 0;
+  for (Eigen::Index i = 0; i < r.size(); ++i) {
+    const double du = state_.u[i] - state_.un[i];
+    work += du * (lamLoads * assembler_.referenceLoad()[i] + assembler_.gravityLoad()[i]);
+    const int n = static_cast<int>(i / kNodeDofs), d = static_cast<int>(i % kNodeDofs);
+    if (dofs.used(n) && dofs.restrained(n, d)) {
+      const double rr = rule.scheme == Scheme::MidPoint ? r[i] : 0.5 * (r[i] + rRest_n_[i]);
+      work += du * rr;
+      rRest_n_[i] = r[i];
+    }
+  }
+  externalWork_ += work;
+  for (auto& el : model_.elements()) el->commit();
+  if (path_) path_->endStep(stepInc_, stepDlambda_);
+  state_.commit();
+  dirty_ = false;
+  if (onCommit) onCommit();
+  return Status::success();
+}
+
+Status Analysis::reactions(Eigen::VectorXd& r) {
+  if (assembler_.patternVersion() != model_.topologyVersion()) topologyChanged();
+  const StepRule rule = integrator_.rule(state_.dt);
+  Status st = assembler_.assemble(state_, rule, stepLoadFactor(rule), false);
+  if (!st) return st;
+  r = assembler_.nodalResidual();
+  return Status::success();
+}
+
+Energy Analysis::energy() {
+  Energy e;
+  e.kinetic = assembler_.kineticEnergy(state_);
+  e.strain = assembler_.strainEnergy();
+  e.contact = assembler_.contactEnergy(state_);
+  e.external = externalWork_;
+  return e;
+}
+
+}  // namespace c2d

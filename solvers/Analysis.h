@@ -1,0 +1,127 @@
+#pragma once
+// The analysis driver: one Newton loop for static, path-following and dynamic
+// analysis, behind FEAP's solution commands. TIME is advance(), TANG,,1 is
+// iterate(), FORM is formResidual(), BACK is back().
+//
+// Pieces: the Assembler (core) evaluates the model; the TimeIntegrator gives the
+// step rule; the LinearSolver factors the tangent (pattern analysed once per
+// topology version); PathFollowing, when set, makes the load factor an unknown.
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/Assembler.h"
+#include "core/Hinge.h"
+#include "core/Model.h"
+#include "core/State.h"
+#include "solvers/LinearSolver.h"
+#include "solvers/PathFollowing.h"
+#include "solvers/TimeIntegrator.h"
+
+namespace c2d {
+
+struct Energy {
+  double kinetic = 0, strain = 0, contact = 0;
+  double external = 0;  // work of loads, self-weight and reactions since the start
+  double total() const { return kinetic + strain + contact - external; }
+};
+
+struct IterationInfo {
+  int iteration = 0;    // within the step, 1-based
+  double energy = 0;    // |du . R|
+  double residual = 0;  // ||R|| before the update
+  bool converged = false;
+  int hingeActivated = -1;  // element index of a hinge activated at this iteration
+};
+
+class Analysis {
+ public:
+  explicit Analysis(Model& model);
+
+  Model& model() { return model_; }
+  State& state() { return state_; }
+  const State& state() const { return state_; }
+  Assembler& assembler() { return assembler_; }
+
+  // Configuration.
+  bool setLinearSolver(const std::string& name);  // false: unknown name
+  const std::string& linearSolverName() const { return solverName_; }
+  void setIntegrator(const TimeIntegrator& ti) { integrator_ = ti; }
+  const TimeIntegrator& integrator() const { return integrator_; }
+  void setTolerance(double tol) { tol_ = tol; }
+  double tolerance() const { return tol_; }
+  void setDt(double dt) { state_.dt = dt; }
+  // Proportional load factor as a function of time (FEAP: 1 when no PROP is given).
+  void setLoadFunction(std::function<double(double)> f);
+  void setPathFollowing(std::optional<PathFollowing> p);
+  PathFollowing* pathFollowing() { return path_ ? &*path_ : nullptr; }
+
+  // TIME: commit the converged step and advance the time by dt.
+  Status advance();
+  // TANG,,1 (UTAN when !symmetric): one Newton iteration with update.
+  Status iterate(bool lineSearch, bool symmetric, IterationInfo& info);
+  // FORM: residual at the current state; returns its norm over the free dofs.
+  Status formResidual(double& norm);
+  // SOLV: solve with the current factors for the current residual and update.
+  Status solveOnly(IterationInfo& info);
+  // BACK: return to the last committed state (optionally with a new dt).
+  void back();
+  // Commit the trial state (elements, history, energy bookkeeping); idempotent.
+  Status commit();
+
+  // Reactions (residual at the current state, every node dof).
+  Status reactions(Eigen::VectorXd& r);
+  Energy energy();
+  double loadFactor() const;  // multiplier of FORCe at t_n+1
+  const std::vector<IterationInfo>& stepHistory() const { return history_; }
+  int totalIterations() const { return totalIterations_; }
+  bool stepConverged() const { return converged_; }
+
+  // Form and factor the tangent at the current state (TANG without update).
+  Status formTangent(bool symmetric) { return assembleAndFactor(symmetric); }
+
+  // Called for every hinge activated in a Newton iteration: element index (0-based).
+  std::function<void(int element, const HingeInfo&)> onHingeActivated;
+  // Called after every commit, with the committed state in place.
+  std::function<void()> onCommit;
+
+  // Topology change (MESH re-entry, HINGE2JOINT): carry the state to the new node count.
+  void topologyChanged();
+
+ private:
+  void applyPrescribed();
+  void updateRates();
+  Status assembleAndFactor(bool symmetric);
+  void applyIncrement(const Eigen::VectorXd& du, double scale);
+  int activateCriticalHinge();
+  double stepLoadFactor(const StepRule& rule) const;
+  void collectHingeCarriers();
+
+  Model& model_;
+  State state_;
+  Assembler assembler_;
+  std::unique_ptr<LinearSolver> solver_;
+  std::string solverName_ = "auto";
+  int analyzedVersion_ = -1;
+  bool analyzedSymmetric_ = true;
+  TimeIntegrator integrator_;
+  std::function<double(double)> prop_;
+  std::optional<PathFollowing> path_;
+  double tol_ = 1e-16;
+
+  // Work vectors (sized per topology: nothing allocated inside the Newton loop).
+  Eigen::VectorXd R_, du_, duF_, F_, stepInc_, rNodal_, rRest_n_;
+  double energy0_ = 0;
+  std::vector<IterationInfo> history_;
+  int totalIterations_ = 0;
+  bool converged_ = false;
+  bool dirty_ = false;  // trial differs from committed
+  double stepDlambda_ = 0;
+  double externalWork_ = 0;
+  std::vector<std::pair<int, HingeCarrier*>> hinges_;
+  int hingesVersion_ = -1;
+};
+
+}  // namespace c2d

@@ -1,0 +1,104 @@
+#include "solvers/KluSolver.h"
+
+#include <string>
+
+namespace c2d {
+
+namespace {
+// A refactorization with the old pivot order is kept only while its reciprocal
+// pivot growth (max|A| / max|U| column by column, 1 for a perfectly stable
+// factorization) stays above this; below it more than about eight digits
+// may be lost and a fresh pivot search is cheaper than a wrong Newton step.
+constexpr double kMinReciprocalGrowth = 1e-8;
+}  // namespace
+
+KluSolver::KluSolver() { klu_defaults(&common_); }
+
+KluSolver::~KluSolver() {
+  freeNumeric();
+  freeSymbolic();
+}
+
+void KluSolver::freeSymbolic() {
+  if (symbolic_) klu_free_symbolic(&symbolic_, &common_);
+  symbolic_ = nullptr;
+}
+
+void KluSolver::freeNumeric() {
+  if (numeric_) klu_free_numeric(&numeric_, &common_);
+  numeric_ = nullptr;
+  factored_ = false;
+}
+
+Status KluSolver::analyze(const SparseMatrix& A, bool /*symmetric*/) {
+  freeNumeric();
+  freeSymbolic();
+  if (Status s = pattern_.record(A); !s) return Status::failure("klu: " + s.why);
+  symbolic_ = klu_analyze(pattern_.size(), pattern_.outer(), pattern_.inner(), &common_);
+  if (!symbolic_) {
+    pattern_.clear();
+    return Status::failure("klu: symbolic analysis failed (status " +
+                           std::to_string(common_.status) + ")");
+  }
+  return Status::success();
+}
+
+Status KluSolver::freshFactor(int* p, int* i, double* x) {
+  freeNumeric();
+  numeric_ = klu_factor(p, i, x, symbolic_, &common_);
+  if (common_.status == KLU_SINGULAR) {
+    // With halt_if_singular (the default) KLU has already freed the factors.
+    freeNumeric();
+    return Status::failure("klu: matrix is singular (zero pivot at column " +
+                           std::to_string(common_.singular_col) + ")");
+  }
+  if (!numeric_ || common_.status != KLU_OK) {
+    freeNumeric();
+    return Status::failure("klu: numeric factorization failed (status " +
+                           std::to_string(common_.status) + ")");
+  }
+  factored_ = true;
+  lastWasRefactor_ = false;
+  return Status::success();
+}
+
+Status KluSolver::factorize(const SparseMatrix& A) {
+  factored_ = false;
+  if (!symbolic_) return Status::failure("klu: factorize() before analyze()");
+  if (Status s = pattern_.check(A); !s) return Status::failure("klu: " + s.why);
+  // KLU reads but does not write its inputs.
+  int* p = const_cast<int*>(A.outerIndexPtr());
+  int* i = const_cast<int*>(A.innerIndexPtr());
+  double* x = const_cast<double*>(A.valuePtr());
+  if (numeric_) {
+    // Same pattern, new values: reuse the pivot order and the memory of the
+    // factors, unless a pivot vanished or grew badly with the new values.
+    if (klu_refactor(p, i, x, symbolic_, numeric_, &common_) && common_.status == KLU_OK &&
+        klu_rgrowth(p, i, x, symbolic_, numeric_, &common_) &&
+        common_.rgrowth >= kMinReciprocalGrowth) {
+      factored_ = true;
+      lastWasRefactor_ = true;
+      return Status::success();
+    }
+  }
+  return freshFactor(p, i, x);
+}
+
+Status KluSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  if (!factored_) return Status::failure("klu: no valid factorization to solve with");
+  const int n = pattern_.size();
+  if (b.size() != n || x.size() != n) {
+    return Status::failure("klu: vector sizes " + std::to_string(b.size()) + ", " +
+                           std::to_string(x.size()) + " do not match the matrix size " +
+                           std::to_string(n));
+  }
+  if (!b.allFinite()) return Status::failure("klu: non-finite entry in the right-hand side");
+  x = b;  // klu_solve works in place
+  if (!klu_solve(symbolic_, numeric_, n, 1, x.data(), &common_)) {
+    return Status::failure("klu: solve failed (status " + std::to_string(common_.status) + ")");
+  }
+  if (!x.allFinite()) return Status::failure("klu: solution is not finite");
+  return Status::success();
+}
+
+}  // namespace c2d

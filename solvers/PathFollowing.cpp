@@ -1,0 +1,74 @@
+#include "solvers/PathFollowing.h"
+
+#include <cmath>
+
+namespace c2d {
+
+PathFollowing PathFollowing::displacementControl(int equation, double increment) {
+  PathFollowing p;
+  p.kind_ = Kind::DisplacementControl;
+  p.eq_ = equation;
+  p.increment_ = increment;
+  return p;
+}
+
+PathFollowing PathFollowing::arcLength(double firstLoadIncrement) {
+  PathFollowing p;
+  p.kind_ = Kind::ArcLength;
+  p.firstDlambda_ = firstLoadIncrement;
+  return p;
+}
+
+void PathFollowing::beginStep() { predictor_ = true; }
+
+Status PathFollowing::correction(const Eigen::VectorXd& stepIncrement, const Eigen::VectorXd& duR,
+                                 const Eigen::VectorXd& duF, double& dlambda) {
+  const bool predictor = predictor_;
+  predictor_ = false;
+  if (kind_ == Kind::DisplacementControl) {
+    if (eq_ < 0) return Status::failure("the controlled dof is not a free equation");
+    const double target = predictor ? increment_ : increment_ - stepIncrement[eq_];
+    if (std::abs(duF[eq_]) < 1e-300)
+      return Status::failure("the load does not move the controlled dof (zero stiffness coupling)");
+    dlambda = (target - duR[eq_]) / duF[eq_];
+    return Status::success();
+  }
+  // Cylindrical arc length.
+  if (predictor) {
+    if (ds_ == 0) {
+      dlambda = firstDlambda_;
+      ds_ = std::abs(firstDlambda_) * duF.norm();
+      if (ds_ == 0) return Status::failure("arc length: zero load pattern response");
+      return Status::success();
+    }
+    double sign = lastDirection_;
+    if (lastIncrement_.size() == duF.size()) sign = lastIncrement_.dot(duF) >= 0 ? 1.0 : -1.0;
+    dlambda = sign * ds_ / duF.norm();
+    return Status::success();
+  }
+  // ||a + dlambda duF||^2 = ds^2 with a = stepIncrement + duR
+  const Eigen::VectorXd& s = stepIncrement;
+  const double A = duF.squaredNorm();
+  const double B = 2.0 * (s + duR).dot(duF);
+  const double C = (s + duR).squaredNorm() - ds_ * ds_;
+  const double disc = B * B - 4 * A * C;
+  if (disc < 0) {
+    // No real root: take the closest point (minimum of the quadratic), a common remedy.
+    dlambda = -B / (2 * A);
+    return Status::success();
+  }
+  const double r1 = (-B + std::sqrt(disc)) / (2 * A);
+  const double r2 = (-B - std::sqrt(disc)) / (2 * A);
+  // The root whose increment keeps the smallest angle with the current step increment.
+  const double c1 = (s + duR + r1 * duF).dot(s);
+  const double c2 = (s + duR + r2 * duF).dot(s);
+  dlambda = c1 >= c2 ? r1 : r2;
+  return Status::success();
+}
+
+void PathFollowing::endStep(const Eigen::VectorXd& stepIncrement, double stepDlambda) {
+  lastIncrement_ = stepIncrement;
+  if (stepDlambda != 0) lastDirection_ = stepDlambda > 0 ? 1.0 : -1.0;
+}
+
+}  // namespace c2d
