@@ -175,8 +175,11 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
     du_ += dlambda * duF_;
     state_.arcLambda += dlambda;
     stepDlambda_ += dlambda;
+    // K du = R + dlambda F: the energy of the whole increment.
+    info.energy = std::abs(du_.dot(R_) + dlambda * du_.dot(F_));
+  } else {
+    info.energy = std::abs(du_.dot(R_));
   }
-  info.energy = std::abs(du_.dot(R_));
   if (!std::isfinite(info.energy)) return Status::failure("non-finite solution increment");
   if (info.iteration == 1) energy0_ = info.energy;
 

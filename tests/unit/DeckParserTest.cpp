@@ -7,6 +7,7 @@
 
 #include "macro/CommandSpec.h"
 #include "macro/DeckParser.h"
+#include "macro/DeckReader.h"
 #include "macro/MeshCommands.h"
 #include "tests/unit/DeckTestSupport.h"
 
@@ -219,17 +220,24 @@ TEST(DeckParserStructure, AssignmentRecords) {
 
 // --- registry -------------------------------------------------------------
 
+CommandSpec spec(const std::string& name) {
+  CommandSpec s;
+  s.name = name;
+  s.doc = "doc";
+  return s;
+}
+
 TEST(CommandSpecRegistry, FourCharacterKeysAreUnique) {
   CommandRegistry r("test");
-  r.add({"COORdinates", "doc", {}, CommandSection::Mesh});
-  EXPECT_THROW(r.add({"COORx", "doc", {}, CommandSection::Mesh}), std::logic_error);
-  EXPECT_THROW(r.add({"coordinate", "doc", {}, CommandSection::Mesh}), std::logic_error);
-  CommandSpec alias{"PARAmeter", "doc", {}, CommandSection::Mesh};
+  r.add(spec("COORdinates"));
+  EXPECT_THROW(r.add(spec("COORx")), std::logic_error);
+  EXPECT_THROW(r.add(spec("coordinate")), std::logic_error);
+  CommandSpec aliasspec("PARAmeter");
   alias.aliases = {"CONStant"};
   r.add(alias);
-  EXPECT_THROW(r.add({"CONSistent", "doc", {}, CommandSection::Mesh}), std::logic_error);
-  r.add({"END", "doc", {}, CommandSection::Mesh});
-  r.add({"ENDS", "doc", {}, CommandSection::Mesh});  // 'end' and 'ends' differ
+  EXPECT_THROW(r.add(spec("CONSistent")), std::logic_error);
+  r.add(spec("END"));
+  r.add(spec("ENDS"));  // 'end' and 'ends' differ
   EXPECT_EQ(r.find("coor")->name, "COORdinates");
   EXPECT_EQ(r.find("Coordinates")->name, "COORdinates");
   EXPECT_EQ(r.find("cons")->name, "PARAmeter");
@@ -263,7 +271,9 @@ TEST(CommandSpecRegistry, EveryMeshCommandIsDocumented) {
   for (const auto* reg : {&mesh, &sub})
     for (const auto& s : reg->specs()) {
       EXPECT_FALSE(s.doc.empty()) << s.name;
-      if (s.data == DataForm::Records) EXPECT_FALSE(s.dataSyntax.empty()) << s.name;
+      if (s.data == DataForm::Records) {
+        EXPECT_FALSE(s.dataSyntax.empty()) << s.name;
+      }
     }
   std::ostringstream help;
   mesh.printHelp(help);

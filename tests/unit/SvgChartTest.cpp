@@ -80,7 +80,9 @@ TEST(SvgChartTicks, OneTwoFiveStepsInsideAnyRange) {
     EXPECT_GT(t.back() + step, hi);
     for (std::size_t k = 0; k < t.size(); ++k) {
       EXPECT_NEAR(std::remainder(t[k], step), 0.0, 1e-9 * step);
-      if (k > 0) EXPECT_NEAR(t[k] - t[k - 1], step, 1e-9 * step);
+      if (k > 0) {
+        EXPECT_NEAR(t[k] - t[k - 1], step, 1e-9 * step);
+      }
     }
   }
 }
