@@ -83,6 +83,7 @@ Status Assembler::assemble(const State& s, const StepRule& rule, double loadFact
                            bool wantTangent) {
   refresh();
   r_ = -loadFactor * fRef_ - fGrav_;
+  forceScale_ = r_.size() ? r_.cwiseAbs().maxCoeff() : 0.0;
   if (wantTangent) std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
 
   ElementKinematics kin;
@@ -95,6 +96,7 @@ Status Assembler::assemble(const State& s, const StepRule& rule, double loadFact
     if (!st) return Status::failure("element " + std::to_string(e + 1) + ": " + st.why);
     if (!re.allFinite() || (wantTangent && !ke.allFinite()))
       return Status::failure("element " + std::to_string(e + 1) + ": non-finite residual or tangent");
+    forceScale_ = std::max(forceScale_, re.cwiseAbs().maxCoeff());
     const auto nodes = el.nodes();
     for (int a = 0; a < 2; ++a)
       r_.segment<kNodeDofs>(static_cast<Eigen::Index>(nodes[a]) * kNodeDofs) +=

@@ -32,6 +32,8 @@ class Assembler {
   Status assemble(const State& s, const StepRule& rule, double loadFactor, bool wantTangent);
 
   const SparseMatrix& tangent() const { return K_; }
+  // Largest element force of the last assembly: the scale of round-off in the residual.
+  double forceScale() const { return forceScale_; }
   const Eigen::VectorXd& nodalResidual() const { return r_; }  // size numNodes*3
   // External load vector (FORCe pattern, unit factor) per node dof.
   const Eigen::VectorXd& referenceLoad() const { return fRef_; }
@@ -56,6 +58,7 @@ class Assembler {
   std::vector<int> diagPos_;                                     // per equation
   Eigen::VectorXd r_, fRef_, fGrav_;
   int patternVersion_ = -1;
+  double forceScale_ = 0;
 };
 
 }  // namespace c2d

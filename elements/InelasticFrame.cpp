@@ -1,7 +1,6 @@
 #include "elements/InelasticFrame.h"
 
 #include <cmath>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -41,8 +40,6 @@ InelasticFrame::InelasticFrame(const MaterialSet& mat, const std::array<int, 2>&
     : nodes_(nodes),
       material_(mat.number),
       length_((x2 - x1).norm()),
-      c_(0),
-      s_(0),
       EA_(mat.EA()),
       GA_(mat.GA()),
       rhoA_(mat.rhoA()),
@@ -51,16 +48,14 @@ InelasticFrame::InelasticFrame(const MaterialSet& mat, const std::array<int, 2>&
   if (!(length_ > 0)) throw std::invalid_argument("frame element with coincident nodes");
   if (!(EA_ > 0) || !(GA_ > 0))
     throw std::invalid_argument("frame element needs positive EA and GA");
-  c_ = (x2.x() - x1.x()) / length_;
-  s_ = (x2.y() - x1.y()) / length_;
-
+  const double c = (x2.x() - x1.x()) / length_, s = (x2.y() - x1.y()) / length_;
   rotation_.setZero();
   for (int n = 0; n < 2; ++n) {
     const int o = kNodeDofs * n;
-    rotation_(o, o) = c_;
-    rotation_(o, o + 1) = s_;
-    rotation_(o + 1, o) = -s_;
-    rotation_(o + 1, o + 1) = c_;
+    rotation_(o, o) = c;
+    rotation_(o, o + 1) = s;
+    rotation_(o + 1, o) = -s;
+    rotation_(o + 1, o + 1) = c;
     rotation_(o + 2, o + 2) = 1;
   }
 

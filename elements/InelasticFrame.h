@@ -20,7 +20,16 @@
 // the solver happens to activate the hinge.
 //
 // The hinge never activates by itself: the solver asks hingeDemand() and calls
-// activateHinge() on one element at a time.
+// activateHinge() on one element at a time. Activate at a state where the demand
+// is 1 (cut the step back to it): the other elements are then on their yield
+// surface and unload elastically, while an activation in a state where they have
+// hardened past Mu leaves Newton's method between two sets of branches.
+//
+// The element is always a Timoshenko beam (SHEAr OFF is not honoured here: the
+// one-point element is free of shear locking). Dynamics as in LinearFrame:
+// residual f_int + M a_eff, consistent (linear) or lumped mass; under the
+// mid-point scheme the resultants are weighted between the committed and the
+// trial state with (1/2 - alpha, 1/2 + alpha).
 #include <array>
 #include <optional>
 
@@ -81,7 +90,6 @@ class InelasticFrame final : public Element, public HingeCarrier {
   std::array<int, 2> nodes_;
   int material_;
   double length_;
-  double c_, s_;  // direction cosines of the element axis
   double EA_, GA_;
   double rhoA_;  // mass per unit length
   BilinearHardening bending_;

@@ -119,11 +119,11 @@ Flow ProblemRun::retryWithCut(const Macro& loop, const std::string& why) {
       << ", dt = " << fmt("%.4e", s.dt) << ")";
   log_ << "  *** " << msg.str() << "\n" << historyText();
   if (!cutting_)
-    throw AnalysisError(loop.record.loc.str() + ": error: " + msg.str() + "\n" + historyText());
+    throw AnalysisError(loop.record.fieldLoc(0).str() + ": error: " + msg.str() + "\n" + historyText());
   for (;;) {
     const double dt = 0.5 * analysis_->state().dt;
     if (dt < dtMin_)
-      throw AnalysisError(loop.record.loc.str() + ": error: " + msg.str() +
+      throw AnalysisError(loop.record.fieldLoc(0).str() + ": error: " + msg.str() +
                           "; step cutting gave up at the minimum step " + fmt("%.4e", dtMin_) +
                           "\n" + historyText());
     ++cuts_;
@@ -132,7 +132,7 @@ Flow ProblemRun::retryWithCut(const Macro& loop, const std::string& why) {
     analysis_->setDt(dt);
     log_ << "  cut    step to dt = " << fmt("%.4e", dt) << "\n";
     const Status st = analysis_->advance();
-    if (!st) throw AnalysisError(loop.record.loc.str() + ": error: " + st.why);
+    if (!st) throw AnalysisError(loop.record.fieldLoc(0).str() + ": error: " + st.why);
     const int n = loop.has(0) ? loop.numbers[0].evalInt(params_, "loop count") : 1;
     diverged_ = false;
     for (int i = 0; i < n; ++i) {
@@ -146,7 +146,7 @@ Flow ProblemRun::retryWithCut(const Macro& loop, const std::string& why) {
 
 void ProblemRun::fail(const Macro& m, const std::string& what) const {
   const State& s = analysis_->state();
-  throw AnalysisError(m.record.loc.str() + ": error: " + m.record.text(0) + " in step " +
+  throw AnalysisError(m.record.fieldLoc(0).str() + ": error: " + m.record.text(0) + " in step " +
                       std::to_string(s.step + 1) + " (t = " + fmt("%.6e", s.t) + "): " + what);
 }
 

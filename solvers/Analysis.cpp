@@ -219,7 +219,11 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
   dirty_ = true;
   ++totalIterations_;
 
-  info.converged = energy0_ == 0 || info.energy <= tol_ * energy0_;
+  // FEAP's energy test, and a residual already at round-off level (a step that
+  // changes nothing has no meaningful first energy to compare with).
+  const double roundoff = 1e-12 * assembler_.forceScale();
+  info.converged = energy0_ == 0 || info.energy <= tol_ * energy0_ ||
+                   (!path_ && R_.size() > 0 && R_.cwiseAbs().maxCoeff() <= roundoff);
   if (info.converged) {
     const int h = activateCriticalHinge();
     if (h >= 0) {

@@ -232,7 +232,7 @@ TEST(CommandSpecRegistry, FourCharacterKeysAreUnique) {
   r.add(spec("COORdinates"));
   EXPECT_THROW(r.add(spec("COORx")), std::logic_error);
   EXPECT_THROW(r.add(spec("coordinate")), std::logic_error);
-  CommandSpec aliasspec("PARAmeter");
+  CommandSpec alias = spec("PARAmeter");
   alias.aliases = {"CONStant"};
   r.add(alias);
   EXPECT_THROW(r.add(spec("CONSistent")), std::logic_error);
