@@ -79,10 +79,10 @@ void Assembler::gather(const Element& e, const State& s, ElementKinematics& kin)
   }
 }
 
-Status Assembler::assemble(const State& s, const StepRule& rule, double loadFactor,
-                           bool wantTangent) {
+Status Assembler::assemble(const State& s, const StepRule& rule,
+                           const Eigen::VectorXd& loadFactors, bool wantTangent) {
   refresh();
-  r_ = -loadFactor * fRef_ - fGrav_;
+  r_ = -loadFactors.cwiseProduct(fRef_) - fGrav_;
   forceScale_ = r_.size() ? r_.cwiseAbs().maxCoeff() : 0.0;
   if (wantTangent) std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
 

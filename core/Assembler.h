@@ -3,8 +3,9 @@
 //
 // The residual per node dof is r = f_int + M a_eff - f_ext - f_contact. At a free
 // dof it must vanish; at a restrained dof it is the reaction. f_ext is
-// lambda*FORCe plus self-weight, with lambda the load factor of the step rule's
-// load point (t_n+1, or the mid-point for the mid-point scheme).
+// lambda*FORCe plus self-weight, with lambda per dof the factor of its
+// proportional load table at the step rule's load point (t_n+1, or the mid-point
+// for the mid-point scheme).
 //
 // The sparsity pattern and the scatter positions of every element are computed
 // once per topology version; assemble() allocates nothing.
@@ -28,8 +29,10 @@ class Assembler {
   const DofMap& dofs() const { return dofs_; }
   int patternVersion() const { return patternVersion_; }
 
-  // Evaluates every element and the ground contact. loadFactor multiplies FORCe.
-  Status assemble(const State& s, const StepRule& rule, double loadFactor, bool wantTangent);
+  // Evaluates every element and the ground contact. loadFactors (per node dof)
+  // multiply FORCe.
+  Status assemble(const State& s, const StepRule& rule, const Eigen::VectorXd& loadFactors,
+                  bool wantTangent);
 
   const SparseMatrix& tangent() const { return K_; }
   // Largest element force of the last assembly: the scale of round-off in the residual.

@@ -10,6 +10,7 @@ void Model::resizeNodes(int n) {
   coords_.resize(n, Vec2::Zero());
   defined_.resize(n, 0);
   bound_.resize(n, {0, 0, 0});
+  table_.resize(n, {0, 0, 0});
   force_.resize(n, {0, 0, 0});
   disp_.resize(n, {0, 0, 0});
 }

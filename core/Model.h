@@ -51,6 +51,10 @@ class Model {
   const std::array<double, kNodeDofs>& force(int node) const { return force_[node]; }
   std::array<double, kNodeDofs>& disp(int node) { return disp_[node]; }
   const std::array<double, kNodeDofs>& disp(int node) const { return disp_[node]; }
+  // Proportional load table of each dof's FORCe/DISPlacement value (FPROportional;
+  // 0: table 1).
+  std::array<int, kNodeDofs>& loadTable(int node) { return table_[node]; }
+  const std::array<int, kNodeDofs>& loadTable(int node) const { return table_[node]; }
 
   // --- materials and elements ---
   std::map<int, MaterialSet>& materials() { return materials_; }
@@ -82,7 +86,7 @@ class Model {
  private:
   std::vector<Vec2> coords_;
   std::vector<char> defined_;
-  std::vector<std::array<int, kNodeDofs>> bound_;
+  std::vector<std::array<int, kNodeDofs>> bound_, table_;
   std::vector<std::array<double, kNodeDofs>> force_, disp_;
   std::map<int, MaterialSet> materials_;
   std::vector<std::unique_ptr<Element>> elements_;

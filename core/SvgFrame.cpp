@@ -52,7 +52,7 @@ Vec2 unit(const Vec2& v, const Vec2& fallback) {
   return n > 0 ? Vec2(v / n) : fallback;
 }
 
-// Pixel-space drawing helpers: P is a point in px (y down).
+// Collects "M a L b" segments of one path; points are in px (y down).
 struct Pen {
   std::ostringstream& o;
   void line(const Vec2& a, const Vec2& b) {

@@ -81,7 +81,7 @@ Vec3 ReissnerFrame::strains(const ElemVec& d) const {
 }
 
 double ReissnerFrame::energy(const ElemVec& d) const {
-  const Vec3 e = strains(d);
+  const Vec3 e = strains(d) - e0_;
   return 0.5 * length_ * (ea_ * e(0) * e(0) + ga_ * e(1) * e(1) + ei_ * e(2) * e(2));
 }
 
@@ -92,8 +92,8 @@ void ReissnerFrame::staticForce(const ElemVec& d, bool wantTangent, ElemVec& f,
   const Vec2 g = (x2_ + d.segment<2>(3) - x1_ - d.segment<2>(0)) / l;
   const Mat2 lam = rot(beta0_ + 0.5 * (d(2) + d(5)));
   const Vec2 h = lam.transpose() * g;  // Lambda^T phi'
-  const Vec2 n(ea_ * (h.x() - 1), ga_ * h.y());
-  const double m = ei_ * (d(5) - d(2)) / l;
+  const Vec2 n(ea_ * (h.x() - 1 - e0_(0)), ga_ * (h.y() - e0_(1)));
+  const double m = ei_ * ((d(5) - d(2)) / l - e0_(2));
 
   // dE/dd: dh/dphi' = Lambda^T, dh/dpsi = -W h, dpsi/dtheta_a = 1/2.
   Mat26 b = Mat26::Zero();
@@ -141,7 +141,7 @@ void ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double al
   const double cx = std::cos(x), sx = std::sin(x), sc = sinc(x);
 
   const Vec3 e1 = strains(d), e0 = strains(dn);
-  const Vec3 eAlg = (0.5 + alpha) * e1 + (0.5 - alpha) * e0;
+  const Vec3 eAlg = (0.5 + alpha) * e1 + (0.5 - alpha) * e0 - e0_;
   const Vec2 n(ea_ * eAlg(0), ga_ * eAlg(1));
   const double m = ei_ * eAlg(2);
 
@@ -198,7 +198,7 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
   if (!residual.allFinite() || (wantTangent && !tangent.allFinite()))
     return Status::failure("frame-reissner element: non-finite residual or tangent");
 
-  const Vec3 e = strains(kin.d);
+  const Vec3 e = strains(kin.d) - e0_;
   trial_.energy = 0.5 * length_ * (ea_ * e(0) * e(0) + ga_ * e(1) * e(1) + ei_ * e(2) * e(2));
   trial_.forces = {ea_ * e(0), ga_ * e(1), ei_ * e(2)};
   return Status::success();

@@ -15,6 +15,12 @@
 // one: resultants from C((1/2+alpha) E_{n+1} + (1/2-alpha) E_n) and a strain
 // operator B_alg with B_alg (d_{n+1} - d_n) = E_{n+1} - E_n exactly, so that
 // (d_{n+1} - d_n).f_int = W_{n+1} - W_n + alpha l dE.C.dE.
+//
+// An initial strain E0 = (Sigma0, Gamma0, K0) shifts the constitutive law:
+// resultants C (E - E0), energy W = l/2 (E - E0).C.(E - E0). Under the mid-point
+// scheme both E_n and E_{n+1} are shifted, so dE and the identity above are
+// unchanged. It carries the section forces of a failure-phase element over to
+// the collapse phase without releasing its plastic deformation.
 #include <array>
 #include <string>
 
@@ -50,9 +56,15 @@ class ReissnerFrame final : public Element {
 
   double length() const { return length_; }
   double referenceAngle() const { return beta0_; }
-  // Material strains (Sigma, Gamma, K) at the midpoint for nodal displacements d.
+  // Initial strain (axial, shear, curvature); zero unless set.
+  void setInitialStrain(const Vec3& e0) { e0_ = e0; }
+  const Vec3& initialStrain() const { return e0_; }
+  // Section stiffness diagonal (EA, GA, EI).
+  Vec3 sectionStiffness() const { return {ea_, ga_, ei_}; }
+  // Total material strains (Sigma, Gamma, K) at the midpoint for nodal
+  // displacements d (the initial strain is not subtracted).
   Vec3 strains(const ElemVec& d) const;
-  // Stored energy W(d).
+  // Stored energy W(d) = l/2 (E(d) - E0).C.(E(d) - E0).
   double energy(const ElemVec& d) const;
 
  private:
@@ -71,6 +83,7 @@ class ReissnerFrame final : public Element {
   double length_ = 0;
   double beta0_ = 0;
   double ea_ = 0, ga_ = 0, ei_ = 0, rhoA_ = 0;
+  Vec3 e0_ = Vec3::Zero();
   ElemMat mass_;  // global frame
   Report trial_, committed_;
 };

@@ -232,9 +232,11 @@ void ProblemRun::setIntegrator(const TimeIntegrator& ti) {
 
 void ProblemRun::setProportionalLoad(const Macro& m) {
   const Record& first = m.data.front();
+  const int table =
+      m.has(0) && !m.record.text(2).empty() ? m.numbers[0].evalInt(params_, "table number") : 1;
   if (first.blank()) {
-    analysis_->setLoadFunction(ProportionalLoad::ramp());
-    log_ << "  PROP   ramp p = t\n";
+    analysis_->setLoadFunction(table, ProportionalLoad::ramp());
+    log_ << "  PROP   table " << table << ": ramp p = t\n";
     return;
   }
   auto value = [&](const Record& r, std::size_t i) {
@@ -245,17 +247,17 @@ void ProblemRun::setProportionalLoad(const Macro& m) {
     std::array<double, 5> a{};
     for (int i = 0; i < 5; ++i) a[i] = value(first, 4 + i);
     const int k = static_cast<int>(value(first, 1));
-    analysis_->setLoadFunction(ProportionalLoad::formula(k == 0 ? 1 : k, value(first, 2),
+    analysis_->setLoadFunction(table, ProportionalLoad::formula(k == 0 ? 1 : k, value(first, 2),
                                                          value(first, 3), a));
-    log_ << "  PROP   type 1\n";
+    log_ << "  PROP   table " << table << ": type 1\n";
     return;
   }
   std::vector<std::pair<double, double>> pts;
   for (std::size_t r = 1; r < m.data.size(); ++r)
     for (std::size_t i = 0; i + 1 < m.data[r].size(); i += 2)
       pts.emplace_back(value(m.data[r], i), value(m.data[r], i + 1));
-  analysis_->setLoadFunction(ProportionalLoad::table(std::move(pts)));
-  log_ << "  PROP   type 2 table\n";
+  analysis_->setLoadFunction(table, ProportionalLoad::table(std::move(pts)));
+  log_ << "  PROP   table " << table << ": type 2\n";
 }
 
 void ProblemRun::setPathFollowing(const Macro& m) {

@@ -8,7 +8,6 @@ namespace c2d {
 
 Analysis::Analysis(Model& model) : model_(model), assembler_(model) {
   setLinearSolver("auto");
-  prop_ = [](double) { return 1.0; };
   state_.prop = state_.propn = 1.0;  // FEAP: loads at full value until a PROP table is given
   topologyChanged();
 }
@@ -22,9 +21,37 @@ bool Analysis::setLinearSolver(const std::string& name) {
   return true;
 }
 
-void Analysis::setLoadFunction(std::function<double(double)> f) {
-  prop_ = std::move(f);
-  state_.prop = prop_(state_.t);
+void Analysis::setLoadFunction(int table, std::function<double(double)> f) {
+  if (table < 1) table = 1;
+  if (static_cast<int>(tables_.size()) <= table) tables_.resize(table + 1);
+  tables_[table] = std::move(f);
+  state_.prop = tableFactor(1, state_.t);
+}
+
+double Analysis::tableFactor(int table, double time) const {
+  if (table < 1) table = 1;
+  if (table < static_cast<int>(tables_.size()) && tables_[table]) return tables_[table](time);
+  return 1.0;
+}
+
+void Analysis::dofFactors(double time, double arc, Eigen::VectorXd& out) const {
+  constexpr int kCached = 16;
+  double values[kCached];
+  const int nt = std::min<int>(kCached, std::max<int>(2, static_cast<int>(tables_.size())));
+  for (int k = 0; k < nt; ++k) values[k] = arc * tableFactor(k, time);
+  out.resize(static_cast<Eigen::Index>(tableOf_.size()));
+  for (size_t i = 0; i < tableOf_.size(); ++i)
+    out[static_cast<Eigen::Index>(i)] =
+        tableOf_[i] < nt ? values[tableOf_[i]] : arc * tableFactor(tableOf_[i], time);
+}
+
+const Eigen::VectorXd& Analysis::stepLoadFactors(const StepRule& rule) {
+  dofFactors(state_.t, path_ ? state_.arcLambda : 1.0, lam_);
+  if (rule.scheme == Scheme::MidPoint) {
+    dofFactors(state_.tn, path_ ? state_.arcLambdan : 1.0, lamn_);
+    lam_ = 0.5 * (lam_ + lamn_);
+  }
+  return lam_;
 }
 
 void Analysis::setPathFollowing(std::optional<PathFollowing> p) {
@@ -47,6 +74,10 @@ void Analysis::topologyChanged() {
   rNodal_.setZero(nd);
   rRest_n_.setZero(nd);
   analyzedVersion_ = -1;
+  tableOf_.assign(static_cast<size_t>(nd), 1);
+  for (int n = 0; n < model_.numNodes(); ++n)
+    for (int d = 0; d < kNodeDofs; ++d)
+      tableOf_[static_cast<size_t>(n) * kNodeDofs + d] = std::max(1, model_.loadTable(n)[d]);
   collectHingeCarriers();
 }
 
@@ -59,19 +90,15 @@ void Analysis::collectHingeCarriers() {
 
 double Analysis::loadFactor() const { return state_.prop * (path_ ? state_.arcLambda : 1.0); }
 
-double Analysis::stepLoadFactor(const StepRule& rule) const {
-  const double now = loadFactor();
-  if (rule.scheme != Scheme::MidPoint) return now;
-  const double before = state_.propn * (path_ ? state_.arcLambdan : 1.0);
-  return 0.5 * (now + before);
-}
-
 void Analysis::applyPrescribed() {
   const DofMap& dofs = assembler_.dofs();
+  dofFactors(state_.t, 1.0, lamn_);
   for (int n = 0; n < model_.numNodes(); ++n) {
     if (!dofs.used(n)) continue;
-    for (int d = 0; d < kNodeDofs; ++d)
-      if (dofs.restrained(n, d)) state_.u[n * kNodeDofs + d] = state_.prop * model_.disp(n)[d];
+    for (int d = 0; d < kNodeDofs; ++d) {
+      const int i = n * kNodeDofs + d;
+      if (dofs.restrained(n, d)) state_.u[i] = lamn_[i] * model_.disp(n)[d];
+    }
   }
 }
 
@@ -90,7 +117,7 @@ Status Analysis::advance() {
   Status st = commit();
   if (!st) return st;
   state_.t = state_.tn + state_.dt;
-  state_.prop = prop_(state_.t);
+  state_.prop = tableFactor(1, state_.t);
   applyPrescribed();
   updateRates();
   history_.clear();
@@ -108,7 +135,7 @@ Status Analysis::assembleAndFactor(bool symmetric) {
       R_.size() != assembler_.dofs().numEquations())
     topologyChanged();
   const StepRule rule = integrator_.rule(state_.dt);
-  Status st = assembler_.assemble(state_, rule, stepLoadFactor(rule), true);
+  Status st = assembler_.assemble(state_, rule, stepLoadFactors(rule), true);
   if (!st) return st;
   assembler_.toEquations(assembler_.nodalResidual(), R_);
   R_ = -R_;
@@ -164,9 +191,10 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
   st = solver_->solve(R_, du_);
   if (!st) return Status::failure("linear solve failed: " + st.why);
   if (path_) {
-    assembler_.toEquations(assembler_.referenceLoad(), F_);
     const StepRule rule = integrator_.rule(state_.dt);
-    F_ *= state_.prop * rule.loadWeight();
+    dofFactors(state_.t, rule.loadWeight(), lamn_);
+    lamn_ = lamn_.cwiseProduct(assembler_.referenceLoad());
+    assembler_.toEquations(lamn_, F_);
     st = solver_->solve(F_, duF_);
     if (!st) return Status::failure("linear solve failed: " + st.why);
     double dlambda = 0;
@@ -190,7 +218,7 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
     const double g0 = du_.dot(R_);
     auto g = [&](double step, double& out) -> Status {
       applyIncrement(du_, step);
-      Status s2 = assembler_.assemble(state_, rule, stepLoadFactor(rule), false);
+      Status s2 = assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
       Eigen::VectorXd& Rt = duF_;  // reuse work vector
       assembler_.toEquations(assembler_.nodalResidual(), Rt);
       out = -du_.dot(Rt);
@@ -239,7 +267,7 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
 Status Analysis::formResidual(double& norm) {
   if (assembler_.patternVersion() != model_.topologyVersion()) topologyChanged();
   const StepRule rule = integrator_.rule(state_.dt);
-  Status st = assembler_.assemble(state_, rule, stepLoadFactor(rule), false);
+  Status st = assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
   if (!st) return st;
   assembler_.toEquations(assembler_.nodalResidual(), R_);
   R_ = -R_;
@@ -281,20 +309,21 @@ Status Analysis::commit() {
   if (!dirty_) return Status::success();
   if (assembler_.patternVersion() != model_.topologyVersion()) topologyChanged();
   const StepRule rule = integrator_.rule(state_.dt);
-  const double lam = stepLoadFactor(rule);
-  Status st = assembler_.assemble(state_, rule, lam, false);
+  Status st = assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
   if (!st) return st;
+  // Loads at the step's load point: the mid-point's, or the trapezoidal mean.
+  if (rule.scheme != Scheme::MidPoint) {
+    dofFactors(state_.tn, path_ ? state_.arcLambdan : 1.0, lamn_);
+    lam_ = 0.5 * (lam_ + lamn_);
+  }
   // External work of the step: loads at the step's load point, reactions on the
   // prescribed dofs (mid-point: the algorithmic ones; otherwise the trapezoidal rule).
   const Eigen::VectorXd& r = assembler_.nodalResidual();
   const DofMap& dofs = assembler_.dofs();
-  const double lamLoads = rule.scheme == Scheme::MidPoint
-                              ? lam
-                              : 0.5 * (lam + state_.propn * (path_ ? state_.arcLambdan : 1.0));
   double work = 0;
   for (Eigen::Index i = 0; i < r.size(); ++i) {
     const double du = state_.u[i] - state_.un[i];
-    work += du * (lamLoads * assembler_.referenceLoad()[i] + assembler_.gravityLoad()[i]);
+    work += du * (lam_[i] * assembler_.referenceLoad()[i] + assembler_.gravityLoad()[i]);
     const int n = static_cast<int>(i / kNodeDofs), d = static_cast<int>(i % kNodeDofs);
     if (dofs.used(n) && dofs.restrained(n, d)) {
       const double rr = rule.scheme == Scheme::MidPoint ? r[i] : 0.5 * (r[i] + rRest_n_[i]);
@@ -314,7 +343,7 @@ Status Analysis::commit() {
 Status Analysis::reactions(Eigen::VectorXd& r) {
   if (assembler_.patternVersion() != model_.topologyVersion()) topologyChanged();
   const StepRule rule = integrator_.rule(state_.dt);
-  Status st = assembler_.assemble(state_, rule, stepLoadFactor(rule), false);
+  Status st = assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
   if (!st) return st;
   r = assembler_.nodalResidual();
   return Status::success();

@@ -53,8 +53,9 @@ class Analysis {
   void setTolerance(double tol) { tol_ = tol; }
   double tolerance() const { return tol_; }
   void setDt(double dt) { state_.dt = dt; }
-  // Proportional load factor as a function of time (FEAP: 1 when no PROP is given).
-  void setLoadFunction(std::function<double(double)> f);
+  // Proportional load table `table` (PROP,,n) as a function of time; dofs follow
+  // table 1 unless FPROportional says otherwise; a table never given is 1 (FEAP).
+  void setLoadFunction(int table, std::function<double(double)> f);
   void setPathFollowing(std::optional<PathFollowing> p);
   PathFollowing* pathFollowing() { return path_ ? &*path_ : nullptr; }
 
@@ -74,7 +75,8 @@ class Analysis {
   // Reactions (residual at the current state, every node dof).
   Status reactions(Eigen::VectorXd& r);
   Energy energy();
-  double loadFactor() const;  // multiplier of FORCe at t_n+1
+  double loadFactor() const;  // multiplier of table-1 FORCe at t_n+1 (with the arc-length factor)
+  double tableFactor(int table, double time) const;
   const std::vector<IterationInfo>& stepHistory() const { return history_; }
   int totalIterations() const { return totalIterations_; }
   bool stepConverged() const { return converged_; }
@@ -96,7 +98,10 @@ class Analysis {
   Status assembleAndFactor(bool symmetric);
   void applyIncrement(const Eigen::VectorXd& du, double scale);
   int activateCriticalHinge();
-  double stepLoadFactor(const StepRule& rule) const;
+  // Per node dof: the factor of its load table at `time` (times the arc-length factor).
+  void dofFactors(double time, double arc, Eigen::VectorXd& out) const;
+  // Factors at the step rule's load point (t_n+1, or the mid-point).
+  const Eigen::VectorXd& stepLoadFactors(const StepRule& rule);
   void collectHingeCarriers();
 
   Model& model_;
@@ -107,7 +112,9 @@ class Analysis {
   int analyzedVersion_ = -1;
   bool analyzedSymmetric_ = true;
   TimeIntegrator integrator_;
-  std::function<double(double)> prop_;
+  std::vector<std::function<double(double)>> tables_;  // index: table number
+  std::vector<int> tableOf_;                            // per node dof
+  Eigen::VectorXd lam_, lamn_;                          // work vectors of dofFactors
   std::optional<PathFollowing> path_;
   double tol_ = 1e-16;
 

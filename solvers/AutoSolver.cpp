@@ -23,26 +23,25 @@ Status AutoSolver::analyze(const SparseMatrix& A, bool symmetric) {
   return Status::success();
 }
 
-Status AutoSolver::switchToLu(const SparseMatrix& A) {
-  fellBack_ = true;
+Status AutoSolver::factorizeLu(const SparseMatrix& A) {
   if (!luAnalyzed_) {
-    if (Status s = lu_->analyze(A, true); !s) return s;
+    if (Status s = lu_->analyze(A, symmetric_); !s) return s;
     luAnalyzed_ = true;
   }
-  return Status::success();
+  return lu_->factorize(A);
 }
 
 Status AutoSolver::factorize(const SparseMatrix& A) {
   if (!analyzed_) return Status::failure("auto: factorize() before analyze()");
   if (symmetric_ && !fellBack_) {
-    Status s = cholesky_->factorize(A);
+    const Status s = cholesky_->factorize(A);
     // Bad input (pattern, NaN) would fail the LU too: only a failed Cholesky falls back.
     if (s || !cholesky_->notPositiveDefinite()) return s;
-    if (Status t = switchToLu(A); !t) return Status::failure(s.why + "; " + t.why);
-    if (Status t = lu_->factorize(A); !t) return Status::failure(s.why + "; " + t.why);
+    fellBack_ = true;
+    if (Status t = factorizeLu(A); !t) return Status::failure(s.why + "; " + t.why);
     return Status::success();
   }
-  return lu_->factorize(A);
+  return factorizeLu(A);
 }
 
 Status AutoSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {

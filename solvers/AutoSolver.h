@@ -32,7 +32,9 @@ class AutoSolver final : public LinearSolver {
   bool fellBack() const { return fellBack_; }
 
  private:
-  Status switchToLu(const SparseMatrix& A);
+  // UMFPACK's factorization, with its symbolic analysis first if this
+  // pattern has not had one yet.
+  Status factorizeLu(const SparseMatrix& A);
 
   std::unique_ptr<CholmodSolver> cholesky_;
   std::unique_ptr<UmfpackSolver> lu_;

@@ -124,7 +124,7 @@ TEST(SvgChart, WellFormedStandaloneSvgWithOnePathPerSeries) {
 
 TEST(SvgChart, SeriesDifferInDashAsWellAsColor) {
   SvgChart c;
-  for (int s = 0; s < 6; ++s) c.addSeries("s" + std::to_string(s), {{0, 0}, {1, 1.0 + s}});
+  for (int s = 0; s < 6; ++s) c.addSeries(std::string(1, static_cast<char>('a' + s)), {{0, 0}, {1, 1.0 + s}});
   const XmlNode root = XmlReader::parse(c.svg());
   std::set<std::string> dashes, colors;
   for (const XmlNode* p : root.all("path", "series")) {

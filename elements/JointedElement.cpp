@@ -1,0 +1,121 @@
+#include "elements/JointedElement.h"
+
+#include <cassert>
+#include <cmath>
+#include <sstream>
+
+namespace c2d {
+
+namespace {
+
+// The local Newton iteration stops when the update is at round-off level
+// relative to |psi_r| (radians, unbounded: many turns are fine), or when it
+// stops decreasing once it is already tiny (the residual is then at round-off).
+constexpr int kMaxLocalIterations = 30;
+constexpr double kRoundoffStep = 1e-14;
+constexpr double kStagnationStep = 1e-9;
+
+}  // namespace
+
+JointedElement::JointedElement(std::unique_ptr<Element> inner, int slaveEnd, int master)
+    : inner_(std::move(inner)), slaveEnd_(slaveEnd) {
+  assert(inner_ && (slaveEnd == 0 || slaveEnd == 1));
+  nodes_ = inner_->nodes();
+  slave_ = nodes_[slaveEnd_];
+  nodes_[slaveEnd_] = master;
+}
+
+ElementKinematics JointedElement::innerKinematics(const ElementKinematics& outer,
+                                                  double psi) const {
+  ElementKinematics in = outer;
+  const int k = dof();
+  in.d(k) += psi;
+  in.dn(k) += committed_.psi;
+  in.vn(k) += committed_.vel;
+  in.an(k) += committed_.acc;
+  return in;
+}
+
+Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& rule,
+                                bool wantTangent, ElemVec& residual, ElemMat& tangent) {
+  const int k = dof();
+  double psi = trial_.psi;
+  ElementKinematics in = innerKinematics(kin, psi);
+  ElemMat kin6;
+  double previousStep = HUGE_VAL;
+  bool converged = false;
+  for (int it = 0; it < kMaxLocalIterations; ++it) {
+    in.d(k) = kin.d(k) + psi;
+    if (Status st = inner_->evaluate(in, rule, true, residual, kin6); !st) return st;
+    const double krr = kin6(k, k);
+    if (!(krr > 0)) {
+      std::ostringstream msg;
+      msg << "joint at node " << slave_ + 1 << ": relative rotation stiffness " << krr
+          << " is not positive";
+      return Status::failure(msg.str());
+    }
+    const double step = -residual(k) / krr;
+    const double scale = 1.0 + std::abs(psi);
+    if (std::abs(step) <= kRoundoffStep * scale ||
+        (std::abs(step) >= previousStep && std::abs(step) <= kStagnationStep * scale)) {
+      converged = true;
+      break;
+    }
+    previousStep = std::abs(step);
+    psi += step;
+  }
+  if (!converged) {
+    std::ostringstream msg;
+    msg << "joint at node " << slave_ + 1 << ": relative rotation did not converge in "
+        << kMaxLocalIterations << " iterations (moment " << residual(k) << ")";
+    return Status::failure(msg.str());
+  }
+
+  trial_.psi = psi;
+  const double dpsi = psi - committed_.psi;
+  trial_.vel = rule.velocity(dpsi, committed_.vel, committed_.acc);
+  trial_.acc = rule.acceleration(dpsi, committed_.vel, committed_.acc);
+  slaveRotation_ = in.d(k);
+
+  if (wantTangent) {
+    // psi_r(d) from r_k(d + psi_r e_k) = 0: dpsi_r/dd = -K_k./K_kk.
+    const double krr = kin6(k, k);
+    tangent = kin6 - kin6.col(k) * kin6.row(k) / krr;
+  }
+  return Status::success();
+}
+
+ElemVec JointedElement::bodyLoad(const Vec2& g) const {
+  ElemVec f = inner_->bodyLoad(g);
+  f(dof()) = 0;
+  return f;
+}
+
+void JointedElement::commit() {
+  inner_->commit();
+  committed_ = trial_;
+}
+
+void JointedElement::revert() {
+  inner_->revert();
+  trial_ = committed_;
+}
+
+double JointedElement::kineticEnergy(const ElemVec& v) const {
+  ElemVec vin = v;
+  vin(dof()) += trial_.vel;
+  return inner_->kineticEnergy(vin);
+}
+
+void JointedElement::setRelativeState(double psi, double vel, double acc) {
+  trial_ = committed_ = Relative{psi, vel, acc};
+}
+
+std::unique_ptr<Element> JointedElement::release() {
+  std::array<int, 2> n = nodes_;
+  n[slaveEnd_] = slave_;
+  inner_->setNodes(n);
+  return std::move(inner_);
+}
+
+}  // namespace c2d

@@ -1,0 +1,106 @@
+#pragma once
+// An element attached to the slave node of a revolute joint (paper eqs 39-43,
+// 55, 66-68), by the master-slave relative-motion approach: the slave node
+// shares the master's position and rotates by psi_s = psi_m + psi_r, with the
+// relative rotation psi_r an unknown of this element alone.
+//
+// The decorator reports the MASTER node at the slave end, so the global system
+// never sees the slave. Inside, the wrapped element sees at that end the
+// master's translations and the rotation psi_m + psi_r. Because the joint
+// transmits no moment, psi_r solves the local equation
+//   r_k(d + psi_r e_k) = 0,   k = the wrapped element's rotation dof at the slave end,
+// by a local Newton iteration to round-off, and is condensed statically:
+//   K = K_oo - K_or K_rr^-1 K_ro   (eq 68; K_rr = dr_k/dpsi_r).
+// The condensed tangent is the exact derivative of the returned residual (row k
+// and column k of K are the wrapped element's, minus their projection; row k
+// vanishes: the element puts no moment on the master's rotation).
+//
+// psi_r has its own velocity and inertia acceleration history, advanced with
+// the step rule's affine formulas exactly like a nodal dof; the wrapped element
+// gets the sum (master + relative) for the slave rotation's d, d_n, v_n, a_n, so
+// its inertia and the mid-point algorithmic forces act on the true slave motion.
+// Hence the element works unchanged under Static, Newmark and MidPoint rules,
+// and the energy identities of the wrapped element hold for the jointed one.
+#include <array>
+#include <memory>
+#include <string>
+
+#include "core/Element.h"
+
+namespace c2d {
+
+class JointedElement final : public Element {
+ public:
+  // inner: the element as built on its own nodes (its node at slaveEnd is the
+  // slave); master: the joint's master node, which replaces the slave in nodes().
+  JointedElement(std::unique_ptr<Element> inner, int slaveEnd, int master);
+
+  // Outer nodes: the wrapped element's, with the master at slaveEnd.
+  std::array<int, 2> nodes() const override { return nodes_; }
+  // Sets the outer nodes (the node at slaveEnd must be the master).
+  void setNodes(const std::array<int, 2>& n) override { nodes_ = n; }
+  int materialNumber() const override { return inner_->materialNumber(); }
+  std::string typeName() const override { return inner_->typeName() + "+joint"; }
+
+  Status evaluate(const ElementKinematics& kin, const StepRule& rule, bool wantTangent,
+                  ElemVec& residual, ElemMat& tangent) override;
+
+  // The wrapped element's mass, for reporting (the slave rotation's inertia
+  // appears on the master's rotation; the dynamics use the true slave motion).
+  ElemMat mass() const override { return inner_->mass(); }
+  // The wrapped element's body load without its moment at the slave end: the
+  // joint cannot pass a moment to the master (frame elements with
+  // shear deformation have none anyway).
+  ElemVec bodyLoad(const Vec2& g) const override;
+
+  void commit() override;
+  void revert() override;
+
+  double strainEnergy() const override { return inner_->strainEnergy(); }
+  // Kinetic energy with the slave rotation's velocity v_m + psi_r'.
+  double kineticEnergy(const ElemVec& v) const override;
+  SectionForces sectionForces() const override { return inner_->sectionForces(); }
+
+  // --- joint data ---
+  int slaveEnd() const { return slaveEnd_; }
+  int slaveNode() const { return slave_; }
+  int masterNode() const { return nodes_[slaveEnd_]; }
+  // Relative rotation psi_r, its velocity and inertia acceleration: trial (last
+  // evaluated) and committed values.
+  double relativeRotation() const { return trial_.psi; }
+  double relativeVelocity() const { return trial_.vel; }
+  double relativeAcceleration() const { return trial_.acc; }
+  double committedRelativeRotation() const { return committed_.psi; }
+  double committedRelativeVelocity() const { return committed_.vel; }
+  double committedRelativeAcceleration() const { return committed_.acc; }
+  // Sets psi_r and its rates in both the trial and the committed state (the
+  // start of a phase).
+  void setRelativeState(double psi, double vel = 0, double acc = 0);
+  // Rotation of the slave node, psi_m + psi_r, at the last evaluated state.
+  double slaveRotation() const { return slaveRotation_; }
+
+  Element& inner() { return *inner_; }
+  const Element& inner() const { return *inner_; }
+  // Hands the wrapped element back (its node at slaveEnd set to the slave).
+  std::unique_ptr<Element> release();
+
+  // Kinematics the wrapped element sees for the given outer kinematics and psi_r
+  // (committed psi_r history for d_n, v_n, a_n).
+  ElementKinematics innerKinematics(const ElementKinematics& outer, double psi) const;
+
+ private:
+  struct Relative {
+    double psi = 0, vel = 0, acc = 0;
+  };
+
+  int dof() const { return kNodeDofs * slaveEnd_ + 2; }
+
+  std::unique_ptr<Element> inner_;
+  int slaveEnd_;
+  int slave_;
+  std::array<int, 2> nodes_;
+  Relative trial_, committed_;
+  double slaveRotation_ = 0;
+};
+
+}  // namespace c2d
