@@ -161,9 +161,6 @@ std::string SvgFrame::svg(const Model& model, const State& state) const {
     awaySum[nd[0]] -= dir;
     awaySum[nd[1]] += dir;
   }
-  std::vector<char> rotationUnknown(numNodes, 0);
-  for (const Joint& j : model.joints())
-    if (j.form == JointForm::Condensed && validNode(j.slave)) rotationUnknown[j.slave] = 1;
   auto restrained = [&](int n) {
     const auto& b = model.bound(n);
     return b[0] != 0 || b[1] != 0 || b[2] != 0;
@@ -331,7 +328,7 @@ std::string SvgFrame::svg(const Model& model, const State& state) const {
 
   // Deformed members. World tangents map to px by flipping y.
   auto tangent = [&](const Member& m, int node) -> std::optional<Vec2> {
-    if (!curved_ || rotationUnknown[node]) return std::nullopt;
+    if (!curved_) return std::nullopt;
     const Vec2 d = model.coord(m.b) - model.coord(m.a);
     const double phi = std::atan2(d.y(), d.x()) + scale_ * stateValue(state.u, node, 2);
     if (!std::isfinite(phi)) return std::nullopt;

@@ -6,12 +6,13 @@
 // softened, the ground with hatching, a title, a scale bar and a key. One model
 // length unit is the same number of pixels in x and y.
 //
-// Node positions are the coordinates plus State::u (node dof index node*3 + dof).
+// Node positions are the coordinates plus State::u (node dof index node*3 + dof),
+// so the state must hold every node's values, the slaves of condensed joints
+// included (they are not in the global system and are filled in for output).
 // Deformed members are cubic curves that leave each node at the node's rotation
 // (Bezier control points at a third of the chord, which is the cubic Hermite
 // shape for small rotations); an element with an active hinge is kinked at the
-// hinge. Nodes whose own rotation is not a state value (slaves of condensed
-// joints) use the chord direction.
+// hinge.
 #include <filesystem>
 #include <string>
 

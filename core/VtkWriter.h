@@ -10,7 +10,8 @@
 // counterclockwise on the positive face), material, hinge_state (0 none, 1
 // active, 2 fully softened), hinge_jump (rad), hinge_position (s_d / l_e).
 // Nodal values come from the trial state (State::u, State::v), which equals the
-// committed one after a converged step.
+// committed one after a converged step; the slaves of condensed joints, which
+// are not in the global system, must have been filled in for output.
 //
 // Every file is written atomically (core/AtomicFile.h); the .pvd is rewritten
 // after each .vtu is complete, so it only ever lists complete steps.

@@ -343,6 +343,33 @@ TEST(LinearSolverAuto, FallsBackToLuAndStaysThereUntilAnalyze) {
   EXPECT_LT(relResidual(spd, x, b), 1e-12);
 }
 
+TEST(LinearSolverAuto, BadInputDoesNotFallBack) {
+  std::mt19937 rng(23);
+  SparseMatrix A = laplacian1d(12, rng);
+  AutoSolver s;
+  ASSERT_TRUE(s.analyze(A, true));
+  A.coeffRef(3, 3) = std::numeric_limits<double>::infinity();
+  const Status f = s.factorize(A);
+  EXPECT_FALSE(f);
+  EXPECT_NE(f.why.find("non-finite"), std::string::npos) << f.why;
+  EXPECT_FALSE(s.fellBack());
+  EXPECT_EQ(s.activeName(), "cholmod");
+}
+
+TEST(LinearSolverAuto, UnsymmetricGoesToLu) {
+  Triplets t{{0, 0, 2.0}, {1, 0, 1.0}, {0, 1, 3.0}, {1, 1, 4.0}};
+  const SparseMatrix A = fromTriplets(2, t);
+  AutoSolver s;
+  ASSERT_TRUE(s.analyze(A, false));
+  EXPECT_EQ(s.activeName(), "umfpack");
+  ASSERT_TRUE(s.factorize(A));
+  Eigen::VectorXd x(2);
+  ASSERT_TRUE(s.solve(Eigen::Vector2d(5.0, 5.0), x));
+  // [[2, 3], [1, 4]] x = (5, 5): x = (1, 1).
+  EXPECT_NEAR(x(0), 1.0, 1e-15);
+  EXPECT_NEAR(x(1), 1.0, 1e-15);
+}
+
 TEST(LinearSolverAuto, SingularFailsInBothAndSaysSo) {
   std::mt19937 rng(21);
   SparseMatrix A = laplacian1d(10, rng);

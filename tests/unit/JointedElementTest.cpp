@@ -1,0 +1,436 @@
+// JointedElement (the paper's condensed revolute joint, eqs 55, 66-68) and the
+// joint set-up of elements/Joints.h: tangents vs central finite differences of
+// the condensed residual for every scheme and inner element, rigid-body and
+// mechanism modes, commit/revert of the relative rotation, local failures, and
+// the equivalence of the Condensed and the Shared joint forms in whole static
+// and dynamic analyses.
+#include "elements/JointedElement.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <tuple>
+
+#include "core/Model.h"
+#include "elements/Joints.h"
+#include "elements/LinearFrame.h"
+#include "elements/ReissnerFrame.h"
+#include "solvers/Analysis.h"
+#include "solvers/TimeIntegrator.h"
+
+namespace c2d {
+namespace {
+
+enum class Inner { Reissner, Timoshenko, EulerBernoulli };
+
+MaterialSet frameMaterial(Inner kind) {
+  MaterialSet m;
+  m.number = 1;
+  m.elementType = "FRAMe";
+  m.kinematics = kind == Inner::Reissner ? Kinematics::Finite : Kinematics::Small;
+  m.shear = kind != Inner::EulerBernoulli;
+  m.E = 1.0e4;
+  m.nu = 0.25;
+  m.A = 2.0;
+  m.I = 0.05;
+  m.resEA = 2.0e4;
+  m.resGA = 8.0e3;
+  m.resEI = 1.0e2;
+  m.density = 0.5;
+  return m;
+}
+
+std::unique_ptr<Element> makeInner(Inner kind, const Vec2& x1, const Vec2& x2) {
+  const MaterialSet m = frameMaterial(kind);
+  if (kind == Inner::Reissner) return std::make_unique<ReissnerFrame>(m, std::array{3, 4}, x1, x2);
+  return std::make_unique<LinearFrame>(m, std::array{3, 4}, x1, x2);
+}
+
+StepRule ruleFor(Scheme s) {
+  switch (s) {
+    case Scheme::Static:
+      return TimeIntegrator::statics().rule(0.05);
+    case Scheme::Newmark:
+      return TimeIntegrator::newmark(0.3, 0.6).rule(0.05);
+    case Scheme::MidPoint:
+      return TimeIntegrator::midPoint(0.1, 0.05).rule(0.05);
+  }
+  return {};
+}
+
+ElemVec randomVec(std::mt19937& gen, double scale) {
+  std::uniform_real_distribution<double> u(-scale, scale);
+  ElemVec v;
+  for (int i = 0; i < kElemDofs; ++i) v(i) = u(gen);
+  return v;
+}
+
+Eigen::Matrix2d rot(double a) {
+  return (Eigen::Matrix2d() << std::cos(a), -std::sin(a), std::sin(a), std::cos(a)).finished();
+}
+
+ElemVec rigidMotion(const Vec2& x1, const Vec2& x2, double w, const Vec2& t) {
+  ElemVec d;
+  d << rot(w) * x1 + t - x1, w, rot(w) * x2 + t - x2, w;
+  return d;
+}
+
+ElemMat centralDifferences(JointedElement& e, const ElementKinematics& kin, const StepRule& rule) {
+  ElemMat fd;
+  const double h = 1e-6;
+  for (int j = 0; j < kElemDofs; ++j) {
+    ElementKinematics kp = kin, km = kin;
+    kp.d(j) += h;
+    km.d(j) -= h;
+    ElemVec rp, rm;
+    ElemMat unused;
+    EXPECT_TRUE(e.evaluate(kp, rule, false, rp, unused).ok);
+    EXPECT_TRUE(e.evaluate(km, rule, false, rm, unused).ok);
+    fd.col(j) = (rp - rm) / (2 * h);
+  }
+  return fd;
+}
+
+using TangentCase = std::tuple<Scheme, Inner, int>;
+class JointedElementTangent : public ::testing::TestWithParam<TangentCase> {};
+
+TEST_P(JointedElementTangent, CondensedTangentMatchesCentralDifferences) {
+  const auto [scheme, kind, slaveEnd] = GetParam();
+  std::mt19937 gen(17 + 3 * static_cast<int>(kind) + slaveEnd);
+  const Vec2 x1(0.3, 0.1), x2(1.5, 0.9);
+  JointedElement e(makeInner(kind, x1, x2), slaveEnd, 7);
+  EXPECT_EQ(e.slaveNode(), slaveEnd == 0 ? 3 : 4);
+  EXPECT_EQ(e.nodes()[slaveEnd], 7);
+  EXPECT_EQ(e.nodes()[1 - slaveEnd], slaveEnd == 0 ? 4 : 3);
+  e.setRelativeState(0.3, 0.5, -0.2);
+  const StepRule rule = ruleFor(scheme);
+  const double scale = kind == Inner::Reissner ? 0.15 : 0.05;
+  for (int trial = 0; trial < 3; ++trial) {
+    const ElementKinematics kin{rigidMotion(x1, x2, 0.8 * trial, Vec2(0.2, -0.1)) +
+                                    randomVec(gen, scale),
+                                rigidMotion(x1, x2, 0.8 * trial - 0.1, Vec2(0.1, 0)) +
+                                    randomVec(gen, scale),
+                                randomVec(gen, 1.0), randomVec(gen, 5.0)};
+    ElemVec r;
+    ElemMat k;
+    ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
+    const int kr = 3 * slaveEnd + 2;
+    // No moment on the master's rotation, and the local equation solved to round-off.
+    EXPECT_LT(std::abs(r(kr)), 1e-12 * r.cwiseAbs().maxCoeff());
+    EXPECT_LT(k.row(kr).cwiseAbs().maxCoeff(), 1e-12 * k.cwiseAbs().maxCoeff());
+    ElemVec rin;
+    ElemMat kin6;
+    ASSERT_TRUE(e.inner().evaluate(e.innerKinematics(kin, e.relativeRotation()), rule, true, rin,
+                                   kin6)
+                    .ok);
+    EXPECT_EQ((rin - r).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_NEAR(e.slaveRotation(), kin.d(kr) + e.relativeRotation(), 1e-15);
+
+    // Eq (68) from the wrapped element's tangent at the solution.
+    const ElemMat cond = kin6 - kin6.col(kr) * kin6.row(kr) / kin6(kr, kr);
+    EXPECT_LT((cond - k).cwiseAbs().maxCoeff(), 1e-13 * k.cwiseAbs().maxCoeff());
+
+    const ElemMat fd = centralDifferences(e, kin, rule);
+    EXPECT_LT((fd - k).cwiseAbs().maxCoeff(), 2e-7 * k.cwiseAbs().maxCoeff())
+        << "scheme " << static_cast<int>(scheme) << ", trial " << trial << "\nK =\n"
+        << k << "\nFD =\n"
+        << fd;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(JointedElement, JointedElementTangent,
+                         ::testing::Combine(::testing::Values(Scheme::Static, Scheme::Newmark,
+                                                              Scheme::MidPoint),
+                                            ::testing::Values(Inner::Reissner, Inner::Timoshenko,
+                                                              Inner::EulerBernoulli),
+                                            ::testing::Values(0, 1)));
+
+TEST(JointedElement, FiniteRigidMotionReleasesThePinnedEnd) {
+  // A stress-free element turned rigidly by a large angle: psi_r goes back to
+  // zero from any start (the pin does not care about the slave's former angle),
+  // and the residual vanishes.
+  const Vec2 x1(0.0, 0.0), x2(2.0, 0.5);
+  for (int end : {0, 1}) {
+    JointedElement e(makeInner(Inner::Reissner, x1, x2), end, 0);
+    e.setRelativeState(0.4);
+    for (double w : {0.0, 1.3, 4.0, -9.0}) {
+      const ElemVec d = rigidMotion(x1, x2, w, Vec2(1.0, -3.0));
+      ElemVec r;
+      ElemMat k;
+      ASSERT_TRUE(e.evaluate({d, d, ElemVec::Zero(), ElemVec::Zero()}, ruleFor(Scheme::Static),
+                             true, r, k)
+                      .ok);
+      EXPECT_LT(r.norm(), 1e-10) << "w = " << w;
+      EXPECT_NEAR(e.relativeRotation(), 0.0, 1e-12);
+      EXPECT_LT(e.strainEnergy(), 1e-22);
+      // The master's own rotation does not matter: the slave rotation is w.
+      ElemVec d2 = d;
+      d2(3 * end + 2) += 2.5;
+      ASSERT_TRUE(e.evaluate({d2, d2, ElemVec::Zero(), ElemVec::Zero()},
+                             ruleFor(Scheme::Static), true, r, k)
+                      .ok);
+      EXPECT_LT(r.norm(), 1e-10);
+      EXPECT_NEAR(e.relativeRotation(), -2.5, 1e-12);
+      EXPECT_NEAR(e.slaveRotation(), w, 1e-12);
+    }
+  }
+}
+
+TEST(JointedElement, NullSpaceHasRigidModesAndTheMasterRotation) {
+  const Vec2 x1(0.2, -0.1), x2(1.1, 0.7);
+  for (Inner kind : {Inner::Timoshenko, Inner::EulerBernoulli, Inner::Reissner}) {
+    JointedElement e(makeInner(kind, x1, x2), 1, 9);
+    ElemVec r;
+    ElemMat k;
+    const ElemVec zero = ElemVec::Zero();
+    ASSERT_TRUE(e.evaluate({zero, zero, zero, zero}, ruleFor(Scheme::Static), true, r, k).ok);
+    const Vec2 dx = x2 - x1;
+    ElemVec tx, ty, rz, master;
+    tx << 1, 0, 0, 1, 0, 0;
+    ty << 0, 1, 0, 0, 1, 0;
+    rz << 0, 0, 1, -dx.y(), dx.x(), 1;  // infinitesimal rotation about node 1
+    master.setZero();
+    master(5) = 1;
+    const double kmax = k.cwiseAbs().maxCoeff();
+    for (const ElemVec& mode : {tx, ty, rz, master}) EXPECT_LT((k * mode).norm(), 1e-12 * kmax);
+    // Exactly four zero modes: the remaining stiffness is positive definite.
+    Eigen::SelfAdjointEigenSolver<ElemMat> eig(0.5 * (k + k.transpose()));
+    EXPECT_GT(eig.eigenvalues()(4), 1e-6 * kmax);
+    EXPECT_LT(std::abs(eig.eigenvalues()(3)), 1e-10 * kmax);
+  }
+}
+
+TEST(JointedElement, CommitRevertAndRelativeRatesFollowTheStepRule) {
+  std::mt19937 gen(5);
+  const Vec2 x1(0.0, 0.0), x2(1.0, 0.0);
+  JointedElement e(makeInner(Inner::Reissner, x1, x2), 0, 2);
+  e.setRelativeState(0.2, 0.7, -1.5);
+  const StepRule rule = ruleFor(Scheme::Newmark);
+  const ElementKinematics a{randomVec(gen, 0.1), randomVec(gen, 0.1), randomVec(gen, 1.0),
+                            randomVec(gen, 1.0)};
+  ElementKinematics b = a;
+  b.d += randomVec(gen, 0.1);
+  ElemVec r;
+  ElemMat k;
+  ASSERT_TRUE(e.evaluate(a, rule, true, r, k).ok);
+  const double psiA = e.relativeRotation();
+  EXPECT_NEAR(e.relativeVelocity(), rule.velocity(psiA - 0.2, 0.7, -1.5), 1e-14);
+  EXPECT_NEAR(e.relativeAcceleration(), rule.acceleration(psiA - 0.2, 0.7, -1.5), 1e-12);
+  EXPECT_EQ(e.committedRelativeRotation(), 0.2);
+  const double velA = e.relativeVelocity(), accA = e.relativeAcceleration();
+  e.commit();
+  EXPECT_EQ(e.committedRelativeRotation(), psiA);
+  EXPECT_EQ(e.committedRelativeVelocity(), velA);
+  EXPECT_EQ(e.committedRelativeAcceleration(), accA);
+
+  ASSERT_TRUE(e.evaluate(b, rule, true, r, k).ok);
+  const double psiB = e.relativeRotation();
+  const ElemVec rB = r;
+  EXPECT_NE(psiB, psiA);
+  e.revert();
+  EXPECT_EQ(e.relativeRotation(), psiA);
+  EXPECT_EQ(e.relativeVelocity(), velA);
+  ASSERT_TRUE(e.evaluate(b, rule, true, r, k).ok);
+  EXPECT_NEAR(e.relativeRotation(), psiB, 1e-14);
+  EXPECT_LT((r - rB).cwiseAbs().maxCoeff(), 1e-10 * rB.cwiseAbs().maxCoeff());
+}
+
+TEST(JointedElement, KineticEnergyAndBodyLoadSeeTheSlave) {
+  const Vec2 x1(0.0, 0.0), x2(1.0, 1.0);
+  for (int end : {0, 1}) {
+    JointedElement e(makeInner(Inner::EulerBernoulli, x1, x2), end, 5);
+    e.setRelativeState(0.1, 2.0, 0.0);
+    ElemVec v;
+    v << 0.1, -0.2, 0.3, 0.4, 0.5, -0.6;
+    ElemVec vin = v;
+    vin(3 * end + 2) += 2.0;
+    EXPECT_NEAR(e.kineticEnergy(v), 0.5 * vin.dot(e.mass() * vin), 1e-15);
+    const Vec2 g(0.0, -9.81);
+    const ElemVec fin = e.inner().bodyLoad(g), f = e.bodyLoad(g);
+    EXPECT_NE(fin(3 * end + 2), 0.0);  // the Hermite element has end moments
+    EXPECT_EQ(f(3 * end + 2), 0.0);
+    EXPECT_EQ(f(3 * (1 - end) + 2), fin(3 * (1 - end) + 2));
+    EXPECT_EQ(f.segment<2>(0), fin.segment<2>(0));
+    EXPECT_EQ(e.typeName(), "frame-euler-bernoulli+joint");
+  }
+}
+
+// Inner element of the failure tests: residual r = K d + (0 ... atan(d_k) ... 0).
+class ScalarLawElement final : public Element {
+ public:
+  ScalarLawElement(double kkk, bool arctan) : kkk_(kkk), arctan_(arctan) {}
+  std::array<int, 2> nodes() const override { return nodes_; }
+  void setNodes(const std::array<int, 2>& n) override { nodes_ = n; }
+  int materialNumber() const override { return 1; }
+  std::string typeName() const override { return "scalar-law"; }
+  Status evaluate(const ElementKinematics& kin, const StepRule&, bool, ElemVec& r,
+                  ElemMat& k) override {
+    r = ElemVec::Zero();
+    k = ElemMat::Zero();
+    r(2) = arctan_ ? std::atan(kin.d(2)) : kkk_ * kin.d(2);
+    k(2, 2) = arctan_ ? 1.0 / (1.0 + kin.d(2) * kin.d(2)) : kkk_;
+    return Status::success();
+  }
+  ElemMat mass() const override { return ElemMat::Zero(); }
+  ElemVec bodyLoad(const Vec2&) const override { return ElemVec::Zero(); }
+  void commit() override {}
+  void revert() override {}
+  double strainEnergy() const override { return 0; }
+  SectionForces sectionForces() const override { return {}; }
+
+ private:
+  std::array<int, 2> nodes_{0, 1};
+  double kkk_;
+  bool arctan_;
+};
+
+TEST(JointedElement, LocalFailuresAreReturnedAsStatus) {
+  ElemVec r;
+  ElemMat k;
+  const ElemVec zero = ElemVec::Zero();
+  JointedElement negative(std::make_unique<ScalarLawElement>(-1.0, false), 0, 3);
+  Status st = negative.evaluate({zero, zero, zero, zero}, StepRule{}, true, r, k);
+  EXPECT_FALSE(st.ok);
+  EXPECT_NE(st.why.find("not positive"), std::string::npos) << st.why;
+
+  // Newton on atan diverges from 3 rad.
+  JointedElement diverging(std::make_unique<ScalarLawElement>(0.0, true), 0, 3);
+  ElemVec d = zero;
+  d(2) = 3.0;
+  st = diverging.evaluate({d, zero, zero, zero}, StepRule{}, true, r, k);
+  EXPECT_FALSE(st.ok);
+  // From 1 rad it converges, to psi_r = -1.
+  d(2) = 1.0;
+  JointedElement fine(std::make_unique<ScalarLawElement>(0.0, true), 0, 3);
+  ASSERT_TRUE(fine.evaluate({d, zero, zero, zero}, StepRule{}, true, r, k).ok);
+  EXPECT_NEAR(fine.relativeRotation(), -1.0, 1e-15);
+}
+
+// --- joint set-up -----------------------------------------------------------
+
+MaterialSet beamMaterial() {
+  MaterialSet m = frameMaterial(Inner::Reissner);
+  m.resEA = 5.0e3;
+  m.resGA = 2.0e3;
+  m.resEI = 10.0;
+  m.density = 1.0;
+  m.A = 1.0;
+  m.I = 0.01;
+  return m;
+}
+
+// Propped frame with an internal hinge: nodes 0-1-2 | 3-4-5, joint master 2,
+// slave 3 (coincident), base 0 clamped, node 5 on a roller.
+Model hingedBeam(JointForm form) {
+  Model m;
+  m.materials()[1] = beamMaterial();
+  const Vec2 x[] = {{0, 0}, {0.6, 0.15}, {1.2, 0.2}, {1.2, 0.2}, {1.8, 0.1}, {2.4, -0.1}};
+  m.resizeNodes(6);
+  for (int i = 0; i < 6; ++i) m.setCoord(i, x[i]);
+  const std::array<int, 2> conn[] = {{0, 1}, {1, 2}, {3, 4}, {4, 5}};
+  for (int e = 0; e < 4; ++e)
+    m.setElement(e, std::make_unique<ReissnerFrame>(m.materials()[1], conn[e],
+                                                    m.coord(conn[e][0]), m.coord(conn[e][1])));
+  m.bound(0) = {1, 1, 1};
+  m.bound(5) = {0, 1, 0};
+  m.force(2) = {0.8, -3.0, 0.0};
+  m.force(4) = {0.0, -2.0, 0.5};
+  m.force(5) = {-1.0, 0.0, 0.2};
+  m.joints().push_back({2, 3, form});
+  return m;
+}
+
+TEST(JointedElementSetup, CondensedJointsAreWrappedOnceAndOtherwiseShared) {
+  Model m = hingedBeam(JointForm::Condensed);
+  const int version = m.topologyVersion();
+  EXPECT_EQ(installJoints(m), 1);
+  EXPECT_GT(m.topologyVersion(), version);
+  ASSERT_EQ(jointedElements(m).size(), 1u);
+  const JointedElement* je = jointedElements(m)[0];
+  EXPECT_EQ(je->slaveNode(), 3);
+  EXPECT_EQ(je->masterNode(), 2);
+  EXPECT_EQ(je->slaveEnd(), 0);
+  EXPECT_EQ(m.element(2).nodes(), (std::array<int, 2>{2, 4}));
+  // Idempotent.
+  const int v2 = m.topologyVersion();
+  EXPECT_EQ(installJoints(m), 0);
+  EXPECT_EQ(m.topologyVersion(), v2);
+  EXPECT_EQ(jointedElements(m).size(), 1u);
+  const DofMap dofs(m);
+  EXPECT_FALSE(dofs.used(3));  // the slave left the global system
+
+  // Two elements at the slave, or a loaded slave: Shared form.
+  Model two = hingedBeam(JointForm::Condensed);
+  two.setElement(4, std::make_unique<ReissnerFrame>(two.materials()[1], std::array{3, 5},
+                                                    two.coord(3), two.coord(5)));
+  EXPECT_EQ(installJoints(two), 1);
+  EXPECT_EQ(two.joints()[0].form, JointForm::Shared);
+  EXPECT_TRUE(jointedElements(two).empty());
+  Model loaded = hingedBeam(JointForm::Condensed);
+  loaded.force(3)[2] = 1.0;
+  installJoints(loaded);
+  EXPECT_EQ(loaded.joints()[0].form, JointForm::Shared);
+  // A chain: the slave is the master of a further joint.
+  Model chain = hingedBeam(JointForm::Condensed);
+  chain.resizeNodes(7);
+  chain.setCoord(6, chain.coord(3));
+  chain.joints().push_back({3, 6, JointForm::Condensed});
+  installJoints(chain);
+  EXPECT_EQ(chain.joints()[0].form, JointForm::Shared);
+}
+
+bool solveStep(Analysis& an, int maxIterations = 40) {
+  if (!an.advance()) return false;
+  IterationInfo info;
+  for (int i = 0; i < maxIterations; ++i) {
+    if (!an.iterate(false, false, info)) return false;
+    if (info.converged) return true;
+  }
+  return false;
+}
+
+// Nodal displacements (slave node from the joint) after n steps of dt.
+Eigen::VectorXd run(JointForm form, const TimeIntegrator& ti, int steps, double dt) {
+  Model m = hingedBeam(form);
+  installJoints(m);
+  Analysis an(m);
+  an.setIntegrator(ti);
+  an.setTolerance(1e-28);
+  an.setDt(dt);
+  if (!ti.dynamic()) an.setLoadFunction([](double t) { return t; });
+  for (int s = 0; s < steps; ++s) {
+    EXPECT_TRUE(solveStep(an)) << "step " << s;
+  }
+  an.commit();
+  syncSlaveNodes(m, an.state());
+  return an.state().u;
+}
+
+class JointedElementEquivalence : public ::testing::TestWithParam<int> {};
+
+TEST_P(JointedElementEquivalence, CondensedAndSharedFormsGiveTheSameMotion) {
+  const int which = GetParam();
+  const TimeIntegrator ti = which == 0   ? TimeIntegrator::statics()
+                            : which == 1 ? TimeIntegrator::midPoint(0, 0)
+                            : which == 2 ? TimeIntegrator::midPoint(0.2, 0.1)
+                                         : TimeIntegrator::newmark(0.25, 0.5);
+  const int steps = which == 0 ? 6 : 25;
+  const double dt = which == 0 ? 1.0 / 6 : 0.02;
+  const Eigen::VectorXd a = run(JointForm::Condensed, ti, steps, dt);
+  const Eigen::VectorXd b = run(JointForm::Shared, ti, steps, dt);
+  const double scale = b.cwiseAbs().maxCoeff();
+  EXPECT_GT(scale, 0.05);  // a visibly nonlinear response
+  EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-9 * scale) << "a = " << a.transpose()
+                                                         << "\nb = " << b.transpose();
+  // The hinge opens: slave and master rotations differ.
+  EXPECT_GT(std::abs(b(3 * 3 + 2) - b(2 * 3 + 2)), 1e-2);
+  EXPECT_EQ(a.segment<2>(9), a.segment<2>(6));
+}
+
+INSTANTIATE_TEST_SUITE_P(JointedElement, JointedElementEquivalence, ::testing::Values(0, 1, 2, 3));
+
+}  // namespace
+}  // namespace c2d
