@@ -14,21 +14,22 @@ ContactForce groundContact(const Ground& g, double yn, double y, const StepRule&
     }
     return out;
   }
-  // Discrete gradient of U(p) = k <p>^2 / 2 between p0 and p1.
+  // Discrete gradient of U(p) = k <p>^2 / 2 between p0 and p1, in closed form
+  // on each branch: dividing U1 - U0 by p1 - p0 would lose all digits when the
+  // step hardly moves a resting node (force error eps*p/dp, tangent eps*p^2/dp^2).
   const double p0 = penetration(g, yn);
   const double dp = p1 - p0;
-  const double u1 = p1 > 0 ? 0.5 * g.k * p1 * p1 : 0.0;
-  const double u0 = p0 > 0 ? 0.5 * g.k * p0 * p0 : 0.0;
-  const double scale = g.k * (std::abs(p0) + std::abs(p1) + 1e-300);
-  if (std::abs(dp) * g.k > 1e-10 * scale) {
-    out.force = (u1 - u0) / dp;
-    // d/dp1 of (U(p1) - U(p0))/(p1 - p0)
-    const double dU1 = p1 > 0 ? g.k * p1 : 0.0;
-    out.tangent = (dU1 - out.force) / dp;
-  } else {
-    const double pm = 0.5 * (p0 + p1);
-    out.force = pm > 0 ? g.k * pm : 0.0;
-    out.tangent = pm > 0 ? 0.5 * g.k : 0.0;
+  if (p0 > 0 && p1 > 0) {
+    out.force = 0.5 * g.k * (p0 + p1);
+    out.tangent = 0.5 * g.k;
+  } else if (p1 > 0) {
+    // Entering: (k p1^2/2)/(p1 - p0), p0 <= 0 < p1, so dp >= p1 > 0.
+    out.force = 0.5 * g.k * p1 * p1 / dp;
+    out.tangent = g.k * p1 / dp - 0.5 * g.k * p1 * p1 / (dp * dp);
+  } else if (p0 > 0) {
+    // Leaving: (k p0^2/2)/(p0 - p1), p1 <= 0 < p0.
+    out.force = -0.5 * g.k * p0 * p0 / dp;
+    out.tangent = 0.5 * g.k * p0 * p0 / (dp * dp);
   }
   const double alpha = g.alpha >= 0 ? g.alpha : rule.alpha;
   if (alpha > 0 && (p1 > 0 || p0 > 0)) {

@@ -8,12 +8,14 @@ namespace c2d {
 
 namespace {
 
-// The local Newton iteration stops when the update is at round-off level
-// relative to |psi_r| (radians, unbounded: many turns are fine), or when it
-// stops decreasing once it is already tiny (the residual is then at round-off).
+// Local Newton iteration: once the update is below kSmallStep relative to
+// 1 + |psi_r| (radians, unbounded: many turns are fine), it is applied and the
+// element evaluated once more, which leaves an error of the order of the
+// squared update, far below round-off. Stopping without that last evaluation
+// would leave a moment K_rr*step at the joint, always of the same sign, and the
+// energy of a long run would drift.
 constexpr int kMaxLocalIterations = 30;
-constexpr double kRoundoffStep = 1e-14;
-constexpr double kStagnationStep = 1e-9;
+constexpr double kSmallStep = 1e-9;
 
 }  // namespace
 
@@ -42,8 +44,7 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
   double psi = trial_.psi;
   ElementKinematics in = innerKinematics(kin, psi);
   ElemMat kin6;
-  double previousStep = HUGE_VAL;
-  bool converged = false;
+  bool lastPass = false, converged = false;
   for (int it = 0; it < kMaxLocalIterations; ++it) {
     in.d(k) = kin.d(k) + psi;
     if (Status st = inner_->evaluate(in, rule, true, residual, kin6); !st) return st;
@@ -54,14 +55,13 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
           << " is not positive";
       return Status::failure(msg.str());
     }
-    const double step = -residual(k) / krr;
-    const double scale = 1.0 + std::abs(psi);
-    if (std::abs(step) <= kRoundoffStep * scale ||
-        (std::abs(step) >= previousStep && std::abs(step) <= kStagnationStep * scale)) {
+    if (lastPass) {
       converged = true;
       break;
     }
-    previousStep = std::abs(step);
+    const double step = -residual(k) / krr;
+    if (!std::isfinite(step)) break;
+    lastPass = std::abs(step) <= kSmallStep * (1.0 + std::abs(psi));
     psi += step;
   }
   if (!converged) {

@@ -67,9 +67,12 @@ namespace {
 
 const char* kindName(FieldKind k) {
   switch (k) {
-    case FieldKind::Text: return "text";
-    case FieldKind::Number: return "number";
-    case FieldKind::Expression: return "expression";
+    case FieldKind::Text:
+      return "text";
+    case FieldKind::Number:
+      return "number";
+    case FieldKind::Expression:
+      return "expression";
   }
   return "";
 }

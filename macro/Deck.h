@@ -57,7 +57,7 @@ struct Problem {
   std::string title;  // the FEAP record after its first word
   Record control;     // numnp numel nummat ndm ndf nen
   std::vector<MeshItem> mesh;
-  Record meshEnd;     // END of the mesh input
+  Record meshEnd;  // END of the mesh input
   std::vector<BatchBlock> batches;
 };
 

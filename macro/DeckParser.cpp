@@ -31,9 +31,7 @@ bool hasEquals(const Record& r) {
 
 std::string where(const Record& r) { return "line " + std::to_string(r.loc.line); }
 
-std::string lineRef(const Record& r) {
-  return r.loc.file + ":" + std::to_string(r.loc.line);
-}
+std::string lineRef(const Record& r) { return r.loc.file + ":" + std::to_string(r.loc.line); }
 
 // The text of a record after its first field (the FEAP title).
 std::string restOfLine(const Record& r, std::size_t field) {
@@ -69,8 +67,8 @@ Deck DeckParser::parse() {
 ParamAssign DeckParser::parseAssignment(const Record& rec) {
   const Field& name = rec[0];
   if (!Parameters::validName(name.text))
-    throw DeckError(name.loc, "expected 'name = expression', and '" + name.text +
-                                  "' is not a parameter name",
+    throw DeckError(name.loc,
+                    "expected 'name = expression', and '" + name.text + "' is not a parameter name",
                     rec.excerpt(name.loc),
                     "a name starts with a letter or '_' and goes on with letters, digits or '_'");
   if (rec.size() < 2 || rec[1].text.empty())
@@ -126,14 +124,15 @@ std::vector<TopItem> DeckParser::parseTopItems(const Record* loopHead) {
     skipBlanks();
     if (atEnd()) {
       if (loopHead)
-        throw DeckError((*loopHead)[0].loc, "LOOP without NEXT", loopHead->excerpt((*loopHead)[0].loc),
-                        "close the loop with NEXT");
+        throw DeckError((*loopHead)[0].loc, "LOOP without NEXT",
+                        loopHead->excerpt((*loopHead)[0].loc), "close the loop with NEXT");
       return items;
     }
     const Record& r = peek();
     if (r.is("STOP")) {
       if (loopHead)
-        throw DeckError(r[0].loc, "STOP inside the LOOP of " + lineRef(*loopHead) + " (no NEXT before it)",
+        throw DeckError(r[0].loc,
+                        "STOP inside the LOOP of " + lineRef(*loopHead) + " (no NEXT before it)",
                         r.excerpt(r[0].loc), "close the loop with NEXT before STOP");
       return items;
     }
@@ -167,10 +166,10 @@ std::vector<TopItem> DeckParser::parseTopItems(const Record* loopHead) {
       hint = "this END closes nothing";
     else
       hint = "a problem starts with a record 'FEAP * * title'";
-    throw DeckError(r[0].loc,
-                    "unexpected record '" + r[0].text +
-                        "': expected FEAP, PARAmeter, LOOP, NEXT or STOP",
-                    r.excerpt(r[0].loc), hint);
+    throw DeckError(
+        r[0].loc,
+        "unexpected record '" + r[0].text + "': expected FEAP, PARAmeter, LOOP, NEXT or STOP",
+        r.excerpt(r[0].loc), hint);
   }
 }
 
@@ -179,15 +178,17 @@ Problem DeckParser::parseProblem() {
   p.head = next();
   p.title = restOfLine(p.head, 1);
   if (atEnd())
-    throw DeckError(p.head[0].loc, "FEAP record without control record", p.head.excerpt(p.head[0].loc),
+    throw DeckError(p.head[0].loc, "FEAP record without control record",
+                    p.head.excerpt(p.head[0].loc),
                     "the next record is: numnp numel nummat ndm ndf nen");
   p.control = next();
   if (!p.control.blank()) {
     const std::string& w = p.control[0].text;
     if (!looksNumeric(w) && (isStructural(p.control) || mesh_.find(w)))
-      throw DeckError(p.control[0].loc, "missing control record after the FEAP title record",
-                      p.control.excerpt(p.control[0].loc),
-                      "insert 'numnp numel nummat ndm ndf nen' (e.g. 0 0 0 2 3 2) before this record");
+      throw DeckError(
+          p.control[0].loc, "missing control record after the FEAP title record",
+          p.control.excerpt(p.control[0].loc),
+          "insert 'numnp numel nummat ndm ndf nen' (e.g. 0 0 0 2 3 2) before this record");
     for (const auto& f : p.control.fields) Expression::parse(f);
   }
   parseMesh(p);
@@ -201,20 +202,36 @@ Problem DeckParser::parseProblem() {
       continue;
     }
     if (r.is("FEAP") || r.is("STOP") || r.is("LOOP") || r.is("NEXT") || isParamHead(r)) break;
-    throw DeckError(r[0].loc, "expected BATCh after the END of the mesh input, found '" + r[0].text + "'",
+    throw DeckError(r[0].loc,
+                    "expected BATCh after the END of the mesh input, found '" + r[0].text + "'",
                     r.excerpt(r[0].loc), r.is("END") ? "this END closes nothing" : std::string());
   }
   return p;
 }
 
 void DeckParser::parseMesh(Problem& p) {
+  if (!parseMeshItems(p.mesh, &p.meshEnd))
+    throw DeckError(p.head[0].loc, "the mesh input of this problem has no END",
+                    p.head.excerpt(p.head[0].loc), "end the mesh commands with END");
+}
+
+std::vector<MeshItem> DeckParser::parseMeshInput() {
+  std::vector<MeshItem> items;
+  Record end;
+  if (parseMeshItems(items, &end)) {
+    skipBlanks();
+    if (!atEnd())
+      throw DeckError(peek()[0].loc, "record after the END of the mesh input",
+                      peek().excerpt(peek()[0].loc));
+  }
+  return items;
+}
+
+bool DeckParser::parseMeshItems(std::vector<MeshItem>& items, Record* end) {
   const Record* lastBlank = nullptr;
   const Record* lastCommand = nullptr;
   while (true) {
-    if (atEnd())
-      throw DeckError(p.head[0].loc, "the mesh input of this problem has no END",
-                      p.head.excerpt(p.head[0].loc),
-                      "end the mesh commands with END");
+    if (atEnd()) return false;
     const Record& r = peek();
     if (r.blank()) {
       lastBlank = &r;
@@ -222,11 +239,11 @@ void DeckParser::parseMesh(Problem& p) {
       continue;
     }
     if (r.is("END")) {
-      p.meshEnd = next();
-      return;
+      *end = next();
+      return true;
     }
     if (isParamHead(r)) {
-      p.mesh.emplace_back(parseParams());
+      items.emplace_back(parseParams());
       lastCommand = nullptr;
       continue;
     }
@@ -248,7 +265,7 @@ void DeckParser::parseMesh(Problem& p) {
                       hint.empty() ? "see collapse2d --help for the mesh commands" : hint);
     }
     lastCommand = &r;
-    p.mesh.emplace_back(parseMeshCommand(*spec));
+    items.emplace_back(parseMeshCommand(*spec));
   }
 }
 
@@ -280,10 +297,10 @@ MeshCommand DeckParser::parseMeshCommand(const CommandSpec& spec) {
   if (spec.data == DataForm::None) return c;
   while (true) {
     if (atEnd())
-      throw DeckError(c.head[0].loc,
-                      "the data set of '" + c.head[0].text +
-                          "' is not ended by a blank record (end of file)",
-                      c.head.excerpt(c.head[0].loc), "end the data records with a blank record");
+      throw DeckError(
+          c.head[0].loc,
+          "the data set of '" + c.head[0].text + "' is not ended by a blank record (end of file)",
+          c.head.excerpt(c.head[0].loc), "end the data records with a blank record");
     const Record& r = peek();
     if (r.blank()) {
       ++pos_;
@@ -330,9 +347,10 @@ BatchBlock DeckParser::parseBatch() {
       break;
     }
     if (r.is("BATCh") || r.is("FEAP") || r.is("STOP"))
-      throw DeckError(r[0].loc,
-                      "the BATCh block of " + where(b.head) + " has no END before '" + r[0].text + "'",
-                      r.excerpt(r[0].loc), "end the solution commands with END");
+      throw DeckError(
+          r[0].loc,
+          "the BATCh block of " + where(b.head) + " has no END before '" + r[0].text + "'",
+          r.excerpt(r[0].loc), "end the solution commands with END");
     b.commands.push_back(next());
   }
   while (!atEnd() && !endsBatchData()) b.data.push_back(next());
@@ -352,6 +370,14 @@ Deck parseRecords(std::vector<Record> records, const std::string& path) {
 }  // namespace
 
 Deck parseDeck(const std::string& path) { return parseRecords(DeckReader::readFile(path), path); }
+
+std::vector<MeshItem> parseMeshRecords(std::vector<Record> records, const std::string& path) {
+  CommandRegistry mesh("Mesh commands");
+  registerMeshCommands(mesh);
+  CommandRegistry sub("Material records");
+  registerMaterialSubRecords(sub);
+  return DeckParser(std::move(records), path, mesh, sub).parseMeshInput();
+}
 
 Deck parseDeckText(const std::string& text, const std::string& name, const std::string& baseDir) {
   return parseRecords(DeckReader::readString(text, name, baseDir), name);

@@ -22,6 +22,9 @@ class DeckParser {
              const CommandRegistry& subRecords);
 
   Deck parse();
+  // Mesh commands alone (MESH re-entry): the items up to an END record or the end
+  // of the records; non-blank records after that END are an error.
+  std::vector<MeshItem> parseMeshInput();
 
   // One "name = expression" record (also used for PARA in the solution phase).
   static ParamAssign parseAssignment(const Record& rec);
@@ -40,6 +43,7 @@ class DeckParser {
   ParamBlock parseParams();
   Problem parseProblem();
   void parseMesh(Problem& p);
+  bool parseMeshItems(std::vector<MeshItem>& items, Record* end);  // false: no END before EOF
   MeshCommand parseMeshCommand(const CommandSpec& spec);
   BatchBlock parseBatch();
   bool endsBatchData() const;
@@ -55,6 +59,8 @@ class DeckParser {
 
 // Reads (INCLude expanded) and parses a deck file. Throws DeckError.
 Deck parseDeck(const std::string& path);
+// Mesh command records alone (MESH re-entry), END optional. Throws DeckError.
+std::vector<MeshItem> parseMeshRecords(std::vector<Record> records, const std::string& path);
 // The same for deck text in memory (tests, generated decks).
 Deck parseDeckText(const std::string& text, const std::string& name = "<deck>",
                    const std::string& baseDir = ".");

@@ -87,7 +87,8 @@ void DeckReader::include(const Record& rec, const std::string& baseDir,
 
   std::ifstream in(p, std::ios::binary);
   if (!in)
-    throw DeckError(rec[1].loc, "cannot open included file '" + name + "'", rec.excerpt(rec[1].loc));
+    throw DeckError(rec[1].loc, "cannot open included file '" + name + "'",
+                    rec.excerpt(rec[1].loc));
   std::error_code ec;
   const std::string canonical = fs::weakly_canonical(p, ec).string();
   if (std::find(openFiles.begin(), openFiles.end(), canonical) != openFiles.end())

@@ -16,8 +16,26 @@ namespace c2d {
 namespace {
 
 enum class Func {
-  Abs, Exp, Int, Log, Sqrt, Sin, Cos, Tan, Asin, Acos, Atan,
-  Sind, Cosd, Tand, Asind, Acosd, Atand, Sinh, Cosh, Tanh
+  Abs,
+  Exp,
+  Int,
+  Log,
+  Sqrt,
+  Sin,
+  Cos,
+  Tan,
+  Asin,
+  Acos,
+  Atan,
+  Sind,
+  Cosd,
+  Tand,
+  Asind,
+  Acosd,
+  Atand,
+  Sinh,
+  Cosh,
+  Tanh
 };
 
 struct FuncName {
@@ -26,16 +44,19 @@ struct FuncName {
 };
 
 constexpr std::array<FuncName, 20> kFunctions{{
-    {"abs", Func::Abs},     {"exp", Func::Exp},     {"int", Func::Int},     {"log", Func::Log},
-    {"sqrt", Func::Sqrt},   {"sin", Func::Sin},     {"cos", Func::Cos},     {"tan", Func::Tan},
-    {"asin", Func::Asin},   {"acos", Func::Acos},   {"atan", Func::Atan},   {"sind", Func::Sind},
-    {"cosd", Func::Cosd},   {"tand", Func::Tand},   {"asind", Func::Asind}, {"acosd", Func::Acosd},
-    {"atand", Func::Atand}, {"sinh", Func::Sinh},   {"cosh", Func::Cosh},   {"tanh", Func::Tanh},
+    {"abs", Func::Abs},     {"exp", Func::Exp},   {"int", Func::Int},     {"log", Func::Log},
+    {"sqrt", Func::Sqrt},   {"sin", Func::Sin},   {"cos", Func::Cos},     {"tan", Func::Tan},
+    {"asin", Func::Asin},   {"acos", Func::Acos}, {"atan", Func::Atan},   {"sind", Func::Sind},
+    {"cosd", Func::Cosd},   {"tand", Func::Tand}, {"asind", Func::Asind}, {"acosd", Func::Acosd},
+    {"atand", Func::Atand}, {"sinh", Func::Sinh}, {"cosh", Func::Cosh},   {"tanh", Func::Tanh},
 }};
 
 std::string functionList() {
   std::string s;
-  for (const auto& f : kFunctions) s += (s.empty() ? "" : " ") + std::string(f.name);
+  for (const auto& f : kFunctions) {
+    if (!s.empty()) s.push_back(' ');
+    s.append(f.name);
+  }
   return s;
 }
 
@@ -53,9 +74,7 @@ struct Expression::Source {
   SourceLoc loc;                            // of text[0]
   std::shared_ptr<const std::string> line;  // whole record, may be null
 
-  std::string excerpt(int col) const {
-    return Field{text, loc, line}.excerpt(col);
-  }
+  std::string excerpt(int col) const { return Field{text, loc, line}.excerpt(col); }
 };
 
 struct Expression::Node {
@@ -96,7 +115,8 @@ class Parser {
  private:
   int col(std::size_t p) const { return src_.loc.col + static_cast<int>(p); }
 
-  [[noreturn]] void fail(std::size_t p, const std::string& what, const std::string& hint = {}) const {
+  [[noreturn]] void fail(std::size_t p, const std::string& what,
+                         const std::string& hint = {}) const {
     SourceLoc l = src_.loc;
     l.col = col(p);
     throw DeckError(l, "syntax error in expression '" + src_.text + "': " + what,
@@ -206,7 +226,9 @@ class Parser {
     if (pos_ < s_.size() && std::strchr("eEdD", s_[pos_]) != nullptr) {
       const std::size_t e = pos_++;
       if (pos_ < s_.size() && (s_[pos_] == '+' || s_[pos_] == '-')) ++pos_;
-      if (digits() == 0) fail(e, "malformed exponent in number '" + std::string(s_.substr(start, pos_ - start)) + "'");
+      if (digits() == 0)
+        fail(e,
+             "malformed exponent in number '" + std::string(s_.substr(start, pos_ - start)) + "'");
     }
     if (pos_ < s_.size() &&
         (std::isalnum(static_cast<unsigned char>(s_[pos_])) || s_[pos_] == '_' || s_[pos_] == '.'))
@@ -273,8 +295,9 @@ class Evaluator {
         if (auto v = p_.find(n.name)) return *v;
         std::string hint = didYouMean(n.name, p_.names());
         if (hint.empty())
-          hint = p_.size() == 0 ? "no parameter is defined yet: define it in a PARAmeter block first"
-                                : "define it in a PARAmeter block before it is used";
+          hint = p_.size() == 0
+                     ? "no parameter is defined yet: define it in a PARAmeter block first"
+                     : "define it in a PARAmeter block before it is used";
         fail(n, "undefined parameter '" + n.name + "'", hint);
       }
       case Node::Kind::Neg:
@@ -302,10 +325,14 @@ class Evaluator {
   }
 
  private:
-  [[noreturn]] void fail(const Node& n, const std::string& what, const std::string& hint = {}) const {
+  [[noreturn]] void fail(const Node& n, const std::string& what,
+                         const std::string& hint = {}) const {
     SourceLoc l = src_.loc;
     l.col = n.col;
-    throw DeckError(l, what + " in expression '" + src_.text + "'", src_.excerpt(n.col), hint);
+    // Name the whole expression only when it is more than the offending token.
+    const bool alone = toLower(src_.text) == n.name;
+    throw DeckError(l, alone ? what : what + " in expression '" + src_.text + "'",
+                    src_.excerpt(n.col), hint);
   }
 
   double check(const Node& n, double v, const std::string& what) const {
@@ -320,26 +347,72 @@ class Evaluator {
     };
     double r = 0;
     switch (n.func) {
-      case Func::Abs: r = std::fabs(x); break;
-      case Func::Exp: r = std::exp(x); break;
-      case Func::Int: r = std::trunc(x); break;
-      case Func::Log: domain(x > 0); r = std::log(x); break;
-      case Func::Sqrt: domain(x >= 0); r = std::sqrt(x); break;
-      case Func::Sin: r = std::sin(x); break;
-      case Func::Cos: r = std::cos(x); break;
-      case Func::Tan: r = std::tan(x); break;
-      case Func::Asin: domain(x >= -1 && x <= 1); r = std::asin(x); break;
-      case Func::Acos: domain(x >= -1 && x <= 1); r = std::acos(x); break;
-      case Func::Atan: r = std::atan(x); break;
-      case Func::Sind: r = std::sin(x * deg); break;
-      case Func::Cosd: r = std::cos(x * deg); break;
-      case Func::Tand: r = std::tan(x * deg); break;
-      case Func::Asind: domain(x >= -1 && x <= 1); r = std::asin(x) / deg; break;
-      case Func::Acosd: domain(x >= -1 && x <= 1); r = std::acos(x) / deg; break;
-      case Func::Atand: r = std::atan(x) / deg; break;
-      case Func::Sinh: r = std::sinh(x); break;
-      case Func::Cosh: r = std::cosh(x); break;
-      case Func::Tanh: r = std::tanh(x); break;
+      case Func::Abs:
+        r = std::fabs(x);
+        break;
+      case Func::Exp:
+        r = std::exp(x);
+        break;
+      case Func::Int:
+        r = std::trunc(x);
+        break;
+      case Func::Log:
+        domain(x > 0);
+        r = std::log(x);
+        break;
+      case Func::Sqrt:
+        domain(x >= 0);
+        r = std::sqrt(x);
+        break;
+      case Func::Sin:
+        r = std::sin(x);
+        break;
+      case Func::Cos:
+        r = std::cos(x);
+        break;
+      case Func::Tan:
+        r = std::tan(x);
+        break;
+      case Func::Asin:
+        domain(x >= -1 && x <= 1);
+        r = std::asin(x);
+        break;
+      case Func::Acos:
+        domain(x >= -1 && x <= 1);
+        r = std::acos(x);
+        break;
+      case Func::Atan:
+        r = std::atan(x);
+        break;
+      case Func::Sind:
+        r = std::sin(x * deg);
+        break;
+      case Func::Cosd:
+        r = std::cos(x * deg);
+        break;
+      case Func::Tand:
+        r = std::tan(x * deg);
+        break;
+      case Func::Asind:
+        domain(x >= -1 && x <= 1);
+        r = std::asin(x) / deg;
+        break;
+      case Func::Acosd:
+        domain(x >= -1 && x <= 1);
+        r = std::acos(x) / deg;
+        break;
+      case Func::Atand:
+        r = std::atan(x) / deg;
+        break;
+      case Func::Sinh:
+        r = std::sinh(x);
+        break;
+      case Func::Cosh:
+        r = std::cosh(x);
+        break;
+      case Func::Tanh:
+        r = std::tanh(x);
+        break;
     }
     return check(n, r, n.name + "(" + formatNumber(x) + ") overflows");
   }
@@ -365,8 +438,9 @@ Expression::Expression() {
   n->kind = Node::Kind::Number;
   n->col = 1;
   auto src = std::make_shared<Source>();
-  src->text = "0";
-  src->loc = {"", 0, 1};
+  src->text.push_back('0');
+  src->loc.line = 0;
+  src->loc.col = 1;
   root_ = std::move(n);
   source_ = std::move(src);
 }
@@ -404,7 +478,9 @@ Expression Expression::parse(std::string_view text, const SourceLoc& loc,
   return e;
 }
 
-Expression Expression::parse(const Field& field) { return parse(field.text, field.loc, field.line); }
+Expression Expression::parse(const Field& field) {
+  return parse(field.text, field.loc, field.line);
+}
 
 double Expression::eval(const Parameters& params) const {
   return Evaluator(params, *source_).eval(*root_);

@@ -37,7 +37,7 @@ class Expression {
   // what names it in the message ("node number").
   int evalInt(const Parameters& params, std::string_view what) const;
 
-  bool isConstant() const;                // no parameter names in it
+  bool isConstant() const;                 // no parameter names in it
   std::vector<std::string> names() const;  // parameter names used (lower case)
   const std::string& text() const;
   const SourceLoc& loc() const;

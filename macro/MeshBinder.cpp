@@ -27,7 +27,8 @@ ControlData MeshBinder::setControl(const Record& r) {
     if (v[i] < 0) fail(i, std::string(names[i]) + " must not be negative");
   if (v[3] != 2) fail(3, "ndm must be 2 (plane frames), got " + std::to_string(v[3]));
   if (v[4] != 3) fail(4, "ndf must be 3 (u, v, theta), got " + std::to_string(v[4]));
-  if (v[5] != 0 && v[5] != 2) fail(5, "nen must be 2 (two-node elements) or 0, got " + std::to_string(v[5]));
+  if (v[5] != 0 && v[5] != 2)
+    fail(5, "nen must be 2 (two-node elements) or 0, got " + std::to_string(v[5]));
   for (std::size_t i = 6; i < 9; ++i)
     if (v[i] != 0) fail(i, std::string(names[i]) + " is not used by frames: leave it 0");
   c.numnp = v[0];
@@ -102,7 +103,8 @@ void applyMesh(const std::vector<MeshItem>& items, Parameters& params, Model& mo
     where = end->loc;
     text = end->lineText();
   } else if (!items.empty()) {
-    const Record& last = std::visit([](const auto& i) -> const Record& { return i.head; }, items.back());
+    const Record& last =
+        std::visit([](const auto& i) -> const Record& { return i.head; }, items.back());
     where = last.loc;
     text = last.lineText();
   }

@@ -29,7 +29,8 @@ int MeshContext::integer(const Record& r, std::size_t i, std::string_view what) 
 
 void MeshContext::ensureNode(int n, const Record& r, std::size_t i) {
   if (n < 1)
-    throw DeckError(r.fieldLoc(i), "node " + std::to_string(n) + " does not exist (nodes start at 1)",
+    throw DeckError(r.fieldLoc(i),
+                    "node " + std::to_string(n) + " does not exist (nodes start at 1)",
                     r.excerpt(r.fieldLoc(i)));
   if (maxNodes > 0 && n > maxNodes)
     throw DeckError(r.fieldLoc(i),
@@ -42,7 +43,8 @@ void MeshContext::ensureNode(int n, const Record& r, std::size_t i) {
 int MeshContext::node(const Record& r, std::size_t i, std::string_view what) {
   const int n = integer(r, i, what);
   if (n < 1)
-    throw DeckError(r.fieldLoc(i), std::string(what) + " must be positive, got " + std::to_string(n),
+    throw DeckError(r.fieldLoc(i),
+                    std::string(what) + " must be positive, got " + std::to_string(n),
                     r.excerpt(r.fieldLoc(i)));
   ensureNode(n, r, i);
   return n;
@@ -54,10 +56,11 @@ int MeshContext::elementNumber(const Record& r, std::size_t i) {
     throw DeckError(r.fieldLoc(i), "element number must be positive, got " + std::to_string(e),
                     r.excerpt(r.fieldLoc(i)));
   if (maxElements > 0 && e > maxElements)
-    throw DeckError(r.fieldLoc(i),
-                    "element " + std::to_string(e) + " is beyond numel = " +
-                        std::to_string(maxElements) + " of the control record",
-                    r.excerpt(r.fieldLoc(i)), "raise numel, or set it to 0 to have elements counted");
+    throw DeckError(
+        r.fieldLoc(i),
+        "element " + std::to_string(e) + " is beyond numel = " + std::to_string(maxElements) +
+            " of the control record",
+        r.excerpt(r.fieldLoc(i)), "raise numel, or set it to 0 to have elements counted");
   return e;
 }
 
@@ -225,8 +228,10 @@ void echoMaterial(std::ostream& os, const MaterialSet& m) {
   title(os, "M a t e r i a l   S e t   " + std::to_string(m.number) +
                 (m.label.empty() ? "" : "   (" + m.label + ")"));
   os << "      Element type       " << m.elementType << "\n";
-  os << "      Kinematics         " << (m.kinematics == Kinematics::Small ? "small" : "finite") << "\n";
-  os << "      Shear deformation  " << (m.shear ? "on (Timoshenko)" : "off (Euler-Bernoulli)") << "\n";
+  os << "      Kinematics         " << (m.kinematics == Kinematics::Small ? "small" : "finite")
+     << "\n";
+  os << "      Shear deformation  " << (m.shear ? "on (Timoshenko)" : "off (Euler-Bernoulli)")
+     << "\n";
   auto line = [&](const char* name, double v) {
     os << "      " << std::left << std::setw(19) << name << std::right;
     num(os, v) << "\n";
@@ -245,7 +250,8 @@ void echoMaterial(std::ostream& os, const MaterialSet& m) {
     line("Shear factor", m.kappa);
   }
   line("Density", m.density);
-  os << "      Mass               " << (m.mass == MassType::Lumped ? "lumped" : "consistent") << "\n";
+  os << "      Mass               " << (m.mass == MassType::Lumped ? "lumped" : "consistent")
+     << "\n";
   if (m.hardening) {
     line("Hardening Mc", m.hardening->Mc);
     line("Hardening My", m.hardening->My);
@@ -300,7 +306,8 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
         failAt(r, 1, s->name + " takes two text fields, then numbers", "write " + syntax);
     };
     auto values = [&](std::size_t maxCount, std::size_t required, const std::string& syntax) {
-      if (r.size() > 2 + maxCount) failAt(r, 2 + maxCount, "too many values: the record is '" + syntax + "'");
+      if (r.size() > 2 + maxCount)
+        failAt(r, 2 + maxCount, "too many values: the record is '" + syntax + "'");
       if (r.size() < 2 + required)
         failAt(r, r.size(), s->name + " needs " + std::to_string(required) + " values",
                "write " + syntax);
@@ -365,7 +372,8 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
     } else if (key == "resu") {
       const std::string syntax = "RESUltant STIFfness EA GA EI";
       numericText(syntax);
-      if (!keywordMatches(text2, "STIFfness")) failAt(r, 1, "expected STIFfness", "write " + syntax);
+      if (!keywordMatches(text2, "STIFfness"))
+        failAt(r, 1, "expected STIFfness", "write " + syntax);
       const auto v = values(3, 3, syntax);
       if (v[0] <= 0) failAt(r, 2, "EA must be positive");
       if (v[1] < 0) failAt(r, 3, "GA must not be negative");
@@ -531,18 +539,21 @@ void applyValues(MeshContext& ctx, int node, Target t, Mode mode, const std::arr
 std::array<double, 3> readValues(MeshContext& ctx, const Record& r, std::size_t first, Target t) {
   std::array<double, 3> v{};
   for (int i = 0; i < kNodeDofs; ++i)
-    v[i] = t == Target::Bound ? ctx.integer(r, first + i, "boundary code") : ctx.number(r, first + i);
+    v[i] =
+        t == Target::Bound ? ctx.integer(r, first + i, "boundary code") : ctx.number(r, first + i);
   return v;
 }
 
-void echoNode(MeshContext& ctx, const char* cmd, int node) {
+// One line per node set by an edge or coordinate command: the values it now has.
+void echoNode(MeshContext& ctx, const std::string& cmd, Target t, int node) {
   if (auto* os = ctx.out()) {
-    *os << "      " << cmd << " node " << std::setw(6) << node + 1 << "  b.c.";
-    for (int i = 0; i < kNodeDofs; ++i) *os << std::setw(4) << ctx.model.bound(node)[i];
-    *os << "  force";
-    for (int i = 0; i < kNodeDofs; ++i) num(*os, ctx.model.force(node)[i]);
-    *os << "  displ";
-    for (int i = 0; i < kNodeDofs; ++i) num(*os, ctx.model.disp(node)[i]);
+    *os << "      " << std::left << std::setw(14) << cmd << std::right << std::setw(8) << node + 1;
+    if (t == Target::Bound) {
+      for (int i = 0; i < kNodeDofs; ++i) *os << std::setw(8) << ctx.model.bound(node)[i];
+    } else {
+      const auto& a = t == Target::Force ? ctx.model.force(node) : ctx.model.disp(node);
+      for (int i = 0; i < kNodeDofs; ++i) num(*os, a[i]);
+    }
     *os << "\n";
   }
 }
@@ -562,7 +573,7 @@ void edgeCommand(MeshContext& ctx, const MeshCommand& cmd, Target t) {
       for (int k = 0; k < c.model.numNodes(); ++k) {
         if (!c.model.hasCoord(k) || std::fabs(c.model.coord(k)[dir - 1] - x0) > tol) continue;
         applyValues(c, k, t, mode, v);
-        echoNode(c, name.c_str(), k);
+        echoNode(c, name, t, k);
         ++found;
       }
       if (found == 0) {
@@ -596,7 +607,7 @@ void pointCommand(MeshContext& ctx, const MeshCommand& cmd, Target t) {
       }
       if (best < 0) failAt(r, 0, "no node has coordinates yet");
       applyValues(c, best, t, mode, v);
-      echoNode(c, name.c_str(), best);
+      echoNode(c, name, t, best);
     });
   }
 }
@@ -617,7 +628,8 @@ void applyCdis(MeshContext& c, const MeshCommand& m) { pointCommand(c, m, Target
 
 void applyBlock(MeshContext& ctx, const MeshCommand& cmd) {
   if (cmd.data.empty())
-    failAt(cmd.head, 0, "BLOCk has no data", "the records are 'CARTesian n 0 node1 elem1 mat', then '1 x y', '2 x y'");
+    failAt(cmd.head, 0, "BLOCk has no data",
+           "the records are 'CARTesian n 0 node1 elem1 mat', then '1 x y', '2 x y'");
   const Record& t = cmd.data[0];
   if (!t.is("CARTesian")) {
     if (looksNumeric(t.text(0)))
@@ -633,12 +645,15 @@ void applyBlock(MeshContext& ctx, const MeshCommand& cmd) {
   const int ntyp = ctx.integer(t, 7, "block type");
   if (ns > 1) failAt(t, 2, "only a line of two-node elements is available (ns = 0)");
   if (ntyp != 0) failAt(t, 7, "only block type 0 is available");
-  if (ni < 0 || ne < 0 || ma < 0) failAt(t, ni < 0 ? 3 : ne < 0 ? 4 : 5, "numbers must not be negative");
+  if (ni < 0 || ne < 0 || ma < 0)
+    failAt(t, ni < 0 ? 3 : ne < 0 ? 4 : 5, "numbers must not be negative");
   if (ni == 0) ni = ctx.highestNode + 1;
   if (ne == 0) ne = ctx.highestElement + 1;
   if (ma == 0) ma = std::max(1, ctx.lastBlockMaterial);
   if (ctx.maxMaterials > 0 && ma > ctx.maxMaterials)
-    failAt(t, 5, "material " + std::to_string(ma) + " is beyond nummat = " + std::to_string(ctx.maxMaterials));
+    failAt(t, 5,
+           "material " + std::to_string(ma) +
+               " is beyond nummat = " + std::to_string(ctx.maxMaterials));
 
   std::array<Vec2, 2> master;
   std::array<bool, 2> given{false, false};
@@ -651,19 +666,21 @@ void applyBlock(MeshContext& ctx, const MeshCommand& cmd) {
     master[i - 1] = Vec2(ctx.number(r, 1), ctx.number(r, 2));
     given[i - 1] = true;
   }
-  if (!given[0] || !given[1])
-    failAt(cmd.data.back(), 0, "BLOCk needs master nodes 1 and 2");
+  if (!given[0] || !given[1]) failAt(cmd.data.back(), 0, "BLOCk needs master nodes 1 and 2");
 
   const int lastNode = ni + nr, lastElem = ne + nr - 1;
   if (ctx.maxNodes > 0 && lastNode > ctx.maxNodes)
-    failAt(t, 3, "the block's last node " + std::to_string(lastNode) + " is beyond numnp = " +
-                     std::to_string(ctx.maxNodes));
+    failAt(t, 3,
+           "the block's last node " + std::to_string(lastNode) +
+               " is beyond numnp = " + std::to_string(ctx.maxNodes));
   if (ctx.maxElements > 0 && lastElem > ctx.maxElements)
-    failAt(t, 4, "the block's last element " + std::to_string(lastElem) + " is beyond numel = " +
-                     std::to_string(ctx.maxElements));
+    failAt(t, 4,
+           "the block's last element " + std::to_string(lastElem) +
+               " is beyond numel = " + std::to_string(ctx.maxElements));
   ctx.ensureNode(lastNode, t, 3);
   for (int i = 0; i <= nr; ++i)
-    ctx.model.setCoord(ni + i - 1, master[0] + (master[1] - master[0]) * (static_cast<double>(i) / nr));
+    ctx.model.setCoord(ni + i - 1,
+                       master[0] + (master[1] - master[0]) * (static_cast<double>(i) / nr));
   for (int e = 0; e < nr; ++e) ctx.elements[ne + e] = {ma, {ni + e, ni + e + 1}, t, true};
 
   ctx.highestNode = std::max(ctx.highestNode, lastNode);
@@ -704,8 +721,9 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
       failAt(r, 0, "unknown contact type '" + r.text(0) + "'", hint);
     }
     if (previous)
-      failAt(r, 0, "a second GROUnd record (the first is on line " +
-                       std::to_string(previous->loc.line) + ")");
+      failAt(r, 0,
+             "a second GROUnd record (the first is on line " + std::to_string(previous->loc.line) +
+                 ")");
     ctx.maxFields(r, 5, "GROUnd,,y0,k[,alpha]");
     if (looksNumeric(r.text(1)))
       failAt(r, 1, "GROUnd takes two text fields, then numbers", "write GROUnd,,y0,k[,alpha]");
@@ -790,9 +808,13 @@ CommandSpec subSpec(std::string name, std::string doc, std::vector<FieldSpec> fi
 }  // namespace
 
 std::vector<MeshCommandEntry> meshCommandTable() {
-  const std::vector<FieldSpec> mode{text("mode", "ADD (add values, set nonzero codes) or SET (replace)")};
-  const std::string edgeDoc = " at every node whose coordinate idir equals x (within 1e-3 of the mesh size); applied when the mesh is complete";
-  const std::string pointDoc = " at the node nearest the point (x, y); applied when the mesh is complete";
+  const std::vector<FieldSpec> mode{
+      text("mode", "ADD (add values, set nonzero codes) or SET (replace)")};
+  const std::string edgeDoc =
+      " at every node whose coordinate idir equals x (within 1e-3 of the mesh size); applied when "
+      "the mesh is complete";
+  const std::string pointDoc =
+      " at the node nearest the point (x, y); applied when the mesh is complete";
   auto edgeFields = [](const std::string& v) {
     return std::vector<FieldSpec>{expr("idir", "1: x coordinate, 2: y coordinate"),
                                   expr("x", "coordinate value"), expr(v + "1", "x direction"),
@@ -800,8 +822,8 @@ std::vector<MeshCommandEntry> meshCommandTable() {
   };
   auto pointFields = [](const std::string& v) {
     return std::vector<FieldSpec>{text("NODE", "the word NODE"), expr("x", "point x"),
-                                  expr("y", "point y"), expr(v + "1", "x direction"),
-                                  expr(v + "2", "y direction"), expr(v + "3", "rotation")};
+                                  expr("y", "point y"),          expr(v + "1", "x direction"),
+                                  expr(v + "2", "y direction"),  expr(v + "3", "rotation")};
   };
 
   std::vector<MeshCommandEntry> t;
@@ -878,14 +900,14 @@ std::vector<MeshCommandEntry> meshCommandTable() {
                         "relative rotation.",
                         {}, "master slave", {expr("master", "node"), expr("slave", "node")}),
                applyJoints});
-  t.push_back({meshSpec("CONTact",
-                        "Frictionless rigid ground y = y0 for every node, penalty stiffness k; "
-                        "alpha: dissipation of the contact force (absent: the integrator's).",
-                        {}, "GROUnd,,y0,k[,alpha]",
-                        {text("GROUnd", "contact type"), text("", "empty"),
-                         expr("y0", "ground level"), expr("k", "penalty stiffness"),
-                         expr("alpha", "dissipation", "integrator's")}),
-               applyContact});
+  t.push_back(
+      {meshSpec("CONTact",
+                "Frictionless rigid ground y = y0 for every node, penalty stiffness k; "
+                "alpha: dissipation of the contact force (absent: the integrator's).",
+                {}, "GROUnd,,y0,k[,alpha]",
+                {text("GROUnd", "contact type"), text("", "empty"), expr("y0", "ground level"),
+                 expr("k", "penalty stiffness"), expr("alpha", "dissipation", "integrator's")}),
+       applyContact});
   t.push_back({meshSpec("GRAVity",
                         "Self-weight of every element with a density: acceleration (gx, gy), "
                         "constant (not scaled by the proportional load). No data records.",
@@ -932,20 +954,21 @@ void registerMaterialSubRecords(CommandRegistry& r) {
                 {text("", "empty"), expr("rho", "density")}));
   r.add(subSpec("MASS", "MASS LUMPed or MASS CONSistent (default).",
                 {text("LUMPed/CONSistent", "", "CONSistent")}));
-  r.add(subSpec("RESUltant",
-                "RESUltant STIFfness EA GA EI: stress-resultant stiffnesses instead of ELAStic + "
-                "CROSs (GA includes the shear factor).",
-                {text("STIFfness", ""), expr("EA", "axial"), expr("GA", "shear"),
-                 expr("EI", "bending")}));
+  r.add(subSpec(
+      "RESUltant",
+      "RESUltant STIFfness EA GA EI: stress-resultant stiffnesses instead of ELAStic + "
+      "CROSs (GA includes the shear factor).",
+      {text("STIFfness", ""), expr("EA", "axial"), expr("GA", "shear"), expr("EI", "bending")}));
   r.add(subSpec("HARDening",
                 "HARDening BILInear Mc My Kh1 Kh2: elastoplastic bending, elastic up to Mc, "
                 "modulus Kh1 to My, Kh2 beyond.",
                 {text("BILInear", ""), expr("Mc", "moment"), expr("My", "moment"),
                  expr("Kh1", "modulus"), expr("Kh2", "modulus")}));
-  r.add(subSpec("SOFTening",
-                "SOFTening LINEar Mu Ks: softening hinge activated when |M| reaches Mu; hinge "
-                "moment Mu + Ks*jump down to zero (Ks < 0).",
-                {text("LINEar", ""), expr("Mu", "ultimate moment"), expr("Ks", "softening modulus")}));
+  r.add(subSpec(
+      "SOFTening",
+      "SOFTening LINEar Mu Ks: softening hinge activated when |M| reaches Mu; hinge "
+      "moment Mu + Ks*jump down to zero (Ks < 0).",
+      {text("LINEar", ""), expr("Mu", "ultimate moment"), expr("Ks", "softening modulus")}));
 }
 
 // ---------------------------------------------------------------------------
@@ -956,12 +979,13 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
 
   for (const auto& [num, pe] : ctx.elements) {
     const Record& r = pe.origin;
-    const std::string what = "element " + std::to_string(num) +
-                             (pe.generated ? " (generated from this record)" : "");
+    const std::string what =
+        "element " + std::to_string(num) + (pe.generated ? " (generated from this record)" : "");
     const std::size_t matField = r.is("CARTesian") ? 5 : 2;
     const MaterialSet* mat = model.material(pe.material);
     if (!mat)
-      failAt(r, matField, what + " uses material " + std::to_string(pe.material) + ", which is not defined",
+      failAt(r, matField,
+             what + " uses material " + std::to_string(pe.material) + ", which is not defined",
              "define it with MATErial," + std::to_string(pe.material));
     for (int a = 0; a < 2; ++a) {
       const int n = pe.nodes[a];
@@ -969,13 +993,18 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
         failAt(r, r.is("CARTesian") ? 3 : 3 + a,
                what + " uses node " + std::to_string(n) + ", which has no coordinates");
     }
-    if (pe.nodes[0] == pe.nodes[1]) failAt(r, 3, what + " connects node " + std::to_string(pe.nodes[0]) + " to itself");
+    if (pe.nodes[0] == pe.nodes[1])
+      failAt(r, 3, what + " connects node " + std::to_string(pe.nodes[0]) + " to itself");
     const Vec2& x1 = model.coord(pe.nodes[0] - 1);
     const Vec2& x2 = model.coord(pe.nodes[1] - 1);
     if ((x2 - x1).norm() == 0) failAt(r, 3, what + " has zero length");
     model.setElement(num - 1, makeElement(*mat, {pe.nodes[0] - 1, pe.nodes[1] - 1}, x1, x2));
   }
 
+  if (auto* os = ctx.out(); os && !ctx.deferred.empty()) {
+    title(*os, "E d g e   a n d   C o o r d i n a t e   V a l u e s");
+    *os << "      Command           Node   (codes, forces or displacements: u, v, theta)\n";
+  }
   for (auto& f : ctx.deferred) f(ctx);
 
   for (const auto& [node, r] : ctx.referencedNodes)
@@ -999,7 +1028,8 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
       }
       for (const auto& existing : model.joints())
         if (existing.slave == j.slave - 1)
-          failAt(j.origin, 1, "node " + std::to_string(j.slave) + " is already the slave of a joint");
+          failAt(j.origin, 1,
+                 "node " + std::to_string(j.slave) + " is already the slave of a joint");
       model.joints().push_back(Joint{j.master - 1, j.slave - 1, JointForm::Condensed});
       if (auto* os = ctx.out())
         *os << "      Joint: master node " << j.master << ", slave node " << j.slave << "\n";
@@ -1009,13 +1039,13 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
   const int expected = ctx.maxElements > 0 ? ctx.maxElements : model.numElements();
   for (int e = 0; e < expected; ++e)
     if (e >= model.numElements() || !model.elements()[e])
-      throw DeckError(where,
-                      "element " + std::to_string(e + 1) + " is not defined" +
-                          (ctx.maxElements > 0 ? " (numel = " + std::to_string(ctx.maxElements) + ")"
-                                               : ""),
-                      whereText,
-                      ctx.maxElements > 0 ? "define it, or set numel to 0 to have elements counted"
-                                          : "element numbers must run from 1 without gaps");
+      throw DeckError(
+          where,
+          "element " + std::to_string(e + 1) + " is not defined" +
+              (ctx.maxElements > 0 ? " (numel = " + std::to_string(ctx.maxElements) + ")" : ""),
+          whereText,
+          ctx.maxElements > 0 ? "define it, or set numel to 0 to have elements counted"
+                              : "element numbers must run from 1 without gaps");
 
   if (ctx.topologyChanged) model.bumpTopology();
   ctx.elements.clear();

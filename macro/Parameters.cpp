@@ -13,7 +13,8 @@ bool Parameters::has(std::string_view name) const { return values_.count(toLower
 
 double Parameters::get(std::string_view name) const {
   auto it = values_.find(toLower(name));
-  if (it == values_.end()) throw std::out_of_range("undefined parameter '" + std::string(name) + "'");
+  if (it == values_.end())
+    throw std::out_of_range("undefined parameter '" + std::string(name) + "'");
   return it->second;
 }
 

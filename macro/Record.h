@@ -56,14 +56,16 @@ inline bool keywordMatches(std::string_view word, std::string_view name) {
 
 struct Record {
   std::vector<Field> fields;
-  SourceLoc loc;                             // column 1 of the line
-  std::shared_ptr<const std::string> line;   // the line, comment removed, tabs shown as blanks
+  SourceLoc loc;                            // column 1 of the line
+  std::shared_ptr<const std::string> line;  // the line, comment removed, tabs shown as blanks
 
   bool blank() const { return fields.empty(); }
   std::size_t size() const { return fields.size(); }
   const Field& operator[](std::size_t i) const { return fields[i]; }
   // Text of field i, or "" when the record is shorter.
-  std::string text(std::size_t i) const { return i < fields.size() ? fields[i].text : std::string(); }
+  std::string text(std::size_t i) const {
+    return i < fields.size() ? fields[i].text : std::string();
+  }
   // Location of field i, or just past the end of the record when it is shorter.
   SourceLoc fieldLoc(std::size_t i) const {
     if (i < fields.size()) return fields[i].loc;

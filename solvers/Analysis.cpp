@@ -162,6 +162,119 @@ void Analysis::applyIncrement(const Eigen::VectorXd& du, double scale) {
   updateRates();
 }
 
+double Analysis::maxHingeDemand(int& element) {
+  if (hingesVersion_ != model_.topologyVersion()) collectHingeCarriers();
+  double demand = 0;
+  element = -1;
+  for (const auto& [e, h] : hinges_) {
+    const double d = h->hingeDemand();
+    if (d > demand) {
+      demand = d;
+      element = e;
+    }
+  }
+  return demand;
+}
+
+Status Analysis::solveFraction(double fraction, double tEnd) {
+  // Elements keep their trial flags (a hinge just activated); their trial
+  // history follows from the committed one at the next evaluation.
+  state_.u = state_.un;
+  state_.v = state_.vn;
+  state_.a = state_.an;
+  state_.arcLambda = state_.arcLambdan;
+  state_.t = state_.tn + fraction * (tEnd - state_.tn);
+  state_.prop = tableFactor(1, state_.t);
+  applyPrescribed();
+  updateRates();
+  history_.clear();
+  energy0_ = 0;
+  stepInc_.setZero();
+  stepDlambda_ = 0;
+  if (path_) {
+    path_->setStepScale(fraction);
+    path_->beginStep();
+  }
+  dirty_ = true;
+  IterationInfo it;
+  for (int k = 0; k < 60; ++k) {
+    const Status st = iterate(false, true, it);
+    if (!st) return st;
+    if (it.converged) break;
+  }
+  if (!it.converged)
+    return Status::failure("no convergence while locating the load level where a hinge opens");
+  // Element states at the converged displacements.
+  const StepRule rule = integrator_.rule(state_.dt);
+  return assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
+}
+
+Status Analysis::locateHingeEvent(IterationInfo& info) {
+  // The demand is piecewise linear in the load level: regula falsi (Illinois)
+  // on the step fraction for max demand = 1 from below, within 1e-10.
+  locating_ = true;
+  const double tEnd = state_.t;
+  int element = -1;
+  double sLo = 0, dLo = committedDemand_, sHi = 1, dHi = maxHingeDemand(element);
+  double s = 0;
+  Status st;
+  int side = 0;
+  for (int k = 0; k < 40 && dLo < 1.0 - 1e-10; ++k) {
+    s = sLo + (1.0 - 0.5e-10 - dLo) * (sHi - sLo) / (dHi - dLo);
+    s = std::clamp(s, sLo + 1e-6 * (sHi - sLo), sHi - 1e-6 * (sHi - sLo));
+    st = solveFraction(s, tEnd);
+    if (!st) break;
+    const double d = maxHingeDemand(element);
+    if (d <= 1.0 && d >= 1.0 - 1e-10) break;
+    if (d > 1.0) {
+      sHi = s;
+      dHi = d;
+      if (side == -1) dLo = 1.0 - 0.5 * (1.0 - dLo);
+      side = -1;
+    } else {
+      sLo = s;
+      dLo = d;
+      if (side == 1) dHi = 1.0 + 0.5 * (dHi - 1.0);
+      side = 1;
+    }
+  }
+  if (st && s == 0) st = solveFraction(0.0, tEnd);
+  if (st) st = commit();  // the sub-step up to the hinge's ultimate moment
+  if (st) {
+    maxHingeDemand(element);
+    for (const auto& [e, h] : hinges_)
+      if (e == element) {
+        h->activateHinge();
+        if (onHingeActivated) onHingeActivated(e, h->hinge());
+      }
+    info.hingeActivated = element;
+    // At the ultimate moment the open hinge has no jump yet: the committed state is
+    // already the equilibrium; evaluate the elements with the hinge active.
+    dirty_ = true;
+    const StepRule rule = integrator_.rule(state_.dt);
+    st = assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
+  }
+  if (st) st = commit();
+  locating_ = false;
+  if (!st) return st;
+  // The rest of the step.
+  state_.t = tEnd;
+  state_.prop = tableFactor(1, state_.t);
+  applyPrescribed();
+  updateRates();
+  history_.clear();
+  energy0_ = 0;
+  stepInc_.setZero();
+  stepDlambda_ = 0;
+  if (path_) {
+    path_->setStepScale(1.0 - s);
+    path_->beginStep();
+  }
+  dirty_ = true;
+  info.converged = false;
+  return Status::success();
+}
+
 int Analysis::activateCriticalHinge() {
   if (hingesVersion_ != model_.topologyVersion()) collectHingeCarriers();
   int best = -1;
@@ -252,11 +365,25 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
   const double roundoff = 1e-12 * assembler_.forceScale();
   info.converged = energy0_ == 0 || info.energy <= tol_ * energy0_ ||
                    (!path_ && R_.size() > 0 && R_.cwiseAbs().maxCoeff() <= roundoff);
-  if (info.converged) {
-    const int h = activateCriticalHinge();
-    if (h >= 0) {
-      info.converged = false;
-      info.hingeActivated = h;
+  if (info.converged && !locating_ && !hinges_.empty()) {
+    if (!integrator_.dynamic()) {
+      // The demand of the converged state, then the event when a hinge passed Mu.
+      const StepRule rule = integrator_.rule(state_.dt);
+      st = assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
+      if (!st) return st;
+      int e = -1;
+      if (maxHingeDemand(e) > 1.0) {
+        st = locateHingeEvent(info);
+        if (!st) return st;
+        converged_ = false;
+        return Status::success();  // the rest of the step starts a new iteration history
+      }
+    } else {
+      const int h = activateCriticalHinge();
+      if (h >= 0) {
+        info.converged = false;
+        info.hingeActivated = h;
+      }
     }
   }
   converged_ = info.converged;
@@ -333,7 +460,14 @@ Status Analysis::commit() {
   }
   externalWork_ += work;
   for (auto& el : model_.elements()) el->commit();
-  if (path_) path_->endStep(stepInc_, stepDlambda_);
+  {
+    int e = -1;
+    committedDemand_ = maxHingeDemand(e);
+  }
+  if (path_) {
+    path_->endStep(stepInc_, stepDlambda_);
+    path_->setStepScale(1.0);
+  }
   state_.commit();
   dirty_ = false;
   if (onCommit) onCommit();

@@ -98,6 +98,14 @@ class Analysis {
   Status assembleAndFactor(bool symmetric);
   void applyIncrement(const Eigen::VectorXd& du, double scale);
   int activateCriticalHinge();
+  // The most critical inactive hinge at the last evaluated state: demand |M|/Mu.
+  double maxHingeDemand(int& element);
+  // A converged static step took a hinge past its ultimate moment: locate the
+  // load level where the demand is 1, commit there, activate the hinge, converge
+  // at that level, commit, and set up the rest of the step.
+  Status locateHingeEvent(IterationInfo& info);
+  // Newton from the committed state to the load level `fraction` of the step.
+  Status solveFraction(double fraction, double tEnd);
   // Per node dof: the factor of its load table at `time` (times the arc-length factor).
   void dofFactors(double time, double arc, Eigen::VectorXd& out) const;
   // Factors at the step rule's load point (t_n+1, or the mid-point).
@@ -129,6 +137,8 @@ class Analysis {
   double externalWork_ = 0;
   std::vector<std::pair<int, HingeCarrier*>> hinges_;
   int hingesVersion_ = -1;
+  double committedDemand_ = 0;  // max hinge demand at the last commit
+  bool locating_ = false;       // inside locateHingeEvent: no nested events
 };
 
 }  // namespace c2d

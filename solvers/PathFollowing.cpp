@@ -27,7 +27,7 @@ Status PathFollowing::correction(const Eigen::VectorXd& stepIncrement, const Eig
   predictor_ = false;
   if (kind_ == Kind::DisplacementControl) {
     if (eq_ < 0) return Status::failure("the controlled dof is not a free equation");
-    const double target = predictor ? increment_ : increment_ - stepIncrement[eq_];
+    const double target = predictor ? scale_ * increment_ : scale_ * increment_ - stepIncrement[eq_];
     if (std::abs(duF[eq_]) < 1e-300)
       return Status::failure("the load does not move the controlled dof (zero stiffness coupling)");
     dlambda = (target - duR[eq_]) / duF[eq_];
@@ -43,14 +43,14 @@ Status PathFollowing::correction(const Eigen::VectorXd& stepIncrement, const Eig
     }
     double sign = lastDirection_;
     if (lastIncrement_.size() == duF.size()) sign = lastIncrement_.dot(duF) >= 0 ? 1.0 : -1.0;
-    dlambda = sign * ds_ / duF.norm();
+    dlambda = sign * scale_ * ds_ / duF.norm();
     return Status::success();
   }
   // ||a + dlambda duF||^2 = ds^2 with a = stepIncrement + duR
   const Eigen::VectorXd& s = stepIncrement;
   const double A = duF.squaredNorm();
   const double B = 2.0 * (s + duR).dot(duF);
-  const double C = (s + duR).squaredNorm() - ds_ * ds_;
+  const double C = (s + duR).squaredNorm() - scale_ * scale_ * ds_ * ds_;
   const double disc = B * B - 4 * A * C;
   if (disc < 0) {
     // No real root: take the closest point (minimum of the quadratic), a common remedy.

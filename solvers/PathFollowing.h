@@ -27,6 +27,9 @@ class PathFollowing {
   void setEquation(int eq) { eq_ = eq; }
 
   void beginStep();  // called when time advances: the next iteration is a predictor
+  // Fraction of the nominal step increment (displacement increment or arc length)
+  // for the coming step: a located sub-step takes part of a step.
+  void setStepScale(double s) { scale_ = s; }
   // Load-factor correction for this iteration. du (step increment so far, free dofs),
   // duR, duF: the two solutions. Returns the failure when no real root exists.
   Status correction(const Eigen::VectorXd& stepIncrement, const Eigen::VectorXd& duR,
@@ -42,6 +45,7 @@ class PathFollowing {
   double lastDirection_ = 1;  // sign of the previous step's load increment
   Eigen::VectorXd lastIncrement_;
   bool predictor_ = true;
+  double scale_ = 1.0;
 };
 
 }  // namespace c2d

@@ -115,4 +115,3 @@ BENCHMARK_CAPTURE(factorizeAndSolve, eigen_ldlt, std::string("eigen-ldlt"))
     ->Arg(40000)
     ->Unit(benchmark::kMillisecond);
 
-BENCHMARK_MAIN();

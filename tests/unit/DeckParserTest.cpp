@@ -212,8 +212,8 @@ TEST(DeckParserStructure, AssignmentRecords) {
   p.set("b", 2);
   EXPECT_EQ(a.value.eval(p), 6.0);
   EXPECT_EQ(a.value.loc().col, 8);
-  expectDeckError([] { DeckParser::parseAssignment(DeckReader::lexLine("2x = 3", "f", 1)); }, "f", 1,
-                  1, "not a parameter name");
+  expectDeckError([] { DeckParser::parseAssignment(DeckReader::lexLine("2x = 3", "f", 1)); }, "f",
+                  1, 1, "not a parameter name");
   expectDeckError([] { DeckParser::parseAssignment(DeckReader::lexLine("x =", "f", 1)); }, "f", 1,
                   4, "has no value");
 }
@@ -261,12 +261,12 @@ TEST(CommandSpecRegistry, EveryMeshCommandIsDocumented) {
   CommandRegistry mesh("Mesh commands"), sub("Material records");
   ASSERT_NO_THROW(registerMeshCommands(mesh));
   ASSERT_NO_THROW(registerMaterialSubRecords(sub));
-  for (const char* name : {"COOR", "ELEM", "MATE", "BOUN", "FORC", "DISP", "EBOU", "EFOR", "EDIS",
-                           "CBOU", "CFOR", "CDIS", "BLOC", "PRIN", "NOPR", "JOIN", "CONT", "GRAV",
-                           "END", "PARA", "CONS", "INCL"})
+  for (const char* name :
+       {"COOR", "ELEM", "MATE", "BOUN", "FORC", "DISP", "EBOU", "EFOR", "EDIS", "CBOU", "CFOR",
+        "CDIS", "BLOC", "PRIN", "NOPR", "JOIN", "CONT", "GRAV", "END",  "PARA", "CONS", "INCL"})
     EXPECT_NE(mesh.find(name), nullptr) << name;
-  for (const char* name : {"FRAM", "ELAS", "CROS", "SHEA", "SMAL", "FINI", "DENS", "MASS", "RESU",
-                           "HARD", "SOFT"})
+  for (const char* name :
+       {"FRAM", "ELAS", "CROS", "SHEA", "SMAL", "FINI", "DENS", "MASS", "RESU", "HARD", "SOFT"})
     EXPECT_NE(sub.find(name), nullptr) << name;
   for (const auto* reg : {&mesh, &sub})
     for (const auto& s : reg->specs()) {
@@ -301,9 +301,11 @@ const BadDeck kBadDecks[] = {
     {"loop_without_next", "LOOP,,2\nFEAP * * x\n0 0 0 2 3 2\nEND\n", 1, 1, "LOOP without NEXT"},
     {"next_without_loop", "FEAP * * x\n0 0 0 2 3 2\nEND\nBATCh\nEND\n\n  NEXT\nSTOP\n", 7, 3,
      "NEXT without LOOP"},
-    {"stop_inside_loop", "LOOP,,2\nFEAP * * x\n0 0 0 2 3 2\nEND\nSTOP\n", 5, 1, "STOP inside the LOOP"},
-    {"data_set_not_ended", "FEAP * * x\n0 0 0 2 3 2\nCOOR\n1 0 0 0\n2 0 1 0\nELEM\n1 0 1 1 2\n\nEND\n",
-     6, 1, "the data set of 'COOR' (line 3) is not ended by a blank record"},
+    {"stop_inside_loop", "LOOP,,2\nFEAP * * x\n0 0 0 2 3 2\nEND\nSTOP\n", 5, 1,
+     "STOP inside the LOOP"},
+    {"data_set_not_ended",
+     "FEAP * * x\n0 0 0 2 3 2\nCOOR\n1 0 0 0\n2 0 1 0\nELEM\n1 0 1 1 2\n\nEND\n", 6, 1,
+     "the data set of 'COOR' (line 3) is not ended by a blank record"},
     {"data_set_not_ended_at_eof", "FEAP * * x\n0 0 0 2 3 2\n\nBOUN\n1 0 1 1 1\n", 4, 1,
      "not ended by a blank record (end of file)"},
     {"syntax_error_in_data", "FEAP * * x\n0 0 0 2 3 2\nCOOR\n1 0 2*(3 0\n\nEND\n", 4, 7,
@@ -333,7 +335,7 @@ TEST_P(DeckParserErrors, ReportsFileLineColumn) {
   expectDeckError([&] { parseDeck(path); }, path, b.line, b.col, b.message);
 }
 
-INSTANTIATE_TEST_SUITE_P(BadDecks, DeckParserErrors, ::testing::ValuesIn(kBadDecks),
+INSTANTIATE_TEST_SUITE_P(DeckParserBadDecks, DeckParserErrors, ::testing::ValuesIn(kBadDecks),
                          [](const auto& info) { return std::string(info.param.name); });
 
 TEST(DeckParserErrorsDetail, UnknownCommandHintAndText) {

@@ -2,7 +2,6 @@
 // Support for the deck front-end tests: a temporary directory that removes
 // itself, and a check that a call fails with a DeckError at a given place.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <cstdlib>
@@ -54,8 +53,10 @@ inline void expectDeckError(const std::function<void()>& f, const std::string& f
     EXPECT_EQ(e.loc().line, line) << e.what();
     EXPECT_EQ(e.loc().col, col) << e.what();
     EXPECT_NE(std::string(e.what()).find(text), std::string::npos)
-        << "message lacks '" << text << "':\n" << e.what();
-    const std::string head = file + ":" + std::to_string(line) + ":" + std::to_string(col) + ": error: ";
+        << "message lacks '" << text << "':\n"
+        << e.what();
+    const std::string head =
+        file + ":" + std::to_string(line) + ":" + std::to_string(col) + ": error: ";
     EXPECT_EQ(std::string(e.what()).rfind(head, 0), 0u) << e.what();
   }
 }

@@ -39,10 +39,10 @@ TEST(ExpressionNumbers, FortranAndCForms) {
 TEST(ExpressionPrecedence, OperatorsBindAsInFortran) {
   EXPECT_EQ(ev("2+3*4"), 14.0);
   EXPECT_EQ(ev("(2+3)*4"), 20.0);
-  EXPECT_EQ(ev("2-3-4"), -5.0);     // left associative
-  EXPECT_EQ(ev("10/4/2"), 1.25);    // left associative
-  EXPECT_EQ(ev("2^3^2"), 512.0);    // right associative
-  EXPECT_EQ(ev("-2^2"), -4.0);      // ^ above unary minus
+  EXPECT_EQ(ev("2-3-4"), -5.0);   // left associative
+  EXPECT_EQ(ev("10/4/2"), 1.25);  // left associative
+  EXPECT_EQ(ev("2^3^2"), 512.0);  // right associative
+  EXPECT_EQ(ev("-2^2"), -4.0);    // ^ above unary minus
   EXPECT_EQ(ev("(-2)^2"), 4.0);
   EXPECT_EQ(ev("2^-1"), 0.5);
   EXPECT_EQ(ev("2*-3"), -6.0);
@@ -106,11 +106,12 @@ TEST(ExpressionNames, AnyLengthCaseInsensitive) {
   EXPECT_EQ(ev("ks_beam*2", p), -5.0);
   EXPECT_EQ(ev("E/1e6", p), 30.0);
   EXPECT_EQ(ev("N2+_X", p), 4.0);
-  EXPECT_EQ(ev("sin", [] {
-              Parameters q;
-              q.set("sin", 7);
-              return q;
-            }()),
+  EXPECT_EQ(ev("sin",
+               [] {
+                 Parameters q;
+                 q.set("sin", 7);
+                 return q;
+               }()),
             7.0);  // a function name without '(' is a parameter
   const Expression e = Expression::parse(field("a*b+a", 1));
   EXPECT_EQ(e.names(), (std::vector<std::string>{"a", "b"}));
@@ -175,12 +176,16 @@ TEST(ExpressionErrors, SyntaxErrorsAtTheBadCharacter) {
   expectDeckError([] { Expression::parse(field("sqr(2)", 1)); }, "x.inp", 5, 1,
                   "unknown function 'sqr'");
   expectDeckError([] { Expression::parse(field("(1))", 1)); }, "x.inp", 5, 4, "unmatched ')'");
-  expectDeckError([] { Expression::parse(field("sqrt()", 1)); }, "x.inp", 5, 6, "needs an argument");
+  expectDeckError([] { Expression::parse(field("sqrt()", 1)); }, "x.inp", 5, 6,
+                  "needs an argument");
   expectDeckError([] { Expression::parse(field("2*#", 1)); }, "x.inp", 5, 3, "unexpected '#'");
   expectDeckError([] { Expression::parse(field("()", 1)); }, "x.inp", 5, 2, "empty parentheses");
   expectDeckError([] { Expression::parse(field("2**3", 1)); }, "x.inp", 5, 3, "unexpected '*'");
-  expectDeckError([] { Expression::parse("1 + 2 3", {"p.inp", 2, 5}); }, "p.inp", 2, 11,
-                  "unexpected '3'");
+  expectDeckError(
+      [] {
+        Expression::parse("1 + 2 3", {"p.inp", 2, 5});
+      },
+      "p.inp", 2, 11, "unexpected '3'");
   try {
     Expression::parse(field("sqr(2)", 1));
   } catch (const DeckError& e) {
@@ -193,8 +198,8 @@ TEST(ExpressionIntegers, WholeNumbersOnly) {
   p.set("n", 4);
   EXPECT_EQ(Expression::parse(field("n/2", 1)).evalInt(p, "node number"), 2);
   EXPECT_EQ(Expression::parse(field("3*(1/3)*3", 1)).evalInt(p, "count"), 3);  // round-off
-  expectDeckError([&] { Expression::parse(field("n/8", 2)).evalInt(p, "node number"); }, "x.inp",
-                  5, 2, "node number must be a whole number, got 0.5");
+  expectDeckError([&] { Expression::parse(field("n/8", 2)).evalInt(p, "node number"); }, "x.inp", 5,
+                  2, "node number must be a whole number, got 0.5");
 }
 
 TEST(ExpressionParameters, ValidNames) {

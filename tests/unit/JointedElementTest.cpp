@@ -400,7 +400,7 @@ Eigen::VectorXd run(JointForm form, const TimeIntegrator& ti, int steps, double 
   an.setIntegrator(ti);
   an.setTolerance(1e-28);
   an.setDt(dt);
-  if (!ti.dynamic()) an.setLoadFunction([](double t) { return t; });
+  if (!ti.dynamic()) an.setLoadFunction(1, [](double t) { return t; });
   for (int s = 0; s < steps; ++s) {
     EXPECT_TRUE(solveStep(an)) << "step " << s;
   }

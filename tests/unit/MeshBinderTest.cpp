@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "macro/DeckParser.h"
+#include "macro/DeckReader.h"
 #include "macro/MeshBinder.h"
 #include "tests/unit/DeckTestSupport.h"
 
@@ -15,18 +16,27 @@ namespace {
 using testing::DeckTempDir;
 using testing::expectDeckError;
 
-const char* kMaterial = "MATErial,1\n FRAMe\n ELAStic ISOTropic 200e6 0.3\n CROSs SECTion 0.01 1e-4\n\n";
+const char* kMaterial =
+    "MATErial,1\n FRAMe\n ELAStic ISOTropic 200e6 0.3\n CROSs SECTion 0.01 1e-4\n\n";
 
 // A deck with one problem whose mesh is 'mesh' (control record 0 0 0 2 3 2 unless given).
 std::string deck(const std::string& mesh, const std::string& control = "0 0 0 2 3 2") {
   return "FEAP * * test\n" + control + "\n" + mesh + "END\nSTOP\n";
 }
 
+// The mesh of a one-problem deck applied to a new model (the mesh may lack elements;
+// buildModel, which insists on them, is tested on its own).
 Model build(const std::string& mesh, Parameters* params = nullptr, std::ostream* echo = nullptr,
             const std::string& control = "0 0 0 2 3 2") {
   const Deck d = parseDeckText(deck(mesh, control), "mesh.inp");
+  const Problem& pr = std::get<Problem>(d.items.at(0));
   Parameters local;
-  return buildModel(std::get<Problem>(d.items.at(0)), params ? *params : local, echo);
+  Model model;
+  MeshBinder binder(model, params ? *params : local, echo);
+  binder.setControl(pr.control);
+  binder.apply(pr.mesh);
+  binder.finish(pr.meshEnd.loc, pr.meshEnd.lineText());
+  return model;
 }
 
 void expectBuildError(const std::string& mesh, int line, int col, const std::string& msg,
@@ -101,31 +111,32 @@ TEST(MeshBinderElements, ZeroIncrementCountsAsOne) {
 }
 
 TEST(MeshBinderElements, MaterialsMayComeAfterElements) {
-  const Model m = build(std::string("COOR\n 1 1 0 0\n 3 0 2 0\n\nELEM\n 1 1 2 1 2\n 2 0 2 2 3\n\n") +
-                        "MATErial 2\n FRAMe\n RESUltant STIFfness 1e5 4e4 2e3\n\n");
+  const Model m =
+      build(std::string("COOR\n 1 1 0 0\n 3 0 2 0\n\nELEM\n 1 1 2 1 2\n 2 0 2 2 3\n\n") +
+            "MATErial 2\n FRAMe\n RESUltant STIFfness 1e5 4e4 2e3\n\n");
   EXPECT_EQ(m.numElements(), 2);
   EXPECT_EQ(m.element(1).materialNumber(), 2);
 }
 
 TEST(MeshBinderElements, Errors) {
-  expectBuildError(std::string("COOR\n 1 1 0 0\n 3 0 2 0\n\n") + kMaterial +
-                       "ELEM\n 2 0 1 1 2\n 1 0 1 2 3\n\n",
-                   12, 2, "element 1 comes after element 2");
+  expectBuildError(
+      std::string("COOR\n 1 1 0 0\n 3 0 2 0\n\n") + kMaterial + "ELEM\n 2 0 1 1 2\n 1 0 1 2 3\n\n",
+      14, 2, "element 1 comes after element 2");
   expectBuildError(std::string("COOR\n 1 1 0 0\n 3 0 2 0\n\n") + "ELEM\n 1 1 7 1 2\n 2 0 7 2 3\n\n",
                    8, 6, "element 1 uses material 7, which is not defined");
   expectBuildError(std::string("COOR\n 1 1 0 0\n 3 0 2 0\n\n") + kMaterial + "ELEM\n 1 0 1 1 4\n\n",
-                   11, 10, "uses node 4, which has no coordinates");
+                   13, 10, "uses node 4, which has no coordinates");
   // Generated element 2 needs node 5: reported at the record that generated it.
-  expectBuildError(std::string("COOR\n 1 1 0 0\n 4 0 3 0\n\n") + kMaterial +
-                       "ELEM\n 1 3 1 1 2\n 3 0 1 3 4\n\n",
-                   11, 8, "element 2 (generated from this record) uses node 5");
+  expectBuildError(
+      std::string("COOR\n 1 1 0 0\n 4 0 3 0\n\n") + kMaterial + "ELEM\n 1 3 1 1 2\n 3 0 1 3 4\n\n",
+      13, 10, "element 2 (generated from this record) uses node 5");
   expectBuildError(std::string("COOR\n 1 0 0 0\n 2 0 0 0\n\n") + kMaterial + "ELEM\n 1 0 1 1 2\n\n",
-                   11, 8, "zero length");
+                   13, 8, "zero length");
   expectBuildError(std::string("COOR\n 1 1 0 0\n 3 0 2 0\n\n") + kMaterial +
-                       "ELEM\n 1 0 1 1 2\n 3 0 1 2 3\n\n",
-                   13, 1, "element 2 is not defined");
+                       "ELEM\n 1 0 1 1 2\n\nELEM\n 3 0 1 2 3\n\n",
+                   18, 1, "element 2 is not defined");
   expectBuildError(std::string("COOR\n 1 1 0 0\n 3 0 2 0\n\n") + kMaterial + "ELEM\n 1 0 1 1 2\n\n",
-                   13, 1, "element 2 is not defined (numel = 2)", "0 2 0 2 3 2");
+                   15, 1, "element 2 is not defined (numel = 2)", "0 2 0 2 3 2");
 }
 
 TEST(MeshBinderBoundary, NegativeCodesPropagateFeapStyle) {
@@ -148,8 +159,9 @@ TEST(MeshBinderBoundary, RecordReplacesTheNodeCodes) {
 }
 
 TEST(MeshBinderLoads, ForcesAndDisplacementsInterpolate) {
-  Model m = build("COOR\n 1 1 0 0\n 5 0 4 0\n\nFORCe\n 1 1 0 -10 2\n 5 0 0 -50 6\n\n"
-                  "DISPlacement\n 2 2 0.1 0 0\n 4 0 0.3 0 0\n\n");
+  Model m = build(
+      "COOR\n 1 1 0 0\n 5 0 4 0\n\nFORCe\n 1 1 0 -10 2\n 5 0 0 -50 6\n\n"
+      "DISPlacement\n 2 2 0.1 0 0\n 4 0 0.3 0 0\n\n");
   for (int k = 0; k < 5; ++k) {
     EXPECT_DOUBLE_EQ(m.force(k)[0], 0.0);
     EXPECT_DOUBLE_EQ(m.force(k)[1], -10.0 * (k + 1));
@@ -166,13 +178,14 @@ TEST(MeshBinderLoads, LoadOnANodeWithoutCoordinatesIsAnError) {
 }
 
 // A portal: columns 1-2-3 (x = 0) and 7-8-9 (x = 4), beam 3-4-5-6-7 (y = 4).
-const std::string kPortal = std::string(
-                                "COOR\n 1 1 0 0\n 3 0 0 4\n 4 1 1 4\n 6 0 3 4\n 7 1 4 4\n 9 0 4 0\n\n") +
-                            kMaterial + "ELEM\n 1 1 1 1 2\n 8 0 1 8 9\n\n";
+const std::string kPortal =
+    std::string("COOR\n 1 1 0 0\n 3 0 0 4\n 4 1 1 4\n 6 0 3 4\n 7 1 4 4\n 9 0 4 0\n\n") +
+    kMaterial + "ELEM\n 1 1 1 1 2\n 8 0 1 8 9\n\n";
 
 TEST(MeshBinderEdges, EdgeCommandsSelectByCoordinate) {
-  Model m = build(kPortal + "EBOUndary\n 2 0 1 1 1\n\nEFORce\n 2 4 0 -1 0\n\nEFORce\n 2 4 0 -1 0\n\n"
-                            "EDISplacement,SET\n 1 4 0.5 0 0\n\n");
+  Model m = build(kPortal +
+                  "EBOUndary\n 2 0 1 1 1\n\nEFORce\n 2 4 0 -1 0\n\nEFORce\n 2 4 0 -1 0\n\n"
+                  "EDISplacement,SET\n 1 4 0.5 0 0\n\n");
   using A = std::array<int, 3>;
   EXPECT_EQ(m.bound(0), (A{1, 1, 1}));
   EXPECT_EQ(m.bound(8), (A{1, 1, 1}));
@@ -195,16 +208,18 @@ TEST(MeshBinderEdges, EdgeAddKeepsOtherCodes) {
 }
 
 TEST(MeshBinderEdges, NoNodeOnTheEdgeIsAnError) {
-  expectBuildError(kPortal + "EBOU\n 1 7.5 1 1 0\n\n", 20, 4, "no node has coordinate 1 equal to 7.5");
+  expectBuildError(kPortal + "EBOU\n 1 7.5 1 1 0\n\n", 21, 4,
+                   "no node has coordinate 1 equal to 7.5");
 }
 
 TEST(MeshBinderEdges, CoordinateCommandsPickTheNearestNode) {
-  Model m = build(kPortal + "CBOUndary\n NODE 0.1 -0.2 1 1 1\n NODE 4.2 0.1 0 1 0\n\n"
-                            "CFORce\n node 2.1 3.8 0 -5 0\n\nCFOR,ADD\n NODE 2 4 0 -5 0\n\n");
+  Model m = build(kPortal +
+                  "CBOUndary\n NODE 0.1 -0.2 1 1 1\n NODE 4.2 0.1 0 1 0\n\n"
+                  "CFORce\n node 2.1 3.8 0 -5 0\n\nCFOR,ADD\n NODE 2 4 0 -5 0\n\n");
   EXPECT_EQ(m.bound(0), (std::array<int, 3>{1, 1, 1}));
   EXPECT_EQ(m.bound(8), (std::array<int, 3>{0, 1, 0}));
   EXPECT_DOUBLE_EQ(m.force(4)[1], -10.0);
-  expectBuildError(kPortal + "CBOU\n 1 0 0 1 1 1\n\n", 20, 2, "expected NODE");
+  expectBuildError(kPortal + "CBOU\n 1 0 0 1 1 1\n\n", 21, 2, "expected NODE");
 }
 
 TEST(MeshBinderBlock, LineOfTwoNodeElements) {
@@ -219,15 +234,16 @@ TEST(MeshBinderBlock, LineOfTwoNodeElements) {
 }
 
 TEST(MeshBinderBlock, ZerosContinueNumbering) {
-  Model m = build(std::string(kMaterial) +
-                  "MATE,2\n FRAM\n RESU STIF 1 1 1\n\n"
-                  "BLOC\n CART 2 0 1 1 2\n 1 0 0\n 2 0 2\n\nBLOC\n CART 2 0 0 0 0\n 1 0 2\n 2 2 2\n\n");
+  Model m =
+      build(std::string(kMaterial) +
+            "MATE,2\n FRAM\n RESU STIF 1 1 1\n\n"
+            "BLOC\n CART 2 0 1 1 2\n 1 0 0\n 2 0 2\n\nBLOC\n CART 2 0 0 0 0\n 1 0 2\n 2 2 2\n\n");
   ASSERT_EQ(m.numNodes(), 6);
   ASSERT_EQ(m.numElements(), 4);
   EXPECT_EQ(nodesOf(m, 2), (std::array<int, 2>{3, 4}));
   EXPECT_DOUBLE_EQ(m.coord(5).x(), 2.0);
   EXPECT_EQ(m.element(3).materialNumber(), 2);  // mat 0 repeats the previous block's
-  expectBuildError(std::string(kMaterial) + "BLOC\n CART 2 0 1 1 1\n 1 0 0\n\n", 9, 2,
+  expectBuildError(std::string(kMaterial) + "BLOC\n CART 2 0 1 1 1\n 1 0 0\n\n", 10, 2,
                    "needs master nodes 1 and 2");
 }
 
@@ -277,18 +293,20 @@ TEST(MeshBinderMaterial, DefaultShearFactor) {
 
 TEST(MeshBinderMaterial, Errors) {
   const std::string head = "MATE,1\n FRAMe\n ELAS ISOT 1e6 0.2\n CROS SECT 1 1\n";
-  expectBuildError(head + " SOFTening LINEar 300 1500\n\n", 7, 22, "Ks must be negative");
+  expectBuildError(head + " SOFTening LINEar 300 1500\n\n", 7, 23, "Ks must be negative");
   expectBuildError(head + " DENSity 2.5\n\n", 7, 10, "DENSity takes two text fields, then numbers");
-  expectBuildError(head + " DENSOTY,,2\n\n", 7, 2, "unknown material record 'DENSOTY'");
+  expectBuildError(head + " DNSITY,,2\n\n", 7, 2, "unknown material record 'DNSITY'");
   expectBuildError(head + " MASS OFF\n\n", 7, 7, "unknown option 'OFF' of MASS");
   expectBuildError(head + " HARD BILI 1 2 3\n\n", 7, 17, "HARDening needs 4 values");
   expectBuildError(head + " ELAS ORTH 1 2 3\n\n", 7, 7, "only isotropic");
   expectBuildError("MATE,1\n FRAMe\n ELAS ISOT 1e6 0.2\n\n", 3, 1, "has no CROSs record");
-  expectBuildError("MATE,1\n ELAS ISOT 1e6 0.2\n\n", 4, 2, "element type record (FRAMe) must come first");
+  expectBuildError("MATE,1\n ELAS ISOT 1e6 0.2\n\n", 4, 2,
+                   "element type record (FRAMe) must come first");
   expectBuildError("MATE,1\n TRUSs\n\n", 4, 2, "unknown element type 'TRUSs'");
-  expectBuildError("MATE,1\n FRAMe\n RESU STIF 1 0 1\n\n", 3, 1, "GA = 0 with shear deformation on");
+  expectBuildError("MATE,1\n FRAMe\n RESU STIF 1 0 1\n\n", 3, 1,
+                   "GA = 0 with shear deformation on");
   try {
-    build(head + " DENSOTY,,2\n\n");
+    build(head + " DNSITY,,2\n\n");
   } catch (const DeckError& e) {
     EXPECT_EQ(e.hint(), "did you mean 'DENSity'?");
   }
@@ -302,13 +320,14 @@ TEST(MeshBinderJoints, CoincidentNodes) {
   EXPECT_EQ(m.joints()[0].slave, 2);
   expectBuildError(std::string("COOR\n 1 0 0 0\n 2 0 1 0\n 3 0 1.5 0\n 4 0 2 0\n\n") + kMaterial +
                        "ELEM\n 1 0 1 1 2\n 2 0 1 3 4\n\nJOINt\n 2 3\n\n",
-                   18, 4, "joint nodes 2 and 3 are not coincident");
+                   19, 4, "joint nodes 2 and 3 are not coincident");
 }
 
 TEST(MeshBinderContact, GroundGravityAndPrint) {
   std::ostringstream echo;
-  Model m = build(kPortal + "CONTact\n GROUnd,,-0.5,1e7\n\nGRAVity,,0,-9.81\nNOPRint\n"
-                            "FORC\n 5 0 0 -77 0\n\nPRINt\nBOUN\n 1 0 1 1 1\n\n",
+  Model m = build(kPortal +
+                      "CONTact\n GROUnd,,-0.5,1e7\n\nGRAVity,,0,-9.81\nNOPRint\n"
+                      "FORC\n 5 0 0 -77 0\n\nPRINt\nBOUN\n 1 0 1 1 1\n\n",
                   nullptr, &echo);
   ASSERT_TRUE(m.ground().has_value());
   EXPECT_EQ(m.ground()->y0, -0.5);
@@ -323,30 +342,45 @@ TEST(MeshBinderContact, GroundGravityAndPrint) {
   EXPECT_EQ(s.find("N o d a l   F o r c e s"), std::string::npos);  // under NOPRint
   Model a = build(kPortal + "CONT\n GROU,,0,1e5,0.25\n\n");
   EXPECT_EQ(a.ground()->alpha, 0.25);
-  expectBuildError(kPortal + "CONT\n GROU,,0,-1\n\n", 20, 11, "penalty stiffness k must be positive");
-  expectBuildError(kPortal + "CONT\n WALL,,0,1\n\n", 20, 2, "unknown contact type 'WALL'");
-  expectBuildError(kPortal + "GRAV,0,-9.81\n", 19, 6, "GRAVity takes two text fields");
+  expectBuildError(kPortal + "CONT\n GROU,,0,-1\n\n", 21, 10,
+                   "penalty stiffness k must be positive");
+  expectBuildError(kPortal + "CONT\n WALL,,0,1\n\n", 21, 2, "unknown contact type 'WALL'");
+  expectBuildError(kPortal + "GRAV,0,-9.81\n", 20, 6, "GRAVity takes two text fields");
 }
 
 TEST(MeshBinderControl, LimitsAndChecks) {
-  Model m = build(std::string("COOR\n 1 1 0 0\n 3 0 2 0\n\n") + kMaterial + "ELEM\n 1 1 1 1 2\n 2 0 1 2 3\n\n",
-                  nullptr, nullptr, "5 2 1 2 3 2");
+  Model m = build(
+      std::string("COOR\n 1 1 0 0\n 3 0 2 0\n\n") + kMaterial + "ELEM\n 1 1 1 1 2\n 2 0 1 2 3\n\n",
+      nullptr, nullptr, "5 2 1 2 3 2");
   EXPECT_EQ(m.numNodes(), 5);  // numnp sizes the model
   EXPECT_FALSE(m.hasCoord(4));
-  expectBuildError("COOR\n 1 1 0 0\n 4 0 2 0\n\n", 4, 2, "node 4 is beyond numnp = 3", "3 0 0 2 3 2");
-  expectBuildError(std::string(kMaterial) + "ELEM\n 3 0 1 1 2\n\n", 9, 2, "element 3 is beyond numel = 2",
-                   "0 2 0 2 3 2");
+  expectBuildError("COOR\n 1 1 0 0\n 4 0 2 0\n\n", 5, 2, "node 4 is beyond numnp = 3",
+                   "3 0 0 2 3 2");
+  expectBuildError(std::string(kMaterial) + "ELEM\n 3 0 1 1 2\n\n", 9, 2,
+                   "element 3 is beyond numel = 2", "0 2 0 2 3 2");
   expectBuildError("MATE,2\n FRAM\n\n", 3, 6, "material 2 is beyond nummat = 1", "0 0 1 2 3 2");
   expectBuildError("", 2, 7, "ndm must be 2", "0 0 0 3 3 2");
   expectBuildError("", 2, 9, "ndf must be 3", "0 0 0 2 6 2");
   expectBuildError("", 2, 11, "nen must be 2", "0 0 0 2 3 3");
-  expectBuildError("", 2, 2, "numnp must not be negative", "-1 0 0 2 3 2");
-  expectBuildError("", 3, 1, "the mesh has no elements");
+  expectBuildError("", 2, 1, "numnp must not be negative", "-1 0 0 2 3 2");
+}
+
+TEST(MeshBinderControl, BuildModelNeedsElements) {
+  const Deck empty = parseDeckText(deck("COOR\n 1 0 0 0\n\n"), "empty.inp");
+  Parameters p;
+  expectDeckError([&] { buildModel(std::get<Problem>(empty.items[0]), p, nullptr); }, "empty.inp",
+                  6, 1, "the mesh has no elements");
+  const Deck ok = parseDeckText(deck(kPortal), "ok.inp");
+  std::ostringstream echo;
+  const Model m = buildModel(std::get<Problem>(ok.items[0]), p, &echo);
+  EXPECT_EQ(m.numElements(), 8);
+  EXPECT_EQ(m.numNodes(), 9);
+  EXPECT_NE(echo.str().find("Number of nodal points      = counted"), std::string::npos);
 }
 
 TEST(MeshBinderErrors, UndefinedParameterAndDivisionByZeroAtTheirColumns) {
   expectBuildError("COOR\n 1 0 0 0\n 2 0 L 0\n\n", 5, 6, "undefined parameter 'l'");
-  expectBuildError("PARA\n z = 0\n\nCOOR\n 1 0 0 0\n 2 0 1/z 0\n\n", 8, 8, "division by zero");
+  expectBuildError("PARA\n z = 0\n\nCOOR\n 1 0 0 0\n 2 0 1/z 0\n\n", 8, 7, "division by zero");
   expectBuildError("COOR\n 1 0 0 0\n 2.5 0 1 0\n\n", 5, 2, "node number must be a whole number");
   expectBuildError("COOR\n 1 0 0 0\n 1 0 1 0\n\n", 5, 2, "node 1 is given on two records in a row");
   expectBuildError("COOR\n 1 0 0 0 7\n\n", 4, 10, "too many fields");
@@ -363,16 +397,36 @@ TEST(MeshBinderReentry, ApplyMeshChangesAnExistingModel) {
   EXPECT_EQ(p.get("f"), -3.0);
   EXPECT_EQ(m.topologyVersion(), version);  // loads only: same dofs
   EXPECT_EQ(m.numElements(), 8);
-  const Deck bc = parseDeckText(deck("BOUN\n 9 0 1 1 0\n\n"), "bc.inp");
-  applyMesh(std::get<Problem>(bc.items[0]).mesh, p, m, nullptr);
+  // MESH re-entry data: mesh records alone, END optional.
+  const auto bc =
+      parseMeshRecords(DeckReader::readString("BOUN\n 9 0 1 1 0\n\nEND\n", "re.inp"), "re.inp");
+  applyMesh(bc, p, m, nullptr);
   EXPECT_EQ(m.bound(8), (std::array<int, 3>{1, 1, 0}));
   EXPECT_GT(m.topologyVersion(), version);
+  const auto mat = parseMeshRecords(
+      DeckReader::readString("MATE,1\n FRAM\n RESU STIF 1 2 3\n\nELEM\n 9 0 1 9 1\n\n", "re.inp"),
+      "re.inp");
+  applyMesh(mat, p, m, nullptr);
+  EXPECT_EQ(m.numElements(), 9);
+  EXPECT_EQ(m.material(1)->EI(), 3.0);
+  EXPECT_EQ(nodesOf(m, 8), (std::array<int, 2>{8, 0}));
+  expectDeckError(
+      [] {
+        parseMeshRecords(DeckReader::readString("FORC\n 1 0 1 0 0\nEND\n", "re.inp"), "re.inp");
+      },
+      "re.inp", 3, 1, "not ended by a blank record");
+  expectDeckError(
+      [] { parseMeshRecords(DeckReader::readString("END\nFORC\n", "re.inp"), "re.inp"); }, "re.inp",
+      2, 1, "record after the END");
 }
 
 TEST(MeshBinderErrors, DeckFileWithIncludedMesh) {
   DeckTempDir dir;
-  const std::string main = dir.write("frame.inp", "FEAP * * x\n0 0 0 2 3 2\nINCLude mesh.inc\nEND\nSTOP\n");
-  const std::string inc = dir.write("mesh.inc", std::string(kMaterial) + "COOR\n 1 1 0 0\n 3 0 2 0\n\nELEM\n 1 1 9 1 2\n 2 0 9 2 3\n\n");
+  const std::string main =
+      dir.write("frame.inp", "FEAP * * x\n0 0 0 2 3 2\nINCLude mesh.inc\nEND\nSTOP\n");
+  const std::string inc =
+      dir.write("mesh.inc", std::string(kMaterial) +
+                                "COOR\n 1 1 0 0\n 3 0 2 0\n\nELEM\n 1 1 9 1 2\n 2 0 9 2 3\n\n");
   const Deck d = parseDeck(main);
   Parameters p;
   expectDeckError([&] { buildModel(std::get<Problem>(d.items[0]), p, nullptr); }, inc, 11, 6,
