@@ -23,7 +23,7 @@ struct MaterialSet {
   int number = 0;
   std::string label;           // free text after MATErial,m
   std::string elementType;     // "FRAMe" (the only type for now)
-  // ELAStic ISOTropic E nu; CROSs section A I [kappa]
+  // ELAStic ISOTropic E nu; CROSs SECTion A Ixx Iyy Ixy J kappa (FEAPpv's record; kappa 0: 5/6)
   double E = 0, nu = 0, A = 0, I = 0, kappa = 5.0 / 6.0;
   // RESUltant STIFfness EA GA EI (overrides ELAS + CROS when given)
   std::optional<double> resEA, resGA, resEI;

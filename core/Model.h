@@ -66,6 +66,7 @@ class Model {
   const Element& element(int e) const { return *elements_[e]; }
   void setElement(int e, std::unique_ptr<Element> el);  // grows the list as needed
   std::vector<std::unique_ptr<Element>>& elements() { return elements_; }
+  const std::vector<std::unique_ptr<Element>>& elements() const { return elements_; }
 
   // --- collapse-phase features ---
   std::vector<Joint>& joints() { return joints_; }

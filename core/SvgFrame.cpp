@@ -87,11 +87,8 @@ void hatchedSurface(Pen& base, Pen& hatch, const Vec2& c, const Vec2& a, double 
   for (double k = -half + 3; k <= half + 1e-9; k += 4) hatch.line(c + k * t, c + k * t + d);
 }
 
-// Model offers const element access only by reference; the list may hold empty
-// slots (setElement grows it), which are skipped rather than dereferenced.
-const Element* elementOrNull(const Model& model, int e) {
-  return const_cast<Model&>(model).elements()[e].get();
-}
+// The element list may hold empty slots (setElement grows it): skipped, not dereferenced.
+const Element* elementOrNull(const Model& model, int e) { return model.elements()[e].get(); }
 
 }  // namespace
 

@@ -30,11 +30,8 @@ std::string fileName(const std::filesystem::path& stem, int step) {
   return stem.filename().string() + buf;
 }
 
-// Model offers const element access only by reference; the list may hold empty
-// slots (setElement grows it), which are skipped rather than dereferenced.
-const Element* elementOrNull(const Model& model, int e) {
-  return const_cast<Model&>(model).elements()[e].get();
-}
+// The element list may hold empty slots (setElement grows it): skipped, not dereferenced.
+const Element* elementOrNull(const Model& model, int e) { return model.elements()[e].get(); }
 
 const char* kPvdHeader =
     "<?xml version=\"1.0\"?>\n"

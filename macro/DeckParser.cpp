@@ -320,7 +320,10 @@ bool DeckParser::topLevelParamsAhead() const {
     if (p >= records_.size()) return false;
     while (p < records_.size() && records_[p].blank()) ++p;
   }
-  return p < records_.size() && (records_[p].is("FEAP") || records_[p].is("LOOP"));
+  // A parameter block belongs to the top level when the next item is a problem, a
+  // loop, the end of a loop or of the input.
+  return p >= records_.size() || records_[p].is("FEAP") || records_[p].is("LOOP") ||
+         records_[p].is("NEXT") || records_[p].is("STOP");
 }
 
 bool DeckParser::endsBatchData() const {

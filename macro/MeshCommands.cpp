@@ -463,6 +463,33 @@ void applyBoundary(MeshContext& ctx, const MeshCommand& cmd) {
   }
 }
 
+// FPROportional: node ng p1 p2 p3, the proportional load table of each dof's
+// FORCe/DISPlacement value (FEAP; 0 or absent: table 1). Generation copies the
+// earlier record's numbers to the nodes between (increment ng).
+
+void applyLoadTables(MeshContext& ctx, const MeshCommand& cmd) {
+  int l = 0, lg = 0;
+  for (const Record& r : cmd.data) {
+    ctx.maxFields(r, 2 + kNodeDofs, "node ng p1 p2 p3");
+    const int n = ctx.node(r, 0);
+    const int ng = ctx.integer(r, 1, "generation increment");
+    std::array<int, kNodeDofs> p{};
+    for (int i = 0; i < kNodeDofs; ++i) {
+      p[i] = ctx.integer(r, 2 + i, "proportional load table");
+      if (p[i] < 0) failAt(r, 2 + i, "a proportional load table number is 0 or positive");
+    }
+    if (l != 0 && lg != 0) {
+      const int step = sign(n - l) * std::abs(lg);
+      for (int k = l + step; (n - k) * step > 0; k += step)
+        ctx.model.loadTable(k - 1) = ctx.model.loadTable(l - 1);
+    }
+    ctx.model.loadTable(n - 1) = p;
+    ctx.referencedNodes.emplace(n, r);
+    l = n;
+    lg = ng;
+  }
+}
+
 // ---------------------------------------------------------------------------
 // FORCe / DISPlacement: node ng v1 v2 v3, generation by linear interpolation
 // between records (FEAP genvec, as for coordinates).
@@ -867,6 +894,12 @@ std::vector<MeshCommandEntry> meshCommandTable() {
                         "Generation interpolates linearly between records.",
                         {}, "node ng d1 d2 d3", nodeValueFields("d")),
                applyDisplacements});
+  t.push_back({meshSpec("FPROportional",
+                        "Proportional load table of each dof's FORCe or DISPlacement value "
+                        "(PROP,,n defines table n; 0: table 1). Generation copies the earlier "
+                        "record's numbers to the nodes generated with increment ng.",
+                        {}, "node ng p1 p2 p3", nodeValueFields("p")),
+               applyLoadTables});
   t.push_back({meshSpec("EBOUndary", "Restraint codes" + edgeDoc + ". Default mode ADD.", mode,
                         "idir x c1 c2 c3", edgeFields("c")),
                applyEbou});

@@ -319,22 +319,6 @@ void ProblemRun::setTimeHistory(const Macro& m) {
 
 namespace {
 
-// Mesh commands of a MESH re-entry, parsed as the mesh input of a problem.
-std::vector<MeshItem> parseMeshItems(std::vector<Record> records, const Record& origin) {
-  const std::string& file = origin.loc.file;
-  records.insert(records.begin(), DeckReader::lexLine("0 0 0 2 3 2", file, origin.loc.line));
-  records.insert(records.begin(), DeckReader::lexLine("FEAP * * MESH", file, origin.loc.line));
-  if (records.empty() || !records.back().is("END"))
-    records.push_back(DeckReader::lexLine("END", file, origin.loc.line));
-  CommandRegistry mesh, sub;
-  registerMeshCommands(mesh);
-  registerMaterialSubRecords(sub);
-  Deck deck = DeckParser(std::move(records), file, mesh, sub).parse();
-  for (TopItem& item : deck.items)
-    if (auto* p = std::get_if<Problem>(&item)) return std::move(p->mesh);
-  return {};
-}
-
 std::vector<MeshItem> meshReentryItems(const Macro& m) {
   std::vector<Record> records;
   if (!m.optionText.empty()) {
@@ -347,7 +331,7 @@ std::vector<MeshItem> meshReentryItems(const Macro& m) {
   } else {
     records = m.data;
   }
-  return parseMeshItems(records, m.record);
+  return parseMeshRecords(std::move(records), m.record.loc.file);
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 
 namespace c2d {
 
-// Levenshtein distance, case-insensitive.
+// Edit distance (insert, delete, substitute, swap of neighbours), case-insensitive.
 int editDistance(std::string_view a, std::string_view b);
 
 // The candidate nearest to word (at most about a third of its letters wrong), or "".

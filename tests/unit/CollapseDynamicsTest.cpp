@@ -155,8 +155,10 @@ double midPointElongation(double omega, double h) {
 }
 
 // Stiff rod: a rigid pendulum for all practical purposes (stretch under the
-// pendulum loads ~1e-7), uniform mass, no rotary inertia.
-MaterialSet stiffRod() { return rodMaterial(1e8, 1e8, 1e6, 1.0, 0.0); }
+// pendulum loads ~1e-5, a period change ~3e-6), uniform mass, no rotary
+// inertia. Much stiffer rods put the residual's round-off (EA * 1e-16) above
+// what the Newton energy test can resolve for small motions.
+MaterialSet stiffRod() { return rodMaterial(1e6, 1e6, 1e4, 1.0, 0.0); }
 
 double singlePendulumPeriod(double theta0, int stepsPerPeriod, double expectedPeriod,
                             double periods) {
@@ -190,6 +192,7 @@ TEST(CollapseDynamicsPendulum, SmallAmplitudePeriodIsT0WithTheMidPointElongation
   // The elongation is 2.1e-3 at 40 steps per period: the check resolves it 100 times.
   EXPECT_GT(expected / t0 - 1, 2e-3);
   EXPECT_NEAR(measured / expected, 1.0, 2e-5) << "measured " << measured << ", T0 " << t0;
+  std::printf("DBG small amp: %.3e elong %.3e\n", measured/expected-1, expected/t0-1);
 }
 
 TEST(CollapseDynamicsPendulum, FiniteAmplitudePeriodFollowsTheEllipticIntegral) {
@@ -200,6 +203,7 @@ TEST(CollapseDynamicsPendulum, FiniteAmplitudePeriodFollowsTheEllipticIntegral) 
   const int n = 300;
   const double measured = singlePendulumPeriod(theta0, n, tAmp, 2.3);
   EXPECT_NEAR(measured / tAmp, 1.0, 1e-4) << "measured " << measured << ", elliptic " << tAmp;
+  std::printf("DBG finite amp: %.3e  withElong %.3e\n", measured/tAmp-1, measured/(tAmp*midPointElongation(2*kPi/tAmp, tAmp/n))-1);
 }
 
 TEST(CollapseDynamicsPendulum, DoublePendulumFrequenciesAre3MinusPlus6OverSqrt7) {
@@ -230,6 +234,7 @@ TEST(CollapseDynamicsPendulum, DoublePendulumFrequenciesAre3MinusPlus6OverSqrt7)
     const double expected = period * midPointElongation(omega, h);
     const double measured = periodFromCrossings(zeroCrossings(t, y1));
     EXPECT_NEAR(measured / expected, 1.0, 5e-5) << "mode " << mode;
+  std::printf("DBG double mode %d: %.3e\n", mode, measured/expected-1);
     // A pure mode: both links cross zero together.
     const auto c1 = zeroCrossings(t, y1), c2 = zeroCrossings(t, y2);
     ASSERT_EQ(c1.size(), c2.size());
@@ -303,6 +308,7 @@ TEST(CollapseDynamicsEnergy, FreeFlyingBeamConservesEnergyAndMomentumAtLargeStep
   }
   const Momentum m1 = momentum(m, an.state());
   EXPECT_LT(worst, 1e-10 * e0) << "E0 = " << e0;
+  std::printf("DBG free flying dE/E %.3e dp %.3e\n", worst/e0, (m1.p-m0.p).norm()/m0.p.norm());
   // Exact up to round-off, which accumulates over the 2000 steps (the same with
   // a Newton tolerance of 1e-24).
   EXPECT_LT((m1.p - m0.p).norm(), 1e-11 * m0.p.norm());
@@ -338,6 +344,7 @@ TEST(CollapseDynamicsEnergy, FreeBeamSpinsMoreThanTenTurns) {
   EXPECT_NEAR(st.u(3 * last + 2), st.u(2), 1e-9);
   EXPECT_LT(worst, 1e-10 * e0);
   const Momentum mm = momentum(m, st);
+  std::printf("DBG spin dE %.3e turns %.5f\n", worst/e0, turns);
   EXPECT_LT((mm.mx / mm.mass).norm(), 1e-11);
   EXPECT_LT(mm.p.norm(), 1e-11);
 }
@@ -407,7 +414,8 @@ TEST(CollapseDynamicsEnergy, JointedPendulumUnderGravityConservesEnergy) {
       maxRelative = std::max(maxRelative, std::abs(je->relativeRotation()));
   }
   EXPECT_LT(worst, 1e-10 * scale);
-  EXPECT_GT(maxRelative, 1.0);  // the joints really turned
+  EXPECT_GT(maxRelative, 1.0);
+  std::printf("DBG 3links dE/scale %.3e\n", worst/scale);  // the joints really turned
   EXPECT_GT(an.energy().kinetic, 0.1 * scale);
 }
 
@@ -431,6 +439,7 @@ TEST(CollapseDynamicsEnergy, DecayingSchemeSatisfiesTheStepIdentityAndNeverGains
     before = after;
   }
   EXPECT_LT(worstIdentity, 1e-11 * scale);
+  std::printf("DBG identity %.3e diss %.3e\n", worstIdentity/scale, totalDissipated/scale);
   EXPECT_GT(totalDissipated, 1e-3 * scale);
 }
 
@@ -453,6 +462,7 @@ TEST(CollapseDynamicsEnergy, NewmarkDriftsWhereTheMidPointSchemeConserves) {
   const double mid = drift(TimeIntegrator::midPoint(0, 0));
   const double newmark = drift(TimeIntegrator::newmark(0.25, 0.5));
   EXPECT_LT(mid, 1e-10);
+  std::printf("DBG mid %.3e newmark %.3e\n", mid, newmark);
   EXPECT_GT(newmark, 1e-5);
   EXPECT_GT(newmark, 1e4 * mid);
 }
@@ -602,6 +612,7 @@ TEST(GroundContact, DroppedBarMatchesTheRigidDropFormulas) {
   const double st = mass * kG / kTotal;
   const double pMax = st + std::sqrt(st * st + mass * v0 * v0 / kTotal);
   EXPECT_NEAR(r.contactTime / tc, 1.0, 2e-5) << r.contactTime << " vs " << tc;
+  std::printf("DBG tc %.3e pmax %.3e reb %.3e id %.3e\n", r.contactTime/tc-1, r.maxPenetration/pMax-1, r.reboundHeight/r.startHeight-1, r.worstIdentity/r.energyScale);
   EXPECT_NEAR(r.maxPenetration / pMax, 1.0, 1e-6) << r.maxPenetration << " vs " << pMax;
   EXPECT_NEAR(r.reboundHeight / r.startHeight, 1.0, 1e-10);
   EXPECT_TRUE(r.energyNeverIncreased);
@@ -622,6 +633,7 @@ TEST(GroundContact, ContactDissipationLowersTheRebound) {
     EXPECT_NEAR(damped.startHeight - damped.reboundHeight, damped.dissipated / kG,
                 1e-10 * damped.startHeight);
     EXPECT_GT(damped.dissipated, 1e-3 * damped.energyScale) << "dt " << dt;
+  std::printf("DBG damped dt %g diss %.3e id %.3e reb %.4f\n", dt, damped.dissipated/damped.energyScale, damped.worstIdentity/damped.energyScale, damped.reboundHeight/damped.startHeight);
   }
 }
 
@@ -684,6 +696,7 @@ TEST(GroundContact, AssembledTangentWithContactMatchesFiniteDifferences) {
         fd.col(eq) = (rp - rm) / (2 * h);
       }
     EXPECT_LT((fd - k).cwiseAbs().maxCoeff(), 1e-6 * k.cwiseAbs().maxCoeff()) << ti.describe();
+    std::printf("DBG fd %.3e\n", (fd - k).cwiseAbs().maxCoeff()/k.cwiseAbs().maxCoeff());
   }
 }
 
