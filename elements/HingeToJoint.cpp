@@ -99,7 +99,8 @@ std::vector<CreatedJoint> hingeToJoint(Model& model, State& state) {
     cj.element = e;
     cj.slaveEnd = end;
     cj.master = model.element(e).nodes()[end];
-    cj.slave = model.addNode(model.coord(cj.master));
+    const Vec2 x = model.coord(cj.master);  // a copy: addNode reallocates the coordinates
+    cj.slave = model.addNode(x);
     cj.position = h.position;
     cj.jump = h.jump;
     cj.relativeRotation = end == 0 ? h.jump : -h.jump;

@@ -62,7 +62,8 @@ struct Problem {
 };
 
 struct TopLoop;
-using TopItem = std::variant<ParamBlock, Problem, TopLoop>;
+struct TopSweep;
+using TopItem = std::variant<ParamBlock, Problem, TopLoop, TopSweep>;
 
 // LOOP,,n ... NEXT around whole problems: FEAP's parameter study.
 struct TopLoop {
@@ -70,6 +71,24 @@ struct TopLoop {
   Expression count;
   std::vector<TopItem> body;
   Record next;
+};
+
+// One record of a SWEEp block: name = v1 v2 ... (each value an expression).
+struct SweepVariable {
+  std::string name;  // as written (tags and legends keep its case)
+  std::vector<Expression> values;
+  Record record;
+};
+
+// [ext] SWEEp: records 'name = v1 v2 ...' (several names zipped: the same number
+// of values each), ended by a blank record. The next problem runs once per value
+// set, with the PARAmeter blocks between the sweep and the problem evaluated
+// after the sweep values are set, so that they may derive from them.
+struct TopSweep {
+  Record head;
+  std::vector<SweepVariable> variables;
+  std::vector<TopItem> body;  // PARAmeter blocks, then the problem
+  std::size_t runs() const { return variables.empty() ? 0 : variables.front().values.size(); }
 };
 
 struct Deck {

@@ -14,7 +14,7 @@ namespace {
 // of a mesh command.
 bool isStructural(const Record& r) {
   return r.is("FEAP") || r.is("BATCh") || r.is("STOP") || r.is("END") || r.is("LOOP") ||
-         r.is("NEXT");
+         r.is("NEXT") || r.is("SWEEp");
 }
 
 bool isParamHead(const Record& r) { return r.is("PARAmeter") || r.is("CONStant"); }
@@ -153,6 +153,10 @@ std::vector<TopItem> DeckParser::parseTopItems(const Record* loopHead) {
       items.emplace_back(parseParams());
       continue;
     }
+    if (r.is("SWEEp")) {
+      items.emplace_back(parseSweep());
+      continue;
+    }
     if (r.is("FEAP")) {
       items.emplace_back(parseProblem());
       continue;
@@ -168,8 +172,79 @@ std::vector<TopItem> DeckParser::parseTopItems(const Record* loopHead) {
       hint = "a problem starts with a record 'FEAP * * title'";
     throw DeckError(
         r[0].loc,
-        "unexpected record '" + r[0].text + "': expected FEAP, PARAmeter, LOOP, NEXT or STOP",
+        "unexpected record '" + r[0].text + "': expected FEAP, PARAmeter, LOOP, NEXT, SWEEp or STOP",
         r.excerpt(r[0].loc), hint);
+  }
+}
+
+TopSweep DeckParser::parseSweep() {
+  TopSweep sw;
+  sw.head = next();
+  const Field& at = sw.head[0];
+  while (true) {
+    if (atEnd())
+      throw DeckError(at.loc, "SWEEp block is not ended by a blank record (end of file)",
+                      sw.head.excerpt(at.loc), "end the block with a blank record");
+    const Record& r = peek();
+    if (r.blank()) {
+      ++pos_;
+      break;
+    }
+    if (!hasEquals(r) && (isStructural(r) || isParamHead(r) || mesh_.find(r[0].text)))
+      throw DeckError(r[0].loc, "SWEEp block (" + where(sw.head) + ") is not ended by a blank record",
+                      r.excerpt(r[0].loc), "insert a blank record before this one");
+    const Record& rec = next();
+    if (!Parameters::validName(rec[0].text))
+      throw DeckError(rec[0].loc, "expected 'name = v1 v2 ...', and '" + rec[0].text +
+                                      "' is not a parameter name",
+                      rec.excerpt(rec[0].loc));
+    SweepVariable v;
+    v.name = rec[0].text;
+    v.record = rec;
+    for (std::size_t i = 1; i < rec.size(); ++i) {
+      if (rec[i].text.empty())
+        throw DeckError(rec[i].loc, "empty value in the sweep of '" + v.name + "'",
+                        rec.excerpt(rec[i].loc));
+      v.values.push_back(Expression::parse(rec[i]));
+    }
+    if (v.values.empty())
+      throw DeckError(rec.fieldLoc(1), "sweep variable '" + v.name + "' has no values",
+                      rec.excerpt(rec.fieldLoc(1)), "write " + v.name + " = v1 v2 ...");
+    for (const SweepVariable& w : sw.variables) {
+      if (toLower(w.name) == toLower(v.name))
+        throw DeckError(rec[0].loc, "'" + v.name + "' is swept twice (" + where(w.record) + ")",
+                        rec.excerpt(rec[0].loc));
+      if (w.values.size() != v.values.size())
+        throw DeckError(rec[0].loc,
+                        "'" + v.name + "' has " + std::to_string(v.values.size()) + " values and '" +
+                            w.name + "' (" + where(w.record) + ") " +
+                            std::to_string(w.values.size()) +
+                            ": the variables of a sweep are zipped, one value of each per run",
+                        rec.excerpt(rec[0].loc));
+    }
+    sw.variables.push_back(std::move(v));
+  }
+  if (sw.variables.empty())
+    throw DeckError(at.loc, "SWEEp block without variables", sw.head.excerpt(at.loc),
+                    "write records 'name = v1 v2 ...' ended by a blank record");
+  // The sweep applies to the next problem; PARAmeter blocks before it go with it.
+  while (true) {
+    skipBlanks();
+    if (atEnd() || !(isParamHead(peek()) || peek().is("FEAP"))) {
+      const bool eof = atEnd();
+      throw DeckError(eof ? at.loc : peek()[0].loc,
+                      "SWEEp (" + where(sw.head) + ") must be followed by the problem it applies to" +
+                          (eof ? std::string(" (end of file)") : ", found '" + peek()[0].text + "'"),
+                      eof ? sw.head.excerpt(at.loc) : peek().excerpt(peek()[0].loc),
+                      "a sweep applies to the next FEAP problem (PARAmeter blocks may stand "
+                      "between them)");
+    }
+    if (isParamHead(peek())) {
+      sw.body.emplace_back(parseParams());
+      continue;
+    }
+    sw.body.emplace_back(parseProblem());
+    return sw;
   }
 }
 
@@ -201,7 +276,9 @@ Problem DeckParser::parseProblem() {
       p.batches.push_back(parseBatch());
       continue;
     }
-    if (r.is("FEAP") || r.is("STOP") || r.is("LOOP") || r.is("NEXT") || isParamHead(r)) break;
+    if (r.is("FEAP") || r.is("STOP") || r.is("LOOP") || r.is("NEXT") || r.is("SWEEp") ||
+        isParamHead(r))
+      break;
     throw DeckError(r[0].loc,
                     "expected BATCh after the END of the mesh input, found '" + r[0].text + "'",
                     r.excerpt(r[0].loc), r.is("END") ? "this END closes nothing" : std::string());
@@ -323,13 +400,15 @@ bool DeckParser::topLevelParamsAhead() const {
   // A parameter block belongs to the top level when the next item is a problem, a
   // loop, the end of a loop or of the input.
   return p >= records_.size() || records_[p].is("FEAP") || records_[p].is("LOOP") ||
-         records_[p].is("NEXT") || records_[p].is("STOP");
+         records_[p].is("NEXT") || records_[p].is("STOP") || records_[p].is("SWEEp");
 }
 
 bool DeckParser::endsBatchData() const {
   const Record& r = peek();
   if (r.blank()) return false;
-  if (r.is("BATCh") || r.is("FEAP") || r.is("STOP") || r.is("LOOP") || r.is("NEXT")) return true;
+  if (r.is("BATCh") || r.is("FEAP") || r.is("STOP") || r.is("LOOP") || r.is("NEXT") ||
+      r.is("SWEEp"))
+    return true;
   return isParamHead(r) && topLevelParamsAhead();
 }
 

@@ -41,6 +41,7 @@ class DeckParser {
 
   std::vector<TopItem> parseTopItems(const Record* loopHead);
   ParamBlock parseParams();
+  TopSweep parseSweep();
   Problem parseProblem();
   void parseMesh(Problem& p);
   bool parseMeshItems(std::vector<MeshItem>& items, Record* end);  // false: no END before EOF

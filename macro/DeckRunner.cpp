@@ -1,22 +1,107 @@
 #include "macro/DeckRunner.h"
 
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 
+#include "macro/CurveOverlay.h"
 #include "macro/DeckParser.h"
+#include "macro/Sweep.h"
 
 namespace c2d {
 
 namespace {
 
-// Walks the top-level items: PARAmeter blocks, problems, loops. In the check
-// pass every problem is bound only; in the run pass bound and run.
+// What the check pass learns about each run, to name it before anything runs.
+struct RunInfo {
+  SweepValues sweep;                     // empty outside a SWEEp
+  std::map<std::string, double> params;  // the parameter table as the problem starts
+};
+
+// Output stem and legend label of each run.
+struct RunPlan {
+  std::string stem, label;
+};
+
+std::string paramLabel(const std::vector<std::string>& names, const RunInfo& run) {
+  std::string label;
+  for (const std::string& n : names) {
+    const auto it = run.params.find(n);
+    if (it == run.params.end()) continue;
+    if (!label.empty()) label += ", ";
+    label += n + " = " + formatSweepValue(it->second);
+  }
+  return label;
+}
+
+// Stems: the deck's stem for a lone run; <stem>_<tag> for the runs of a sweep,
+// <stem>_<k> for the others (k counts every run of the deck from 1); a sweep
+// whose tags repeat (a sweep inside a top-level LOOP) gets <stem>_<k>_<tag>.
+// Labels: the sweep values; for the other runs of a study the parameters whose
+// values differ between runs ("n = 2"), else "run k".
+std::vector<RunPlan> planRuns(const std::vector<RunInfo>& runs, const std::string& stem) {
+  const std::size_t n = runs.size();
+  std::vector<RunPlan> plans(n);
+  std::map<std::string, int> uses;
+  for (std::size_t k = 0; k < n; ++k) {
+    const RunInfo& r = runs[k];
+    plans[k].stem = !r.sweep.empty() ? stem + "_" + sweepTag(r.sweep)
+                    : n > 1          ? stem + "_" + std::to_string(k + 1)
+                                     : stem;
+    ++uses[plans[k].stem];
+  }
+  for (std::size_t k = 0; k < n; ++k)
+    if (!runs[k].sweep.empty() && uses[plans[k].stem] > 1)
+      plans[k].stem = stem + "_" + std::to_string(k + 1) + "_" + sweepTag(runs[k].sweep);
+
+  std::set<std::string> names;
+  for (const RunInfo& r : runs)
+    for (const auto& [name, v] : r.params) names.insert(name);
+  std::vector<std::string> differing;
+  for (const std::string& name : names) {
+    std::set<double> values;
+    bool missing = false;
+    for (const RunInfo& r : runs) {
+      if (!r.sweep.empty()) continue;
+      const auto it = r.params.find(name);
+      if (it == r.params.end())
+        missing = true;
+      else
+        values.insert(it->second);
+    }
+    if (values.size() > 1 || (missing && !values.empty())) differing.push_back(name);
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    plans[k].label = !runs[k].sweep.empty() ? sweepLabel(runs[k].sweep) : paramLabel(differing, runs[k]);
+    if (plans[k].label.empty() && n > 1) plans[k].label = "run " + std::to_string(k + 1);
+  }
+  return plans;
+}
+
+std::string summaryText(const RunSummary& s) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "%d step%s, %d iteration%s, %d cut%s, %d hinge%s", s.steps,
+                s.steps == 1 ? "" : "s", s.iterations, s.iterations == 1 ? "" : "s", s.cuts,
+                s.cuts == 1 ? "" : "s", s.hinges, s.hinges == 1 ? "" : "s");
+  std::string out = buf;
+  if (s.dynamic) {
+    std::snprintf(buf, sizeof buf, ", energy error %.2e", s.energyError);
+    out += buf;
+  }
+  std::snprintf(buf, sizeof buf, ", %.2f s", s.seconds);
+  return out + buf;
+}
+
+// Walks the top-level items: PARAmeter blocks, problems, loops, sweeps. In the
+// check pass every problem is bound only (and what names its run is noted); in
+// the run pass bound and run.
 class Walker {
  public:
-  Walker(const SolutionCommands& commands, const DeckOptions& options, std::string stem,
-         std::ostream& log, bool execute, int totalRuns)
-      : commands_(commands), options_(options), stem_(std::move(stem)), log_(log),
-        execute_(execute), totalRuns_(totalRuns) {}
+  Walker(const SolutionCommands& commands, const DeckOptions& options, std::ostream& log,
+         std::ostream* console, std::vector<RunPlan> plans)
+      : commands_(commands), options_(options), log_(log), console_(console),
+        execute_(!plans.empty()), plans_(std::move(plans)) {}
 
   void walk(const std::vector<TopItem>& items, Parameters& params) {
     for (const TopItem& item : items) {
@@ -25,30 +110,51 @@ class Walker {
       } else if (const auto* loop = std::get_if<TopLoop>(&item)) {
         const int n = loop->count.evalInt(params, "loop count");
         for (int i = 0; i < n; ++i) walk(loop->body, params);
+      } else if (const auto* sweep = std::get_if<TopSweep>(&item)) {
+        for (std::size_t i = 0; i < sweep->runs(); ++i) {
+          sweep_.clear();
+          for (const SweepVariable& v : sweep->variables) {
+            const double x = v.values[i].eval(params);
+            params.set(toLower(v.name), x);
+            sweep_.emplace_back(v.name, x);
+          }
+          walk(sweep->body, params);
+          sweep_.clear();
+        }
       } else {
         runProblem(std::get<Problem>(item), params);
       }
     }
   }
 
+  const std::vector<RunInfo>& infos() const { return infos_; }
   int runs() const { return runs_; }
   const RunSummary& total() const { return total_; }
+  const CurveOverlay& overlay() const { return overlay_; }
 
  private:
   void runProblem(const Problem& p, Parameters& params) {
     ++runs_;
     RunOptions ro;
     ro.outDir = options_.outDir.empty() ? std::filesystem::path(".") : options_.outDir;
-    ro.stem = totalRuns_ > 1 ? stem_ + "_" + std::to_string(runs_) : stem_;
     ro.progress = options_.progress && !options_.quiet;
     ro.solver = options_.solver;
-    if (execute_) {
-      log_ << "\n  collapse2d  " << p.title << "\n";
-      log_ << "  run " << runs_ << " of " << totalRuns_ << ", outputs " << ro.stem << "\n\n";
+    if (!execute_) {
+      RunInfo info{sweep_, {}};
+      for (const std::string& n : params.names()) info.params[n] = params.get(n);
+      infos_.push_back(std::move(info));
+      ProblemRun run(p, params, commands_, ro, log_);
+      run.bind(false);
+      return;
     }
+    const RunPlan& plan = plans_.at(static_cast<std::size_t>(runs_ - 1));
+    ro.stem = plan.stem;
+    ro.label = plan.label;
+    log_ << "\n  collapse2d  " << p.title << "\n";
+    log_ << "  run " << runs_ << " of " << plans_.size() << ", outputs " << ro.stem
+         << (plan.label.empty() ? "" : " (" + plan.label + ")") << "\n\n";
     ProblemRun run(p, params, commands_, ro, log_);
-    run.bind(execute_);
-    if (!execute_) return;
+    run.bind(true);
     run.run();
     const RunSummary s = run.summary();
     total_.steps += s.steps;
@@ -57,21 +163,24 @@ class Walker {
     total_.hinges += s.hinges;
     total_.energyError = std::max(total_.energyError, s.energyError);
     total_.seconds += s.seconds;
-    char buf[256];
-    std::snprintf(buf, sizeof buf,
-                  "\n  summary: %d steps, %d iterations, %d cuts, %d hinges, energy error %.3e\n",
-                  s.steps, s.iterations, s.cuts, s.hinges, s.energyError);
-    log_ << buf;
+    total_.dynamic = total_.dynamic || s.dynamic;
+    log_ << "\n  summary: " << summaryText(s) << "\n";
+    if (console_ && !options_.quiet && plans_.size() > 1)
+      *console_ << "  " << ro.stem << ": " << summaryText(s) << "\n" << std::flush;
+    overlay_.add(plan.label, p.title, run.outputs().curves(run.history()));
   }
 
   const SolutionCommands& commands_;
   const DeckOptions& options_;
-  std::string stem_;
   std::ostream& log_;
+  std::ostream* console_;
   bool execute_;
-  int totalRuns_;
+  std::vector<RunPlan> plans_;
+  std::vector<RunInfo> infos_;
+  SweepValues sweep_;
   int runs_ = 0;
   RunSummary total_;
+  CurveOverlay overlay_;
 };
 
 }  // namespace
@@ -85,8 +194,9 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     // Check pass: bind everything with a scratch parameter table, log discarded.
     std::ostringstream discard;
     Parameters checkParams;
-    Walker check(commands, options, stem, discard, false, 0);
+    Walker check(commands, options, discard, nullptr, {});
     check.walk(deck.items, checkParams);
+    const std::vector<RunPlan> plans = planRuns(check.infos(), stem);
 
     const std::filesystem::path dir = options.outDir.empty() ? std::filesystem::path(".") : options.outDir;
     std::filesystem::create_directories(dir);
@@ -95,9 +205,11 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     if (!log) throw std::runtime_error("cannot write the log " + logPath.string());
     log << "  collapse2d  " << path << "\n";
     Parameters params;
-    Walker runner(commands, options, stem, log, true, check.runs());
+    Walker runner(commands, options, log, &out, plans);
     try {
-      runner.walk(deck.items, params);
+      if (!plans.empty()) runner.walk(deck.items, params);
+      for (const auto& f : runner.overlay().write(dir, stem))
+        log << "\n  overlay of the runs: " << f.filename().string() << "\n";
     } catch (const std::exception& e) {
       log << "\n  *** run failed\n" << e.what() << "\n";
       throw;
@@ -105,16 +217,9 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     log << "\n  run complete\n";
     outcome.total = runner.total();
     outcome.runs = runner.runs();
-    if (!options.quiet) {
-      char buf[256];
-      std::snprintf(buf, sizeof buf,
-                    "%s: %d run%s, %d steps, %d iterations, %d cuts, %d hinges, energy error %.2e, "
-                    "%.2f s\n",
-                    path.c_str(), outcome.runs, outcome.runs == 1 ? "" : "s", outcome.total.steps,
-                    outcome.total.iterations, outcome.total.cuts, outcome.total.hinges,
-                    outcome.total.energyError, outcome.total.seconds);
-      out << buf;
-    }
+    if (!options.quiet)
+      out << path << ": " << (outcome.runs == 1 ? "" : std::to_string(outcome.runs) + " runs, ")
+          << summaryText(outcome.total) << "\n";
   } catch (const DeckError& e) {
     outcome.exitCode = kExitDeckError;
     outcome.message = e.what();

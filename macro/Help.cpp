@@ -1,6 +1,7 @@
 #include "macro/Help.h"
 
 #include "macro/MeshCommands.h"
+#include "macro/Sweep.h"
 
 namespace c2d {
 
@@ -25,7 +26,9 @@ void printAllHelp(std::ostream& os, const SolutionCommands& solution) {
   CommandRegistry mesh("Mesh commands"), sub("Material sets: element types and sub-records");
   registerMeshCommands(mesh);
   registerMaterialSubRecords(sub);
-  for (const CommandRegistry* r : {static_cast<const CommandRegistry*>(&mesh), static_cast<const CommandRegistry*>(&sub), &solution.registry()}) {
+  CommandRegistry blocks("Top-level blocks (before a problem)");
+  registerDeckBlocks(blocks);
+  for (const CommandRegistry* r : {static_cast<const CommandRegistry*>(&mesh), static_cast<const CommandRegistry*>(&sub), static_cast<const CommandRegistry*>(&blocks), &solution.registry()}) {
     os << r->title() << "\n";
     for (const CommandSpec& s : r->specs()) printSpec(os, s);
     os << "\n";
@@ -36,8 +39,10 @@ bool printCommandHelp(std::ostream& os, const SolutionCommands& solution, const 
   CommandRegistry mesh("Mesh commands"), sub("Material sets: element types and sub-records");
   registerMeshCommands(mesh);
   registerMaterialSubRecords(sub);
+  CommandRegistry blocks("Top-level blocks (before a problem)");
+  registerDeckBlocks(blocks);
   bool found = false;
-  for (const CommandRegistry* r : {static_cast<const CommandRegistry*>(&mesh), static_cast<const CommandRegistry*>(&sub), &solution.registry()}) {
+  for (const CommandRegistry* r : {static_cast<const CommandRegistry*>(&mesh), static_cast<const CommandRegistry*>(&sub), static_cast<const CommandRegistry*>(&blocks), &solution.registry()}) {
     if (const CommandSpec* s = r->find(word)) {
       os << r->title() << ":\n";
       printSpec(os, *s);
@@ -46,7 +51,7 @@ bool printCommandHelp(std::ostream& os, const SolutionCommands& solution, const 
   }
   if (!found) {
     os << "no command '" << word << "'";
-    for (const CommandRegistry* r : {static_cast<const CommandRegistry*>(&mesh), static_cast<const CommandRegistry*>(&sub), &solution.registry()}) {
+    for (const CommandRegistry* r : {static_cast<const CommandRegistry*>(&mesh), static_cast<const CommandRegistry*>(&sub), static_cast<const CommandRegistry*>(&blocks), &solution.registry()}) {
       const std::string hint = r->suggest(word);
       if (!hint.empty()) {
         os << "; " << hint;

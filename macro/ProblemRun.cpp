@@ -1,5 +1,6 @@
 #include "macro/ProblemRun.h"
 
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "macro/DeckReader.h"
 #include "macro/MeshBinder.h"
 #include "macro/MeshCommands.h"
+#include "macro/OutputCommands.h"
 #include "macro/Report.h"
 #include "solvers/ProportionalLoad.h"
 
@@ -28,9 +30,12 @@ std::string fmt(const char* f, double v) {
 
 ProblemRun::ProblemRun(const Problem& problem, Parameters& params, const SolutionCommands& table,
                        RunOptions options, std::ostream& log)
-    : problem_(problem), params_(params), table_(table), options_(std::move(options)), log_(log) {}
+    : problem_(problem), params_(params), table_(table), options_(std::move(options)), log_(log),
+      outputs_(std::make_unique<RunOutputs>(options_.outDir, options_.stem, problem_.title,
+                                            options_.label)) {}
 
-ProblemRun::~ProblemRun() = default;
+// A run that ends by an exception leaves no progress line for the message to run into.
+ProblemRun::~ProblemRun() { progress(true); }
 
 void ProblemRun::bind(bool echo) {
   model_ = buildModel(problem_, params_, echo ? &log_ : nullptr);
@@ -38,6 +43,7 @@ void ProblemRun::bind(bool echo) {
   batches_.clear();
   for (const BatchBlock& b : problem_.batches)
     batches_.push_back(bindBatch(b.commands, b.data, table_, scratch));
+  checkPlotColumns(batches_, scratch);
 }
 
 void ProblemRun::run() {
@@ -59,6 +65,7 @@ void ProblemRun::run() {
     history_->record(*analysis_, true);
     history_->finish();
   }
+  outputs_->finish(history_.get());
   progress(true);
 }
 
@@ -71,6 +78,7 @@ RunSummary ProblemRun::summary() const {
   s.hinges = hingeCount_;
   s.energyError = energyError_;
   s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  s.dynamic = energyStarted_;
   return s;
 }
 
@@ -422,20 +430,37 @@ void ProblemRun::onCommit() {
     if (energyScale_ > 0)
       energyError_ = std::max(energyError_, std::abs(en.total() - energy0_) / energyScale_);
   }
+  outputs_->onCommit(model_, analysis_->state());
   progress(false);
 }
 
 void ProblemRun::progress(bool final) {
   if (!options_.progress) return;
+  // One line on the terminal, rewritten in place (at most every 0.1 s) and
+  // erased when the run ends, so that the run's summary takes its place.
+  if (final) {
+    if (progressShown_) std::fprintf(stderr, "\r\033[K");
+    std::fflush(stderr);
+    progressShown_ = false;
+    return;
+  }
   const auto now = std::chrono::steady_clock::now();
-  if (!final && now - lastProgress_ < std::chrono::milliseconds(100)) return;
+  if (progressShown_ && now - lastProgress_ < std::chrono::milliseconds(100)) return;
   lastProgress_ = now;
   const State& s = analysis_->state();
   const auto& h = analysis_->stepHistory();
-  std::fprintf(stderr, "\r  %s: step %d  t = %.4e  load %.4e  it %d  hinges %d  cuts %d   ",
-               options_.stem.c_str(), s.step, s.t, analysis_->loadFactor(),
-               h.empty() ? 0 : h.back().iteration, hingeCount_, cuts_);
-  if (final) std::fprintf(stderr, "\n");
+  char line[256];
+  std::snprintf(line, sizeof line, "%s: step %d  t = %.4g  load %.4g  Newton it %d  hinges %d%s",
+                options_.stem.c_str(), s.step, s.t, analysis_->loadFactor(),
+                h.empty() ? 0 : h.back().iteration, hingeCount_,
+                cuts_ ? ("  cuts " + std::to_string(cuts_)).c_str() : "");
+  // A line longer than the terminal would wrap, and '\r' would not return to its start.
+  std::size_t width = 80;
+  winsize ws{};
+  if (ioctl(STDERR_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0) width = ws.ws_col;
+  std::string text = line;
+  if (text.size() >= width) text.resize(width - 1);
+  std::fprintf(stderr, "\r\033[K%s", text.c_str());
   std::fflush(stderr);
   progressShown_ = true;
 }

@@ -12,6 +12,7 @@
 
 #include "core/Model.h"
 #include "macro/Deck.h"
+#include "macro/RunOutputs.h"
 #include "macro/SolutionCommand.h"
 #include "macro/TimeHistory.h"
 #include "solvers/Analysis.h"
@@ -21,6 +22,7 @@ namespace c2d {
 struct RunOptions {
   std::filesystem::path outDir = ".";
   std::string stem = "run";   // base name of the output files of this run
+  std::string label;          // what tells this run apart (sweep values) in titles and legends
   bool progress = false;      // a single updating progress line on stderr
   std::string solver = "auto";
 };
@@ -29,6 +31,7 @@ struct RunSummary {
   int steps = 0, iterations = 0, cuts = 0, hinges = 0;
   double energyError = 0;  // max |total energy - initial| / max energy scale (dynamic runs)
   double seconds = 0;
+  bool dynamic = false;  // some step was dynamic (the energy error means something)
 };
 
 class ProblemRun {
@@ -48,6 +51,9 @@ class ProblemRun {
   Analysis& analysis() { return *analysis_; }
   Parameters& params() { return params_; }
   std::ostream& log() { return log_; }
+  RunOutputs& outputs() { return *outputs_; }
+  const RunOutputs& outputs() const { return *outputs_; }
+  const TimeHistory* history() const { return history_.get(); }
 
   Flow runLoop(const Macro& m);
   Flow newtonIteration(const Macro& m, bool update, bool lineSearch, bool symmetric);
@@ -84,6 +90,7 @@ class ProblemRun {
   std::unique_ptr<Analysis> analysis_;
   std::vector<std::vector<Macro>> batches_;
   std::unique_ptr<TimeHistory> history_;
+  std::unique_ptr<RunOutputs> outputs_;  // PLOT and PVIEw files
 
   // Step cutting (AUTO,CUT).
   bool cutting_ = false;

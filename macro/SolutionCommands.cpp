@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "macro/DeckParser.h"
+#include "macro/OutputCommands.h"
 #include "macro/ProblemRun.h"
 #include "macro/SolutionCommand.h"
 
@@ -492,6 +493,8 @@ SolutionCommands::SolutionCommands() : registry_("Solution commands (BATCh ... E
                                           "and their sums."));
   add(std::make_unique<StreCommand>());
   add(std::make_unique<TplotCommand>());
+  add(makePlotCommand());
+  add(makeParaViewCommand());
   add(std::make_unique<MeshCommandMacro>());
   add(std::make_unique<ParaCommand>());
   add(std::make_unique<StopCommand>());

@@ -1,11 +1,15 @@
 // collapse2d: command-line entry point.
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <string>
 #include <vector>
 
+#include "macro/BatchRunner.h"
 #include "macro/DeckRunner.h"
 #include "macro/Help.h"
 #include "solvers/LinearSolver.h"
@@ -14,16 +18,72 @@ namespace {
 
 void usage(std::ostream& os) {
   os << "usage: collapse2d [options] DECK...\n"
+        "       collapse2d run [options] [-j N] DECK...  (batch: every deck in a process of its\n"
+        "                                     own, N at once, then a table of the results)\n"
         "       collapse2d -iIname            (FEAP's form: deck Iname, log Oname)\n"
         "       collapse2d --help [COMMAND]   (every command, or one command's fields)\n"
         "options:\n"
         "  -o DIR          write the outputs in DIR (default: the current directory)\n"
         "  -q, --quiet     no progress line and no summary\n"
+        "  -j N            (run) decks run at the same time (default 1)\n"
         "  --solver NAME   linear solver: ";
   const auto names = c2d::linearSolverNames();
   for (std::size_t i = 0; i < names.size(); ++i) os << (i ? ", " : "") << names[i];
   os << " (default auto)\n"
-        "exit status: 0 success, 1 deck error, 2 analysis failed, 3 internal error\n";
+        "exit status: 0 success, 1 deck error, 2 analysis failed, 3 internal error\n"
+        "  (run: 0 when every deck succeeded, else the status of the first that failed)\n"
+        "parameter studies: a SWEEp block before a problem runs it once per value set,\n"
+        "  SWEEp\n"
+        "    ks = -393 -500 -700      ! name = values; several names are zipped\n"
+        "                             ! (a blank record ends the block)\n"
+        "  FEAP * * ...\n"
+        "  outputs <stem>_ks=-393_tplot.csv, ...; PLOT,CURVe overlaid in <stem>_<y>_vs_<x>.svg\n";
+}
+
+// collapse2d run [options] [-j N] DECK...
+int batchMain(int argc, char** argv, const c2d::SolutionCommands& commands) {
+  c2d::BatchOptions options;
+  std::vector<std::string> decks;
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "-o" && i + 1 < argc) {
+      options.deck.outDir = argv[++i];
+    } else if (a == "-q" || a == "--quiet") {
+      options.deck.quiet = true;
+    } else if ((a == "-j" || a == "--jobs") && i + 1 < argc) {
+      options.jobs = std::atoi(argv[++i]);
+      if (options.jobs < 1) {
+        std::cerr << "collapse2d run: -j needs a positive number\n";
+        return 64;
+      }
+    } else if (a.rfind("-j", 0) == 0 && a.size() > 2 && std::isdigit(static_cast<unsigned char>(a[2]))) {
+      options.jobs = std::max(1, std::atoi(a.c_str() + 2));
+    } else if (a == "--solver" && i + 1 < argc) {
+      options.deck.solver = argv[++i];
+      if (!c2d::makeLinearSolver(options.deck.solver)) {
+        std::cerr << "collapse2d: unknown linear solver '" << options.deck.solver << "'\n";
+        return 64;
+      }
+    } else if (!a.empty() && a[0] == '-') {
+      std::cerr << "collapse2d run: unknown option '" << a << "'\n";
+      usage(std::cerr);
+      return 64;
+    } else {
+      decks.push_back(a);
+    }
+  }
+  if (decks.empty()) {
+    usage(std::cerr);
+    return 64;
+  }
+  if (const std::string clash = c2d::batchStemClash(decks); !clash.empty()) {
+    std::cerr << "collapse2d run: " << clash << "\n";
+    return 64;
+  }
+  options.progress = !options.deck.quiet && isatty(STDERR_FILENO);
+  const auto results = c2d::runBatch(decks, options, commands, std::cout);
+  if (!options.deck.quiet) c2d::printBatchTable(std::cout, results);
+  return c2d::batchExitCode(results);
 }
 
 }  // namespace
@@ -32,6 +92,7 @@ int main(int argc, char** argv) {
   c2d::DeckOptions options;
   std::vector<std::string> decks;
   const c2d::SolutionCommands commands;
+  if (argc > 1 && std::string(argv[1]) == "run") return batchMain(argc, argv, commands);
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--help" || a == "-h") {

@@ -69,7 +69,8 @@ std::vector<std::array<int, 2>> buildChain(Model& m, const MaterialSet& mat,
   std::vector<std::array<int, 2>> links;
   int master = pivot;
   for (double a : angles) {
-    const int start = m.addNode(m.coord(master));
+    const Vec2 joint = m.coord(master);  // a copy: addNode reallocates the coordinates
+    const int start = m.addNode(joint);
     const int end = addRod(m, start, m.coord(master) + l * Vec2(std::sin(a), -std::cos(a)), n);
     m.joints().push_back({master, start, JointForm::Condensed});
     links.push_back({start, end});
@@ -79,13 +80,16 @@ std::vector<std::array<int, 2>> buildChain(Model& m, const MaterialSet& mat,
   return links;
 }
 
-bool solveStep(Analysis& an, int maxIterations = 40) {
+// One time step with Newton iterations; prints the iteration history when it
+// does not converge (unless quiet).
+bool solveStep(Analysis& an, int maxIterations = 40, bool quiet = false) {
   if (!an.advance()) return false;
   IterationInfo info;
   for (int i = 0; i < maxIterations; ++i) {
     if (!an.iterate(false, false, info)) return false;
     if (info.converged) return true;
   }
+  if (quiet) return false;
   for (const IterationInfo& h : an.stepHistory())
     std::printf("  iteration %d: residual %.3e energy %.3e\n", h.iteration, h.residual, h.energy);
   return false;
@@ -192,7 +196,6 @@ TEST(CollapseDynamicsPendulum, SmallAmplitudePeriodIsT0WithTheMidPointElongation
   // The elongation is 2.1e-3 at 40 steps per period: the check resolves it 100 times.
   EXPECT_GT(expected / t0 - 1, 2e-3);
   EXPECT_NEAR(measured / expected, 1.0, 2e-5) << "measured " << measured << ", T0 " << t0;
-  std::printf("DBG small amp: %.3e elong %.3e\n", measured/expected-1, expected/t0-1);
 }
 
 TEST(CollapseDynamicsPendulum, FiniteAmplitudePeriodFollowsTheEllipticIntegral) {
@@ -200,16 +203,21 @@ TEST(CollapseDynamicsPendulum, FiniteAmplitudePeriodFollowsTheEllipticIntegral) 
   const double t0 = 2 * kPi * std::sqrt(2 * l / (3 * kG));
   const double tAmp = t0 * 2 / kPi * ellipticK(std::sin(theta0 / 2));
   EXPECT_GT(tAmp / t0, 1.15);
-  const int n = 300;
-  const double measured = singlePendulumPeriod(theta0, n, tAmp, 2.3);
-  EXPECT_NEAR(measured / tAmp, 1.0, 1e-4) << "measured " << measured << ", elliptic " << tAmp;
-  std::printf("DBG finite amp: %.3e  withElong %.3e\n", measured/tAmp-1, measured/(tAmp*midPointElongation(2*kPi/tAmp, tAmp/n))-1);
+  // The mid-point rule's period error is O(h^2) (for this amplitude about 1.8
+  // times the linear formula's): extrapolate from 300 and 600 steps per period.
+  const double t300 = singlePendulumPeriod(theta0, 300, tAmp, 2.3);
+  const double t600 = singlePendulumPeriod(theta0, 600, tAmp, 2.3);
+  const double extrapolated = (4 * t600 - t300) / 3;
+  EXPECT_GT(t300, t600);
+  // What remains is the rods' stretch under the swinging loads (about 1e-5).
+  EXPECT_NEAR(extrapolated / tAmp, 1.0, 2e-5) << "extrapolated " << extrapolated << ", elliptic "
+                                              << tAmp;
 }
 
 TEST(CollapseDynamicsPendulum, DoublePendulumFrequenciesAre3MinusPlus6OverSqrt7) {
   // Small amplitude: the coupling cos(theta1 - theta2) shifts the second mode by
   // about (theta1 - theta2)^2/2 relative (4e-4 at theta1 = 0.01).
-  const double l = 1.0, eps = 0.002;
+  const double l = 1.0, eps = 0.001;
   for (int mode = 0; mode < 2; ++mode) {
     const double lambda = mode == 0 ? 3 - 6 / std::sqrt(7.0) : 3 + 6 / std::sqrt(7.0);
     // Linearised mode: (3/2 - 4 lambda/3) theta1 = (lambda/2) theta2.
@@ -233,8 +241,7 @@ TEST(CollapseDynamicsPendulum, DoublePendulumFrequenciesAre3MinusPlus6OverSqrt7)
     }
     const double expected = period * midPointElongation(omega, h);
     const double measured = periodFromCrossings(zeroCrossings(t, y1));
-    EXPECT_NEAR(measured / expected, 1.0, 5e-5) << "mode " << mode;
-  std::printf("DBG double mode %d: %.3e\n", mode, measured/expected-1);
+    EXPECT_NEAR(measured / expected, 1.0, 2e-5) << "mode " << mode;
     // A pure mode: both links cross zero together.
     const auto c1 = zeroCrossings(t, y1), c2 = zeroCrossings(t, y2);
     ASSERT_EQ(c1.size(), c2.size());
@@ -308,7 +315,6 @@ TEST(CollapseDynamicsEnergy, FreeFlyingBeamConservesEnergyAndMomentumAtLargeStep
   }
   const Momentum m1 = momentum(m, an.state());
   EXPECT_LT(worst, 1e-10 * e0) << "E0 = " << e0;
-  std::printf("DBG free flying dE/E %.3e dp %.3e\n", worst/e0, (m1.p-m0.p).norm()/m0.p.norm());
   // Exact up to round-off, which accumulates over the 2000 steps (the same with
   // a Newton tolerance of 1e-24).
   EXPECT_LT((m1.p - m0.p).norm(), 1e-11 * m0.p.norm());
@@ -344,7 +350,6 @@ TEST(CollapseDynamicsEnergy, FreeBeamSpinsMoreThanTenTurns) {
   EXPECT_NEAR(st.u(3 * last + 2), st.u(2), 1e-9);
   EXPECT_LT(worst, 1e-10 * e0);
   const Momentum mm = momentum(m, st);
-  std::printf("DBG spin dE %.3e turns %.5f\n", worst/e0, turns);
   EXPECT_LT((mm.mx / mm.mass).norm(), 1e-11);
   EXPECT_LT(mm.p.norm(), 1e-11);
 }
@@ -414,8 +419,7 @@ TEST(CollapseDynamicsEnergy, JointedPendulumUnderGravityConservesEnergy) {
       maxRelative = std::max(maxRelative, std::abs(je->relativeRotation()));
   }
   EXPECT_LT(worst, 1e-10 * scale);
-  EXPECT_GT(maxRelative, 1.0);
-  std::printf("DBG 3links dE/scale %.3e\n", worst/scale);  // the joints really turned
+  EXPECT_GT(maxRelative, 1.0);  // the joints really turned
   EXPECT_GT(an.energy().kinetic, 0.1 * scale);
 }
 
@@ -439,32 +443,48 @@ TEST(CollapseDynamicsEnergy, DecayingSchemeSatisfiesTheStepIdentityAndNeverGains
     before = after;
   }
   EXPECT_LT(worstIdentity, 1e-11 * scale);
-  std::printf("DBG identity %.3e diss %.3e\n", worstIdentity/scale, totalDissipated/scale);
   EXPECT_GT(totalDissipated, 1e-3 * scale);
 }
 
+struct Drift {
+  double worst = 0;  // largest |E - E0| / (m g L/2)
+  bool completed = true;
+};
+
+// A rod pendulum released at 1.5 rad from the vertical.
+Drift pendulumDrift(const TimeIntegrator& ti, double ea, double dt, int steps) {
+  Model m;
+  buildChain(m, rodMaterial(ea, ea, 1e-2 * ea, 1.0, 0.0), {1.5}, 1.0, 4);
+  Analysis an(m);
+  an.setIntegrator(ti);
+  an.setDt(dt);
+  const double e0 = an.energy().total();
+  Drift d;
+  for (int s = 0; s < steps && d.completed; ++s) {
+    d.completed = solveStep(an, 30, true);
+    if (!d.completed) break;
+    an.commit();
+    d.worst = std::max(d.worst, std::abs(an.energy().total() - e0) / (kG * 0.5));
+  }
+  return d;
+}
+
 TEST(CollapseDynamicsEnergy, NewmarkDriftsWhereTheMidPointSchemeConserves) {
-  auto drift = [](const TimeIntegrator& ti) {
-    Model m;
-    buildChain(m, rodMaterial(1e6, 1e6, 1e4, 1.0, 0.0), {1.5}, 1.0, 4);
-    Analysis an(m);
-    an.setIntegrator(ti);
-    an.setDt(0.04);
-    const double e0 = an.energy().total();
-    double worst = 0;
-    for (int s = 0; s < 200; ++s) {
-      if (!solveStep(an)) return HUGE_VAL;
-      an.commit();
-      worst = std::max(worst, std::abs(an.energy().total() - e0));
-    }
-    return worst / (kG * 0.5);  // relative to m g L/2
-  };
-  const double mid = drift(TimeIntegrator::midPoint(0, 0));
-  const double newmark = drift(TimeIntegrator::newmark(0.25, 0.5));
-  EXPECT_LT(mid, 1e-10);
-  std::printf("DBG mid %.3e newmark %.3e\n", mid, newmark);
-  EXPECT_GT(newmark, 1e-5);
-  EXPECT_GT(newmark, 1e4 * mid);
+  // Trapezoidal Newmark on the same pendulum deck: a bounded but visible energy
+  // error with a flexible rod and a small step ...
+  const Drift mid = pendulumDrift(TimeIntegrator::midPoint(0, 0), 1e4, 0.01, 400);
+  const Drift newmark = pendulumDrift(TimeIntegrator::newmark(0.25, 0.5), 1e4, 0.01, 400);
+  ASSERT_TRUE(mid.completed && newmark.completed);
+  EXPECT_LT(mid.worst, 1e-10);
+  EXPECT_GT(newmark.worst, 1e-4);
+  // ... and with a stiff rod and a large step its energy grows by more than the
+  // whole potential energy range (until Newton gives up), while the conserving
+  // scheme keeps it to round-off.
+  const Drift midStiff = pendulumDrift(TimeIntegrator::midPoint(0, 0), 1e6, 0.04, 200);
+  const Drift newmarkStiff = pendulumDrift(TimeIntegrator::newmark(0.25, 0.5), 1e6, 0.04, 200);
+  ASSERT_TRUE(midStiff.completed);
+  EXPECT_LT(midStiff.worst, 1e-10);
+  EXPECT_GT(newmarkStiff.worst, 1.0);
 }
 
 // --- ground contact (V6) ----------------------------------------------------
@@ -612,7 +632,6 @@ TEST(GroundContact, DroppedBarMatchesTheRigidDropFormulas) {
   const double st = mass * kG / kTotal;
   const double pMax = st + std::sqrt(st * st + mass * v0 * v0 / kTotal);
   EXPECT_NEAR(r.contactTime / tc, 1.0, 2e-5) << r.contactTime << " vs " << tc;
-  std::printf("DBG tc %.3e pmax %.3e reb %.3e id %.3e\n", r.contactTime/tc-1, r.maxPenetration/pMax-1, r.reboundHeight/r.startHeight-1, r.worstIdentity/r.energyScale);
   EXPECT_NEAR(r.maxPenetration / pMax, 1.0, 1e-6) << r.maxPenetration << " vs " << pMax;
   EXPECT_NEAR(r.reboundHeight / r.startHeight, 1.0, 1e-10);
   EXPECT_TRUE(r.energyNeverIncreased);
@@ -633,7 +652,6 @@ TEST(GroundContact, ContactDissipationLowersTheRebound) {
     EXPECT_NEAR(damped.startHeight - damped.reboundHeight, damped.dissipated / kG,
                 1e-10 * damped.startHeight);
     EXPECT_GT(damped.dissipated, 1e-3 * damped.energyScale) << "dt " << dt;
-  std::printf("DBG damped dt %g diss %.3e id %.3e reb %.4f\n", dt, damped.dissipated/damped.energyScale, damped.worstIdentity/damped.energyScale, damped.reboundHeight/damped.startHeight);
   }
 }
 
@@ -643,7 +661,8 @@ TEST(GroundContact, AssembledTangentWithContactMatchesFiniteDifferences) {
   m.materials()[1] = rodMaterial(2e3, 1e3, 30.0, 1.0, 0.01);
   const int a = m.addNode(Vec2(0, 0.02));
   const int b = addRod(m, a, Vec2(1.0, -0.03), 2);
-  const int c = m.addNode(m.coord(b));
+  const Vec2 xb = m.coord(b);
+  const int c = m.addNode(xb);
   addRod(m, c, Vec2(1.8, 0.4), 2);
   m.joints().push_back({b, c, JointForm::Condensed});
   installJoints(m);
@@ -696,7 +715,6 @@ TEST(GroundContact, AssembledTangentWithContactMatchesFiniteDifferences) {
         fd.col(eq) = (rp - rm) / (2 * h);
       }
     EXPECT_LT((fd - k).cwiseAbs().maxCoeff(), 1e-6 * k.cwiseAbs().maxCoeff()) << ti.describe();
-    std::printf("DBG fd %.3e\n", (fd - k).cwiseAbs().maxCoeff()/k.cwiseAbs().maxCoeff());
   }
 }
 

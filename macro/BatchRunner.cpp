@@ -1,0 +1,187 @@
+#include "macro/BatchRunner.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace c2d {
+
+namespace {
+
+// The whole content of a file the child wrote.
+std::string slurp(std::FILE* f) {
+  std::string s;
+  std::rewind(f);
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) s.append(buf, n);
+  return s;
+}
+
+struct Child {
+  std::size_t index = 0;
+  pid_t pid = -1;
+  std::FILE* output = nullptr;  // the child's stdout and stderr
+  std::FILE* result = nullptr;  // "exit runs steps iterations"
+  std::chrono::steady_clock::time_point start;
+};
+
+[[noreturn]] void runChild(const std::string& deck, const BatchOptions& options,
+                           const SolutionCommands& commands, const Child& c) {
+  ::dup2(fileno(c.output), STDOUT_FILENO);
+  ::dup2(fileno(c.output), STDERR_FILENO);
+  DeckOptions o = options.deck;
+  o.progress = false;
+  o.logName.clear();
+  const DeckOutcome r = runDeck(deck, o, commands, std::cout);
+  if (r.exitCode != 0) std::cerr << r.message << "\n";
+  std::cout.flush();
+  std::cerr.flush();
+  std::fprintf(c.result, "%d %d %d %d\n", r.exitCode, r.runs, r.total.steps, r.total.iterations);
+  std::fflush(c.result);
+  std::fflush(nullptr);
+  ::_exit(r.exitCode);
+}
+
+void statusLine(bool show, std::size_t done, std::size_t total, std::size_t failed,
+                const std::map<pid_t, Child>& running, const std::vector<std::string>& decks) {
+  if (!show) return;
+  std::string line = "[" + std::to_string(done) + "/" + std::to_string(total) + " done";
+  if (failed) line += ", " + std::to_string(failed) + " failed";
+  line += "] running:";
+  for (const auto& [pid, c] : running) line += " " + std::filesystem::path(decks[c.index]).filename().string();
+  if (line.size() > 79) line = line.substr(0, 76) + "...";
+  std::fprintf(stderr, "\r\033[K%s", line.c_str());
+  std::fflush(stderr);
+}
+
+void clearLine(bool show) {
+  if (!show) return;
+  std::fprintf(stderr, "\r\033[K");
+  std::fflush(stderr);
+}
+
+}  // namespace
+
+std::string BatchResult::status() const {
+  if (signal) return "crashed (signal " + std::to_string(signal) + ")";
+  switch (exitCode) {
+    case kExitOk: return "ok";
+    case kExitDeckError: return "deck error";
+    case kExitAnalysisFailed: return "analysis failed";
+    case kExitInternal: return "internal error";
+    default: return "exit " + std::to_string(exitCode);
+  }
+}
+
+std::string batchStemClash(const std::vector<std::string>& decks) {
+  std::map<std::string, std::string> seen;
+  for (const std::string& d : decks) {
+    const std::string stem = std::filesystem::path(d).stem().string();
+    const auto [it, fresh] = seen.emplace(stem, d);
+    if (!fresh)
+      return "decks " + it->second + " and " + d + " would write the same outputs (" + stem +
+             ".*): run them with different -o directories";
+  }
+  return {};
+}
+
+std::vector<BatchResult> runBatch(const std::vector<std::string>& decks, const BatchOptions& options,
+                                  const SolutionCommands& commands, std::ostream& out) {
+  std::vector<BatchResult> results(decks.size());
+  const std::size_t jobs = options.jobs < 1 ? 1 : static_cast<std::size_t>(options.jobs);
+  std::map<pid_t, Child> running;
+  std::size_t next = 0, done = 0, failed = 0;
+  while (next < decks.size() || !running.empty()) {
+    while (next < decks.size() && running.size() < jobs) {
+      Child c;
+      c.index = next;
+      results[next].deck = decks[next];
+      c.output = std::tmpfile();
+      c.result = std::tmpfile();
+      if (!c.output || !c.result) throw std::runtime_error("cannot create a temporary file for a batch run");
+      // Nothing buffered may be written twice, once by each process.
+      out.flush();
+      std::cout.flush();
+      std::cerr.flush();
+      std::fflush(nullptr);
+      c.start = std::chrono::steady_clock::now();
+      c.pid = ::fork();
+      if (c.pid < 0) throw std::runtime_error("fork failed for " + decks[next]);
+      if (c.pid == 0) runChild(decks[next], options, commands, c);
+      running.emplace(c.pid, c);
+      ++next;
+    }
+    statusLine(options.progress, done, decks.size(), failed, running, decks);
+    int status = 0;
+    const pid_t pid = ::waitpid(-1, &status, 0);
+    if (pid < 0) {
+      if (errno == EINTR) continue;
+      throw std::runtime_error("waitpid failed in a batch run");
+    }
+    const auto it = running.find(pid);
+    if (it == running.end()) continue;  // not one of ours
+    Child c = it->second;
+    running.erase(it);
+    BatchResult& r = results[c.index];
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - c.start).count();
+    r.output = slurp(c.output);
+    std::istringstream figures(slurp(c.result));
+    std::fclose(c.output);
+    std::fclose(c.result);
+    if (WIFSIGNALED(status)) {
+      r.signal = WTERMSIG(status);
+      r.exitCode = kExitInternal;
+    } else {
+      r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : kExitInternal;
+      int code = 0;
+      // A child that exited without its figures (an abort in a library) crashed too.
+      if (!(figures >> code >> r.runs >> r.steps >> r.iterations) && r.exitCode == 0) r.exitCode = kExitInternal;
+    }
+    ++done;
+    if (!r.ok()) ++failed;
+    clearLine(options.progress);
+    out << r.output;
+    if (r.signal) out << r.deck << ": crashed (signal " << r.signal << ")\n";
+    out.flush();
+  }
+  clearLine(options.progress);
+  return results;
+}
+
+void printBatchTable(std::ostream& os, const std::vector<BatchResult>& results) {
+  std::size_t w = 4;
+  for (const BatchResult& r : results) w = std::max(w, r.deck.size());
+  char buf[512];
+  std::snprintf(buf, sizeof buf, "%-*s  %-20s %5s %7s %11s %10s\n", static_cast<int>(w), "deck", "status",
+                "runs", "steps", "iterations", "wall (s)");
+  os << "\n" << buf;
+  int failed = 0;
+  for (const BatchResult& r : results) {
+    if (!r.ok()) ++failed;
+    if (r.ok())
+      std::snprintf(buf, sizeof buf, "%-*s  %-20s %5d %7d %11d %10.2f\n", static_cast<int>(w), r.deck.c_str(),
+                    r.status().c_str(), r.runs, r.steps, r.iterations, r.seconds);
+    else
+      std::snprintf(buf, sizeof buf, "%-*s  %-20s %5s %7s %11s %10.2f\n", static_cast<int>(w), r.deck.c_str(),
+                    r.status().c_str(), "-", "-", "-", r.seconds);
+    os << buf;
+  }
+  os << results.size() << " deck" << (results.size() == 1 ? "" : "s") << ": "
+     << results.size() - static_cast<std::size_t>(failed) << " ok, " << failed << " failed\n";
+}
+
+int batchExitCode(const std::vector<BatchResult>& results) {
+  for (const BatchResult& r : results)
+    if (!r.ok()) return r.exitCode != 0 ? r.exitCode : kExitInternal;
+  return 0;
+}
+
+}  // namespace c2d

@@ -1,0 +1,48 @@
+#pragma once
+// Batch runs (collapse2d run DECK... [-j N]): every deck in a child process of
+// its own (fork), at most N at once, so that one deck's failure or crash never
+// stops the others. A child's console output is kept and printed in one piece
+// when it ends; its figures come back through a small result file. The table
+// of every deck (status, runs, steps, iterations, wall time) ends the batch.
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "macro/DeckRunner.h"
+
+namespace c2d {
+
+struct BatchOptions {
+  DeckOptions deck;       // output directory, quiet, solver (progress is the batch's own)
+  int jobs = 1;           // decks run at the same time
+  bool progress = false;  // a status line on stderr (a terminal)
+};
+
+struct BatchResult {
+  std::string deck;
+  int exitCode = 0;   // the deck's exit status (kExitInternal when it crashed)
+  int signal = 0;     // the signal that ended the child, 0 when it exited
+  int runs = 0, steps = 0, iterations = 0;
+  double seconds = 0;  // wall time of the child
+  std::string output;  // what the deck printed (messages, summaries)
+
+  bool ok() const { return exitCode == 0 && signal == 0; }
+  std::string status() const;  // "ok", "deck error", "analysis failed", "crashed (signal 11)", ...
+};
+
+// Runs the decks; results in the order of `decks`. Each child's output is
+// written to `out` as the child ends.
+std::vector<BatchResult> runBatch(const std::vector<std::string>& decks, const BatchOptions& options,
+                                  const SolutionCommands& commands, std::ostream& out);
+
+void printBatchTable(std::ostream& os, const std::vector<BatchResult>& results);
+
+// 0 when every deck succeeded, else the status of the first deck (in the
+// given order) that did not.
+int batchExitCode(const std::vector<BatchResult>& results);
+
+// Two decks whose outputs would overwrite each other (same file stem): the
+// message naming them, or "".
+std::string batchStemClash(const std::vector<std::string>& decks);
+
+}  // namespace c2d

@@ -1,0 +1,235 @@
+#include "macro/OutputCommands.h"
+
+#include <algorithm>
+#include <array>
+
+#include "macro/ProblemRun.h"
+
+namespace c2d {
+
+namespace {
+
+FieldSpec num(std::string name, std::string doc, std::string def = {}) {
+  return {std::move(name), FieldKind::Expression, std::move(def), std::move(doc)};
+}
+FieldSpec word(std::string name, std::string doc, std::string def = {}) {
+  return {std::move(name), FieldKind::Text, std::move(def), std::move(doc)};
+}
+
+[[noreturn]] void fail(const Macro& m, std::size_t field, const std::string& what) {
+  throw DeckError(m.record.fieldLoc(field), what, m.record.excerpt(m.record.fieldLoc(field)));
+}
+[[noreturn]] void failData(const Record& rec, std::size_t field, const std::string& what,
+                           const std::string& hint = {}) {
+  throw DeckError(rec.fieldLoc(field), what, rec.excerpt(rec.fieldLoc(field)), hint);
+}
+
+// Number i of the command, or def when the field is absent or empty.
+double value(const Macro& m, std::size_t i, const Parameters& p, double def) {
+  return m.has(i) && !m.record.text(2 + i).empty() ? m.numbers[i].eval(p) : def;
+}
+
+// FEAP's interactive plot kinds that have nothing to draw in a headless run:
+// accepted (so a FEAPpv deck runs unchanged) and noted in the log.
+bool interactiveKind(const std::string& k) {
+  static const std::array<const char*, 14> kinds = {"wipe", "fram", "boun", "load", "node",
+                                                    "elem", "axis", "rang", "fill", "outl",
+                                                    "colo", "titl", "show", "scal"};
+  return std::any_of(kinds.begin(), kinds.end(), [&](const char* w) { return k == w; });
+}
+
+const char* kColumnHint =
+    "TPLOt columns: time, prop, disp_n_d, velo_n_d, acce_n_d, reac_n_d, stre_e_c, kinetic, "
+    "strain, contact, external, total, arcl";
+
+// A column name as TimeHistory writes it (without checking that TPLOt asks for it).
+bool columnSyntax(const std::string& c) {
+  for (const char* w : {"time", "prop", "kinetic", "strain", "contact", "external", "total", "arcl"})
+    if (c == w) return true;
+  for (const char* k : {"disp_", "velo_", "acce_", "reac_", "stre_"}) {
+    if (c.rfind(k, 0) != 0) continue;
+    const std::string rest = c.substr(5);
+    const auto us = rest.find('_');
+    if (us == std::string::npos || us == 0 || us + 2 != rest.size()) return false;
+    return std::all_of(rest.begin(), rest.begin() + static_cast<long>(us),
+                       [](char ch) { return ch >= '0' && ch <= '9'; }) &&
+           rest.back() >= '1' && rest.back() <= '3';
+  }
+  return false;
+}
+
+std::string label(const std::string& text) {
+  std::string s = text;
+  std::replace(s.begin(), s.end(), '_', ' ');
+  return s;
+}
+
+class PlotCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    CommandSpec s;
+    s.name = "PLOT";
+    s.doc =
+        "Headless pictures (SVG files, no display needed). PLOT,MESH: the undeformed mesh with "
+        "supports and joints, <stem>_mesh.svg. PLOT,DEFOrmed,scale: the deformed shape "
+        "(displacements times scale; 0 or absent: automatic, 1 once they are large) with "
+        "active and failed hinges, joints and the ground, <stem>_deformed_<step>.svg. "
+        "PLOT,CURVe,sx,sy with one data record after END naming two TPLOt columns: the "
+        "x-y chart of that history, <stem>_<y>_vs_<x>.svg, written when the command runs and "
+        "again, complete, at the end of the run (and overlaid across the runs of a SWEEp or "
+        "of a top-level LOOP at the end of the deck). Labels: underscores print as blanks. "
+        "FEAP's interactive kinds (WIPE, FRAMe, BOUNdary, LOAD, ...) are accepted and draw "
+        "nothing.";
+    s.fields = {word("kind", "MESH, DEFOrmed or CURVe"),
+                num("p1", "DEFOrmed: displacement scale (0: automatic); CURVe: x scale factor", "0 / 1"),
+                num("p2", "CURVe: y scale factor (-1 plots a reaction as a load)", "1")};
+    s.section = CommandSection::Solution;
+    s.data = DataForm::Records;
+    s.dataSyntax = "xcolumn ycolumn [xlabel ylabel]   (PLOT,CURVe only; e.g. disp_10_1 reac_10_1 u_[m] H_[kN])";
+    return s;
+  }
+
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    const std::string k = m.option.substr(0, 4);
+    if (k == "mesh" || k == "defo" || interactiveKind(k)) return;
+    if (k != "curv")
+      fail(m, 1, m.optionText.empty() ? "PLOT needs a kind: MESH, DEFOrmed or CURVe"
+                                      : "unknown PLOT kind '" + m.optionText + "' (MESH, DEFOrmed, CURVe)");
+    const Record& rec = ctx.take(m.record, "PLOT,CURVe record 'xcolumn ycolumn [xlabel ylabel]'");
+    if (rec.size() < 2) failData(rec, rec.size(), "PLOT,CURVe needs 'xcolumn ycolumn [xlabel ylabel]'", kColumnHint);
+    if (rec.size() == 3 || rec.size() > 4)
+      failData(rec, rec.size() == 3 ? 3 : 4, "PLOT,CURVe labels come as a pair 'xlabel ylabel'",
+               "write blanks inside a label as underscores: u_[m]");
+    for (std::size_t i = 0; i < 2; ++i)
+      if (!columnSyntax(toLower(rec.text(i))))
+        failData(rec, i, "'" + rec.text(i) + "' is not a TPLOt column", kColumnHint);
+    m.data.push_back(rec);
+    ctx.skipBlank();
+  }
+
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    const std::string k = m.option.substr(0, 4);
+    State& state = r.analysis().state();
+    if (k == "mesh") {
+      r.log() << "  PLOT   mesh: " << r.outputs().plotMesh(r.model(), state).filename().string() << "\n";
+    } else if (k == "defo") {
+      const double scale = value(m, 0, r.params(), 0.0);
+      r.log() << "  PLOT   deformed shape: "
+              << r.outputs().plotDeformed(r.model(), state, scale).filename().string() << "\n";
+    } else if (k == "curv") {
+      const auto path = r.outputs().plotCurve(curveSpec(m, r.params()), r.history());
+      r.log() << "  PLOT   curve: "
+              << (path ? path->filename().string() : std::string("no time history yet, written at the end of the run"))
+              << "\n";
+    } else {
+      r.log() << "  PLOT," << m.optionText << ": nothing to draw in a headless run\n";
+    }
+    return Flow::Next;
+  }
+
+  static CurveSpec curveSpec(const Macro& m, const Parameters& p) {
+    const Record& rec = m.data.front();
+    CurveSpec c;
+    c.xColumn = toLower(rec.text(0));
+    c.yColumn = toLower(rec.text(1));
+    c.xLabel = rec.size() >= 4 ? label(rec.text(2)) : c.xColumn;
+    c.yLabel = rec.size() >= 4 ? label(rec.text(3)) : c.yColumn;
+    // FEAP's convention: an empty or zero factor is the default 1.
+    const double sx = value(m, 0, p, 1.0), sy = value(m, 1, p, 1.0);
+    c.xScale = sx == 0 ? 1.0 : sx;
+    c.yScale = sy == 0 ? 1.0 : sy;
+    return c;
+  }
+};
+
+class ParaViewCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    CommandSpec s;
+    s.name = "PVIEw";
+    s.doc =
+        "ParaView output (VTK XML): PVIEw writes the current state as the next file "
+        "<stem>_NNNN.vtu of the collection <stem>.pvd (deformed nodes; displacement, rotation, "
+        "velocity, joint; per element N, V, M, material, hinge state, jump and position). "
+        "PVIEw,,inc also writes every inc committed steps from then on, so that a collapse "
+        "plays as an animation; PVIEw,OFF stops that.";
+    s.fields = {word("option", "OFF: stop the automatic output"),
+                num("inc", "write every inc committed steps (0: now only)", "0")};
+    s.section = CommandSection::Solution;
+    return s;
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    if (!m.option.empty() && m.option != "off") fail(m, 1, "PVIEw,,inc or PVIEw,OFF");
+    if (m.option.empty() && value(m, 0, ctx.params(), 0) < 0) fail(m, 2, "negative PVIEw increment");
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    if (m.option == "off") {
+      r.outputs().setViewInterval(0);
+      r.log() << "  PVIEw  off after " << r.outputs().viewsWritten() << " files\n";
+      return Flow::Next;
+    }
+    const int inc = static_cast<int>(value(m, 0, r.params(), 0));
+    r.outputs().setViewInterval(inc);
+    const auto path = r.outputs().writeView(r.model(), r.analysis().state());
+    r.log() << "  PVIEw  " << (path ? path->filename().string() : std::string("state already written"));
+    if (inc > 0) r.log() << ", then every " << inc << " steps";
+    r.log() << "\n";
+    return Flow::Next;
+  }
+};
+
+void collect(const std::vector<Macro>& list, std::vector<const Macro*>& tplots,
+             std::vector<const Macro*>& curves) {
+  for (const Macro& m : list) {
+    if (m.is("tplo")) tplots.push_back(&m);
+    if (m.is("plot") && m.option.substr(0, 4) == "curv") curves.push_back(&m);
+    collect(m.body, tplots, curves);
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<SolutionCommand> makePlotCommand() { return std::make_unique<PlotCommand>(); }
+std::unique_ptr<SolutionCommand> makeParaViewCommand() { return std::make_unique<ParaViewCommand>(); }
+
+std::vector<std::string> timeHistoryColumns(const Macro& tplot, const Parameters& params) {
+  std::vector<std::string> cols = {"time", "prop"};
+  for (const Record& rec : tplot.data) {
+    const std::string k = commandKey(rec.text(0));
+    if (k == "ener") {
+      for (const char* e : {"kinetic", "strain", "contact", "external", "total"}) cols.push_back(e);
+    } else if (k == "arcl") {
+      cols.push_back("arcl");
+    } else if (rec.size() >= 3) {
+      const int n = Expression::parse(rec[1]).evalInt(params, "number");
+      const int d = Expression::parse(rec[2]).evalInt(params, "component");
+      cols.push_back(k + "_" + std::to_string(n) + "_" + std::to_string(d));
+    }
+  }
+  return cols;
+}
+
+void checkPlotColumns(const std::vector<std::vector<Macro>>& batches, const Parameters& params) {
+  std::vector<const Macro*> tplots, curves;
+  for (const auto& b : batches) collect(b, tplots, curves);
+  std::vector<std::string> known;
+  for (const Macro* t : tplots)
+    for (const std::string& c : timeHistoryColumns(*t, params)) known.push_back(c);
+  for (const Macro* m : curves) {
+    const Record& rec = m->data.front();
+    if (tplots.empty())
+      throw DeckError(m->record.fieldLoc(1), "PLOT,CURVe plots TPLOt columns, and this problem has no TPLOt",
+                      m->record.excerpt(m->record.fieldLoc(1)), "add TPLOt with its records after END");
+    for (std::size_t i = 0; i < 2; ++i) {
+      const std::string c = toLower(rec.text(i));
+      if (std::find(known.begin(), known.end(), c) != known.end()) continue;
+      std::string have;
+      for (const std::string& k : known) have += (have.empty() ? "" : ", ") + k;
+      failData(rec, i, "PLOT,CURVe: no TPLOt column '" + rec.text(i) + "'", "the TPLOt columns are " + have);
+    }
+  }
+}
+
+}  // namespace c2d

@@ -1,0 +1,58 @@
+#include "macro/Sweep.h"
+
+#include <cctype>
+#include <cstdio>
+
+namespace c2d {
+
+std::string formatSweepValue(double value) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", value == 0 ? 0.0 : value);
+  return buf;
+}
+
+std::string sweepTag(const SweepValues& values) {
+  std::string tag;
+  for (const auto& [name, v] : values) {
+    if (!tag.empty()) tag += '_';
+    tag += name + "=" + formatSweepValue(v);
+  }
+  // Names are parameter names and values come from %g: only "inf"/"nan" could
+  // surprise a shell, and they stay plain letters.
+  for (char& c : tag)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+' ||
+          c == '=' || c == '_'))
+      c = '_';
+  return tag;
+}
+
+std::string sweepLabel(const SweepValues& values) {
+  std::string label;
+  for (const auto& [name, v] : values) {
+    if (!label.empty()) label += ", ";
+    label += name + " = " + formatSweepValue(v);
+  }
+  return label;
+}
+
+void registerDeckBlocks(CommandRegistry& registry) {
+  CommandSpec s;
+  s.name = "SWEEp";
+  s.doc =
+      "[ext] Parameter sweep, a top-level block before a problem: records 'name = v1 v2 ...' "
+      "(values are expressions without blanks; several names are zipped and need the same "
+      "number of values), ended by a blank record. The next problem (with the PARAmeter blocks "
+      "between the sweep and it, evaluated after the sweep values are set) runs once per value "
+      "set; each run's outputs are tagged with its values, <stem>_ks=-393_tplot.csv, and every "
+      "PLOT,CURVe of the runs is overlaid at the end of the deck in <stem>_<y>_vs_<x>.svg with "
+      "one legend entry per run ('ks = -393'). FEAP's LOOP,,n ... NEXT around a problem with a "
+      "PARAmeter block inside still works; its runs are <stem>_1, <stem>_2, ...";
+  s.section = CommandSection::Mesh;
+  s.data = DataForm::Records;
+  s.dataSyntax = "name = v1 v2 ...";
+  s.dataFields = {{"name", FieldKind::Text, {}, "parameter name"},
+                  {"v1 v2 ...", FieldKind::Expression, {}, "its value in each run"}};
+  registry.add(std::move(s));
+}
+
+}  // namespace c2d

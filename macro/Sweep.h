@@ -1,0 +1,28 @@
+#pragma once
+// [ext] The concise parameter sweep (SWEEp block, macro/Deck.h TopSweep): how a
+// run of a sweep is named. Each run's outputs carry its values in the file
+// names, "<stem>_ks=-393_tplot.csv" (several variables joined by '_'), and its
+// curves in an overlay carry them in the legend, "ks = -393".
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "macro/CommandSpec.h"
+
+namespace c2d {
+
+// (name as written, value) of each sweep variable of one run.
+using SweepValues = std::vector<std::pair<std::string, double>>;
+
+// A value as file names and legends show it: %g (six significant digits).
+std::string formatSweepValue(double value);
+// "ks=-393_mu=100": letters, digits, '.', '-', '+', '=' and '_' only.
+std::string sweepTag(const SweepValues& values);
+// "ks = -393, mu = 100".
+std::string sweepLabel(const SweepValues& values);
+
+// The declared spec of the SWEEp block, for --help (the top-level structure
+// words are parsed by DeckParser, not by a registry).
+void registerDeckBlocks(CommandRegistry& registry);
+
+}  // namespace c2d

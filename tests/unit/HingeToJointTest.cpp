@@ -1,0 +1,300 @@
+// HINGE2JOINT (elements/HingeToJoint.h) and ReissnerFrame's initial strain: a
+// softening cantilever (InelasticFrame) is driven past its peak until one hinge
+// is half softened, the hinge becomes a revolute joint and every element an
+// elastic Reissner beam with the old section forces; the cantilever is then a
+// pendulum pinned at its base that swings under a small tip force, with its
+// energy conserved by the mid-point scheme.
+#include "elements/HingeToJoint.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "core/Hinge.h"
+#include "core/Model.h"
+#include "elements/InelasticFrame.h"
+#include "elements/JointedElement.h"
+#include "elements/Joints.h"
+#include "elements/ReissnerFrame.h"
+#include "solvers/Analysis.h"
+#include "solvers/TimeIntegrator.h"
+
+namespace c2d {
+namespace {
+
+// --- ReissnerFrame initial strain ---------------------------------------------
+
+MaterialSet reissnerMaterial() {
+  MaterialSet m;
+  m.number = 1;
+  m.kinematics = Kinematics::Finite;
+  m.resEA = 2.0e4;
+  m.resGA = 8.0e3;
+  m.resEI = 1.0e2;
+  m.density = 0.5;
+  m.A = 2.0;
+  m.I = 0.05;
+  return m;
+}
+
+ElemVec randomVec(std::mt19937& gen, double scale) {
+  std::uniform_real_distribution<double> u(-scale, scale);
+  ElemVec v;
+  for (int i = 0; i < kElemDofs; ++i) v(i) = u(gen);
+  return v;
+}
+
+TEST(HingeToJointInitialStrain, ShiftsResultantsEnergyAndKeepsTheMidPointIdentity) {
+  std::mt19937 gen(11);
+  const Vec2 x1(0.1, 0.2), x2(1.3, -0.4);
+  ReissnerFrame plain(reissnerMaterial(), {0, 1}, x1, x2);
+  ReissnerFrame shifted(reissnerMaterial(), {0, 1}, x1, x2);
+  const Vec3 e0(1e-3, -2e-3, 0.05);
+  shifted.setInitialStrain(e0);
+  EXPECT_EQ(shifted.initialStrain(), e0);
+  const Vec3 c = shifted.sectionStiffness();
+  EXPECT_EQ(c, Vec3(2.0e4, 8.0e3, 1.0e2));
+  const double l = shifted.length();
+
+  for (double alpha : {0.0, 0.15}) {
+    StepRule mid = TimeIntegrator::midPoint(alpha, 0).rule(0.1);
+    mid.ca = mid.av = mid.aa = 0;  // internal forces only
+    const ElemVec dn = randomVec(gen, 0.2), d = dn + randomVec(gen, 0.2);
+    ElemVec r, rPlain;
+    ElemMat k, kPlain;
+    ASSERT_TRUE(shifted.evaluate({d, dn, ElemVec::Zero(), ElemVec::Zero()}, mid, true, r, k).ok);
+    const Vec3 eps = shifted.strains(d) - e0, epsN = shifted.strains(dn) - e0;
+    const SectionForces f = shifted.sectionForces();
+    EXPECT_NEAR(f.N, c(0) * eps(0), 1e-10);
+    EXPECT_NEAR(f.V, c(1) * eps(1), 1e-10);
+    EXPECT_NEAR(f.M, c(2) * eps(2), 1e-10);
+    const double w1 = 0.5 * l * eps.dot(c.asDiagonal() * eps);
+    const double w0 = 0.5 * l * epsN.dot(c.asDiagonal() * epsN);
+    EXPECT_NEAR(shifted.strainEnergy(), w1, 1e-12);
+    EXPECT_NEAR(shifted.energy(d), w1, 1e-12);
+    // (d - dn).f = W(d) - W(dn) + alpha l dE.C.dE, with the shifted energies.
+    const Vec3 dE = eps - epsN;
+    EXPECT_NEAR((d - dn).dot(r), w1 - w0 + alpha * l * dE.dot(c.asDiagonal() * dE),
+                1e-11 * std::abs(w1 - w0) + 1e-13);
+    // The tangent (its geometric part sees the shifted resultants) is the
+    // derivative of the residual.
+    for (int j = 0; j < kElemDofs; ++j) {
+      const double h = 1e-6;
+      ElemVec dp = d, dm = d;
+      dp(j) += h;
+      dm(j) -= h;
+      ASSERT_TRUE(plain.evaluate({dp, dn, ElemVec::Zero(), ElemVec::Zero()}, mid, false, rPlain,
+                                 kPlain)
+                      .ok);
+      ElemVec rp, rm;
+      ASSERT_TRUE(shifted.evaluate({dp, dn, ElemVec::Zero(), ElemVec::Zero()}, mid, false, rp, kPlain).ok);
+      ASSERT_TRUE(shifted.evaluate({dm, dn, ElemVec::Zero(), ElemVec::Zero()}, mid, false, rm, kPlain).ok);
+      EXPECT_LT(((rp - rm) / (2 * h) - k.col(j)).cwiseAbs().maxCoeff(),
+                1e-7 * k.cwiseAbs().maxCoeff());
+    }
+  }
+  // Static: the residual at the undeformed state is the initial-strain force
+  // l B^T (-C E0), so a stress-free state is the one with E = E0.
+  ElemVec r;
+  ElemMat k;
+  const ElemVec zero = ElemVec::Zero();
+  ASSERT_TRUE(shifted.evaluate({zero, zero, zero, zero}, StepRule{}, true, r, k).ok);
+  EXPECT_NEAR(shifted.sectionForces().M, -c(2) * e0(2), 1e-12);
+  EXPECT_NEAR(r(5) - r(2), -2 * c(2) * e0(2), 1e-9);  // end moments -+ M
+}
+
+// --- HINGE2JOINT on a softening cantilever --------------------------------------
+
+constexpr double kL = 2.5, kEI = 77650, kMu = 374, kKs = -18000;
+constexpr int kN = 10;
+
+MaterialSet softeningMaterial() {
+  MaterialSet m;
+  m.number = 1;
+  m.elementType = "FRAMe";
+  m.kinematics = Kinematics::Small;
+  m.resEA = 4.0e6;
+  m.resGA = 1.5e6;
+  m.resEI = kEI;
+  m.density = 2.5;
+  m.A = 0.12;
+  m.I = 0.0016;
+  m.softening = SofteningData{kMu, kKs};
+  return m;
+}
+
+// Cantilever along x, clamped at node 0, tip node kN with a prescribed transverse
+// displacement equal to the time.
+Model softeningCantilever() {
+  Model m;
+  m.materials()[1] = softeningMaterial();
+  m.resizeNodes(kN + 1);
+  for (int i = 0; i <= kN; ++i) m.setCoord(i, Vec2(kL * i / kN, 0));
+  for (int e = 0; e < kN; ++e)
+    m.setElement(e, std::make_unique<InelasticFrame>(m.materials()[1], std::array{e, e + 1},
+                                                     m.coord(e), m.coord(e + 1)));
+  m.bound(0) = {1, 1, 1};
+  m.bound(kN) = {0, 1, 0};
+  m.disp(kN) = {0, 1.0, 0};
+  return m;
+}
+
+bool solveStep(Analysis& an, int maxIterations = 40) {
+  if (!an.advance()) return false;
+  IterationInfo info;
+  for (int i = 0; i < maxIterations; ++i) {
+    if (!an.iterate(false, false, info)) return false;
+    if (info.converged) return true;
+  }
+  return false;
+}
+
+double chordAngle(const Model& m, const State& s, int a, int b) {
+  const Vec2 d = m.coord(b) + s.u.segment<2>(3 * b) - m.coord(a) - s.u.segment<2>(3 * a);
+  return std::atan2(d.y(), d.x());
+}
+
+TEST(HingeToJoint, SoftenedCantileverBecomesAPendulumWithContinuousSectionForces) {
+  Model m = softeningCantilever();
+  Analysis an(m);
+  an.setLoadFunction(1, [](double t) { return t; });
+  an.setDt(1e-3);
+  // Past the peak (tip 0.0106) until the hinge moment is about Mu/2 (tip 0.030).
+  for (int s = 0; s < 30; ++s) ASSERT_TRUE(solveStep(an)) << "step " << s;
+  ASSERT_TRUE(an.commit().ok);
+
+  int activeHinges = 0;
+  HingeInfo hinge;
+  for (int e = 0; e < kN; ++e) {
+    const HingeInfo h = dynamic_cast<const HingeCarrier&>(m.element(e)).hinge();
+    if (h.active) {
+      ++activeHinges;
+      hinge = h;
+      EXPECT_EQ(e, 0);  // the base element carries the largest moment
+    }
+  }
+  ASSERT_EQ(activeHinges, 1);
+  EXPECT_FALSE(hinge.failed);
+  EXPECT_NEAR(std::abs(hinge.moment), kMu / 2, 0.15 * kMu);
+  EXPECT_NEAR(std::abs(hinge.jump), (kMu - std::abs(hinge.moment)) / -kKs, 1e-9);
+
+  std::vector<SectionForces> before(kN);
+  for (int e = 0; e < kN; ++e) before[e] = m.element(e).sectionForces();
+  const Eigen::VectorXd uBefore = an.state().u;
+
+  const std::vector<CreatedJoint> created = hingeToJoint(m, an.state());
+  ASSERT_EQ(created.size(), 1u);
+  const CreatedJoint& cj = created[0];
+  EXPECT_EQ(cj.element, 0);
+  EXPECT_EQ(cj.slaveEnd, 0);  // the end at the clamp: larger end moment
+  EXPECT_EQ(cj.master, 0);
+  EXPECT_EQ(cj.slave, kN + 1);
+  EXPECT_EQ(cj.position, 0.5);
+  EXPECT_EQ(cj.jump, hinge.jump);
+  EXPECT_EQ(cj.relativeRotation, hinge.jump);  // joint at element node 1: +alpha
+  EXPECT_EQ(m.numNodes(), kN + 2);
+  ASSERT_EQ(m.joints().size(), 1u);
+  EXPECT_EQ(m.joints()[0].master, 0);
+  EXPECT_EQ(m.joints()[0].slave, kN + 1);
+  EXPECT_EQ(m.joints()[0].form, JointForm::Condensed);
+  EXPECT_EQ(m.coord(kN + 1), m.coord(0));
+  EXPECT_EQ(m.bound(kN + 1), (std::array<int, 3>{0, 0, 0}));
+
+  // Every element is an elastic Reissner beam; the first one behind the joint.
+  auto* je = dynamic_cast<JointedElement*>(&m.element(0));
+  ASSERT_NE(je, nullptr);
+  EXPECT_EQ(je->slaveNode(), kN + 1);
+  EXPECT_EQ(je->nodes(), (std::array<int, 2>{0, 1}));
+  EXPECT_EQ(je->relativeRotation(), hinge.jump);
+  const auto* hingeFrame = dynamic_cast<const ReissnerFrame*>(&je->inner());
+  ASSERT_NE(hingeFrame, nullptr);
+  for (int e = 1; e < kN; ++e) EXPECT_NE(dynamic_cast<const ReissnerFrame*>(&m.element(e)), nullptr);
+  EXPECT_EQ(m.material(1)->kinematics, Kinematics::Small);  // the model's sets are untouched
+
+  // Section forces carried over exactly.
+  for (int e = 0; e < kN; ++e) {
+    const SectionForces f = m.element(e).sectionForces();
+    EXPECT_NEAR(f.N, before[e].N, 1e-9 * kMu) << "element " << e;
+    EXPECT_NEAR(f.V, before[e].V, 1e-9 * kMu) << "element " << e;
+    EXPECT_NEAR(f.M, before[e].M, 1e-9 * kMu) << "element " << e;
+  }
+  // Without hardening there is no plastic curvature: the hinge element's
+  // curvature (theta2 - theta1 - psi_r)/l is the old elastic one exactly, which
+  // checks the sign of psi_r (the other sign would leave 2 alpha/l = 0.1).
+  EXPECT_NEAR(hingeFrame->initialStrain()(2), 0, 1e-12);
+  for (int e = 1; e < kN; ++e)
+    EXPECT_NEAR(dynamic_cast<const ReissnerFrame&>(m.element(e)).initialStrain()(2), 0, 1e-12);
+
+  // State: the slave moves with the master and is rotated by psi_r; committed = trial.
+  const State& s = an.state();
+  EXPECT_EQ(s.u.size(), 3 * (kN + 2));
+  EXPECT_EQ(s.u.head(3 * (kN + 1)), uBefore);
+  EXPECT_EQ(s.u.segment<2>(3 * (kN + 1)), s.u.segment<2>(0));
+  EXPECT_EQ(s.u(3 * (kN + 1) + 2), s.u(2) + hinge.jump);
+  EXPECT_EQ(s.un, s.u);
+  EXPECT_EQ(s.vn, s.v);
+
+  // A second call finds no active hinge and changes nothing.
+  const int version = m.topologyVersion();
+  EXPECT_TRUE(hingeToJoint(m, an.state()).empty());
+  EXPECT_EQ(m.numNodes(), kN + 2);
+  EXPECT_EQ(m.joints().size(), 1u);
+  EXPECT_EQ(&je->inner(), hingeFrame);
+  (void)version;
+
+  // Collapse phase: free the tip, push it up with a small force (5 kN, 1/30 of the
+  // peak load) and let the mechanism swing.
+  m.bound(kN) = {0, 0, 0};
+  m.disp(kN) = {0, 0, 0};
+  const double force = 5.0;
+  m.force(kN) = {0, force, 0};
+  m.bumpTopology();
+  an.setLoadFunction(1, [](double) { return 1.0; });
+  an.setIntegrator(TimeIntegrator::midPoint(0, 0));
+  const double dt = 0.005;
+  an.setDt(dt);
+  const double phi0 = chordAngle(m, an.state(), 0, kN);
+  const double e0 = an.energy().total();
+  double worst = 0;
+  const int steps = 80;
+  for (int st = 0; st < steps; ++st) {
+    ASSERT_TRUE(solveStep(an)) << "step " << st;
+    ASSERT_TRUE(an.commit().ok);
+    worst = std::max(worst, std::abs(an.energy().total() - e0));
+  }
+  const double phi = chordAngle(m, an.state(), 0, kN);
+
+  // Rigid pendulum about the pin under a vertical tip force:
+  // J phi'' = F L cos(phi), J = rhoA L^3/3 + rhoI L (consistent mass, exact for
+  // a rigid rotation), integrated with RK4.
+  const MaterialSet& mat = *m.material(1);
+  const double inertia = mat.rhoA() * kL * kL * kL / 3 + mat.rhoI() * kL;
+  double y = phi0, yd = 0;
+  const int sub = 1000;
+  const double h = steps * dt / sub;
+  auto acc = [&](double p) { return force * kL * std::cos(p) / inertia; };
+  for (int i = 0; i < sub; ++i) {
+    const double k1 = yd, l1 = acc(y);
+    const double k2 = yd + 0.5 * h * l1, l2 = acc(y + 0.5 * h * k1);
+    const double k3 = yd + 0.5 * h * l2, l3 = acc(y + 0.5 * h * k2);
+    const double k4 = yd + h * l3, l4 = acc(y + h * k3);
+    y += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+    yd += h / 6 * (l1 + 2 * l2 + 2 * l3 + l4);
+  }
+  EXPECT_GT(phi - phi0, 0.5);  // a mechanism: an elastic cantilever would turn 1e-4 rad
+  // Within the elastic spring-back released by the joint (M L/(2 EI) ~ 1e-3 rad).
+  EXPECT_NEAR(phi - phi0, y - phi0, 5e-3) << "rigid pendulum " << y - phi0;
+  const double scale = an.energy().kinetic;
+  EXPECT_LT(worst, 1e-10 * scale) << "kinetic " << scale;
+  // The joint carries the whole turn of the cantilever.
+  syncSlaveNodes(m, an.state());
+  EXPECT_NEAR(an.state().u(3 * (kN + 1) + 2), je->slaveRotation(), 1e-12);
+  EXPECT_GT(je->relativeRotation() - hinge.jump, 0.5);
+}
+
+}  // namespace
+}  // namespace c2d
