@@ -112,7 +112,8 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
 
   if (const auto& ground = model_.ground()) {
     for (int n = 0; n < model_.numNodes(); ++n) {
-      if (!dofs_.used(n)) continue;
+      // A shared joint's slave moves with its master: its contact is the master's.
+      if (!dofs_.used(n) || dofs_.aliased(n)) continue;
       const Eigen::Index iv = static_cast<Eigen::Index>(n) * kNodeDofs + 1;
       const double y0 = model_.coord(n).y();
       const ContactForce c = groundContact(*ground, y0 + s.un[iv], y0 + s.u[iv], rule);
@@ -144,7 +145,7 @@ double Assembler::contactEnergy(const State& s) const {
   if (!ground) return 0;
   double w = 0;
   for (int n = 0; n < model_.numNodes(); ++n)
-    if (dofs_.used(n))
+    if (dofs_.used(n) && !dofs_.aliased(n))
       w += c2d::contactEnergy(*ground, model_.coord(n).y() + s.u[n * kNodeDofs + 1]);
   return w;
 }

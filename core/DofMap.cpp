@@ -6,6 +6,7 @@ DofMap::DofMap(const Model& model) : version_(model.topologyVersion()) {
   const int nn = model.numNodes();
   eq_.assign(static_cast<size_t>(nn) * kNodeDofs, -1);
   used_.assign(nn, 0);
+  aliased_.assign(nn, 0);
   restrained_.assign(static_cast<size_t>(nn) * kNodeDofs, 0);
   for (int e = 0; e < model.numElements(); ++e)
     for (int n : model.element(e).nodes()) used_[n] = 1;
@@ -13,7 +14,10 @@ DofMap::DofMap(const Model& model) : version_(model.topologyVersion()) {
   // follow the master's equations.
   std::vector<int> aliasOf(nn, -1);
   for (const Joint& j : model.joints())
-    if (j.form == JointForm::Shared) aliasOf[j.slave] = j.master;
+    if (j.form == JointForm::Shared) {
+      aliasOf[j.slave] = j.master;
+      aliased_[j.slave] = 1;
+    }
 
   for (int n = 0; n < nn; ++n) {
     const auto& code = model.bound(n);

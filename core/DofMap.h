@@ -23,12 +23,14 @@ class DofMap {
   int eq(int nodeDof) const { return eq_[nodeDof]; }
   int eq(int node, int dof) const { return eq_[node * kNodeDofs + dof]; }
   bool used(int node) const { return used_[node]; }
+  // The node is the slave of a shared joint (its translations are the master's).
+  bool aliased(int node) const { return aliased_[node]; }
   bool restrained(int node, int dof) const { return restrained_[node * kNodeDofs + dof]; }
   std::array<int, kElemDofs> elementEqs(const Element& e) const;
 
  private:
   std::vector<int> eq_;
-  std::vector<char> used_, restrained_;
+  std::vector<char> used_, restrained_, aliased_;
   int numEq_ = 0;
   int version_ = -1;
 };

@@ -16,9 +16,10 @@ void Model::resizeNodes(int n) {
 }
 
 int Model::addNode(const Vec2& x) {
+  const Vec2 position = x;  // x may refer into coords_, which the resize moves
   const int n = numNodes();
   resizeNodes(n + 1);
-  coords_[n] = x;
+  coords_[n] = position;
   defined_[n] = 1;
   return n;
 }

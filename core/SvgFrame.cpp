@@ -92,6 +92,10 @@ const Element* elementOrNull(const Model& model, int e) { return model.elements(
 
 }  // namespace
 
+SvgFrame& SvgFrame::setShowNodes(bool show) {
+  nodes_ = show;
+  return *this;
+}
 SvgFrame& SvgFrame::setTitle(std::string title) {
   title_ = std::move(title);
   return *this;
@@ -364,6 +368,17 @@ std::string SvgFrame::svg(const Model& model, const State& state) const {
     o << "<path class=\"member\" d=\"" << d.str() << "\"/>\n";
   }
   o << "</g>\n";
+
+  if (nodes_) {
+    o << "<g class=\"nodes\" fill=\"black\">\n";
+    for (int n = 0; n < numNodes; ++n) {
+      if (!used[n] || !model.hasCoord(n)) continue;
+      const Vec2 p = P(deformed(n));
+      if (p.allFinite())
+        o << "<circle cx=\"" << px(p.x()) << "\" cy=\"" << px(p.y()) << "\" r=\"2.2\"/>\n";
+    }
+    o << "</g>\n";
+  }
 
   for (const Joint& j : model.joints())
     if (validNode(j.master) && model.hasCoord(j.master)) {

@@ -30,6 +30,7 @@ class SvgFrame {
   SvgFrame& setCurved(bool curved);                    // default true; false: straight chords
   SvgFrame& setScaleBar(bool show, std::string lengthUnit = "m");  // default shown, in m
   SvgFrame& setKey(bool show);                         // symbol key; default shown when symbols are
+  SvgFrame& setShowNodes(bool show);                   // a dot at every node (the mesh); default false
 
   std::string svg(const Model& model, const State& state) const;
   void save(const std::filesystem::path& path, const Model& model, const State& state) const;
@@ -38,7 +39,7 @@ class SvgFrame {
   std::string title_;
   double scale_ = 1;
   double maxWidth_ = 640, maxHeight_ = 600;
-  bool undeformed_ = true, curved_ = true, scaleBar_ = true, key_ = true;
+  bool undeformed_ = true, curved_ = true, scaleBar_ = true, key_ = true, nodes_ = false;
   std::string unit_ = "m";
 };
 

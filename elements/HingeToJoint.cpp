@@ -1,5 +1,6 @@
 #include "elements/HingeToJoint.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -183,7 +184,7 @@ std::vector<CreatedJoint> hingeToJoint(Model& model, State& state) {
       el.commit();
     }
   }
-  model.bumpTopology();
+  if (std::find(rebuild.begin(), rebuild.end(), 1) != rebuild.end()) model.bumpTopology();
   return created;
 }
 

@@ -47,16 +47,17 @@
 namespace c2d {
 
 struct CreatedJoint {
-  int element = -1;         // 0-based element index
+  int element = -1;             // 0-based element index
   int master = -1, slave = -1;  // 0-based node indices (slave: the new node)
-  int slaveEnd = 0;         // 0: element node 1, 1: element node 2
-  double position = 0.5;    // hinge position s_d / l_e
-  double jump = 0;          // rotation jump alpha of the hinge
+  int slaveEnd = 0;             // 0: element node 1, 1: element node 2
+  double position = 0.5;        // hinge position s_d / l_e
+  double jump = 0;              // rotation jump alpha of the hinge
   double relativeRotation = 0;  // psi_r at the start: +alpha (end 1) or -alpha (end 2)
 };
 
-// Throws AnalysisError when an element's material set is missing or an element
-// cannot be evaluated at the current state.
+// Bumps the topology version when it rebuilt anything (a model already in the
+// collapse phase is left unchanged). Throws AnalysisError when an element's material set is missing
+// or an element cannot be evaluated at the current state.
 std::vector<CreatedJoint> hingeToJoint(Model& model, State& state);
 
 }  // namespace c2d

@@ -1,8 +1,6 @@
 #include "elements/InelasticFrame.h"
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 
@@ -137,9 +135,6 @@ Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& ru
   const double sign = committed_.hingeActive ? committed_.hingeSign : trial_.hingeSign;
   if (Status st = respond(dl, committed_, active, sign, next, kt); !st) return st;
   trial_ = next;
-  if (std::getenv("C2D_DBG") && wantTangent)
-    std::fprintf(stderr, "el %d-%d kD=%.10e M=%.10f kt=%.6g act=%d xi=%.6e al=%.6e\n", nodes_[0], nodes_[1],
-                 midpointRows(length_).kappa.dot(dl), trial_.forces.M, kt, (int)active, trial_.bulk.xi, trial_.jump.alpha);
 
   const double l = length_;
   const Rows b = midpointRows(l);

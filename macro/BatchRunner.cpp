@@ -53,11 +53,16 @@ struct Child {
 void statusLine(bool show, std::size_t done, std::size_t total, std::size_t failed,
                 const std::map<pid_t, Child>& running, const std::vector<std::string>& decks) {
   if (!show) return;
-  std::string line = "[" + std::to_string(done) + "/" + std::to_string(total) + " done";
-  if (failed) line += ", " + std::to_string(failed) + " failed";
-  line += "] running:";
-  for (const auto& [pid, c] : running) line += " " + std::filesystem::path(decks[c.index]).filename().string();
-  if (line.size() > 79) line = line.substr(0, 76) + "...";
+  std::ostringstream os;
+  os << "[" << done << "/" << total << " done";
+  if (failed) os << ", " << failed << " failed";
+  os << "] running:";
+  for (const auto& [pid, c] : running) os << ' ' << std::filesystem::path(decks[c.index]).filename().string();
+  std::string line = os.str();
+  if (line.size() > 79) {
+    line.resize(76);
+    line.append("...");
+  }
   std::fprintf(stderr, "\r\033[K%s", line.c_str());
   std::fflush(stderr);
 }

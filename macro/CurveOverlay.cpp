@@ -27,7 +27,9 @@ std::vector<std::filesystem::path> CurveOverlay::write(const std::filesystem::pa
     // Two curves of the same columns with other labels or scales: tell the files apart.
     int same = 0;
     for (std::size_t k = 0; k < i; ++k) same += groups_[k].spec.fileName() == g.spec.fileName();
-    std::string name = stem + "_" + g.spec.fileName() + (same ? "_" + std::to_string(same + 1) : "") + ".svg";
+    std::string name = stem + '_' + g.spec.fileName();
+    if (same) name += '_' + std::to_string(same + 1);
+    name += ".svg";
     const std::filesystem::path path = outDir / name;
     AtomicFile::write(path, RunOutputs::curveSvg(g.title, g.spec, g.series));
     out.push_back(path);

@@ -8,6 +8,8 @@
 #include <iostream>
 #include <sstream>
 
+#include "elements/HingeToJoint.h"
+#include "elements/Joints.h"
 #include "macro/DeckParser.h"
 #include "macro/DeckReader.h"
 #include "macro/MeshBinder.h"
@@ -39,6 +41,7 @@ ProblemRun::~ProblemRun() { progress(true); }
 
 void ProblemRun::bind(bool echo) {
   model_ = buildModel(problem_, params_, echo ? &log_ : nullptr);
+  installJoints(model_);
   Parameters scratch = params_;
   batches_.clear();
   for (const BatchBlock& b : problem_.batches)
@@ -349,6 +352,7 @@ void ProblemRun::reenterMesh(const Macro& m) {
   const Status st = analysis_->commit();
   if (!st) fail(m, st.why);
   applyMesh(items, params_, model_, &log_);
+  installJoints(model_);
   model_.bumpTopology();
   analysis_->topologyChanged();
   hingeStep_.resize(model_.numElements(), 0);
@@ -405,7 +409,22 @@ void ProblemRun::printHinges() {
   printHingeTable(log_, model_, analysis_->state(), analysis_->loadFactor(), hingeStep_);
 }
 
+void ProblemRun::hingesToJoints(const Macro& m) {
+  const Status st = analysis_->commit();
+  if (!st) fail(m, st.why);
+  const std::vector<CreatedJoint> joints = hingeToJoint(model_, analysis_->state());
+  analysis_->topologyChanged();
+  hingeStep_.resize(model_.numElements(), 0);
+  log_ << "  HINGE2JOINT  " << joints.size() << " hinges became joints; " << model_.numNodes()
+       << " nodes, " << analysis_->assembler().dofs().numEquations() << " equations\n";
+  for (const CreatedJoint& j : joints)
+    log_ << "    element " << j.element + 1 << ": joint master " << j.master + 1 << " slave "
+         << j.slave + 1 << " (element end " << j.slaveEnd + 1 << "), relative rotation "
+         << fmt("%.6e", j.relativeRotation) << "\n";
+}
+
 void ProblemRun::onCommit() {
+  syncSlaveNodes(model_, analysis_->state());
   const State& s = analysis_->state();
   for (int e = 0; e < model_.numElements(); ++e) {
     const auto* h = dynamic_cast<const HingeCarrier*>(&model_.element(e));

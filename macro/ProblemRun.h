@@ -67,6 +67,7 @@ class ProblemRun {
   void setPathFollowing(const Macro& m);
   void setTimeHistory(const Macro& m);
   void reenterMesh(const Macro& m);
+  void hingesToJoints(const Macro& m);
   void printNodal(const Macro& m);
   void printStresses(const Macro& m);
   void printHinges();

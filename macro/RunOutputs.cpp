@@ -62,7 +62,7 @@ std::filesystem::path RunOutputs::plotMesh(const Model& model, State& state) con
   // The reference configuration: no displacements at all.
   const State reference;
   const std::filesystem::path path = file("_mesh.svg");
-  SvgFrame().setTitle(heading()).setShowUndeformed(false).save(path, model, reference);
+  SvgFrame().setTitle(heading()).setShowUndeformed(false).setShowNodes(true).save(path, model, reference);
   return path;
 }
 
@@ -81,11 +81,14 @@ double RunOutputs::automaticScale(const Model& model, const State& state) {
 std::filesystem::path RunOutputs::plotDeformed(const Model& model, State& state, double scale) const {
   syncSlaveNodes(model, state);
   if (!(scale > 0) && !(scale < 0)) scale = automaticScale(model, state);
+  // The step being computed: once TIME has advanced past the last committed
+  // step, a converged state belongs to the next one (the log counts the same way).
+  const int step = state.step + (state.t > state.tn ? 1 : 0);
   char name[48];
-  std::snprintf(name, sizeof name, "_deformed_%04d.svg", state.step);
+  std::snprintf(name, sizeof name, "_deformed_%04d.svg", step);
   const std::filesystem::path path = file(name);
   std::string t = heading();
-  t += (t.empty() ? "" : ": ") + std::string("step ") + std::to_string(state.step) + ", t = " +
+  t += (t.empty() ? "" : ": ") + std::string("step ") + std::to_string(step) + ", t = " +
        shortNumber(state.t);
   SvgFrame().setTitle(t).setDisplacementScale(scale).save(path, model, state);
   return path;
@@ -123,7 +126,7 @@ std::optional<std::filesystem::path> RunOutputs::plotCurve(const CurveSpec& spec
   if (std::none_of(curves_.begin(), curves_.end(), [&](const CurveSpec& c) { return c.sameAs(spec); }))
     curves_.push_back(spec);
   if (!history) return std::nullopt;
-  const std::filesystem::path path = file("_" + spec.fileName() + ".svg");
+  const std::filesystem::path path = file('_' + spec.fileName() + ".svg");
   AtomicFile::write(path, curveSvg(heading(), spec, {{std::string(), curvePoints(spec, *history)}}));
   return path;
 }

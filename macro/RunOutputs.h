@@ -3,7 +3,7 @@
 // (PLOT,MESH and PLOT,DEFOrmed, SVG), x-y charts of time-history columns
 // (PLOT,CURVe, SVG) and the ParaView collection (PVIEw, .vtu per output +
 // .pvd). Every file name starts with the run's stem:
-//   <stem>_mesh.svg   <stem>_deformed_0042.svg (committed step 42)
+//   <stem>_mesh.svg   <stem>_deformed_0042.svg (step 42)
 //   <stem>_<y>_vs_<x>.svg (TPLOt column names)   <stem>_0000.vtu ... <stem>.pvd
 // Nodal pictures need every node's values, the slaves of condensed joints
 // included: they are filled in (syncSlaveNodes) before each picture or file.

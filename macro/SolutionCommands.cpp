@@ -402,6 +402,23 @@ class StreCommand final : public SolutionCommand {
   }
 };
 
+class HingeToJointCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("HINGe2joint",
+                    "End of the failure phase: every activated softening hinge becomes a revolute "
+                    "joint (at the element end nearer the hinge; its jump becomes the joint's "
+                    "relative rotation), every element becomes an elastic geometrically exact "
+                    "(FINIte) beam starting with its current section forces; the current "
+                    "displacements are the initial state, velocities zero.",
+                    {});
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    r.hingesToJoints(m);
+    return Flow::Next;
+  }
+};
+
 class TplotCommand final : public SolutionCommand {
  public:
   CommandSpec spec() const override {
@@ -496,6 +513,7 @@ SolutionCommands::SolutionCommands() : registry_("Solution commands (BATCh ... E
   add(makePlotCommand());
   add(makeParaViewCommand());
   add(std::make_unique<MeshCommandMacro>());
+  add(std::make_unique<HingeToJointCommand>());
   add(std::make_unique<ParaCommand>());
   add(std::make_unique<StopCommand>());
 }

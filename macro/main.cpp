@@ -118,7 +118,7 @@ int main(int argc, char** argv) {
       const std::string in = a.substr(2);
       decks.push_back(in);
       const std::string base = std::filesystem::path(in).filename().string();
-      if (!base.empty() && (base[0] == 'I' || base[0] == 'i')) options.logName = "O" + base.substr(1);
+      if (!base.empty() && (base[0] == 'I' || base[0] == 'i')) options.logName = 'O' + base.substr(1);
     } else if (!a.empty() && a[0] == '-') {
       std::cerr << "collapse2d: unknown option '" << a << "'\n";
       usage(std::cerr);

@@ -73,6 +73,7 @@ void Analysis::topologyChanged() {
   stepInc_.setZero(neq);
   rNodal_.setZero(nd);
   rRest_n_.setZero(nd);
+  dPrescribed_.setZero(nd);
   analyzedVersion_ = -1;
   tableOf_.assign(static_cast<size_t>(nd), 1);
   for (int n = 0; n < model_.numNodes(); ++n)
@@ -211,21 +212,30 @@ Status Analysis::solveFraction(double fraction, double tEnd) {
 
 Status Analysis::locateHingeEvent(IterationInfo& info) {
   // The demand is piecewise linear in the load level: regula falsi (Illinois)
-  // on the step fraction for max demand = 1 from below, within 1e-10.
+  // on the step fraction for max demand in [1, 1 + 1e-10]. From above, so that
+  // every element is at or past its ultimate moment when the hinge opens: the
+  // opening element's hinge is then at its capacity and takes the softening
+  // branch (InelasticFrame freezes its bulk at the plastic curvature of Mu,
+  // which from a state below Mu would lower the moment by EI/Kh times the gap
+  // and leave the hinge rigid), and the others, on their yield surface, take
+  // the elastic one.
+  constexpr double kBand = 1e-10;
   locating_ = true;
   const double tEnd = state_.t;
   int element = -1;
   double sLo = 0, dLo = committedDemand_, sHi = 1, dHi = maxHingeDemand(element);
   double s = 0;
+  bool found = dLo >= 1.0;  // the committed state is already at Mu: open there
   Status st;
   int side = 0;
-  for (int k = 0; k < 40 && dLo < 1.0 - 1e-10; ++k) {
-    s = sLo + (1.0 - 0.5e-10 - dLo) * (sHi - sLo) / (dHi - dLo);
+  for (int k = 0; k < 60 && !found; ++k) {
+    s = sLo + (1.0 + 0.5 * kBand - dLo) * (sHi - sLo) / (dHi - dLo);
     s = std::clamp(s, sLo + 1e-6 * (sHi - sLo), sHi - 1e-6 * (sHi - sLo));
     st = solveFraction(s, tEnd);
     if (!st) break;
     const double d = maxHingeDemand(element);
-    if (d <= 1.0 && d >= 1.0 - 1e-10) break;
+    found = d >= 1.0 && d <= 1.0 + kBand;
+    if (found) break;
     if (d > 1.0) {
       sHi = s;
       dHi = d;
@@ -238,7 +248,9 @@ Status Analysis::locateHingeEvent(IterationInfo& info) {
       side = 1;
     }
   }
-  if (st && s == 0) st = solveFraction(0.0, tEnd);
+  // Not located within the band: open at the closest level found past Mu.
+  if (st && !found) s = sHi;
+  if (st && (!found || s == 0)) st = solveFraction(s, tEnd);
   if (st) st = commit();  // the sub-step up to the hinge's ultimate moment
   if (st) {
     maxHingeDemand(element);
@@ -248,8 +260,9 @@ Status Analysis::locateHingeEvent(IterationInfo& info) {
         if (onHingeActivated) onHingeActivated(e, h->hinge());
       }
     info.hingeActivated = element;
-    // At the ultimate moment the open hinge has no jump yet: the committed state is
-    // already the equilibrium; evaluate the elements with the hinge active.
+    // At the ultimate moment the open hinge has no jump yet (to 1e-10): the
+    // committed state is already the equilibrium; evaluate the elements with the
+    // hinge active.
     dirty_ = true;
     const StepRule rule = integrator_.rule(state_.dt);
     st = assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
@@ -295,10 +308,77 @@ int Analysis::activateCriticalHinge() {
   return best;
 }
 
+bool Analysis::holdPrescribed() {
+  if (assembler_.patternVersion() != model_.topologyVersion()) topologyChanged();
+  const DofMap& dofs = assembler_.dofs();
+  bool moved = false;
+  for (int n = 0; n < model_.numNodes(); ++n) {
+    if (!dofs.used(n)) continue;
+    for (int d = 0; d < kNodeDofs; ++d) {
+      const int i = n * kNodeDofs + d;
+      dPrescribed_[i] = 0;
+      if (!dofs.restrained(n, d) || state_.u[i] == state_.un[i]) continue;
+      dPrescribed_[i] = state_.u[i] - state_.un[i];
+      state_.u[i] = state_.un[i];
+      moved = true;
+    }
+  }
+  return moved;
+}
+
+Status Analysis::addPrescribedIncrement() {
+  const DofMap& dofs = assembler_.dofs();
+  const StepRule rule = integrator_.rule(state_.dt);
+  ElementKinematics kin;
+  ElemVec re, dp;
+  ElemMat ke;
+  Status st;
+  for (int e = 0; e < model_.numElements() && st; ++e) {
+    Element& el = model_.element(e);
+    const auto nodes = el.nodes();
+    for (int a = 0; a < 2; ++a)
+      dp.segment<kNodeDofs>(a * kNodeDofs) =
+          dPrescribed_.segment<kNodeDofs>(static_cast<Eigen::Index>(nodes[a]) * kNodeDofs);
+    if (dp.isZero(0)) continue;
+    for (int a = 0; a < 2; ++a) {
+      const Eigen::Index base = static_cast<Eigen::Index>(nodes[a]) * kNodeDofs;
+      kin.d.segment<kNodeDofs>(a * kNodeDofs) = state_.u.segment<kNodeDofs>(base);
+      kin.dn.segment<kNodeDofs>(a * kNodeDofs) = state_.un.segment<kNodeDofs>(base);
+      kin.vn.segment<kNodeDofs>(a * kNodeDofs) = state_.vn.segment<kNodeDofs>(base);
+      kin.an.segment<kNodeDofs>(a * kNodeDofs) = state_.an.segment<kNodeDofs>(base);
+    }
+    // The same evaluation as in the assembly just done: the element's trial state is unchanged.
+    st = el.evaluate(kin, rule, true, re, ke);
+    if (!st) {
+      st = Status::failure("element " + std::to_string(e + 1) + ": " + st.why);
+      break;
+    }
+    const ElemVec f = ke * dp;
+    for (int a = 0; a < 2; ++a)
+      for (int d = 0; d < kNodeDofs; ++d) {
+        const int eq = dofs.eq(nodes[a], d);
+        if (eq >= 0) R_[eq] -= f[a * kNodeDofs + d];
+      }
+  }
+  return st;
+}
+
 Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
   info = IterationInfo{};
   info.iteration = static_cast<int>(history_.size()) + 1;
+  // The first iteration of a static step takes the prescribed displacement
+  // increments through the tangent of the converged state (FEAP's treatment of
+  // specified boundary values). Evaluated with the increments already in place,
+  // the elements next to a prescribed dof would take the whole increment: an
+  // element at its yield surface would load plastically there while the
+  // solution unloads it, and in a softening step Newton's method can then
+  // cycle between sets of branches none of which holds the solution.
+  const bool predictor = info.iteration == 1 && !path_ && !integrator_.dynamic() && holdPrescribed();
   Status st = assembleAndFactor(symmetric);
+  if (predictor) {
+    if (st) st = addPrescribedIncrement();
+    state_.u += dPrescribed_;
+  }
   if (!st) return st;
   info.residual = R_.norm();
   st = solver_->solve(R_, du_);
@@ -372,7 +452,10 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
       st = assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
       if (!st) return st;
       int e = -1;
-      if (maxHingeDemand(e) > 1.0) {
+      // Past Mu by more than the location band: elements left at their
+      // ultimate moment by a located event (demand up to 1 + 1e-10) do not
+      // open a second hinge in a step that does not load them further.
+      if (maxHingeDemand(e) > 1.0 + 1e-9) {
         st = locateHingeEvent(info);
         if (!st) return st;
         converged_ = false;

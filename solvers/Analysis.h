@@ -97,6 +97,14 @@ class Analysis {
   void updateRates();
   Status assembleAndFactor(bool symmetric);
   void applyIncrement(const Eigen::VectorXd& du, double scale);
+  // Tangent predictor of a static step with prescribed displacements: moves the
+  // restrained dofs back to their committed values (true when any had moved,
+  // their increments kept in dPrescribed_), so that the first tangent is the one
+  // of the converged state; addPrescribedIncrement() then puts the increments
+  // adds their effect -K_fp*du_p to the right-hand side (the caller puts the
+  // increments back).
+  bool holdPrescribed();
+  Status addPrescribedIncrement();
   int activateCriticalHinge();
   // The most critical inactive hinge at the last evaluated state: demand |M|/Mu.
   double maxHingeDemand(int& element);
@@ -128,6 +136,7 @@ class Analysis {
 
   // Work vectors (sized per topology: nothing allocated inside the Newton loop).
   Eigen::VectorXd R_, du_, duF_, F_, stepInc_, rNodal_, rRest_n_;
+  Eigen::VectorXd dPrescribed_;  // per node dof: increments of the prescribed values in the step
   double energy0_ = 0;
   std::vector<IterationInfo> history_;
   int totalIterations_ = 0;

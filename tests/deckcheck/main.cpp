@@ -7,7 +7,9 @@
 //   # atol 1e-9
 //   # expect-exit 1        expected exit status (default 0)
 //   # expect-error TEXT    text the run must print (decks that must fail)
-//   == <output file> ==    expected content of an output file of the run
+//   == <output file> ==    expected content of an output file of the run (--update
+//                          rewrites the CSV files, the tables and every other
+//                          file the reference already holds)
 //   == <stem>.out tables == the printed tables of the log (FEAP-style spaced
 //                          titles up to the next blank line)
 // Words are compared exactly, numbers with the tolerance; the first mismatch is
@@ -183,7 +185,8 @@ bool compare(const std::string& section, const std::vector<std::string>& ref,
 
 int run(const std::string& exe, const fs::path& deck, const fs::path& dir, std::string& output) {
   const fs::path log = dir / "deckcheck.console";
-  const std::string cmd = "'" + exe + "' --quiet -o '" + dir.string() + "' '" + deck.string() +
+  // The batch path (a child process per deck), as `collapse2d run` runs decks.
+  const std::string cmd = "'" + exe + "' run --quiet -o '" + dir.string() + "' '" + deck.string() +
                           "' > '" + log.string() + "' 2>&1";
   const int status = std::system(cmd.c_str());
   std::ifstream in(log);
@@ -256,6 +259,10 @@ int main(int argc, char** argv) {
       if (fs::exists(dir / (stem + ".out")) && !logTables(dir / (stem + ".out")).empty())
         names.push_back(stem + ".out tables");
       names.insert(names.end(), csv.begin(), csv.end());
+      // Other result files the reference already compares (.pvd, .vtu) stay compared.
+      for (const auto& [name, lines] : ref.sections)
+        if (std::find(names.begin(), names.end(), name) == names.end() && fs::exists(dir / name))
+          names.push_back(name);
     }
     std::ofstream out(refPath);
     if (ref.header.empty()) out << "# reference results of " << deck.filename().string() << "\n";

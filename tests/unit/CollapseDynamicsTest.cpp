@@ -6,8 +6,8 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <numbers>
 #include <vector>
@@ -49,9 +49,9 @@ int addRod(Model& m, int from, const Vec2& to, int n) {
   int prev = from;
   for (int i = 1; i <= n; ++i) {
     const int node = m.addNode(x0 + (to - x0) * (double(i) / n));
-    m.setElement(m.numElements(), std::make_unique<ReissnerFrame>(m.materials().at(1),
-                                                                   std::array{prev, node},
-                                                                   m.coord(prev), m.coord(node)));
+    m.setElement(m.numElements(),
+                 std::make_unique<ReissnerFrame>(m.materials().at(1), std::array{prev, node},
+                                                 m.coord(prev), m.coord(node)));
     prev = node;
   }
   return prev;
@@ -210,8 +210,8 @@ TEST(CollapseDynamicsPendulum, FiniteAmplitudePeriodFollowsTheEllipticIntegral) 
   const double extrapolated = (4 * t600 - t300) / 3;
   EXPECT_GT(t300, t600);
   // What remains is the rods' stretch under the swinging loads (about 1e-5).
-  EXPECT_NEAR(extrapolated / tAmp, 1.0, 2e-5) << "extrapolated " << extrapolated << ", elliptic "
-                                              << tAmp;
+  EXPECT_NEAR(extrapolated / tAmp, 1.0, 2e-5)
+      << "extrapolated " << extrapolated << ", elliptic " << tAmp;
 }
 
 TEST(CollapseDynamicsPendulum, DoublePendulumFrequenciesAre3MinusPlus6OverSqrt7) {
@@ -291,7 +291,8 @@ void setVelocities(const Model& m, State& s, const Vec2& vc, double spin, double
   s.resize(m.numNodes());
   for (int n = 0; n < m.numNodes(); ++n) {
     const Vec2 r = m.coord(n);
-    const Vec2 v = vc + spin * Vec2(-r.y(), r.x()) + bending * std::cos(kPi * r.x() / 2) * Vec2(0, 1);
+    const Vec2 v =
+        vc + spin * Vec2(-r.y(), r.x()) + bending * std::cos(kPi * r.x() / 2) * Vec2(0, 1);
     s.v.segment<2>(3 * n) = v;
     s.v(3 * n + 2) = spin - bending * kPi / 2 * std::sin(kPi * r.x() / 2);
   }
@@ -433,8 +434,8 @@ TEST(CollapseDynamicsEnergy, DecayingSchemeSatisfiesTheStepIdentityAndNeverGains
   double before = an.energy().total(), worstIdentity = 0, totalDissipated = 0;
   for (int s = 0; s < 600; ++s) {
     ASSERT_TRUE(solveStep(an)) << "step " << s;
-    const double dissipated = strainDissipation(m, an.state(), alpha) +
-                              velocityDissipation(m, an.state(), beta);
+    const double dissipated =
+        strainDissipation(m, an.state(), alpha) + velocityDissipation(m, an.state(), beta);
     an.commit();
     const double after = an.energy().total();
     EXPECT_LE(after, before + 1e-12 * scale) << "step " << s;
@@ -504,9 +505,9 @@ TEST(GroundContact, MidPointForceIsTheDiscreteGradient) {
           << y0 << " -> " << y1;
       // Tangent: d force / d penetration(y1) = -d force / d y1.
       const double h = 1e-7;
-      const double fd = -(groundContact(g, y0, y1 + h, rule).force -
-                          groundContact(g, y0, y1 - h, rule).force) /
-                        (2 * h);
+      const double fd =
+          -(groundContact(g, y0, y1 + h, rule).force - groundContact(g, y0, y1 - h, rule).force) /
+          (2 * h);
       if (std::abs(y1 - g.y0) > 1e-6) {
         EXPECT_NEAR(c.tangent, fd, 1e-5 * g.k) << y0 << " " << y1;
       }
@@ -514,7 +515,8 @@ TEST(GroundContact, MidPointForceIsTheDiscreteGradient) {
   // Dissipation: alpha k (g1 - g0) on top while in contact.
   Ground d = g;
   d.alpha = 0.2;
-  const ContactForce c0 = groundContact(g, 0.45, 0.40, rule), c1 = groundContact(d, 0.45, 0.40, rule);
+  const ContactForce c0 = groundContact(g, 0.45, 0.40, rule),
+                     c1 = groundContact(d, 0.45, 0.40, rule);
   EXPECT_NEAR(c1.force - c0.force, 0.2 * g.k * 0.05, 1e-12 * g.k);
 }
 
@@ -543,7 +545,8 @@ TEST(GroundContact, StaticPenetrationIsWeightOverNodesTimesK) {
     an.commit();
     double mean = 0;
     const int nodes = n + 1;
-    for (int i = 0; i < nodes; ++i) mean += penetration(*m.ground(), position(m, an.state(), i).y());
+    for (int i = 0; i < nodes; ++i)
+      mean += penetration(*m.ground(), position(m, an.state(), i).y());
     mean /= nodes;
     EXPECT_NEAR(mean, weight / (nodes * k), 1e-12 * weight / k) << n << " elements";
     for (int i = 0; i < nodes; ++i)
@@ -623,7 +626,7 @@ DropResult drop(double groundAlpha, double k, double y0, double v0, double dt) {
 
 TEST(GroundContact, DroppedBarMatchesTheRigidDropFormulas) {
   const double mass = 1.0, k = 5.0e3, y0 = 0.01, vStart = 2.0;
-  const double kTotal = 2 * k;  // two nodes
+  const double kTotal = 2 * k;                                 // two nodes
   const double v0 = std::sqrt(vStart * vStart + 2 * kG * y0);  // at first contact
   const double omega = std::sqrt(kTotal / mass);
   const double tc = (kPi + 2 * std::atan(kG / (omega * v0))) / omega;

@@ -4,8 +4,6 @@
 // elastic Reissner beam with the old section forces; the cantilever is then a
 // pendulum pinned at its base that swings under a small tip force, with its
 // energy conserved by the mid-point scheme.
-#include "elements/HingeToJoint.h"
-
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -16,6 +14,7 @@
 
 #include "core/Hinge.h"
 #include "core/Model.h"
+#include "elements/HingeToJoint.h"
 #include "elements/InelasticFrame.h"
 #include "elements/JointedElement.h"
 #include "elements/Joints.h"
@@ -51,7 +50,6 @@ ElemVec randomVec(std::mt19937& gen, double scale) {
 TEST(HingeToJointInitialStrain, ShiftsResultantsEnergyAndKeepsTheMidPointIdentity) {
   std::mt19937 gen(11);
   const Vec2 x1(0.1, 0.2), x2(1.3, -0.4);
-  ReissnerFrame plain(reissnerMaterial(), {0, 1}, x1, x2);
   ReissnerFrame shifted(reissnerMaterial(), {0, 1}, x1, x2);
   const Vec3 e0(1e-3, -2e-3, 0.05);
   shifted.setInitialStrain(e0);
@@ -64,8 +62,8 @@ TEST(HingeToJointInitialStrain, ShiftsResultantsEnergyAndKeepsTheMidPointIdentit
     StepRule mid = TimeIntegrator::midPoint(alpha, 0).rule(0.1);
     mid.ca = mid.av = mid.aa = 0;  // internal forces only
     const ElemVec dn = randomVec(gen, 0.2), d = dn + randomVec(gen, 0.2);
-    ElemVec r, rPlain;
-    ElemMat k, kPlain;
+    ElemVec r;
+    ElemMat k, unused;
     ASSERT_TRUE(shifted.evaluate({d, dn, ElemVec::Zero(), ElemVec::Zero()}, mid, true, r, k).ok);
     const Vec3 eps = shifted.strains(d) - e0, epsN = shifted.strains(dn) - e0;
     const SectionForces f = shifted.sectionForces();
@@ -87,12 +85,11 @@ TEST(HingeToJointInitialStrain, ShiftsResultantsEnergyAndKeepsTheMidPointIdentit
       ElemVec dp = d, dm = d;
       dp(j) += h;
       dm(j) -= h;
-      ASSERT_TRUE(plain.evaluate({dp, dn, ElemVec::Zero(), ElemVec::Zero()}, mid, false, rPlain,
-                                 kPlain)
-                      .ok);
       ElemVec rp, rm;
-      ASSERT_TRUE(shifted.evaluate({dp, dn, ElemVec::Zero(), ElemVec::Zero()}, mid, false, rp, kPlain).ok);
-      ASSERT_TRUE(shifted.evaluate({dm, dn, ElemVec::Zero(), ElemVec::Zero()}, mid, false, rm, kPlain).ok);
+      ASSERT_TRUE(
+          shifted.evaluate({dp, dn, ElemVec::Zero(), ElemVec::Zero()}, mid, false, rp, unused).ok);
+      ASSERT_TRUE(
+          shifted.evaluate({dm, dn, ElemVec::Zero(), ElemVec::Zero()}, mid, false, rm, unused).ok);
       EXPECT_LT(((rp - rm) / (2 * h) - k.col(j)).cwiseAbs().maxCoeff(),
                 1e-7 * k.cwiseAbs().maxCoeff());
     }
@@ -212,7 +209,8 @@ TEST(HingeToJoint, SoftenedCantileverBecomesAPendulumWithContinuousSectionForces
   EXPECT_EQ(je->relativeRotation(), hinge.jump);
   const auto* hingeFrame = dynamic_cast<const ReissnerFrame*>(&je->inner());
   ASSERT_NE(hingeFrame, nullptr);
-  for (int e = 1; e < kN; ++e) EXPECT_NE(dynamic_cast<const ReissnerFrame*>(&m.element(e)), nullptr);
+  for (int e = 1; e < kN; ++e)
+    EXPECT_NE(dynamic_cast<const ReissnerFrame*>(&m.element(e)), nullptr);
   EXPECT_EQ(m.material(1)->kinematics, Kinematics::Small);  // the model's sets are untouched
 
   // Section forces carried over exactly.
@@ -244,7 +242,7 @@ TEST(HingeToJoint, SoftenedCantileverBecomesAPendulumWithContinuousSectionForces
   EXPECT_EQ(m.numNodes(), kN + 2);
   EXPECT_EQ(m.joints().size(), 1u);
   EXPECT_EQ(&je->inner(), hingeFrame);
-  (void)version;
+  EXPECT_EQ(m.topologyVersion(), version);
 
   // Collapse phase: free the tip, push it up with a small force (5 kN, 1/30 of the
   // peak load) and let the mechanism swing.
@@ -287,7 +285,7 @@ TEST(HingeToJoint, SoftenedCantileverBecomesAPendulumWithContinuousSectionForces
   }
   EXPECT_GT(phi - phi0, 0.5);  // a mechanism: an elastic cantilever would turn 1e-4 rad
   // Within the elastic spring-back released by the joint (M L/(2 EI) ~ 1e-3 rad).
-  EXPECT_NEAR(phi - phi0, y - phi0, 5e-3) << "rigid pendulum " << y - phi0;
+  EXPECT_NEAR(phi - phi0, y - phi0, 2e-3) << "rigid pendulum " << y - phi0;
   const double scale = an.energy().kinetic;
   EXPECT_LT(worst, 1e-10 * scale) << "kinetic " << scale;
   // The joint carries the whole turn of the cantilever.

@@ -4,8 +4,6 @@
 // mechanism modes, commit/revert of the relative rotation, local failures, and
 // the equivalence of the Condensed and the Shared joint forms in whole static
 // and dynamic analyses.
-#include "elements/JointedElement.h"
-
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -15,6 +13,7 @@
 #include <tuple>
 
 #include "core/Model.h"
+#include "elements/JointedElement.h"
 #include "elements/Joints.h"
 #include "elements/LinearFrame.h"
 #include "elements/ReissnerFrame.h"
@@ -109,11 +108,10 @@ TEST_P(JointedElementTangent, CondensedTangentMatchesCentralDifferences) {
   const StepRule rule = ruleFor(scheme);
   const double scale = kind == Inner::Reissner ? 0.15 : 0.05;
   for (int trial = 0; trial < 3; ++trial) {
-    const ElementKinematics kin{rigidMotion(x1, x2, 0.8 * trial, Vec2(0.2, -0.1)) +
-                                    randomVec(gen, scale),
-                                rigidMotion(x1, x2, 0.8 * trial - 0.1, Vec2(0.1, 0)) +
-                                    randomVec(gen, scale),
-                                randomVec(gen, 1.0), randomVec(gen, 5.0)};
+    const ElementKinematics kin{
+        rigidMotion(x1, x2, 0.8 * trial, Vec2(0.2, -0.1)) + randomVec(gen, scale),
+        rigidMotion(x1, x2, 0.8 * trial - 0.1, Vec2(0.1, 0)) + randomVec(gen, scale),
+        randomVec(gen, 1.0), randomVec(gen, 5.0)};
     ElemVec r;
     ElemMat k;
     ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
@@ -123,9 +121,8 @@ TEST_P(JointedElementTangent, CondensedTangentMatchesCentralDifferences) {
     EXPECT_LT(k.row(kr).cwiseAbs().maxCoeff(), 1e-12 * k.cwiseAbs().maxCoeff());
     ElemVec rin;
     ElemMat kin6;
-    ASSERT_TRUE(e.inner().evaluate(e.innerKinematics(kin, e.relativeRotation()), rule, true, rin,
-                                   kin6)
-                    .ok);
+    ASSERT_TRUE(
+        e.inner().evaluate(e.innerKinematics(kin, e.relativeRotation()), rule, true, rin, kin6).ok);
     EXPECT_EQ((rin - r).cwiseAbs().maxCoeff(), 0.0);
     EXPECT_NEAR(e.slaveRotation(), kin.d(kr) + e.relativeRotation(), 1e-15);
 
@@ -141,12 +138,11 @@ TEST_P(JointedElementTangent, CondensedTangentMatchesCentralDifferences) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(JointedElement, JointedElementTangent,
-                         ::testing::Combine(::testing::Values(Scheme::Static, Scheme::Newmark,
-                                                              Scheme::MidPoint),
-                                            ::testing::Values(Inner::Reissner, Inner::Timoshenko,
-                                                              Inner::EulerBernoulli),
-                                            ::testing::Values(0, 1)));
+INSTANTIATE_TEST_SUITE_P(
+    JointedElement, JointedElementTangent,
+    ::testing::Combine(::testing::Values(Scheme::Static, Scheme::Newmark, Scheme::MidPoint),
+                       ::testing::Values(Inner::Reissner, Inner::Timoshenko, Inner::EulerBernoulli),
+                       ::testing::Values(0, 1)));
 
 TEST(JointedElement, FiniteRigidMotionReleasesThePinnedEnd) {
   // A stress-free element turned rigidly by a large angle: psi_r goes back to
@@ -160,17 +156,17 @@ TEST(JointedElement, FiniteRigidMotionReleasesThePinnedEnd) {
       const ElemVec d = rigidMotion(x1, x2, w, Vec2(1.0, -3.0));
       ElemVec r;
       ElemMat k;
-      ASSERT_TRUE(e.evaluate({d, d, ElemVec::Zero(), ElemVec::Zero()}, ruleFor(Scheme::Static),
-                             true, r, k)
-                      .ok);
+      ASSERT_TRUE(
+          e.evaluate({d, d, ElemVec::Zero(), ElemVec::Zero()}, ruleFor(Scheme::Static), true, r, k)
+              .ok);
       EXPECT_LT(r.norm(), 1e-10) << "w = " << w;
       EXPECT_NEAR(e.relativeRotation(), 0.0, 1e-12);
       EXPECT_LT(e.strainEnergy(), 1e-22);
       // The master's own rotation does not matter: the slave rotation is w.
       ElemVec d2 = d;
       d2(3 * end + 2) += 2.5;
-      ASSERT_TRUE(e.evaluate({d2, d2, ElemVec::Zero(), ElemVec::Zero()},
-                             ruleFor(Scheme::Static), true, r, k)
+      ASSERT_TRUE(e.evaluate({d2, d2, ElemVec::Zero(), ElemVec::Zero()}, ruleFor(Scheme::Static),
+                             true, r, k)
                       .ok);
       EXPECT_LT(r.norm(), 1e-10);
       EXPECT_NEAR(e.relativeRotation(), -2.5, 1e-12);
@@ -332,8 +328,8 @@ Model hingedBeam(JointForm form) {
   for (int i = 0; i < 6; ++i) m.setCoord(i, x[i]);
   const std::array<int, 2> conn[] = {{0, 1}, {1, 2}, {3, 4}, {4, 5}};
   for (int e = 0; e < 4; ++e)
-    m.setElement(e, std::make_unique<ReissnerFrame>(m.materials()[1], conn[e],
-                                                    m.coord(conn[e][0]), m.coord(conn[e][1])));
+    m.setElement(e, std::make_unique<ReissnerFrame>(m.materials()[1], conn[e], m.coord(conn[e][0]),
+                                                    m.coord(conn[e][1])));
   m.bound(0) = {1, 1, 1};
   m.bound(5) = {0, 1, 0};
   m.force(2) = {0.8, -3.0, 0.0};
@@ -423,8 +419,8 @@ TEST_P(JointedElementEquivalence, CondensedAndSharedFormsGiveTheSameMotion) {
   const Eigen::VectorXd b = run(JointForm::Shared, ti, steps, dt);
   const double scale = b.cwiseAbs().maxCoeff();
   EXPECT_GT(scale, 0.05);  // a visibly nonlinear response
-  EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-9 * scale) << "a = " << a.transpose()
-                                                         << "\nb = " << b.transpose();
+  EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-9 * scale)
+      << "a = " << a.transpose() << "\nb = " << b.transpose();
   // The hinge opens: slave and master rotations differ.
   EXPECT_GT(std::abs(b(3 * 3 + 2) - b(2 * 3 + 2)), 1e-2);
   EXPECT_EQ(a.segment<2>(9), a.segment<2>(6));

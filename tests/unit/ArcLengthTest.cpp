@@ -1,0 +1,65 @@
+// Arc-length path following through both limit points of the shallow two-bar
+// arch (decks/pathfollowing/arch_arclength.inp): every converged point lies on
+// the closed-form equilibrium path P(w) of the truss.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "macro/DeckRunner.h"
+
+namespace c2d {
+namespace {
+
+std::vector<std::vector<double>> readCsv(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::string line;
+  std::getline(in, line);  // header
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(ArcLength, ArchPathOnClosedForm) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "c2d_arclength_test";
+  std::filesystem::create_directories(dir);
+  DeckOptions opt;
+  opt.outDir = dir;
+  opt.quiet = true;
+  SolutionCommands commands;
+  std::ostringstream out;
+  const DeckOutcome o =
+      runDeck(std::string(C2D_SOURCE_DIR) + "/decks/pathfollowing/arch_arclength.inp", opt, commands, out);
+  ASSERT_EQ(o.exitCode, 0) << o.message;
+  const auto rows = readCsv(dir / "arch_arclength_tplot.csv");
+  ASSERT_GE(rows.size(), 100u);
+  const double a = 1, h = 0.1, EA = 1e6, L0 = std::hypot(a, h);
+  double wMax = 0, pMax = -1e30, pMin = 1e30;
+  for (const auto& r : rows) {
+    const double w = -r[2], lambda = r[3];
+    const double L = std::hypot(a, h - w);
+    const double P = 2 * EA * (L0 - L) / L0 * (h - w) / L;
+    EXPECT_NEAR(lambda, P, 1e-5 * 381.0) << "w = " << w;
+    wMax = std::max(wMax, w);
+    pMax = std::max(pMax, lambda);
+    pMin = std::min(pMin, lambda);
+  }
+  // The path passes the limit load, the snap-back minimum and the zero at w = 2h.
+  EXPECT_GT(pMax, 370.0);
+  EXPECT_LT(pMin, -370.0);
+  EXPECT_GT(wMax, 2 * h);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace c2d
