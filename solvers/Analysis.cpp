@@ -132,6 +132,9 @@ Status Analysis::advance() {
 }
 
 Status Analysis::assembleAndFactor(bool symmetric) {
+  // The mid-point scheme's algorithmic internal force has an unsymmetric tangent:
+  // TANG then gets an unsymmetric factorization, as UTAN would.
+  symmetric = symmetric && integrator_.kind != TimeIntegrator::Kind::MidPoint;
   if (assembler_.patternVersion() != model_.topologyVersion() ||
       R_.size() != assembler_.dofs().numEquations())
     topologyChanged();

@@ -1,0 +1,104 @@
+// Collapse-phase decks checked against closed forms (verification V5, V6) and
+// the energy balance of the conserving mid-point scheme, through the whole deck
+// path (GRAVity, CONTact, DYNA,ENERgy, TPLOt ener).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "macro/DeckRunner.h"
+
+namespace c2d {
+namespace {
+
+using Columns = std::map<std::string, std::vector<double>>;
+
+Columns runAndRead(const std::string& deck, const std::string& stem) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("c2d_collapse_" + stem);
+  std::filesystem::create_directories(dir);
+  DeckOptions opt;
+  opt.outDir = dir;
+  opt.quiet = true;
+  SolutionCommands commands;
+  std::ostringstream out;
+  const DeckOutcome o = runDeck(std::string(C2D_SOURCE_DIR) + "/decks/" + deck, opt, commands, out);
+  EXPECT_EQ(o.exitCode, 0) << o.message;
+  std::ifstream in(dir / (stem + "_tplot.csv"));
+  std::string line, cell;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  for (std::stringstream ss(line); std::getline(ss, cell, ',');) names.push_back(cell);
+  Columns cols;
+  while (std::getline(in, line)) {
+    std::stringstream ss(line);
+    for (const auto& n : names) {
+      std::getline(ss, cell, ',');
+      cols[n].push_back(std::stod(cell));
+    }
+  }
+  std::filesystem::remove_all(dir);
+  return cols;
+}
+
+double relativeDrift(const std::vector<double>& total, double scale) {
+  const auto [lo, hi] = std::minmax_element(total.begin(), total.end());
+  return (*hi - *lo) / scale;
+}
+
+TEST(CollapseDecks, PendulumPeriod) {
+  Columns c = runAndRead("collapse/pendulum.inp", "pendulum");
+  ASSERT_FALSE(c["time"].empty());
+  const double L = 1, th = 0.05, g = 9.81, A = 1, I = 1e-4, pi = std::acos(-1.0);
+  const double T0 = 2 * pi * std::sqrt(2 * L / (3 * g)), h = T0 / 100, Om = 2 * pi / T0;
+  const double k = std::sin(th / 2);
+  const double expected = T0 * std::sqrt(1 + 3 * I / (A * L * L)) *
+                          (1 + k * k / 4 + 9 * std::pow(k, 4) / 64) * Om * h /
+                          (2 * std::atan(Om * h / 2));
+  // Zero crossings of the tip's horizontal position (x = L sin theta).
+  const auto& t = c["time"];
+  const auto& u = c["disp_5_1"];
+  std::vector<double> crossings;
+  for (size_t i = 1; i < t.size(); ++i) {
+    const double a = u[i - 1] + L * std::sin(th), b = u[i] + L * std::sin(th);
+    if ((a > 0) != (b > 0)) crossings.push_back(t[i - 1] + (t[i] - t[i - 1]) * a / (a - b));
+  }
+  ASSERT_GE(crossings.size(), 5u);
+  EXPECT_NEAR((crossings[2] - crossings[0]) / expected, 1.0, 2e-5);
+  EXPECT_NEAR((crossings[4] - crossings[2]) / expected, 1.0, 2e-5);
+  const double kmax = *std::max_element(c["kinetic"].begin(), c["kinetic"].end());
+  EXPECT_LT(relativeDrift(c["total"], kmax), 1e-10);
+}
+
+TEST(CollapseDecks, BarDrop) {
+  Columns c = runAndRead("collapse/bar_drop.inp", "bar_drop");
+  ASSERT_FALSE(c["time"].empty());
+  const double L = 2, n = 4, h0 = 0.05, k = 1e4, g = 9.81, m = L, dt = 5e-4;
+  const double K = (n + 1) * k, om = std::sqrt(K / m), v0 = std::sqrt(2 * g * h0);
+  const double pen = m * g / K + std::sqrt(std::pow(m * g / K, 2) + m * v0 * v0 / K);
+  const double tc = (std::acos(-1.0) + 2 * std::atan(g / (om * v0))) / om;
+  const auto& t = c["time"];
+  std::vector<double> y;
+  for (double d : c["disp_3_2"]) y.push_back(h0 + d);
+  EXPECT_NEAR(*std::min_element(y.begin(), y.end()), -pen, 0.01 * pen);
+  double first = -1, last = -1;
+  for (size_t i = 0; i < y.size(); ++i)
+    if (y[i] < 0) {
+      if (first < 0) first = t[i];
+      last = t[i];
+    }
+  ASSERT_GT(first, 0);
+  EXPECT_NEAR(last - first, tc, 2 * dt);
+  double rebound = -1;
+  for (size_t i = 0; i < y.size(); ++i)
+    if (t[i] > last) rebound = std::max(rebound, y[i]);
+  EXPECT_NEAR(rebound, h0, 1e-3 * h0);  // elastic rebound: energy conserved through impact
+  EXPECT_LT(relativeDrift(c["total"], m * g * h0), 1e-10);
+}
+
+}  // namespace
+}  // namespace c2d
