@@ -18,6 +18,7 @@ namespace {
 
 using Columns = std::map<std::string, std::vector<double>>;
 
+// Runs a deck into a scratch directory and reads the TPLOt file <stem>_tplot.csv.
 Columns runAndRead(const std::string& deck, const std::string& stem) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("c2d_collapse_" + stem);
   std::filesystem::create_directories(dir);
@@ -98,6 +99,21 @@ TEST(CollapseDecks, BarDrop) {
     if (t[i] > last) rebound = std::max(rebound, y[i]);
   EXPECT_NEAR(rebound, h0, 1e-3 * h0);  // elastic rebound: energy conserved through impact
   EXPECT_LT(relativeDrift(c["total"], m * g * h0), 1e-10);
+}
+
+TEST(CollapseDecks, SchemeComparison) {
+  // Two runs of the jointed double pendulum: Newmark, then the conserving scheme.
+  Columns newmark = runAndRead("collapse/double_pendulum.inp", "double_pendulum_1");
+  Columns conserving = runAndRead("collapse/double_pendulum.inp", "double_pendulum_2");
+  ASSERT_EQ(newmark["time"].size(), 300u);
+  ASSERT_EQ(conserving["time"].size(), 300u);
+  const double released = 9.81 * 3.0;  // potential energy scale: rods of unit mass, L = 1
+  const double dNewmark = relativeDrift(newmark["total"], released);
+  const double dConserving = relativeDrift(conserving["total"], released);
+  EXPECT_LT(dConserving, 1e-10);
+  EXPECT_GT(dNewmark, 1e4 * dConserving);
+  // The free end falls by nearly the whole length of the chain.
+  EXPECT_LT(*std::min_element(conserving["disp_10_2"].begin(), conserving["disp_10_2"].end()), -1.9);
 }
 
 }  // namespace
