@@ -99,7 +99,7 @@ class PlotCommand final : public SolutionCommand {
     const Record& rec = ctx.take(m.record, "PLOT,CURVe record 'xcolumn ycolumn [xlabel ylabel]'");
     if (rec.size() < 2) failData(rec, rec.size(), "PLOT,CURVe needs 'xcolumn ycolumn [xlabel ylabel]'", kColumnHint);
     if (rec.size() == 3 || rec.size() > 4)
-      failData(rec, rec.size() == 3 ? 3 : 4, "PLOT,CURVe labels come as a pair 'xlabel ylabel'",
+      failData(rec, rec.size() == 3 ? 2 : 4, "PLOT,CURVe labels come as a pair 'xlabel ylabel'",
                "write blanks inside a label as underscores: u_[m]");
     for (std::size_t i = 0; i < 2; ++i)
       if (!columnSyntax(toLower(rec.text(i))))

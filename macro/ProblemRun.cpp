@@ -69,7 +69,32 @@ void ProblemRun::run() {
     history_->finish();
   }
   outputs_->finish(history_.get());
+  if (model_.ground()) reportDebris();
   progress(true);
+}
+
+void ProblemRun::reportDebris() {
+  // Where the debris ends up: the horizontal extent of the nodes now, against the
+  // footprint of the reference configuration.
+  const State& s = analysis_->state();
+  double x0min = 1e300, x0max = -1e300, xmin = 1e300, xmax = -1e300, ymax = -1e300;
+  int left = -1, right = -1;
+  for (int n = 0; n < model_.numNodes(); ++n) {
+    if (!model_.hasCoord(n)) continue;
+    const Vec2& x = model_.coord(n);
+    const double cx = x.x() + s.u[n * kNodeDofs], cy = x.y() + s.u[n * kNodeDofs + 1];
+    x0min = std::min(x0min, x.x());
+    x0max = std::max(x0max, x.x());
+    ymax = std::max(ymax, cy);
+    if (cx < xmin) xmin = cx, left = n;
+    if (cx > xmax) xmax = cx, right = n;
+  }
+  if (left < 0) return;
+  log_ << "\n  debris: footprint x in [" << fmt("%.4e", x0min) << ", " << fmt("%.4e", x0max)
+       << "], nodes now in [" << fmt("%.4e", xmin) << " (node " << left + 1 << "), "
+       << fmt("%.4e", xmax) << " (node " << right + 1 << ")], highest point y = " << fmt("%.4e", ymax)
+       << "\n  debris: beyond the footprint " << fmt("%.4e", std::max(0.0, x0min - xmin))
+       << " on the left, " << fmt("%.4e", std::max(0.0, xmax - x0max)) << " on the right\n";
 }
 
 RunSummary ProblemRun::summary() const {
@@ -120,6 +145,11 @@ std::string ProblemRun::historyText() const {
     std::snprintf(buf, sizeof buf, "    %9d  %12.5e  %12.5e\n", i.iteration, i.residual, i.energy);
     os << buf;
   }
+  int node = -1, dof = -1;
+  const double r = analysis_->largestResidual(node, dof);
+  if (node >= 0)
+    os << "    largest residual " << fmt("%.5e", r) << " at node " << node + 1 << ", dof " << dof + 1
+       << "\n";
   return os.str();
 }
 

@@ -79,6 +79,7 @@ class ProblemRun {
   std::string historyText() const;
   std::vector<int> selection(const Macro& m, int count) const;
   void onCommit();
+  void reportDebris();
   void progress(bool final);
 
   const Problem& problem_;

@@ -215,14 +215,14 @@ Status Analysis::solveFraction(double fraction, double tEnd) {
 
 Status Analysis::locateHingeEvent(IterationInfo& info) {
   // The demand is piecewise linear in the load level: regula falsi (Illinois)
-  // on the step fraction for max demand in [1, 1 + 1e-10]. From above, so that
+  // on the step fraction for max demand in [1, 1 + 1e-12]. From above, so that
   // every element is at or past its ultimate moment when the hinge opens: the
   // opening element's hinge is then at its capacity and takes the softening
   // branch (InelasticFrame freezes its bulk at the plastic curvature of Mu,
   // which from a state below Mu would lower the moment by EI/Kh times the gap
   // and leave the hinge rigid), and the others, on their yield surface, take
   // the elastic one.
-  constexpr double kBand = 1e-10;
+  constexpr double kBand = 1e-12;
   locating_ = true;
   const double tEnd = state_.t;
   int element = -1;
@@ -263,7 +263,7 @@ Status Analysis::locateHingeEvent(IterationInfo& info) {
         if (onHingeActivated) onHingeActivated(e, h->hinge());
       }
     info.hingeActivated = element;
-    // At the ultimate moment the open hinge has no jump yet (to 1e-10): the
+    // At the ultimate moment the open hinge has no jump yet (to 1e-12): the
     // committed state is already the equilibrium; evaluate the elements with the
     // hinge active.
     dirty_ = true;
@@ -445,8 +445,14 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
 
   // FEAP's energy test, and a residual already at round-off level (a step that
   // changes nothing has no meaningful first energy to compare with).
-  const double roundoff = 1e-12 * assembler_.forceScale();
-  info.converged = energy0_ == 0 || info.energy <= tol_ * energy0_ ||
+  const double roundoff = 1e-10 * assembler_.forceScale();
+  // Stagnation at round-off: the energy no longer falls (less than tenfold in an
+  // iteration) although it is already 1e-10 of the first one: the residual has
+  // reached the precision the model can be evaluated with.
+  const bool stagnated = !history_.empty() && info.iteration >= 3 &&
+                         info.energy <= 1e-10 * energy0_ &&
+                         info.energy >= 0.1 * history_.back().energy;
+  info.converged = energy0_ == 0 || info.energy <= tol_ * energy0_ || stagnated ||
                    (!path_ && R_.size() > 0 && R_.cwiseAbs().maxCoeff() <= roundoff);
   if (info.converged && !locating_ && !hinges_.empty()) {
     if (!integrator_.dynamic()) {
@@ -456,7 +462,7 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
       if (!st) return st;
       int e = -1;
       // Past Mu by more than the location band: elements left at their
-      // ultimate moment by a located event (demand up to 1 + 1e-10) do not
+      // ultimate moment by a located event (demand up to 1 + 1e-12) do not
       // open a second hinge in a step that does not load them further.
       if (maxHingeDemand(e) > 1.0 + 1e-9) {
         st = locateHingeEvent(info);
@@ -475,6 +481,20 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
   converged_ = info.converged;
   history_.push_back(info);
   return Status::success();
+}
+
+double Analysis::largestResidual(int& node, int& dof) const {
+  node = dof = -1;
+  double largest = 0;
+  const DofMap& dofs = assembler_.dofs();
+  for (int i = 0; i < dofs.numNodes() * kNodeDofs; ++i) {
+    const int eq = dofs.eq(i);
+    if (eq < 0 || eq >= R_.size() || std::abs(R_[eq]) <= largest) continue;
+    largest = std::abs(R_[eq]);
+    node = i / kNodeDofs;
+    dof = i % kNodeDofs;
+  }
+  return largest;
 }
 
 Status Analysis::formResidual(double& norm) {

@@ -78,6 +78,8 @@ class Analysis {
   double loadFactor() const;  // multiplier of table-1 FORCe at t_n+1 (with the arc-length factor)
   double tableFactor(int table, double time) const;
   const std::vector<IterationInfo>& stepHistory() const { return history_; }
+  // Node and dof (0-based) of the largest residual component of the last iteration.
+  double largestResidual(int& node, int& dof) const;
   int totalIterations() const { return totalIterations_; }
   bool stepConverged() const { return converged_; }
 
