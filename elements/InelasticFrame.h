@@ -21,9 +21,13 @@
 //
 // The hinge never activates by itself: the solver asks hingeDemand() and calls
 // activateHinge() on one element at a time. Activate at a state where the demand
-// is 1 (cut the step back to it): the other elements are then on their yield
-// surface and unload elastically, while an activation in a state where they have
-// hardened past Mu leaves Newton's method between two sets of branches.
+// is 1 or just above (cut the step back to it): the hinge is then at its
+// capacity and takes the softening tangent, and the other elements, on their
+// yield surface, the elastic one, which are the branches of the solution (their
+// moment cannot exceed the hinge's). Below Mu the freeze above lowers the moment
+// by EI/Kh times the gap, which can leave the hinge rigid (EI/Kh2 is about 285
+// for the paper's data), and Newton's method then cycles between sets of
+// branches none of which holds the solution.
 //
 // The element is always a Timoshenko beam (SHEAr OFF is not honoured here: the
 // one-point element is free of shear locking). Dynamics as in LinearFrame:

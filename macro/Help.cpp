@@ -1,5 +1,7 @@
 #include "macro/Help.h"
 
+#include <string>
+
 #include "macro/MeshCommands.h"
 #include "macro/Sweep.h"
 
@@ -7,17 +9,44 @@ namespace c2d {
 
 namespace {
 
+// Text filled to lines of at most 79 columns (a longer word gets a line of its
+// own), the first line after `lead`, the others indented by `indent` blanks.
+void printWrapped(std::ostream& os, const std::string& lead, std::size_t indent, const std::string& text) {
+  constexpr std::size_t kWidth = 79;
+  std::string line = lead;
+  bool empty = lead.empty() || lead.back() == ' ';  // no blank needed before the next word
+  std::size_t p = 0;
+  while (p < text.size()) {
+    const std::size_t b = text.find_first_not_of(' ', p);
+    if (b == std::string::npos) break;
+    std::size_t e = text.find(' ', b);
+    if (e == std::string::npos) e = text.size();
+    const std::string w = text.substr(b, e - b);
+    if (!empty && line.size() + 1 + w.size() > kWidth) {
+      os << line << "\n";
+      line = std::string(indent, ' ');
+      empty = true;
+    }
+    if (!empty) line += ' ';
+    line += w;
+    empty = false;
+    p = e;
+  }
+  os << line << "\n";
+}
+
 void printSpec(std::ostream& os, const CommandSpec& s) {
   os << "  " << s.name;
   for (const FieldSpec& f : s.fields) os << "," << f.name;
-  os << "\n      " << s.doc << "\n";
+  os << "\n";
+  printWrapped(os, "      ", 6, s.doc);
   for (const FieldSpec& f : s.fields) {
     if (f.doc.empty()) continue;
-    os << "        " << f.name << ": " << f.doc;
-    if (!f.defaultValue.empty()) os << " (default " << f.defaultValue << ")";
-    os << "\n";
+    std::string doc = f.doc;
+    if (!f.defaultValue.empty()) doc += " (default " + f.defaultValue + ")";
+    printWrapped(os, "        " + f.name + ":", 10, doc);
   }
-  if (s.data == DataForm::Records) os << "      data records: " << s.dataSyntax << "\n";
+  if (s.data == DataForm::Records) printWrapped(os, "      data records:", 8, s.dataSyntax);
 }
 
 }  // namespace

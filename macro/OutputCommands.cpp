@@ -42,20 +42,24 @@ const char* kColumnHint =
     "TPLOt columns: time, prop, disp_n_d, velo_n_d, acce_n_d, reac_n_d, stre_e_c, kinetic, "
     "strain, contact, external, total, arcl";
 
-// A column name as TimeHistory writes it (without checking that TPLOt asks for it).
-bool columnSyntax(const std::string& c) {
+// The TPLOt column a PLOT,CURVe field names, as TimeHistory writes it
+// ("disp_11_1"), or "" when the field names none. The node or element number
+// may be an expression, "disp_n+1_1": the text between the first and the last
+// underscore (the component is one digit), so that a parametrised deck names
+// its columns the way its TPLOt records do.
+std::string resolveColumn(const Record& rec, std::size_t i, const Parameters& params) {
+  const std::string c = toLower(rec.text(i));
   for (const char* w : {"time", "prop", "kinetic", "strain", "contact", "external", "total", "arcl"})
-    if (c == w) return true;
-  for (const char* k : {"disp_", "velo_", "acce_", "reac_", "stre_"}) {
-    if (c.rfind(k, 0) != 0) continue;
-    const std::string rest = c.substr(5);
-    const auto us = rest.find('_');
-    if (us == std::string::npos || us == 0 || us + 2 != rest.size()) return false;
-    return std::all_of(rest.begin(), rest.begin() + static_cast<long>(us),
-                       [](char ch) { return ch >= '0' && ch <= '9'; }) &&
-           rest.back() >= '1' && rest.back() <= '3';
-  }
-  return false;
+    if (c == w) return c;
+  const auto first = c.find('_'), last = c.rfind('_');
+  if (first != 4 || last <= first + 1 || last + 2 != c.size() || c.back() < '1' || c.back() > '3') return {};
+  const std::string kind = c.substr(0, 4);
+  if (kind != "disp" && kind != "velo" && kind != "acce" && kind != "reac" && kind != "stre") return {};
+  const std::string number = rec.text(i).substr(first + 1, last - first - 1);
+  SourceLoc at = rec[i].loc;
+  at.col += static_cast<int>(first + 1);
+  const int n = Expression::parse(number, at, rec.line).evalInt(params, "node or element number");
+  return kind + "_" + std::to_string(n) + "_" + c.substr(last + 1);
 }
 
 std::string label(const std::string& text) {
@@ -71,9 +75,11 @@ class PlotCommand final : public SolutionCommand {
     s.name = "PLOT";
     s.doc =
         "Headless pictures (SVG files, no display needed). PLOT,MESH: the undeformed mesh with "
-        "supports and joints, <stem>_mesh.svg. PLOT,DEFOrmed,scale: the deformed shape "
+        "supports and joints, <stem>_mesh.svg. PLOT,DEFOrmed,scale,chords: the deformed shape "
         "(displacements times scale; 0 or absent: automatic, 1 once they are large) with "
-        "active and failed hinges, joints and the ground, <stem>_deformed_<step>.svg. "
+        "active and failed hinges, joints and the ground, <stem>_deformed_<step>.svg; members "
+        "are drawn as curves leaving each node at its rotation, or as straight chords with "
+        "chords = 1 (bars whose nodal rotations mean nothing). "
         "PLOT,CURVe,sx,sy with one data record after END naming two TPLOt columns: the "
         "x-y chart of that history, <stem>_<y>_vs_<x>.svg, written when the command runs and "
         "again, complete, at the end of the run (and overlaid across the runs of a SWEEp or "
@@ -82,7 +88,8 @@ class PlotCommand final : public SolutionCommand {
         "nothing.";
     s.fields = {word("kind", "MESH, DEFOrmed or CURVe"),
                 num("p1", "DEFOrmed: displacement scale (0: automatic); CURVe: x scale factor", "0 / 1"),
-                num("p2", "CURVe: y scale factor (-1 plots a reaction as a load)", "1")};
+                num("p2", "DEFOrmed: 1 straight chords; CURVe: y scale factor (-1 plots a reaction as a load)",
+                    "0 / 1")};
     s.section = CommandSection::Solution;
     s.data = DataForm::Records;
     s.dataSyntax = "xcolumn ycolumn [xlabel ylabel]   (PLOT,CURVe only; e.g. disp_10_1 reac_10_1 u_[m] H_[kN])";
@@ -102,7 +109,7 @@ class PlotCommand final : public SolutionCommand {
       failData(rec, rec.size() == 3 ? 2 : 4, "PLOT,CURVe labels come as a pair 'xlabel ylabel'",
                "write blanks inside a label as underscores: u_[m]");
     for (std::size_t i = 0; i < 2; ++i)
-      if (!columnSyntax(toLower(rec.text(i))))
+      if (resolveColumn(rec, i, ctx.params()).empty())
         failData(rec, i, "'" + rec.text(i) + "' is not a TPLOt column", kColumnHint);
     m.data.push_back(rec);
     ctx.skipBlank();
@@ -115,8 +122,9 @@ class PlotCommand final : public SolutionCommand {
       r.log() << "  PLOT   mesh: " << r.outputs().plotMesh(r.model(), state).filename().string() << "\n";
     } else if (k == "defo") {
       const double scale = value(m, 0, r.params(), 0.0);
+      const bool chords = value(m, 1, r.params(), 0.0) != 0;
       r.log() << "  PLOT   deformed shape: "
-              << r.outputs().plotDeformed(r.model(), state, scale).filename().string() << "\n";
+              << r.outputs().plotDeformed(r.model(), state, scale, !chords).filename().string() << "\n";
     } else if (k == "curv") {
       const auto path = r.outputs().plotCurve(curveSpec(m, r.params()), r.history());
       r.log() << "  PLOT   curve: "
@@ -131,8 +139,8 @@ class PlotCommand final : public SolutionCommand {
   static CurveSpec curveSpec(const Macro& m, const Parameters& p) {
     const Record& rec = m.data.front();
     CurveSpec c;
-    c.xColumn = toLower(rec.text(0));
-    c.yColumn = toLower(rec.text(1));
+    c.xColumn = resolveColumn(rec, 0, p);
+    c.yColumn = resolveColumn(rec, 1, p);
     c.xLabel = rec.size() >= 4 ? label(rec.text(2)) : c.xColumn;
     c.yLabel = rec.size() >= 4 ? label(rec.text(3)) : c.yColumn;
     // FEAP's convention: an empty or zero factor is the default 1.
@@ -223,11 +231,12 @@ void checkPlotColumns(const std::vector<std::vector<Macro>>& batches, const Para
       throw DeckError(m->record.fieldLoc(1), "PLOT,CURVe plots TPLOt columns, and this problem has no TPLOt",
                       m->record.excerpt(m->record.fieldLoc(1)), "add TPLOt with its records after END");
     for (std::size_t i = 0; i < 2; ++i) {
-      const std::string c = toLower(rec.text(i));
+      const std::string c = resolveColumn(rec, i, params);
       if (std::find(known.begin(), known.end(), c) != known.end()) continue;
       std::string have;
       for (const std::string& k : known) have += (have.empty() ? "" : ", ") + k;
-      failData(rec, i, "PLOT,CURVe: no TPLOt column '" + rec.text(i) + "'", "the TPLOt columns are " + have);
+      const std::string named = c == toLower(rec.text(i)) ? c : rec.text(i) + "' = '" + c;
+      failData(rec, i, "PLOT,CURVe: no TPLOt column '" + named + "'", "the TPLOt columns are " + have);
     }
   }
 }

@@ -78,7 +78,8 @@ double RunOutputs::automaticScale(const Model& model, const State& state) {
   return std::max(1.0, SvgChart::niceNumber(0.1 * extent / umax, true));
 }
 
-std::filesystem::path RunOutputs::plotDeformed(const Model& model, State& state, double scale) const {
+std::filesystem::path RunOutputs::plotDeformed(const Model& model, State& state, double scale,
+                                               bool curved) const {
   syncSlaveNodes(model, state);
   if (!(scale > 0) && !(scale < 0)) scale = automaticScale(model, state);
   // The step being computed: once TIME has advanced past the last committed
@@ -90,7 +91,7 @@ std::filesystem::path RunOutputs::plotDeformed(const Model& model, State& state,
   std::string t = heading();
   t += (t.empty() ? "" : ": ") + std::string("step ") + std::to_string(step) + ", t = " +
        shortNumber(state.t);
-  SvgFrame().setTitle(t).setDisplacementScale(scale).save(path, model, state);
+  SvgFrame().setTitle(t).setDisplacementScale(scale).setCurved(curved).save(path, model, state);
   return path;
 }
 

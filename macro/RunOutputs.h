@@ -49,8 +49,10 @@ class RunOutputs {
 
   // PLOT,MESH: the undeformed mesh with supports and joints.
   std::filesystem::path plotMesh(const Model& model, State& state) const;
-  // PLOT,DEFOrmed: the deformed shape; scale 0 chooses one (automaticScale).
-  std::filesystem::path plotDeformed(const Model& model, State& state, double scale) const;
+  // PLOT,DEFOrmed: the deformed shape; scale 0 chooses one (automaticScale);
+  // curved: members leave each node at its rotation (else straight chords).
+  std::filesystem::path plotDeformed(const Model& model, State& state, double scale,
+                                     bool curved = true) const;
   // PLOT,CURVe: remembers the curve (finish() writes it again, complete) and
   // writes it now from the history so far; nothing now without a history.
   std::optional<std::filesystem::path> plotCurve(const CurveSpec& spec, const TimeHistory* history);

@@ -18,8 +18,9 @@ namespace {
 
 void usage(std::ostream& os) {
   os << "usage: collapse2d [options] DECK...\n"
-        "       collapse2d run [options] [-j N] DECK...  (batch: every deck in a process of its\n"
-        "                                     own, N at once, then a table of the results)\n"
+        "       collapse2d run [options] [-j N] DECK...\n"
+        "                                     (batch: every deck in a process of its own,\n"
+        "                                     N at once, then a table of the results)\n"
         "       collapse2d -iIname            (FEAP's form: deck Iname, log Oname)\n"
         "       collapse2d --help [COMMAND]   (every command, or one command's fields)\n"
         "options:\n"
@@ -37,7 +38,8 @@ void usage(std::ostream& os) {
         "    ks = -393 -500 -700      ! name = values; several names are zipped\n"
         "                             ! (a blank record ends the block)\n"
         "  FEAP * * ...\n"
-        "  outputs <stem>_ks=-393_tplot.csv, ...; PLOT,CURVe overlaid in <stem>_<y>_vs_<x>.svg\n";
+        "  outputs <stem>_ks=-393_tplot.csv, ...; the curves of PLOT,CURVe overlaid in\n"
+        "  <stem>_<y>_vs_<x>.svg with a legend entry per run (see --help SWEEp)\n";
 }
 
 // collapse2d run [options] [-j N] DECK...

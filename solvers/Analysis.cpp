@@ -169,14 +169,16 @@ void Analysis::applyIncrement(const Eigen::VectorXd& du, double scale) {
 double Analysis::maxHingeDemand(int& element) {
   if (hingesVersion_ != model_.topologyVersion()) collectHingeCarriers();
   double demand = 0;
+  for (const auto& [e, h] : hinges_) demand = std::max(demand, h->hingeDemand());
+  // Demands equal to round-off (a uniform moment) go to the lowest element
+  // number, so that the place where the hinge opens does not depend on the
+  // last bits of the solution.
   element = -1;
-  for (const auto& [e, h] : hinges_) {
-    const double d = h->hingeDemand();
-    if (d > demand) {
-      demand = d;
+  for (const auto& [e, h] : hinges_)
+    if (demand > 0 && h->hingeDemand() >= demand * (1 - 1e-12)) {
       element = e;
+      break;
     }
-  }
   return demand;
 }
 

@@ -92,12 +92,13 @@ Reference readReference(const fs::path& p) {
   return ref;
 }
 
-// A table title in the log: FEAP's spaced capitals, e.g. "   N o d a l   D i s p l a c e m e n t s".
+// A table title in the log: FEAP's spaced letters, e.g. "   N o d a l   D i s p l a c e m e n t s":
+// a capital, then letters each followed by a blank.
 bool isTableTitle(const std::string& l) {
   const std::string t = trim(l);
-  if (t.size() < 5) return false;
-  for (size_t i = 0; i + 1 < 5; i += 2)
-    if (!std::isupper(static_cast<unsigned char>(t[i])) || t[i + 1] != ' ') return false;
+  if (t.size() < 6 || !std::isupper(static_cast<unsigned char>(t[0]))) return false;
+  for (size_t i = 0; i < 6; i += 2)
+    if (!std::isalpha(static_cast<unsigned char>(t[i])) || t[i + 1] != ' ') return false;
   return true;
 }
 

@@ -86,7 +86,7 @@ TEST(PlotCurve, ChartHoldsTheScaledHistory) {
   const std::string path = dir.write(
       "c.inp", kParams + testing::cantileverProblem(
                              testing::rampBatch(4, "", "  PLOT,CURVe,-1,2\n"),
-                             testing::rampData("disp_5_2 reac_1_2 tip_deflection_[m] twice_the_load\n")) +
+                             testing::rampData("disp_n+1_2 reac_1_2 tip_deflection_[m] twice_the_load\n")) +
                    "STOP\n");
   const Deck deck = parseDeck(path);
   Parameters params;
@@ -101,6 +101,7 @@ TEST(PlotCurve, ChartHoldsTheScaledHistory) {
   run.run();
   const auto curves = run.outputs().curves(run.history());
   ASSERT_EQ(curves.size(), 1u);
+  EXPECT_EQ(curves[0].spec.xColumn, "disp_5_2");  // the node number as an expression, n = 4
   EXPECT_EQ(curves[0].spec.xLabel, "tip deflection [m]");
   EXPECT_EQ(curves[0].spec.yLabel, "twice the load");
   ASSERT_EQ(curves[0].points.size(), 4u);

@@ -1,0 +1,27 @@
+#!/bin/sh
+# Draws the figures of docs/gallery.md again from the decks that make them.
+# usage: sh docs/gallery/make.sh [path/to/collapse2d]   (default: build/collapse2d)
+# Each line of the list below: a deck (from the repository root), then the SVG
+# files of its run that the gallery shows. A paper deck joins the gallery with
+# one line here and a section in docs/gallery.md.
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+exe=${1:-$root/build/collapse2d}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT INT TERM
+
+while read -r deck figures; do
+  case $deck in '' | \#*) continue ;; esac
+  "$exe" run -q -o "$tmp" "$root/$deck"
+  for f in $figures; do
+    cp "$tmp/$f" "$here/$f"
+    echo "docs/gallery/$f"
+  done
+done <<'LIST'
+decks/elastic/rollup.inp rollup_mesh.svg rollup_deformed_0005.svg rollup_deformed_0010.svg rollup_deformed_0015.svg rollup_deformed_0020.svg rollup_disp_11_1_vs_prop.svg
+decks/pathfollowing/arch_snap.inp arch_snap_mesh.svg arch_snap_deformed_0010.svg arch_snap_deformed_0020.svg arch_snap_deformed_0025.svg arch_snap_arcl_vs_disp_2_2.svg
+decks/pathfollowing/arch_arclength.inp arch_arclength_arcl_vs_disp_2_2.svg
+decks/output/sweep_plot.inp sweep_plot_reac_1_2_vs_disp_3_2.svg sweep_plot_P=20_deformed_0004.svg
+# decks/paper/<deck>.inp <stem>_deformed_<step>.svg <stem>_<y>_vs_<x>.svg
+LIST
