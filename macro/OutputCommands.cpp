@@ -103,6 +103,7 @@ class PlotCommand final : public SolutionCommand {
     if (k != "curv")
       fail(m, 1, m.optionText.empty() ? "PLOT needs a kind: MESH, DEFOrmed or CURVe"
                                       : "unknown PLOT kind '" + m.optionText + "' (MESH, DEFOrmed, CURVe)");
+    ctx.skipBlank();  // the blank record that ended the previous data set
     const Record& rec = ctx.take(m.record, "PLOT,CURVe record 'xcolumn ycolumn [xlabel ylabel]'");
     if (rec.size() < 2) failData(rec, rec.size(), "PLOT,CURVe needs 'xcolumn ycolumn [xlabel ylabel]'", kColumnHint);
     if (rec.size() == 3 || rec.size() > 4)
