@@ -1,5 +1,9 @@
 #include "core/DofMap.h"
 
+#include <amd.h>
+
+#include <algorithm>
+
 namespace c2d {
 
 DofMap::DofMap(const Model& model) : version_(model.topologyVersion()) {
@@ -35,6 +39,36 @@ DofMap::DofMap(const Model& model) : version_(model.topologyVersion()) {
         restrained_[n * kNodeDofs + d] = restrained_[aliasOf[n] * kNodeDofs + d];
         eq_[n * kNodeDofs + d] = eq_[aliasOf[n] * kNodeDofs + d];
       }
+  orderForFill(model);
+}
+
+void DofMap::orderForFill(const Model& model) {
+  // Equations numbered in AMD order, so that the factorizations need no
+  // permutation of their own (and no permuted copy of the matrix per
+  // factorization): the graph of the equations, element by element.
+  if (numEq_ < 3) return;
+  std::vector<std::vector<int>> adj(numEq_);
+  for (int e = 0; e < model.numElements(); ++e) {
+    const auto eqs = elementEqs(model.element(e));
+    for (int i : eqs)
+      if (i >= 0)
+        for (int j : eqs)
+          if (j >= 0 && j != i) adj[i].push_back(j);
+  }
+  std::vector<int> Ap(numEq_ + 1, 0), Ai;
+  for (int i = 0; i < numEq_; ++i) {
+    std::sort(adj[i].begin(), adj[i].end());
+    adj[i].erase(std::unique(adj[i].begin(), adj[i].end()), adj[i].end());
+    Ap[i + 1] = Ap[i] + static_cast<int>(adj[i].size());
+    Ai.insert(Ai.end(), adj[i].begin(), adj[i].end());
+  }
+  if (Ai.empty()) return;
+  std::vector<int> perm(numEq_);
+  if (amd_order(numEq_, Ap.data(), Ai.data(), perm.data(), nullptr, nullptr) < AMD_OK) return;
+  std::vector<int> newNumber(numEq_);
+  for (int k = 0; k < numEq_; ++k) newNumber[perm[k]] = k;
+  for (int& eq : eq_)
+    if (eq >= 0) eq = newNumber[eq];
 }
 
 std::array<int, kElemDofs> DofMap::elementEqs(const Element& e) const {

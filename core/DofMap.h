@@ -29,6 +29,8 @@ class DofMap {
   std::array<int, kElemDofs> elementEqs(const Element& e) const;
 
  private:
+  void orderForFill(const Model& model);
+
   std::vector<int> eq_;
   std::vector<char> used_, restrained_, aliased_;
   int numEq_ = 0;

@@ -205,4 +205,43 @@ HingeInfo InelasticFrame::hinge() const {
   return h;
 }
 
+// ------------------------------------------------------------ restart files
+
+// A field added to the history must be added to the restart file too.
+static_assert(sizeof(BendingState) == 2 * sizeof(double) &&
+                  sizeof(SofteningState) == 2 * sizeof(double),
+              "restart files: InelasticFrame::writeState/readState write every history field");
+
+void InelasticFrame::writeState(std::ostream& out) const {
+  using namespace checkpoint;
+  for (int n : nodes_) put(out, n);
+  put(out, material_);
+  for (double x : {length_, EA_, GA_, rhoA_}) put(out, x);
+  putFixed(out, rotation_);
+  putFixed(out, mass_);
+  for (const PointState* p : {&committed_, &trial_}) {
+    for (double x : {p->bulk.kp, p->bulk.xi, p->jump.alpha, p->jump.xi, p->hingeSign, p->forces.N,
+                     p->forces.V, p->forces.M})
+      put(out, x);
+    putBool(out, p->hingeActive);
+    putBool(out, p->hingeFailed);
+  }
+}
+
+void InelasticFrame::readState(std::istream& in) {
+  using namespace checkpoint;
+  for (int& n : nodes_) n = get<int>(in);
+  material_ = get<int>(in);
+  for (double* x : {&length_, &EA_, &GA_, &rhoA_}) *x = get<double>(in);
+  getFixed(in, rotation_);
+  getFixed(in, mass_);
+  for (PointState* p : {&committed_, &trial_}) {
+    for (double* x : {&p->bulk.kp, &p->bulk.xi, &p->jump.alpha, &p->jump.xi, &p->hingeSign,
+                      &p->forces.N, &p->forces.V, &p->forces.M})
+      *x = get<double>(in);
+    p->hingeActive = getBool(in);
+    p->hingeFailed = getBool(in);
+  }
+}
+
 }  // namespace c2d

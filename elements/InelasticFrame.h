@@ -37,6 +37,7 @@
 #include <array>
 #include <optional>
 
+#include "core/Checkpoint.h"
 #include "core/Element.h"
 #include "core/Hinge.h"
 #include "core/MaterialSet.h"
@@ -45,7 +46,7 @@
 
 namespace c2d {
 
-class InelasticFrame final : public Element, public HingeCarrier {
+class InelasticFrame final : public Element, public HingeCarrier, public Checkpoint {
  public:
   // x1, x2: reference coordinates of the nodes. Bending uses the HARDening data
   // when given (elastic otherwise); the hinge exists only with SOFTening data.
@@ -73,6 +74,12 @@ class InelasticFrame final : public Element, public HingeCarrier {
   HingeInfo hinge() const override;
 
   double length() const { return length_; }
+
+  // Restart files: every member after the construction data except the
+  // material laws' parameters, which the constructor rebuilds from the
+  // material set.
+  void writeState(std::ostream& out) const override;
+  void readState(std::istream& in) override;
 
  private:
   // History of the integration point: value type, committed and trial copies.

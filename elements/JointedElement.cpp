@@ -118,4 +118,27 @@ std::unique_ptr<Element> JointedElement::release() {
   return std::move(inner_);
 }
 
+// ------------------------------------------------------------ restart files
+
+void JointedElement::writeState(std::ostream& out) const {
+  using namespace checkpoint;
+  put(out, slaveEnd_);
+  put(out, slave_);
+  for (int n : nodes_) put(out, n);
+  for (const Relative* r : {&trial_, &committed_})
+    for (double x : {r->psi, r->vel, r->acc}) put(out, x);
+  put(out, slaveRotation_);
+}
+
+void JointedElement::readState(std::istream& in) {
+  using namespace checkpoint;
+  const int end = get<int>(in);
+  if (end != slaveEnd_) throw CheckpointError("jointed element: slave end does not match");
+  slave_ = get<int>(in);
+  for (int& n : nodes_) n = get<int>(in);
+  for (Relative* r : {&trial_, &committed_})
+    for (double* x : {&r->psi, &r->vel, &r->acc}) *x = get<double>(in);
+  slaveRotation_ = get<double>(in);
+}
+
 }  // namespace c2d

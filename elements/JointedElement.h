@@ -25,11 +25,12 @@
 #include <memory>
 #include <string>
 
+#include "core/Checkpoint.h"
 #include "core/Element.h"
 
 namespace c2d {
 
-class JointedElement final : public Element {
+class JointedElement final : public Element, public Checkpoint {
  public:
   // inner: the element as built on its own nodes (its node at slaveEnd is the
   // slave); master: the joint's master node, which replaces the slave in nodes().
@@ -87,6 +88,12 @@ class JointedElement final : public Element {
   // Kinematics the wrapped element sees for the given outer kinematics and psi_r
   // (committed psi_r history for d_n, v_n, a_n).
   ElementKinematics innerKinematics(const ElementKinematics& outer, double psi) const;
+
+  // Restart files: the joint's own data (outer nodes, slave, relative rotation
+  // and rates, trial and committed); the wrapped element is written separately
+  // (elements/ModelCheckpoint).
+  void writeState(std::ostream& out) const override;
+  void readState(std::istream& in) override;
 
  private:
   struct Relative {

@@ -177,4 +177,30 @@ ElemVec LinearFrame::bodyLoad(const Vec2& g) const {
   return f;
 }
 
+// ------------------------------------------------------------ restart files
+
+void LinearFrame::writeState(std::ostream& out) const {
+  using namespace checkpoint;
+  for (int n : nodes_) put(out, n);
+  put(out, materialNumber_);
+  putBool(out, shear_);
+  for (double x : {length_, cos_, sin_, ea_, ga_, ei_, rhoA_}) put(out, x);
+  putFixed(out, stiffness_);
+  putFixed(out, mass_);
+  for (const Report* r : {&trial_, &committed_})
+    for (double x : {r->energy, r->forces.N, r->forces.V, r->forces.M}) put(out, x);
+}
+
+void LinearFrame::readState(std::istream& in) {
+  using namespace checkpoint;
+  for (int& n : nodes_) n = get<int>(in);
+  materialNumber_ = get<int>(in);
+  shear_ = getBool(in);
+  for (double* x : {&length_, &cos_, &sin_, &ea_, &ga_, &ei_, &rhoA_}) *x = get<double>(in);
+  getFixed(in, stiffness_);
+  getFixed(in, mass_);
+  for (Report* r : {&trial_, &committed_})
+    for (double* x : {&r->energy, &r->forces.N, &r->forces.V, &r->forces.M}) *x = get<double>(in);
+}
+
 }  // namespace c2d

@@ -12,12 +12,13 @@
 #include <array>
 #include <string>
 
+#include "core/Checkpoint.h"
 #include "core/Element.h"
 #include "core/MaterialSet.h"
 
 namespace c2d {
 
-class LinearFrame final : public Element {
+class LinearFrame final : public Element, public Checkpoint {
  public:
   LinearFrame(const MaterialSet& mat, const std::array<int, 2>& nodes, const Vec2& x1,
               const Vec2& x2);
@@ -47,6 +48,10 @@ class LinearFrame final : public Element {
   const ElemMat& stiffness() const { return stiffness_; }  // global frame
   // Element-frame resultants (N, V, M) at the midpoint for nodal displacements d (global).
   SectionForces forcesAt(const ElemVec& d) const;
+
+  // Restart files: every member after the construction data.
+  void writeState(std::ostream& out) const override;
+  void readState(std::istream& in) override;
 
  private:
   struct Report {

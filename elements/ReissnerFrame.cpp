@@ -211,4 +211,32 @@ ElemVec ReissnerFrame::bodyLoad(const Vec2& g) const {
   return f;
 }
 
+// ------------------------------------------------------------ restart files
+
+void ReissnerFrame::writeState(std::ostream& out) const {
+  using namespace checkpoint;
+  for (int n : nodes_) put(out, n);
+  put(out, materialNumber_);
+  putFixed(out, x1_);
+  putFixed(out, x2_);
+  for (double x : {length_, beta0_, ea_, ga_, ei_, rhoA_}) put(out, x);
+  putFixed(out, e0_);
+  putFixed(out, mass_);
+  for (const Report* r : {&trial_, &committed_})
+    for (double x : {r->energy, r->forces.N, r->forces.V, r->forces.M}) put(out, x);
+}
+
+void ReissnerFrame::readState(std::istream& in) {
+  using namespace checkpoint;
+  for (int& n : nodes_) n = get<int>(in);
+  materialNumber_ = get<int>(in);
+  getFixed(in, x1_);
+  getFixed(in, x2_);
+  for (double* x : {&length_, &beta0_, &ea_, &ga_, &ei_, &rhoA_}) *x = get<double>(in);
+  getFixed(in, e0_);
+  getFixed(in, mass_);
+  for (Report* r : {&trial_, &committed_})
+    for (double* x : {&r->energy, &r->forces.N, &r->forces.V, &r->forces.M}) *x = get<double>(in);
+}
+
 }  // namespace c2d

@@ -24,12 +24,13 @@
 #include <array>
 #include <string>
 
+#include "core/Checkpoint.h"
 #include "core/Element.h"
 #include "core/MaterialSet.h"
 
 namespace c2d {
 
-class ReissnerFrame final : public Element {
+class ReissnerFrame final : public Element, public Checkpoint {
  public:
   ReissnerFrame(const MaterialSet& mat, const std::array<int, 2>& nodes, const Vec2& x1,
                 const Vec2& x2);
@@ -66,6 +67,10 @@ class ReissnerFrame final : public Element {
   Vec3 strains(const ElemVec& d) const;
   // Stored energy W(d) = l/2 (E(d) - E0).C.(E(d) - E0).
   double energy(const ElemVec& d) const;
+
+  // Restart files: every member after the construction data (the initial strain included).
+  void writeState(std::ostream& out) const override;
+  void readState(std::istream& in) override;
 
  private:
   struct Report {

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "elements/HingeToJoint.h"
+#include "core/Checkpoint.h"
 #include "elements/Joints.h"
 #include "macro/DeckParser.h"
 #include "macro/DeckReader.h"
@@ -17,6 +18,7 @@
 #include "macro/OutputCommands.h"
 #include "macro/Report.h"
 #include "solvers/ProportionalLoad.h"
+#include "solvers/RestartFile.h"
 
 namespace c2d {
 
@@ -453,12 +455,79 @@ void ProblemRun::hingesToJoints(const Macro& m) {
          << fmt("%.6e", j.relativeRotation) << "\n";
 }
 
-void ProblemRun::onCommit() {
-  syncSlaveNodes(model_, analysis_->state());
+// ------------------------------------------------------------------ restart
+
+std::filesystem::path ProblemRun::restartPath(const Macro& m) const {
+  std::string name = m.optionText.empty() ? options_.stem : m.optionText;
+  if (std::filesystem::path(name).extension() != ".rst") name += ".rst";
+  return options_.outDir / name;
+}
+
+std::string ProblemRun::runState() const {
+  using namespace checkpoint;
+  std::ostringstream out(std::ios::binary);
+  putCount(out, hingeStep_.size());
+  for (int s : hingeStep_) put(out, s);
+  put(out, hingeCount_);
+  putBool(out, cutting_);
+  for (double x : {dtMin_, dtNominal_, energy0_, energyScale_, energyError_}) put(out, x);
+  put(out, stepsSinceCut_);
+  put(out, cuts_);
+  putBool(out, energyStarted_);
+  return out.str();
+}
+
+void ProblemRun::setRunState(const std::string& bytes) {
+  using namespace checkpoint;
+  std::istringstream in(bytes, std::ios::binary);
+  hingeStep_.resize(getCount(in));
+  for (int& s : hingeStep_) s = get<int>(in);
+  if (static_cast<int>(hingeStep_.size()) != model_.numElements())
+    throw CheckpointError("hinge steps do not match the element count");
+  hingeCount_ = get<int>(in);
+  cutting_ = getBool(in);
+  for (double* x : {&dtMin_, &dtNominal_, &energy0_, &energyScale_, &energyError_}) *x = get<double>(in);
+  stepsSinceCut_ = get<int>(in);
+  cuts_ = get<int>(in);
+  energyStarted_ = getBool(in);
+}
+
+void ProblemRun::saveRestart(const Macro& m) {
+  const Status st = analysis_->commit();
+  if (!st) fail(m, st.why);
+  const std::filesystem::path file = restartPath(m);
+  try {
+    c2d::saveRestart(file, model_, *analysis_, runState());
+  } catch (const std::exception& e) {
+    fail(m, e.what());
+  }
   const State& s = analysis_->state();
-  for (int e = 0; e < model_.numElements(); ++e) {
-    const auto* h = dynamic_cast<const HingeCarrier*>(&model_.element(e));
-    if (!h || hingeStep_[e] != 0) continue;
+  log_ << "  SAVE   " << file.string() << ": step " << s.step << ", t = " << fmt("%.6e", s.t) << "\n";
+}
+
+void ProblemRun::restoreRestart(const Macro& m) {
+  const std::filesystem::path file = restartPath(m);
+  try {
+    const std::string mine = loadRestart(file, model_, *analysis_);
+    try {
+      setRunState(mine);
+    } catch (const CheckpointError& e) {
+      throw CheckpointError("restart file '" + file.string() + "': " + e.what());
+    }
+  } catch (const CheckpointError& e) {
+    throw AnalysisError(m.record.fieldLoc(0).str() + ": error: REST: " + e.what());
+  }
+  const State& s = analysis_->state();
+  log_ << "  REST   " << file.string() << ": step " << s.step << ", t = " << fmt("%.6e", s.t) << ", "
+       << model_.numNodes() << " nodes, " << model_.numElements() << " elements, "
+       << analysis_->assembler().dofs().numEquations() << " equations\n";
+}
+
+void ProblemRun::onCommit() {
+  if (!model_.joints().empty()) syncSlaveNodes(model_, analysis_->state());
+  const State& s = analysis_->state();
+  for (const auto& [e, h] : analysis_->hingeCarriers()) {
+    if (hingeStep_[e] != 0) continue;
     const HingeInfo info = h->hinge();
     if (!info.active) continue;
     hingeStep_[e] = s.step;

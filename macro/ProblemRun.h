@@ -68,6 +68,11 @@ class ProblemRun {
   void setTimeHistory(const Macro& m);
   void reenterMesh(const Macro& m);
   void hingesToJoints(const Macro& m);
+  // SAVE[,name]: commit the converged step and write <outDir>/<name>.rst (default
+  // name: the run's stem). REST[,name]: replace the model and the analysis state
+  // by the ones saved there; the following commands continue from them.
+  void saveRestart(const Macro& m);
+  void restoreRestart(const Macro& m);
   void printNodal(const Macro& m);
   void printStresses(const Macro& m);
   void printHinges();
@@ -81,6 +86,10 @@ class ProblemRun {
   void onCommit();
   void reportDebris();
   void progress(bool final);
+  std::filesystem::path restartPath(const Macro& m) const;
+  // This class's own part of a restart file: hinge steps, step cutting, energy check.
+  std::string runState() const;
+  void setRunState(const std::string& bytes);
 
   const Problem& problem_;
   Parameters& params_;

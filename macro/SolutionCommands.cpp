@@ -451,6 +451,44 @@ class TplotCommand final : public SolutionCommand {
   }
 };
 
+// ---------------------------------------------------------------- restart
+
+class SaveCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("SAVE",
+                    "Commit the converged step and write the restart file <name>.rst in the "
+                    "output directory (default name: the run's stem): the model as it is now "
+                    "(joints, rebuilt elements, re-entered mesh data), every element's history, "
+                    "the state, the integrator, tolerance, load tables, path following and "
+                    "energy bookkeeping. Written as <name>.rst.part and renamed when complete. "
+                    "A run restarted from it (REST) repeats the uninterrupted run bit for bit.",
+                    {word("name", "restart file name (optional; .rst is added)")});
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    r.saveRestart(m);
+    return Flow::Next;
+  }
+};
+
+class RestCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("RESTart",
+                    "Read the restart file <name>.rst from the output directory (default name: "
+                    "the run's stem) written by SAVE: the model and the analysis state are "
+                    "replaced by the saved ones (the deck's mesh input is still read and checked "
+                    "first), and the following commands continue from the saved step. Output "
+                    "commands (TPLOt, PLOT, PVIEw) are not saved: give them again after REST. A "
+                    "truncated, corrupted or foreign file is an error.",
+                    {word("name", "restart file name (optional; .rst is added)")});
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    r.restoreRestart(m);
+    return Flow::Next;
+  }
+};
+
 }  // namespace
 
 // ---------------------------------------------------------------- plumbing
@@ -514,6 +552,8 @@ SolutionCommands::SolutionCommands() : registry_("Solution commands (BATCh ... E
   add(makeParaViewCommand());
   add(std::make_unique<MeshCommandMacro>());
   add(std::make_unique<HingeToJointCommand>());
+  add(std::make_unique<SaveCommand>());
+  add(std::make_unique<RestCommand>());
   add(std::make_unique<ParaCommand>());
   add(std::make_unique<StopCommand>());
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "core/Checkpoint.h"
+
 namespace c2d {
 
 Analysis::Analysis(Model& model) : model_(model), assembler_(model) {
@@ -21,16 +23,16 @@ bool Analysis::setLinearSolver(const std::string& name) {
   return true;
 }
 
-void Analysis::setLoadFunction(int table, std::function<double(double)> f) {
+void Analysis::setLoadFunction(int table, const ProportionalLoad& f) {
   if (table < 1) table = 1;
   if (static_cast<int>(tables_.size()) <= table) tables_.resize(table + 1);
-  tables_[table] = std::move(f);
+  tables_[table] = f;
   state_.prop = tableFactor(1, state_.t);
 }
 
 double Analysis::tableFactor(int table, double time) const {
   if (table < 1) table = 1;
-  if (table < static_cast<int>(tables_.size()) && tables_[table]) return tables_[table](time);
+  if (table < static_cast<int>(tables_.size()) && tables_[table]) return (*tables_[table])(time);
   return 1.0;
 }
 
@@ -598,6 +600,93 @@ Energy Analysis::energy() {
   e.contact = assembler_.contactEnergy(state_);
   e.external = externalWork_;
   return e;
+}
+
+// ------------------------------------------------------------ restart files
+
+void Analysis::writeState(std::ostream& out) const {
+  using namespace checkpoint;
+  putTag(out, "ANLS");
+  putString(out, solverName_);
+  put(out, integrator_.kind);
+  for (double x : {integrator_.beta, integrator_.gamma, integrator_.alpha, integrator_.betaV, tol_})
+    put(out, x);
+  putCount(out, tables_.size());
+  for (const auto& t : tables_) {
+    putBool(out, t.has_value());
+    if (t) t->write(out);
+  }
+  putBool(out, path_.has_value());
+  if (path_) path_->write(out);
+  putTag(out, "STAT");
+  for (const Eigen::VectorXd* x : {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an})
+    putVector(out, *x);
+  for (double x : {state_.t, state_.tn, state_.dt, state_.prop, state_.propn, state_.arcLambda,
+                   state_.arcLambdan})
+    put(out, x);
+  put(out, state_.step);
+  putTag(out, "BOOK");
+  for (double x : {externalWork_, committedDemand_, stepDlambda_, energy0_}) put(out, x);
+  putVector(out, rRest_n_);
+  putVector(out, stepInc_);
+  putBool(out, converged_);
+  putBool(out, dirty_);
+  put(out, totalIterations_);
+  putCount(out, history_.size());
+  for (const IterationInfo& i : history_) {
+    put(out, i.iteration);
+    put(out, i.energy);
+    put(out, i.residual);
+    putBool(out, i.converged);
+    put(out, i.hingeActivated);
+  }
+}
+
+void Analysis::readState(std::istream& in) {
+  using namespace checkpoint;
+  expectTag(in, "ANLS");
+  const std::string solver = getString(in);
+  if (!setLinearSolver(solver)) throw CheckpointError("unknown linear solver '" + solver + "'");
+  integrator_.kind = get<TimeIntegrator::Kind>(in);
+  if (integrator_.kind != TimeIntegrator::Kind::Static &&
+      integrator_.kind != TimeIntegrator::Kind::Newmark &&
+      integrator_.kind != TimeIntegrator::Kind::MidPoint)
+    throw CheckpointError("unknown time integrator");
+  for (double* x : {&integrator_.beta, &integrator_.gamma, &integrator_.alpha, &integrator_.betaV, &tol_})
+    *x = get<double>(in);
+  tables_.assign(getCount(in), std::nullopt);
+  for (auto& t : tables_)
+    if (getBool(in)) t = ProportionalLoad::read(in);
+  path_.reset();
+  if (getBool(in)) path_ = PathFollowing::read(in);
+  expectTag(in, "STAT");
+  for (Eigen::VectorXd* x : {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an})
+    *x = getVector(in);
+  for (double* x : {&state_.t, &state_.tn, &state_.dt, &state_.prop, &state_.propn,
+                    &state_.arcLambda, &state_.arcLambdan})
+    *x = get<double>(in);
+  state_.step = get<int>(in);
+  const Eigen::Index nd = static_cast<Eigen::Index>(model_.numNodes()) * kNodeDofs;
+  for (const Eigen::VectorXd* x : {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an})
+    if (x->size() != nd) throw CheckpointError("state vectors do not match the model's node count");
+  topologyChanged();
+  expectTag(in, "BOOK");
+  for (double* x : {&externalWork_, &committedDemand_, &stepDlambda_, &energy0_}) *x = get<double>(in);
+  rRest_n_ = getVector(in);
+  stepInc_ = getVector(in);
+  if (rRest_n_.size() != nd || stepInc_.size() != assembler_.dofs().numEquations())
+    throw CheckpointError("analysis vectors do not match the model");
+  converged_ = getBool(in);
+  dirty_ = getBool(in);
+  totalIterations_ = get<int>(in);
+  history_.resize(getCount(in));
+  for (IterationInfo& i : history_) {
+    i.iteration = get<int>(in);
+    i.energy = get<double>(in);
+    i.residual = get<double>(in);
+    i.converged = getBool(in);
+    i.hingeActivated = get<int>(in);
+  }
 }
 
 }  // namespace c2d

@@ -7,8 +7,10 @@
 // step rule; the LinearSolver factors the tangent (pattern analysed once per
 // topology version); PathFollowing, when set, makes the load factor an unknown.
 #include <functional>
+#include <istream>
 #include <memory>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,7 @@
 #include "core/State.h"
 #include "solvers/LinearSolver.h"
 #include "solvers/PathFollowing.h"
+#include "solvers/ProportionalLoad.h"
 #include "solvers/TimeIntegrator.h"
 
 namespace c2d {
@@ -55,7 +58,7 @@ class Analysis {
   void setDt(double dt) { state_.dt = dt; }
   // Proportional load table `table` (PROP,,n) as a function of time; dofs follow
   // table 1 unless FPROportional says otherwise; a table never given is 1 (FEAP).
-  void setLoadFunction(int table, std::function<double(double)> f);
+  void setLoadFunction(int table, const ProportionalLoad& f);
   void setPathFollowing(std::optional<PathFollowing> p);
   PathFollowing* pathFollowing() { return path_ ? &*path_ : nullptr; }
 
@@ -78,6 +81,11 @@ class Analysis {
   double loadFactor() const;  // multiplier of table-1 FORCe at t_n+1 (with the arc-length factor)
   double tableFactor(int table, double time) const;
   const std::vector<IterationInfo>& stepHistory() const { return history_; }
+  // The elements that can carry a softening hinge: (element index, ability).
+  const std::vector<std::pair<int, HingeCarrier*>>& hingeCarriers() {
+    if (hingesVersion_ != model_.topologyVersion()) collectHingeCarriers();
+    return hinges_;
+  }
   // Node and dof (0-based) of the largest residual component of the last iteration.
   double largestResidual(int& node, int& dof) const;
   int totalIterations() const { return totalIterations_; }
@@ -93,6 +101,14 @@ class Analysis {
 
   // Topology change (MESH re-entry, HINGE2JOINT): carry the state to the new node count.
   void topologyChanged();
+
+  // Restart files (core/Checkpoint.h): the state, the integrator and its
+  // parameters, the tolerance, the load tables, the path following state, the
+  // energy bookkeeping and the linear solver's name: what a continuation needs
+  // to repeat the uninterrupted run bit for bit. readState() expects the model
+  // the state belongs to (already restored) and throws CheckpointError.
+  void writeState(std::ostream& out) const;
+  void readState(std::istream& in);
 
  private:
   void applyPrescribed();
@@ -130,7 +146,7 @@ class Analysis {
   int analyzedVersion_ = -1;
   bool analyzedSymmetric_ = true;
   TimeIntegrator integrator_;
-  std::vector<std::function<double(double)>> tables_;  // index: table number
+  std::vector<std::optional<ProportionalLoad>> tables_;  // index: table number
   std::vector<int> tableOf_;                            // per node dof
   Eigen::VectorXd lam_, lamn_;                          // work vectors of dofFactors
   std::optional<PathFollowing> path_;

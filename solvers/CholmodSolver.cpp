@@ -15,7 +15,7 @@ CholmodSolver::CholmodSolver(Method method) {
       common_.supernodal = CHOLMOD_SIMPLICIAL;
       break;
     case Method::Supernodal:
-      common_.supernodal = CHOLMOD_SUPERNODAL;
+      common_.supernodal = CHOLMOD_AUTO;
       break;
   }
   // Failures come back as Status; CHOLMOD's own messages on stderr would only
@@ -27,7 +27,12 @@ CholmodSolver::CholmodSolver(Method method) {
   // pivot instead, so indefiniteness is detected and the caller can switch to
   // a pivoting LU.
   common_.final_ll = 1;
-  // nmethods = 0 (the default): AMD, then METIS when AMD's fill is poor.
+  // The equations come numbered in a fill-reducing order (core/DofMap), so the
+  // natural ordering keeps the fill low and spares a permuted copy of the
+  // matrix at every factorization.
+  common_.nmethods = 1;
+  common_.method[0].ordering = CHOLMOD_NATURAL;
+  common_.postorder = 0;
 }
 
 CholmodSolver::~CholmodSolver() {

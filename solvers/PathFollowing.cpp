@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/Checkpoint.h"
+
 namespace c2d {
 
 PathFollowing PathFollowing::displacementControl(int equation, double increment) {
@@ -69,6 +71,29 @@ Status PathFollowing::correction(const Eigen::VectorXd& stepIncrement, const Eig
 void PathFollowing::endStep(const Eigen::VectorXd& stepIncrement, double stepDlambda) {
   lastIncrement_ = stepIncrement;
   if (stepDlambda != 0) lastDirection_ = stepDlambda > 0 ? 1.0 : -1.0;
+}
+
+void PathFollowing::write(std::ostream& out) const {
+  using namespace checkpoint;
+  put(out, kind_);
+  put(out, eq_);
+  for (double x : {increment_, ds_, firstDlambda_, lastDirection_, scale_}) put(out, x);
+  putVector(out, lastIncrement_);
+  putBool(out, predictor_);
+}
+
+PathFollowing PathFollowing::read(std::istream& in) {
+  using namespace checkpoint;
+  PathFollowing p;
+  p.kind_ = get<Kind>(in);
+  if (p.kind_ != Kind::DisplacementControl && p.kind_ != Kind::ArcLength)
+    throw CheckpointError("unknown path following kind");
+  p.eq_ = get<int>(in);
+  for (double* x : {&p.increment_, &p.ds_, &p.firstDlambda_, &p.lastDirection_, &p.scale_})
+    *x = get<double>(in);
+  p.lastIncrement_ = getVector(in);
+  p.predictor_ = getBool(in);
+  return p;
 }
 
 }  // namespace c2d

@@ -9,6 +9,8 @@
 // Each Newton iteration solves K du_R = R and K du_F = F_ref with the same
 // factors, then du = du_R + dlambda du_F.
 #include <Eigen/Core>
+#include <istream>
+#include <ostream>
 #include <string>
 
 #include "core/Error.h"
@@ -35,6 +37,10 @@ class PathFollowing {
   Status correction(const Eigen::VectorXd& stepIncrement, const Eigen::VectorXd& duR,
                     const Eigen::VectorXd& duF, double& dlambda);
   void endStep(const Eigen::VectorXd& stepIncrement, double stepDlambda);  // at commit
+
+  // Restart files (core/Checkpoint.h): the complete state as raw values.
+  void write(std::ostream& out) const;
+  static PathFollowing read(std::istream& in);  // throws CheckpointError
 
  private:
   Kind kind_ = Kind::DisplacementControl;

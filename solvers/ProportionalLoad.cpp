@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/Checkpoint.h"
+
 namespace c2d {
 
 ProportionalLoad ProportionalLoad::ramp() { return {}; }
@@ -48,6 +50,38 @@ double ProportionalLoad::operator()(double t) const {
     }
   }
   return 0.0;
+}
+
+void ProportionalLoad::write(std::ostream& out) const {
+  using namespace checkpoint;
+  put(out, kind_);
+  put(out, k_);
+  put(out, tmin_);
+  put(out, tmax_);
+  putDoubles(out, a_.data(), a_.size());
+  putCount(out, points_.size());
+  for (const auto& [t, p] : points_) {
+    put(out, t);
+    put(out, p);
+  }
+}
+
+ProportionalLoad ProportionalLoad::read(std::istream& in) {
+  using namespace checkpoint;
+  ProportionalLoad p;
+  p.kind_ = get<Kind>(in);
+  if (p.kind_ != Kind::Ramp && p.kind_ != Kind::Formula && p.kind_ != Kind::Table)
+    throw CheckpointError("unknown proportional load kind");
+  p.k_ = get<int>(in);
+  p.tmin_ = get<double>(in);
+  p.tmax_ = get<double>(in);
+  getDoubles(in, p.a_.data(), p.a_.size());
+  p.points_.resize(getCount(in));
+  for (auto& [t, v] : p.points_) {
+    t = get<double>(in);
+    v = get<double>(in);
+  }
+  return p;
 }
 
 }  // namespace c2d

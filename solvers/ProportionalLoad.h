@@ -5,6 +5,8 @@
 //   Type 1: p = a1 + a2*tau + a3*sin(a4*tau + a5)^k, tau = t - tmin, on [tmin, tmax], else 0
 //   Type 2: piecewise linear through (t_i, p_i); constant beyond the ends
 #include <array>
+#include <istream>
+#include <ostream>
 #include <utility>
 #include <vector>
 
@@ -17,6 +19,10 @@ class ProportionalLoad {
   static ProportionalLoad table(std::vector<std::pair<double, double>> points);
 
   double operator()(double t) const;
+
+  // Restart files (core/Checkpoint.h): the table as raw values.
+  void write(std::ostream& out) const;
+  static ProportionalLoad read(std::istream& in);  // throws CheckpointError
 
  private:
   enum class Kind { Ramp, Formula, Table } kind_ = Kind::Ramp;

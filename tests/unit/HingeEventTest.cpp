@@ -102,7 +102,7 @@ TEST(HingeEvent, UniformMomentOpensExactlyOneHingeAtTheLocatedLevel) {
     const double thetaF = kL * (kappaOf(kMu) - kMu / kEI) + kMu / -kKs;  // M = 0
     Model m = cantilever(n, thetaF);
     Analysis an(m);
-    an.setLoadFunction(1, [](double t) { return t; });
+    an.setLoadFunction(1, ProportionalLoad::ramp());
     double activationTheta = -1;
     an.onHingeActivated = [&](int, const HingeInfo&) { activationTheta = an.state().u[3 * n + 2]; };
     an.setDt(0.1);
@@ -139,7 +139,7 @@ TEST(HingeEvent, WeakenedElementCarriesTheHinge) {
   const double muW = 270, thetaMax = 0.05;
   Model m = cantilever(n, thetaMax, weak, muW);
   Analysis an(m);
-  an.setLoadFunction(1, [](double t) { return t; });
+  an.setLoadFunction(1, ProportionalLoad::ramp());
   an.setDt(0.05);
   for (int s = 1; s <= 20; ++s) {
     const double theta = thetaMax * s / 20;

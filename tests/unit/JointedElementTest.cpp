@@ -396,7 +396,7 @@ Eigen::VectorXd run(JointForm form, const TimeIntegrator& ti, int steps, double 
   an.setIntegrator(ti);
   an.setTolerance(1e-28);
   an.setDt(dt);
-  if (!ti.dynamic()) an.setLoadFunction(1, [](double t) { return t; });
+  if (!ti.dynamic()) an.setLoadFunction(1, ProportionalLoad::ramp());
   for (int s = 0; s < steps; ++s) {
     EXPECT_TRUE(solveStep(an)) << "step " << s;
   }

@@ -1,0 +1,221 @@
+#include "elements/ModelCheckpoint.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+
+#include "core/Checkpoint.h"
+#include "elements/InelasticFrame.h"
+#include "elements/JointedElement.h"
+#include "elements/LinearFrame.h"
+#include "elements/ReissnerFrame.h"
+
+namespace c2d {
+
+namespace {
+
+using namespace checkpoint;
+
+enum class ElementKind : std::uint8_t { Linear = 1, Reissner = 2, Inelastic = 3, Jointed = 4 };
+
+ElementKind kindOf(const Element& e) {
+  if (dynamic_cast<const JointedElement*>(&e)) return ElementKind::Jointed;
+  if (dynamic_cast<const InelasticFrame*>(&e)) return ElementKind::Inelastic;
+  if (dynamic_cast<const ReissnerFrame*>(&e)) return ElementKind::Reissner;
+  if (dynamic_cast<const LinearFrame*>(&e)) return ElementKind::Linear;
+  throw CheckpointError("element type '" + e.typeName() + "' cannot be written to a restart file");
+}
+
+std::unique_ptr<Element> build(ElementKind kind, const Model& model, int material,
+                               const std::array<int, 2>& nodes) {
+  const MaterialSet* mat = model.material(material);
+  if (!mat) throw CheckpointError("element of material set " + std::to_string(material) + ", which is not in the file");
+  for (int n : nodes)
+    if (n < 0 || n >= model.numNodes()) throw CheckpointError("element node " + std::to_string(n + 1) + " out of range");
+  const Vec2& x1 = model.coord(nodes[0]);
+  const Vec2& x2 = model.coord(nodes[1]);
+  try {
+    switch (kind) {
+      case ElementKind::Linear: return std::make_unique<LinearFrame>(*mat, nodes, x1, x2);
+      case ElementKind::Reissner: return std::make_unique<ReissnerFrame>(*mat, nodes, x1, x2);
+      case ElementKind::Inelastic: return std::make_unique<InelasticFrame>(*mat, nodes, x1, x2);
+      case ElementKind::Jointed: break;
+    }
+  } catch (const std::invalid_argument& e) {
+    throw CheckpointError(std::string("element cannot be rebuilt: ") + e.what());
+  }
+  throw CheckpointError("bad element kind");
+}
+
+}  // namespace
+
+void writeElement(std::ostream& out, const Element& element) {
+  const ElementKind kind = kindOf(element);
+  put(out, kind);
+  put(out, element.materialNumber());
+  for (int n : element.nodes()) put(out, n);
+  if (kind == ElementKind::Jointed) {
+    const auto& j = static_cast<const JointedElement&>(element);
+    put(out, j.slaveEnd());
+    put(out, j.masterNode());
+    writeElement(out, j.inner());
+  }
+  const auto* c = dynamic_cast<const Checkpoint*>(&element);
+  if (!c) throw CheckpointError("element type '" + element.typeName() + "' cannot be written to a restart file");
+  c->writeState(out);
+}
+
+std::unique_ptr<Element> readElement(std::istream& in, const Model& model) {
+  const auto kind = get<ElementKind>(in);
+  if (kind < ElementKind::Linear || kind > ElementKind::Jointed)
+    throw CheckpointError("unknown element kind " + std::to_string(static_cast<int>(kind)));
+  const int material = get<int>(in);
+  std::array<int, 2> nodes{};
+  for (int& n : nodes) n = get<int>(in);
+  std::unique_ptr<Element> el;
+  if (kind == ElementKind::Jointed) {
+    const int slaveEnd = get<int>(in);
+    const int master = get<int>(in);
+    if (slaveEnd != 0 && slaveEnd != 1) throw CheckpointError("bad slave end of a jointed element");
+    if (master < 0 || master >= model.numNodes()) throw CheckpointError("joint master out of range");
+    el = std::make_unique<JointedElement>(readElement(in, model), slaveEnd, master);
+  } else {
+    el = build(kind, model, material, nodes);
+  }
+  auto* c = dynamic_cast<Checkpoint*>(el.get());
+  if (!c) throw CheckpointError("element type '" + el->typeName() + "' cannot be read from a restart file");
+  c->readState(in);
+  if (el->nodes() != nodes || el->materialNumber() != material)
+    throw CheckpointError("element data do not match its header");
+  return el;
+}
+
+void writeModel(std::ostream& out, const Model& model) {
+  putTag(out, "MODL");
+  putCount(out, static_cast<std::size_t>(model.numNodes()));
+  for (int n = 0; n < model.numNodes(); ++n) {
+    putFixed(out, model.coord(n));
+    putBool(out, model.hasCoord(n));
+    for (int d = 0; d < kNodeDofs; ++d) {
+      put(out, model.bound(n)[d]);
+      put(out, model.force(n)[d]);
+      put(out, model.disp(n)[d]);
+      put(out, model.loadTable(n)[d]);
+    }
+  }
+  putTag(out, "MATS");
+  putCount(out, model.materials().size());
+  for (const auto& [number, m] : model.materials()) {
+    put(out, number);
+    put(out, m.number);
+    putString(out, m.label);
+    putString(out, m.elementType);
+    for (double x : {m.E, m.nu, m.A, m.I, m.kappa, m.density}) put(out, x);
+    putOptional(out, m.resEA);
+    putOptional(out, m.resGA);
+    putOptional(out, m.resEI);
+    putBool(out, m.shear);
+    put(out, m.kinematics);
+    put(out, m.mass);
+    putBool(out, m.hardening.has_value());
+    if (m.hardening)
+      for (double x : {m.hardening->Mc, m.hardening->My, m.hardening->Kh1, m.hardening->Kh2}) put(out, x);
+    putBool(out, m.softening.has_value());
+    if (m.softening)
+      for (double x : {m.softening->Mu, m.softening->Ks}) put(out, x);
+  }
+  putTag(out, "ELEM");
+  putCount(out, static_cast<std::size_t>(model.numElements()));
+  for (const auto& el : model.elements()) {
+    putBool(out, el != nullptr);
+    if (el) writeElement(out, *el);
+  }
+  putTag(out, "JNTS");
+  putCount(out, model.joints().size());
+  for (const Joint& j : model.joints()) {
+    put(out, j.master);
+    put(out, j.slave);
+    put(out, j.form);
+  }
+  putTag(out, "GRND");
+  putBool(out, model.ground().has_value());
+  if (model.ground())
+    for (double x : {model.ground()->y0, model.ground()->k, model.ground()->alpha}) put(out, x);
+  putFixed(out, model.gravity());
+  put(out, model.topologyVersion());
+}
+
+Model readModel(std::istream& in, int minTopologyVersion) {
+  Model model;
+  expectTag(in, "MODL");
+  const int nodes = static_cast<int>(getCount(in));
+  model.resizeNodes(nodes);
+  for (int n = 0; n < nodes; ++n) {
+    Vec2 x;
+    getFixed(in, x);
+    if (getBool(in)) model.setCoord(n, x);
+    for (int d = 0; d < kNodeDofs; ++d) {
+      model.bound(n)[d] = get<int>(in);
+      model.force(n)[d] = get<double>(in);
+      model.disp(n)[d] = get<double>(in);
+      model.loadTable(n)[d] = get<int>(in);
+    }
+  }
+  expectTag(in, "MATS");
+  const std::size_t mats = getCount(in);
+  for (std::size_t k = 0; k < mats; ++k) {
+    const int key = get<int>(in);
+    MaterialSet m;
+    m.number = get<int>(in);
+    m.label = getString(in);
+    m.elementType = getString(in);
+    for (double* x : {&m.E, &m.nu, &m.A, &m.I, &m.kappa, &m.density}) *x = get<double>(in);
+    m.resEA = getOptional(in);
+    m.resGA = getOptional(in);
+    m.resEI = getOptional(in);
+    m.shear = getBool(in);
+    m.kinematics = get<Kinematics>(in);
+    m.mass = get<MassType>(in);
+    if (getBool(in)) {
+      HardeningData h;
+      for (double* x : {&h.Mc, &h.My, &h.Kh1, &h.Kh2}) *x = get<double>(in);
+      m.hardening = h;
+    }
+    if (getBool(in)) {
+      SofteningData s;
+      for (double* x : {&s.Mu, &s.Ks}) *x = get<double>(in);
+      m.softening = s;
+    }
+    model.materials()[key] = std::move(m);
+  }
+  expectTag(in, "ELEM");
+  const std::size_t elements = getCount(in);
+  for (std::size_t e = 0; e < elements; ++e) {
+    std::unique_ptr<Element> el;
+    if (getBool(in)) el = readElement(in, model);
+    model.elements().push_back(std::move(el));
+  }
+  expectTag(in, "JNTS");
+  const std::size_t joints = getCount(in);
+  for (std::size_t k = 0; k < joints; ++k) {
+    Joint j;
+    j.master = get<int>(in);
+    j.slave = get<int>(in);
+    j.form = get<JointForm>(in);
+    if (j.master < 0 || j.master >= nodes || j.slave < 0 || j.slave >= nodes)
+      throw CheckpointError("joint node out of range");
+    model.joints().push_back(j);
+  }
+  expectTag(in, "GRND");
+  if (getBool(in)) {
+    Ground g;
+    for (double* x : {&g.y0, &g.k, &g.alpha}) *x = get<double>(in);
+    model.ground() = g;
+  }
+  getFixed(in, model.gravity());
+  const int version = get<int>(in);
+  while (model.topologyVersion() < std::max(version, minTopologyVersion)) model.bumpTopology();
+  return model;
+}
+
+}  // namespace c2d

@@ -1,0 +1,36 @@
+#pragma once
+// Restart files (deck: SAVE[,name] / REST[,name]): the full analysis state, so
+// that a run restarted from a save repeats the uninterrupted run bit for bit.
+//
+// Layout (binary, every number in the byte order of the writing machine):
+//   magic       8 bytes  "C2DRST\r\n" (the CR LF catches text-mode mangling)
+//   version     uint32   kRestartVersion
+//   byte order  uint32   0x01020304 as written
+//   size        uint64   payload bytes
+//   payload              the model (elements/ModelCheckpoint), the analysis
+//                        (Analysis::writeState), the caller's section
+//   checksum    uint64   FNV-1a of the payload
+// Reading checks all of them before it changes anything: a truncated,
+// corrupted or foreign file is an error naming the file, never garbage.
+// Written with core/AtomicFile: "<file>.part", renamed when complete.
+#include <filesystem>
+#include <string>
+
+#include "core/Model.h"
+#include "solvers/Analysis.h"
+
+namespace c2d {
+
+inline constexpr unsigned kRestartVersion = 1;
+
+// Writes the committed state: call Analysis::commit() first. `extra` is the
+// caller's own section (opaque here). Throws std::runtime_error on I/O failure.
+void saveRestart(const std::filesystem::path& file, const Model& model, const Analysis& analysis,
+                 const std::string& extra);
+
+// Replaces `model` (in place: the analysis keeps referring to it) and the
+// analysis state by the saved ones; returns the caller's section. Throws
+// CheckpointError with a message that names the file.
+std::string loadRestart(const std::filesystem::path& file, Model& model, Analysis& analysis);
+
+}  // namespace c2d

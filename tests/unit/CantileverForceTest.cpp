@@ -1,0 +1,125 @@
+// The end-force cantilever of verification.md V3 (paper Fig. 13) under tip
+// displacement control, solved by the static driver with full steps and no
+// step cutting: every step converges in a few Newton iterations, also the
+// steps in which elements near the clamp cross My (the hardening modulus drops
+// from Kh1 to Kh2 within one step), and the force follows the closed form of
+// the discretized problem (the deck cantilever_force.inp derives it).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+
+#include "core/Hinge.h"
+#include "core/Model.h"
+#include "elements/InelasticFrame.h"
+#include "solvers/Analysis.h"
+#include "solvers/ProportionalLoad.h"
+
+namespace c2d {
+namespace {
+
+constexpr double kEI = 77650, kGA = 1.25e6, kMc = 37.9, kMy = 268, kKh1 = 29400, kKh2 = 272;
+constexpr double kMu = 374, kKs = -18000, kL = 2.5;
+
+double kappaOf(double M) {
+  double k = M / kEI;
+  if (M > kMc) k += (std::min(M, kMy) - kMc) / kKh1;
+  if (M > kMy) k += (M - kMy) / kKh2;
+  return k;
+}
+
+// Closed form of the n-element cantilever (midpoint moments M_i = P (L - x_i)).
+struct Discrete {
+  int n;
+  double l() const { return kL / n; }
+  double arm(int i) const { return kL - (i + 0.5) * l(); }
+  double pu() const { return kMu / arm(0); }
+  double vPre(double P) const {
+    double v = P * kL / kGA;
+    for (int i = 0; i < n; ++i) v += l() * kappaOf(P * arm(i)) * arm(i);
+    return v;
+  }
+  double slope() const {
+    double c = kL / kGA;
+    for (int i = 0; i < n; ++i) c += l() * arm(i) * arm(i) / kEI;
+    return 1.0 / (c + arm(0) * arm(0) / kKs);
+  }
+  double force(double v) const {
+    if (v > vPre(pu())) return std::max(0.0, pu() + slope() * (v - vPre(pu())));
+    double lo = 0, hi = pu();
+    for (int k = 0; k < 200; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (vPre(mid) < v ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+  }
+};
+
+MaterialSet material() {
+  MaterialSet m;
+  m.number = 1;
+  m.elementType = "FRAMe";
+  m.resEA = 3.6e6;
+  m.resGA = kGA;
+  m.resEI = kEI;
+  m.hardening = HardeningData{kMc, kMy, kKh1, kKh2};
+  m.softening = SofteningData{kMu, kKs};
+  return m;
+}
+
+Model cantilever(int n, double vMax) {
+  Model m;
+  m.materials()[1] = material();
+  m.resizeNodes(n + 1);
+  for (int i = 0; i <= n; ++i) m.setCoord(i, Vec2(kL * i / n, 0));
+  for (int e = 0; e < n; ++e)
+    m.setElement(e, std::make_unique<InelasticFrame>(m.materials()[1], std::array{e, e + 1}, m.coord(e),
+                                                     m.coord(e + 1)));
+  m.bound(0) = {1, 1, 1};
+  m.bound(n) = {0, 1, 0};
+  m.disp(n) = {0, vMax, 0};
+  return m;
+}
+
+TEST(CantileverForce, FullStepsAcrossTheYieldKinkConvergeWithoutCutting) {
+  for (int n : {10, 25}) {
+    const Discrete d{n};
+    const int steps = 25;
+    const double vMax = 0.5;
+    Model m = cantilever(n, vMax);
+    Analysis an(m);
+    an.setLoadFunction(1, ProportionalLoad::ramp());
+    an.setDt(1.0 / steps);
+    for (int s = 1; s <= steps; ++s) {
+      ASSERT_TRUE(an.advance());
+      IterationInfo info;
+      int its = 0;
+      bool converged = false;
+      while (!converged && its < 12) {
+        ASSERT_TRUE(an.iterate(false, true, info)) << "n = " << n << ", step " << s;
+        ++its;
+        converged = info.converged;
+      }
+      ASSERT_TRUE(converged) << "n = " << n << ", step " << s << " (v = " << vMax * s / steps << ")";
+      Eigen::VectorXd r;
+      ASSERT_TRUE(an.reactions(r));
+      const double v = vMax * s / steps, P = r[3 * n + 1];
+      EXPECT_NEAR(P, d.force(v), 1e-6 * d.pu()) << "n = " << n << ", v = " << v;
+    }
+    // One hinge, in the element at the clamp.
+    int active = 0;
+    for (int e = 0; e < n; ++e) {
+      const HingeInfo h = dynamic_cast<const HingeCarrier&>(m.element(e)).hinge();
+      if (h.active) {
+        ++active;
+        EXPECT_EQ(e, 0);
+      }
+    }
+    EXPECT_EQ(active, 1) << "n = " << n;
+  }
+}
+
+}  // namespace
+}  // namespace c2d

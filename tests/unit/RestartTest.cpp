@@ -1,0 +1,368 @@
+// Restart files (SAVE / REST): a run restarted from a save repeats the
+// uninterrupted run bit for bit, across hinge formation, HINGE2JOINT, MESH
+// re-entry and into the dynamic phase; bad files are clear errors; a killed
+// run leaves only .part files.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "core/Checkpoint.h"
+#include "core/Hinge.h"
+#include "elements/JointedElement.h"
+#include "elements/ModelCheckpoint.h"
+#include "solvers/RestartFile.h"
+#include "tests/unit/RunDeckSupport.h"
+
+namespace c2d {
+namespace {
+
+using testing::DeckResult;
+using testing::DeckTempDir;
+using testing::runDeckText;
+
+// A fixed-base portal (columns 3 m, beam 4 m, two elements per member) with the
+// six-story frame's sections: vertical loads P at the top corners (table 1),
+// then a horizontal displacement of the top left node (table 2) until four
+// hinges have formed (beam ends at t = 1.6255, column bases at t = 1.6638).
+const char* kPortal = R"(PARAmeter
+  h = 3
+  b = 4
+  ne = 2
+  P = 50
+
+FEAP * * portal: failure, HINGE2JOINT, collapse
+  0 0 0 2 3 2
+
+COORdinates
+  1 1 0 0
+  ne+1 1 0 h
+  2*ne+1 1 b h
+  3*ne+1 0 b 0
+
+ELEMents
+  1 1 1 1 2
+  ne+1 1 2 ne+1 ne+2
+  2*ne+1 1 1 2*ne+1 2*ne+2
+  3*ne 0 1 3*ne 3*ne+1
+
+MATErial,1 columns
+  FRAMe
+    RESUltant STIFfness 3.6e6 1.2e6 48000
+    CROSs section 0.12 1.6e-3
+    DENSity,,2.5
+    HARDening BILInear 100 245 12450 195
+    SOFTening LINEar 265 -723
+
+MATErial,2 beam
+  FRAMe
+    RESUltant STIFfness 3.6e6 1.2e6 48000
+    CROSs section 0.12 1.6e-3
+    DENSity,,2.5
+    HARDening BILInear 30 150 11190 137
+    SOFTening LINEar 170 -393
+
+BOUNdary
+  1 0 1 1 1
+  3*ne+1 0 1 1 1
+  ne+1 0 1 0 0
+
+FORCe
+  ne+1 0 0 -P 0
+  2*ne+1 0 0 -P 0
+
+FPROportional
+  ne+1 0 2 0 0
+
+DISPlacement
+  ne+1 0 1 0 0
+
+END
+BATCh
+)";
+
+const char* kLoads = "2\n  0 0 1 1 1e6 1\n\n2\n  0 0 1 0 2 0.6 10 1.6\n\n";
+const char* kTplot = "disp,ne+1,1\ndisp,ne+1,2\nreac,ne+1,1\nstre,1,3\nstre,3,3\nener\n\n";
+const char* kCollapseMesh = "CONTact\n  GROUnd,,0,1e5\n\nGRAVity,,0,-9.81\n\nEND\n";
+
+std::string newtonLoop(const std::string& time, int n) {
+  return "  LOOP,," + std::to_string(n) + "\n    " + time +
+         "\n    LOOP,,30\n      TANG,,1\n    NEXT\n  NEXT\n";
+}
+
+// The failure phase, split at t = 1.64 (between the beam hinges and the column hinges).
+const std::string kStart = "  PROP,,1\n  PROP,,2\n  AUTO,CUT,1e-6\n  TPLOt\n  DT,,0.25\n" +
+                           newtonLoop("TIME", 4) + "  DT,,0.02\n" + newtonLoop("TIME,,1.64", 1000);
+const std::string kFailureEnd = newtonLoop("TIME,,2", 1000) + "  STRE,HINGe\n";
+// HINGE2JOINT, ground and gravity by MESH re-entry, ten steps of the mid-point scheme.
+const std::string kCollapseStart =
+    "  HINGe2joint\n  MESH\n  DYNAmic,ENERgy,0.1,0.1\n  DT,,0.02\n" + newtonLoop("TIME", 10);
+const std::string kCollapseEnd = newtonLoop("TIME", 10);
+
+std::string readText(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) out.push_back(l);
+  return out;
+}
+
+// A model and an analysis read back from a restart file.
+struct Loaded {
+  Model model;
+  std::unique_ptr<Analysis> analysis;
+  explicit Loaded(const std::filesystem::path& file) {
+    analysis = std::make_unique<Analysis>(model);
+    loadRestart(file, model, *analysis);
+  }
+};
+
+bool sameBits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return a.size() == b.size() &&
+         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
+}
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// The final states of two runs, bit for bit: state vectors, time, load factors,
+// element section forces and hinges, energies.
+void expectSameState(const std::filesystem::path& a, const std::filesystem::path& b) {
+  Loaded x(a), y(b);
+  const State &s = x.analysis->state(), &t = y.analysis->state();
+  EXPECT_EQ(s.step, t.step);
+  EXPECT_TRUE(sameBits(s.u, t.u));
+  EXPECT_TRUE(sameBits(s.v, t.v));
+  EXPECT_TRUE(sameBits(s.a, t.a));
+  EXPECT_TRUE(sameBits(s.un, t.un));
+  for (auto [p, q] : {std::pair{s.t, t.t}, {s.dt, t.dt}, {s.prop, t.prop}, {s.arcLambda, t.arcLambda}})
+    EXPECT_TRUE(sameBits(p, q));
+  ASSERT_EQ(x.model.numNodes(), y.model.numNodes());
+  ASSERT_EQ(x.model.numElements(), y.model.numElements());
+  for (int e = 0; e < x.model.numElements(); ++e) {
+    const SectionForces f = x.model.element(e).sectionForces(), g = y.model.element(e).sectionForces();
+    EXPECT_TRUE(sameBits(f.N, g.N) && sameBits(f.V, g.V) && sameBits(f.M, g.M)) << "element " << e + 1;
+    EXPECT_EQ(x.model.element(e).typeName(), y.model.element(e).typeName());
+    const auto* h1 = dynamic_cast<const HingeCarrier*>(&x.model.element(e));
+    const auto* h2 = dynamic_cast<const HingeCarrier*>(&y.model.element(e));
+    ASSERT_EQ(h1 == nullptr, h2 == nullptr);
+    if (h1) {
+      EXPECT_EQ(h1->hinge().active, h2->hinge().active);
+      EXPECT_TRUE(sameBits(h1->hinge().jump, h2->hinge().jump));
+    }
+  }
+  const Energy e1 = x.analysis->energy(), e2 = y.analysis->energy();
+  EXPECT_TRUE(sameBits(e1.external, e2.external));
+}
+
+// Rows of the restarted run's TPLOt equal the last rows of the uninterrupted
+// one, as text; the two together make up the whole history.
+void expectSameTail(const std::string& whole, const std::string& first, const std::string& rest) {
+  const auto w = lines(whole), f = lines(first), r = lines(rest);
+  ASSERT_GT(r.size(), 2u);
+  ASSERT_EQ(w.size(), f.size() + r.size() - 1) << "header + rows before + rows after the save";
+  EXPECT_EQ(w.front(), r.front());
+  for (std::size_t i = 1; i < r.size(); ++i) EXPECT_EQ(r[i], w[w.size() - r.size() + i]) << "row " << i;
+  for (std::size_t i = 1; i < f.size(); ++i) EXPECT_EQ(f[i], w[i]) << "row " << i;
+}
+
+void expectRan(const DeckResult& r) {
+  ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message << r.console << r.log;
+}
+
+TEST(Restart, FailurePhaseContinuesBitForBit) {
+  DeckTempDir dir;
+  const std::string data = std::string(kLoads) + kTplot;
+  const DeckResult whole = runDeckText(dir, "whole.inp", kPortal + kStart + kFailureEnd + "  SAVE,whole_end\nEND\n" + data);
+  expectRan(whole);
+  const DeckResult first = runDeckText(dir, "first.inp", kPortal + kStart + "  SAVE,mid\nEND\n" + data);
+  expectRan(first);
+  const DeckResult rest = runDeckText(dir, "rest.inp", kPortal + std::string("  REST,mid\n  TPLOt\n") +
+                                                           kFailureEnd + "  SAVE,rest_end\nEND\n" + kTplot);
+  expectRan(rest);
+  // Hinges 3 and 4 formed before the save, 1 and 6 after it, in the restarted run.
+  EXPECT_NE(first.log.find("formed in element 3"), std::string::npos);
+  EXPECT_EQ(first.log.find("formed in element 1 "), std::string::npos);
+  EXPECT_NE(rest.log.find("formed in element 1 "), std::string::npos);
+  EXPECT_NE(rest.log.find("  REST   "), std::string::npos);
+  expectSameTail(readText(whole.out / "whole_tplot.csv"), readText(first.out / "first_tplot.csv"),
+                 readText(rest.out / "rest_tplot.csv"));
+  expectSameState(whole.out / "whole_end.rst", rest.out / "rest_end.rst");
+  // The hinge table (steps, jumps, moments) of the restarted run is the uninterrupted one's.
+  const auto table = [](const std::string& log) { return log.substr(log.rfind("STRE")); };
+  EXPECT_EQ(table(whole.log), table(rest.log));
+}
+
+TEST(Restart, AcrossHingeToJointIntoTheCollapsePhase) {
+  DeckTempDir dir;
+  const std::string data = std::string(kLoads) + kTplot + kCollapseMesh;
+  const std::string head = kPortal + kStart + kFailureEnd + kCollapseStart;
+  const DeckResult whole = runDeckText(dir, "whole.inp", head + kCollapseEnd + "  SAVE,whole_end\nEND\n" + data);
+  expectRan(whole);
+  // A SAVE in the middle does not change the run.
+  const DeckResult saving = runDeckText(dir, "saving.inp", head + "  SAVE\n" + kCollapseEnd + "  SAVE,saving_end\nEND\n" + data);
+  expectRan(saving);
+  EXPECT_EQ(readText(whole.out / "whole_tplot.csv"), readText(saving.out / "saving_tplot.csv"));
+  expectSameState(whole.out / "whole_end.rst", saving.out / "saving_end.rst");
+
+  const DeckResult first = runDeckText(dir, "first.inp", head + "  SAVE,mid\nEND\n" + data);
+  expectRan(first);
+  const DeckResult rest = runDeckText(dir, "rest.inp", kPortal + std::string("  REST,mid\n  TPLOt\n") +
+                                                           kCollapseEnd + "  SAVE,rest_end\nEND\n" + kTplot);
+  expectRan(rest);
+  expectSameTail(readText(whole.out / "whole_tplot.csv"), readText(first.out / "first_tplot.csv"),
+                 readText(rest.out / "rest_tplot.csv"));
+  expectSameState(whole.out / "whole_end.rst", rest.out / "rest_end.rst");
+
+  // The saved model is the collapse-phase one: slave nodes, joints, jointed
+  // Reissner elements with their relative rotations, ground and gravity.
+  Loaded mid(first.out / "mid.rst");
+  EXPECT_EQ(mid.model.numNodes(), 11);
+  EXPECT_EQ(mid.model.joints().size(), 4u);
+  EXPECT_TRUE(mid.model.ground().has_value());
+  EXPECT_EQ(mid.model.gravity().y(), -9.81);
+  EXPECT_EQ(mid.analysis->integrator().kind, TimeIntegrator::Kind::MidPoint);
+  const auto jointed = jointedElements(mid.model);
+  ASSERT_EQ(jointed.size(), 4u);
+  for (const JointedElement* j : jointed) {
+    EXPECT_EQ(j->inner().typeName(), "frame-reissner");
+    EXPECT_NE(j->committedRelativeRotation(), 0.0);
+  }
+}
+
+TEST(Restart, BadFilesAreClearErrors) {
+  DeckTempDir dir;
+  const std::string data = std::string(kLoads) + kTplot;
+  expectRan(runDeckText(dir, "first.inp", kPortal + kStart + "  SAVE,mid\nEND\n" + data));
+  const std::filesystem::path out = dir.path() / "out";
+  const std::string good = readText(out / "mid.rst");
+  ASSERT_GT(good.size(), 100u);
+  auto expectError = [&](const std::string& bytes, const std::string& what) {
+    std::ofstream(out / "bad.rst", std::ios::binary) << bytes;
+    Model model;
+    Analysis analysis(model);
+    try {
+      loadRestart(out / "bad.rst", model, analysis);
+      ADD_FAILURE() << "no error for " << what;
+    } catch (const CheckpointError& e) {
+      const std::string msg = e.what();
+      EXPECT_NE(msg.find("bad.rst"), std::string::npos) << msg;
+      EXPECT_NE(msg.find(what), std::string::npos) << msg;
+    }
+  };
+  expectError(good.substr(0, good.size() / 2), "truncated");
+  expectError(good.substr(0, 12), "truncated");
+  expectError("FEAP * * not a restart file\n", "not a collapse2d restart file");
+  expectError(good + "x", "trailing data");
+  std::string flipped = good;
+  flipped[flipped.size() / 2] ^= 0x10;
+  expectError(flipped, "corrupted");
+  std::string version = good;
+  version[8] = 99;
+  expectError(version, "format version 99");
+
+  // In a deck: the error names the command and the file; a missing file too.
+  std::ofstream(out / "cut.rst", std::ios::binary) << good.substr(0, good.size() - 9);
+  const DeckResult r = runDeckText(dir, "rest.inp", kPortal + std::string("  REST,cut\n  REST,none\nEND\n"));
+  EXPECT_EQ(r.outcome.exitCode, 2) << r.console;
+  EXPECT_NE((r.console + r.outcome.message).find("REST: restart file"), std::string::npos) << r.console << r.outcome.message;
+  EXPECT_NE((r.console + r.outcome.message).find("cut.rst': truncated"), std::string::npos) << r.console << r.outcome.message;
+}
+
+// The collapse2d binary beside the test binary's directory, if built.
+std::filesystem::path collapse2dBinary() {
+  std::error_code ec;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  const auto exe = self.parent_path().parent_path() / "collapse2d";
+  return std::filesystem::exists(exe) ? exe : std::filesystem::path{};
+}
+
+TEST(Restart, KilledRunLeavesOnlyPartFiles) {
+  DeckTempDir dir;
+  // A pendulum swinging for a very long time; TPLOt every step, SAVE at the end.
+  const std::string deck = dir.write("long.inp", R"(FEAP * * pendulum
+  0 0 0 2 3 2
+
+BLOCk
+  CARTesian 4 0 1 1 1
+  1 0 0
+  2 1 0
+
+MATErial,1
+  FRAMe
+    RESUltant STIFfness 1e6 1e6 1e4
+    CROSs section 1 1e-4
+    DENSity,,1
+    FINIte
+
+BOUNdary
+  1 0 1 1 0
+
+GRAVity,,0,-9.81
+
+END
+BATCh
+  DYNAmic,ENERgy,0,0
+  DT,,0.01
+  TPLOt
+  LOOP,,100000000
+    TIME
+    LOOP,,20
+      TANG,,1
+    NEXT
+  NEXT
+  SAVE
+END
+disp,5,2
+ener
+
+)");
+  const std::filesystem::path out = dir.path() / "out";
+  const std::filesystem::path exe = collapse2dBinary();
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    if (!exe.empty()) {
+      execl(exe.c_str(), exe.c_str(), "-q", "-o", out.c_str(), deck.c_str(), static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    DeckOptions o;
+    o.outDir = out;
+    o.quiet = true;
+    const SolutionCommands commands;
+    std::ostringstream console;
+    runDeck(deck, o, commands, console);
+    _exit(0);
+  }
+  // Kill once the run is well under way (its time history has started).
+  const auto part = out / "long_tplot.csv.part";
+  for (int i = 0; i < 500 && !std::filesystem::exists(part); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it was killed";
+  EXPECT_TRUE(std::filesystem::exists(part));
+  EXPECT_FALSE(std::filesystem::exists(out / "long_tplot.csv"));
+  EXPECT_FALSE(std::filesystem::exists(out / "long.rst"));
+  for (const auto& f : std::filesystem::directory_iterator(out)) {
+    const std::string name = f.path().filename().string();
+    if (name.ends_with(".csv") || name.ends_with(".rst"))
+      ADD_FAILURE() << "complete-looking output " << name << " after a killed run";
+  }
+}
+
+}  // namespace
+}  // namespace c2d
