@@ -3,7 +3,7 @@
 namespace c2d {
 
 AutoSolver::AutoSolver()
-    : cholesky_(std::make_unique<CholmodSolver>()), lu_(std::make_unique<UmfpackSolver>()) {}
+    : cholesky_(std::make_unique<CholmodSolver>()), lu_(std::make_unique<KluSolver>()) {}
 
 std::string AutoSolver::activeName() const {
   return (symmetric_ && !fellBack_) ? cholesky_->name() : lu_->name();
