@@ -48,11 +48,13 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
   for (int it = 0; it < kMaxLocalIterations; ++it) {
     in.d(k) = kin.d(k) + psi;
     if (Status st = inner_->evaluate(in, rule, true, residual, kin6); !st) return st;
+    // Condensation needs a nonzero pivot only: a compressed member in large
+    // motion can make the relative rotation's stiffness negative.
     const double krr = kin6(k, k);
-    if (!(krr > 0)) {
+    if (!(std::abs(krr) > 1e-13 * kin6.cwiseAbs().maxCoeff())) {
       std::ostringstream msg;
       msg << "joint at node " << slave_ + 1 << ": relative rotation stiffness " << krr
-          << " is not positive";
+          << " is singular";
       return Status::failure(msg.str());
     }
     if (lastPass) {

@@ -184,7 +184,7 @@ double Analysis::maxHingeDemand(int& element) {
   return demand;
 }
 
-Status Analysis::solveFraction(double fraction, double tEnd) {
+Status Analysis::solveFraction(double fraction, double tEnd, bool lineSearch) {
   // Elements keep their trial flags (a hinge just activated); their trial
   // history follows from the committed one at the next evaluation.
   state_.u = state_.un;
@@ -206,7 +206,7 @@ Status Analysis::solveFraction(double fraction, double tEnd) {
   dirty_ = true;
   IterationInfo it;
   for (int k = 0; k < 60; ++k) {
-    const Status st = iterate(false, true, it);
+    const Status st = iterate(lineSearch, true, it);
     if (!st) return st;
     if (it.converged) break;
   }
@@ -217,7 +217,7 @@ Status Analysis::solveFraction(double fraction, double tEnd) {
   return assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
 }
 
-Status Analysis::locateHingeEvent(IterationInfo& info) {
+Status Analysis::locateHingeEvent(IterationInfo& info, bool lineSearch) {
   // The demand is piecewise linear in the load level: regula falsi (Illinois)
   // on the step fraction for max demand in [1, 1 + 1e-12]. From above, so that
   // every element is at or past its ultimate moment when the hinge opens: the
@@ -238,7 +238,7 @@ Status Analysis::locateHingeEvent(IterationInfo& info) {
   for (int k = 0; k < 60 && !found; ++k) {
     s = sLo + (1.0 + 0.5 * kBand - dLo) * (sHi - sLo) / (dHi - dLo);
     s = std::clamp(s, sLo + 1e-6 * (sHi - sLo), sHi - 1e-6 * (sHi - sLo));
-    st = solveFraction(s, tEnd);
+    st = solveFraction(s, tEnd, lineSearch);
     if (!st) break;
     const double d = maxHingeDemand(element);
     found = d >= 1.0 && d <= 1.0 + kBand;
@@ -257,7 +257,7 @@ Status Analysis::locateHingeEvent(IterationInfo& info) {
   }
   // Not located within the band: open at the closest level found past Mu.
   if (st && !found) s = sHi;
-  if (st && (!found || s == 0)) st = solveFraction(s, tEnd);
+  if (st && (!found || s == 0)) st = solveFraction(s, tEnd, lineSearch);
   if (st) st = commit();  // the sub-step up to the hinge's ultimate moment
   if (st) {
     maxHingeDemand(element);
@@ -413,7 +413,13 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
 
   double s = 1.0;
   if (lineSearch && !path_ && info.iteration > 1 && info.energy > 0) {
-    // Secant search on g(s) = du . R(u + s du), accepted when |g(s)| <= 0.8 |g(0)|.
+    // Search on g(s) = du . R(u + s du), accepted when |g(s)| <= 0.8 |g(0)|. For
+    // a convex incremental potential (hardening) g falls monotonically through
+    // zero: once g(s) changes sign the root is bracketed and regula falsi
+    // (Illinois) keeps it so; before that the secant extrapolates (up to s = 4).
+    // With a kinked law (Kh2/EI = 1/285 in the paper's data) the full Newton
+    // step from an overshooting iterate can land past the reverse yield
+    // surface, and plain Newton then cycles; the bracketed search does not.
     const StepRule rule = integrator_.rule(state_.dt);
     const double g0 = du_.dot(R_);
     auto g = [&](double step, double& out) -> Status {
@@ -427,20 +433,36 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
     };
     double g1 = 0;
     if (g(1.0, g1) && std::abs(g1) > 0.8 * std::abs(g0)) {
-      double sa = 0, ga = g0, sb = 1, gb = g1;
-      for (int k = 0; k < 6; ++k) {
-        if (gb == ga) break;
-        double sn = sb - gb * (sb - sa) / (gb - ga);
-        sn = std::clamp(sn, 0.05, 2.0);
-        double gn = 0;
+      double sLo = 0, gLo = g0, sHi = 1, gHi = g1, sn = 1, gn = g1;
+      int side = 0;
+      for (int k = 0; k < 10 && std::abs(gn) > 0.8 * std::abs(g0); ++k) {
+        const bool bracketed = (gLo > 0) != (gHi > 0);
+        if (bracketed) {
+          sn = sHi - gHi * (sHi - sLo) / (gHi - gLo);
+        } else if (gHi != gLo && std::abs(gHi) < std::abs(gLo)) {
+          sn = std::min(4.0, sHi - gHi * (sHi - sLo) / (gHi - gLo));
+        } else {
+          break;  // g grows along the direction: no better step to find here
+        }
         if (!g(sn, gn)) break;
-        sa = sb;
-        ga = gb;
-        sb = sn;
-        gb = gn;
-        if (std::abs(gn) <= 0.8 * std::abs(g0)) break;
+        if (!bracketed) {
+          sLo = sHi;
+          gLo = gHi;
+          sHi = sn;
+          gHi = gn;
+        } else if ((gn > 0) == (gLo > 0)) {
+          sLo = sn;
+          gLo = gn;
+          if (side == 1) gHi *= 0.5;
+          side = 1;
+        } else {
+          sHi = sn;
+          gHi = gn;
+          if (side == -1) gLo *= 0.5;
+          side = -1;
+        }
       }
-      s = sb;
+      s = sn;
     }
   }
   applyIncrement(du_, s);
@@ -469,7 +491,7 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
       // ultimate moment by a located event (demand up to 1 + 1e-12) do not
       // open a second hinge in a step that does not load them further.
       if (maxHingeDemand(e) > 1.0 + 1e-9) {
-        st = locateHingeEvent(info);
+        st = locateHingeEvent(info, lineSearch);
         if (!st) return st;
         converged_ = false;
         return Status::success();  // the rest of the step starts a new iteration history

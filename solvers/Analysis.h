@@ -129,9 +129,10 @@ class Analysis {
   // A converged static step took a hinge past its ultimate moment: locate the
   // load level where the demand is 1, commit there, activate the hinge, converge
   // at that level, commit, and set up the rest of the step.
-  Status locateHingeEvent(IterationInfo& info);
-  // Newton from the committed state to the load level `fraction` of the step.
-  Status solveFraction(double fraction, double tEnd);
+  Status locateHingeEvent(IterationInfo& info, bool lineSearch);
+  // Newton from the committed state to the load level `fraction` of the step,
+  // with the line search when the step's own iterations use it.
+  Status solveFraction(double fraction, double tEnd, bool lineSearch);
   // Per node dof: the factor of its load table at `time` (times the arc-length factor).
   void dofFactors(double time, double arc, Eigen::VectorXd& out) const;
   // Factors at the step rule's load point (t_n+1, or the mid-point).

@@ -15,7 +15,7 @@ CholmodSolver::CholmodSolver(Method method) {
       common_.supernodal = CHOLMOD_SIMPLICIAL;
       break;
     case Method::Supernodal:
-      common_.supernodal = CHOLMOD_AUTO;
+      common_.supernodal = CHOLMOD_SUPERNODAL;
       break;
   }
   // Failures come back as Status; CHOLMOD's own messages on stderr would only
@@ -30,9 +30,13 @@ CholmodSolver::CholmodSolver(Method method) {
   // The equations come numbered in a fill-reducing order (core/DofMap), so the
   // natural ordering keeps the fill low and spares a permuted copy of the
   // matrix at every factorization.
-  common_.nmethods = 1;
-  common_.method[0].ordering = CHOLMOD_NATURAL;
-  common_.postorder = 0;
+  // (A forced supernodal factorization keeps CHOLMOD's own orderings: it needs
+  // the elimination-tree postordering anyway.)
+  if (method != Method::Supernodal) {
+    common_.nmethods = 1;
+    common_.method[0].ordering = CHOLMOD_NATURAL;
+    common_.postorder = 0;
+  }
 }
 
 CholmodSolver::~CholmodSolver() {
