@@ -2,6 +2,7 @@
 // round trips, and the V2 cantilever of verification.md solved with a small
 // Newton loop that activates one hinge at a time.
 #include "elements/InelasticFrame.h"
+#include "tests/unit/ElementTestSupport.h"
 
 #include "elements/LinearFrame.h"
 
@@ -76,17 +77,7 @@ double tangentError(InelasticFrame& e, const ElementKinematics& kin, const StepR
   ElemVec r;
   ElemMat k, dummy;
   EXPECT_TRUE(e.evaluate(kin, rule, true, r, k));
-  ElemMat fd;
-  const double h = 1e-8;
-  for (int j = 0; j < kElemDofs; ++j) {
-    ElementKinematics kp = kin, km = kin;
-    kp.d(j) += h;
-    km.d(j) -= h;
-    ElemVec rp, rm;
-    EXPECT_TRUE(e.evaluate(kp, rule, false, rp, dummy));
-    EXPECT_TRUE(e.evaluate(km, rule, false, rm, dummy));
-    fd.col(j) = (rp - rm) / (2 * h);
-  }
+  const ElemMat fd = test::centralDifferenceTangent(e, kin, rule, 1e-8);
   ElemVec rAgain;
   EXPECT_TRUE(e.evaluate(kin, rule, true, rAgain, dummy));  // leave the trial state at kin
   return (k - fd).norm() / k.norm();

@@ -14,6 +14,7 @@
 
 #include "core/Model.h"
 #include "elements/JointedElement.h"
+#include "tests/unit/ElementTestSupport.h"
 #include "elements/Joints.h"
 #include "elements/LinearFrame.h"
 #include "elements/ReissnerFrame.h"
@@ -77,22 +78,6 @@ ElemVec rigidMotion(const Vec2& x1, const Vec2& x2, double w, const Vec2& t) {
   return d;
 }
 
-ElemMat centralDifferences(JointedElement& e, const ElementKinematics& kin, const StepRule& rule) {
-  ElemMat fd;
-  const double h = 1e-6;
-  for (int j = 0; j < kElemDofs; ++j) {
-    ElementKinematics kp = kin, km = kin;
-    kp.d(j) += h;
-    km.d(j) -= h;
-    ElemVec rp, rm;
-    ElemMat unused;
-    EXPECT_TRUE(e.evaluate(kp, rule, false, rp, unused).ok);
-    EXPECT_TRUE(e.evaluate(km, rule, false, rm, unused).ok);
-    fd.col(j) = (rp - rm) / (2 * h);
-  }
-  return fd;
-}
-
 using TangentCase = std::tuple<Scheme, Inner, int>;
 class JointedElementTangent : public ::testing::TestWithParam<TangentCase> {};
 
@@ -130,7 +115,7 @@ TEST_P(JointedElementTangent, CondensedTangentMatchesCentralDifferences) {
     const ElemMat cond = kin6 - kin6.col(kr) * kin6.row(kr) / kin6(kr, kr);
     EXPECT_LT((cond - k).cwiseAbs().maxCoeff(), 1e-13 * k.cwiseAbs().maxCoeff());
 
-    const ElemMat fd = centralDifferences(e, kin, rule);
+    const ElemMat fd = test::centralDifferenceTangent(e, kin, rule);
     EXPECT_LT((fd - k).cwiseAbs().maxCoeff(), 2e-7 * k.cwiseAbs().maxCoeff())
         << "scheme " << static_cast<int>(scheme) << ", trial " << trial << "\nK =\n"
         << k << "\nFD =\n"

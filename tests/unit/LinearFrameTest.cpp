@@ -1,6 +1,7 @@
 // LinearFrame: rigid-body modes, tangent vs finite differences, symmetry,
 // mid-point energy identity, mass and body load, and closed-form cantilevers.
 #include "elements/LinearFrame.h"
+#include "tests/unit/ElementTestSupport.h"
 
 #include <gtest/gtest.h>
 
@@ -87,18 +88,7 @@ TEST_P(LinearFrameParam, LinearFrameTangentMatchesFiniteDifferences) {
     ElemVec r;
     ElemMat k;
     ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
-    ElemMat fd;
-    const double h = 1e-6;
-    for (int j = 0; j < kElemDofs; ++j) {
-      ElementKinematics kp = kin, km = kin;
-      kp.d(j) += h;
-      km.d(j) -= h;
-      ElemVec rp, rm;
-      ElemMat dummy;
-      ASSERT_TRUE(e.evaluate(kp, rule, false, rp, dummy).ok);
-      ASSERT_TRUE(e.evaluate(km, rule, false, rm, dummy).ok);
-      fd.col(j) = (rp - rm) / (2 * h);
-    }
+    const ElemMat fd = test::centralDifferenceTangent(e, kin, rule);
     EXPECT_LT((fd - k).cwiseAbs().maxCoeff(), 1e-7 * k.cwiseAbs().maxCoeff());
   }
 }

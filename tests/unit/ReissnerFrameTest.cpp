@@ -2,6 +2,7 @@
 // scheme, symmetry, the mid-point energy identity, the link to the linear
 // Timoshenko element, and the discrete-exact roll-up of verification.md V1.
 #include "elements/ReissnerFrame.h"
+#include "tests/unit/ElementTestSupport.h"
 
 #include <gtest/gtest.h>
 
@@ -73,23 +74,6 @@ StepRule makeRule(Scheme scheme, double alpha = 0) {
   return r;
 }
 
-ElemMat finiteDifferenceTangent(ReissnerFrame& e, const ElementKinematics& kin,
-                                const StepRule& rule) {
-  ElemMat fd;
-  const double h = 1e-6;
-  for (int j = 0; j < kElemDofs; ++j) {
-    ElementKinematics kp = kin, km = kin;
-    kp.d(j) += h;
-    km.d(j) -= h;
-    ElemVec rp, rm;
-    ElemMat unused;
-    EXPECT_TRUE(e.evaluate(kp, rule, false, rp, unused).ok);
-    EXPECT_TRUE(e.evaluate(km, rule, false, rm, unused).ok);
-    fd.col(j) = (rp - rm) / (2 * h);
-  }
-  return fd;
-}
-
 TEST(ReissnerFrameRigidBody, FiniteRigidMotionsGiveZeroResidual) {
   const Vec2 x1(1.0, -0.5), x2(2.2, 1.1);
   ReissnerFrame e(reissnerMaterial(), {0, 1}, x1, x2);
@@ -136,7 +120,7 @@ TEST(ReissnerFrameTangent, MatchesFiniteDifferencesForEveryScheme) {
         ElemVec r;
         ElemMat k;
         ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
-        const ElemMat fd = finiteDifferenceTangent(e, kin, rule);
+        const ElemMat fd = test::centralDifferenceTangent(e, kin, rule);
         EXPECT_LT((fd - k).cwiseAbs().maxCoeff(), 1e-7 * k.cwiseAbs().maxCoeff())
             << "scheme " << static_cast<int>(rule.scheme) << " alpha " << rule.alpha << " w "
             << w1 << ", " << w0;
