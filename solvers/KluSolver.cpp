@@ -9,7 +9,7 @@ namespace {
 // pivot growth (max|A| / max|U| column by column, 1 for a perfectly stable
 // factorization) stays above this; below it more than about eight digits
 // may be lost and a fresh pivot search is cheaper than a wrong Newton step.
-constexpr double kMinReciprocalGrowth = 1e-8;
+constexpr double kMinPivotRatio = 1e-12;
 }  // namespace
 
 KluSolver::KluSolver() { klu_defaults(&common_); }
@@ -72,10 +72,11 @@ Status KluSolver::factorize(const SparseMatrix& A) {
   double* x = const_cast<double*>(A.valuePtr());
   if (numeric_) {
     // Same pattern, new values: reuse the pivot order and the memory of the
-    // factors, unless a pivot vanished or grew badly with the new values.
+    // factors, unless a pivot vanished or became small with the new values
+    // (klu_rcond: the smallest over the largest pivot magnitude, O(n); the
+    // pivot growth klu_rgrowth costs a pass over the matrix and the factors).
     if (klu_refactor(p, i, x, symbolic_, numeric_, &common_) && common_.status == KLU_OK &&
-        klu_rgrowth(p, i, x, symbolic_, numeric_, &common_) &&
-        common_.rgrowth >= kMinReciprocalGrowth) {
+        klu_rcond(symbolic_, numeric_, &common_) && common_.rcond >= kMinPivotRatio) {
       factored_ = true;
       lastWasRefactor_ = true;
       return Status::success();
