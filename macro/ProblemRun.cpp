@@ -249,7 +249,20 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax) {
     stepsSinceCut_ = 0;
   }
   if (cutting_ && tmax && s.t + s.dt > *tmax) analysis_->setDt(*tmax - s.t);
-  const Status st = analysis_->advance();
+  Status st = analysis_->advance();
+  // The converged step could not be committed (an element cannot be evaluated
+  // at it): with step cutting it is dropped and taken again in halves.
+  while (!st && cutting_) {
+    const double dt = 0.5 * s.dt;
+    log_ << "  *** step " << s.step + 1 << " not committed: " << st.why << "\n";
+    if (dt < dtMin_) fail(m, st.why + "; step cutting gave up at the minimum step " + fmt("%.4e", dtMin_));
+    ++cuts_;
+    stepsSinceCut_ = 0;
+    analysis_->back();
+    analysis_->setDt(dt);
+    log_ << "  cut    step to dt = " << fmt("%.4e", dt) << "\n";
+    st = analysis_->advance();
+  }
   if (!st) fail(m, st.why);
   log_ << "  TIME   t = " << fmt("%.6e", s.t) << "  prop = " << fmt("%.6e", analysis_->loadFactor())
        << "\n";
