@@ -1,7 +1,6 @@
 #include "core/Assembler.h"
 
 #include <algorithm>
-#include <cstdint>
 #include <string>
 
 #include "core/GroundContact.h"
@@ -67,40 +66,6 @@ void Assembler::buildPattern() {
   }
   diagPos_.resize(neq);
   for (int i = 0; i < neq; ++i) diagPos_[i] = position(i, i);
-  colorElements();
-}
-
-void Assembler::colorElements() {
-  // Greedy colouring: an element's colour differs from those of the elements at
-  // its nodes and at the masters its nodes' equations alias (shared joints).
-  std::vector<int> root(model_.numNodes());
-  for (int n = 0; n < model_.numNodes(); ++n) root[n] = n;
-  for (const Joint& j : model_.joints())
-    if (j.form == JointForm::Shared) root[j.slave] = j.master;
-  std::vector<std::uint64_t> used(model_.numNodes(), 0);
-  std::vector<int> color(model_.numElements(), 0);
-  int numColors = 0;
-  for (int e = 0; e < model_.numElements(); ++e) {
-    const auto nodes = model_.element(e).nodes();
-    std::uint64_t taken = 0;
-    for (int n : nodes) taken |= used[n] | used[root[n]];
-    int c = 0;
-    while (c < 63 && (taken >> c & 1u)) ++c;  // colour 63 collects the rest, serially safe
-    color[e] = c;
-    numColors = std::max(numColors, c + 1);
-    for (int n : nodes) {
-      used[n] |= std::uint64_t{1} << c;
-      used[root[n]] |= std::uint64_t{1} << c;
-    }
-  }
-  colorStart_.assign(numColors + 1, 0);
-  for (int e = 0; e < model_.numElements(); ++e) ++colorStart_[color[e] + 1];
-  for (int c = 0; c < numColors; ++c) colorStart_[c + 1] += colorStart_[c];
-  colorElems_.resize(model_.numElements());
-  std::vector<int> fill(colorStart_.begin(), colorStart_.end() - 1);
-  for (int e = 0; e < model_.numElements(); ++e) colorElems_[fill[color[e]]++] = e;
-  // The last colour may hold conflicting elements: it is evaluated serially.
-  serialLastColor_ = numColors == 64;
 }
 
 void Assembler::gather(const Element& e, const State& s, ElementKinematics& kin) const {
@@ -121,50 +86,29 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
   forceScale_ = r_.size() ? r_.cwiseAbs().maxCoeff() : 0.0;
   if (wantTangent) std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
 
-  // Elements of one colour share no node (nor equation): they are evaluated and
-  // scattered in parallel without conflicts, colour after colour, so the sums
-  // come in the same order whatever the threads do (results are reproducible).
-  int failed = -1;
-  Status failure;
-  double scale = forceScale_;
-  for (size_t c = 0; c + 1 < colorStart_.size(); ++c) {
-    const int begin = colorStart_[c], end = colorStart_[c + 1];
-    const bool serial = serialLastColor_ && c + 2 == colorStart_.size();
-#pragma omp parallel for schedule(static) reduction(max : scale) if (!serial && end - begin > 64)
-    for (int k = begin; k < end; ++k) {
-      const int e = colorElems_[k];
-      Element& el = model_.element(e);
-      ElementKinematics kin;
-      ElemVec re;
-      ElemMat ke;
-      gather(el, s, kin);
-      Status st = el.evaluate(kin, rule, wantTangent, re, ke);
-      if (st && (!re.allFinite() || (wantTangent && !ke.allFinite())))
-        st = Status::failure("non-finite residual or tangent");
-      if (!st) {
-#pragma omp critical(c2d_assembly_failure)
-        if (failed < 0 || e < failed) {
-          failed = e;
-          failure = st;
-        }
-        continue;
-      }
-      scale = std::max(scale, re.cwiseAbs().maxCoeff());
-      const auto nodes = el.nodes();
-      for (int a = 0; a < 2; ++a)
-        r_.segment<kNodeDofs>(static_cast<Eigen::Index>(nodes[a]) * kNodeDofs) +=
-            re.segment<kNodeDofs>(a * kNodeDofs);
-      if (wantTangent) {
-        const auto& pos = elemPos_[e];
-        double* values = K_.valuePtr();
-        for (int a = 0; a < kElemDofs; ++a)
-          for (int b = 0; b < kElemDofs; ++b)
-            if (pos[a * kElemDofs + b] >= 0) values[pos[a * kElemDofs + b]] += ke(a, b);
-      }
+  ElementKinematics kin;
+  ElemVec re;
+  ElemMat ke;
+  for (int e = 0; e < model_.numElements(); ++e) {
+    Element& el = model_.element(e);
+    gather(el, s, kin);
+    const Status st = el.evaluate(kin, rule, wantTangent, re, ke);
+    if (!st) return Status::failure("element " + std::to_string(e + 1) + ": " + st.why);
+    if (!re.allFinite() || (wantTangent && !ke.allFinite()))
+      return Status::failure("element " + std::to_string(e + 1) + ": non-finite residual or tangent");
+    forceScale_ = std::max(forceScale_, re.cwiseAbs().maxCoeff());
+    const auto nodes = el.nodes();
+    for (int a = 0; a < 2; ++a)
+      r_.segment<kNodeDofs>(static_cast<Eigen::Index>(nodes[a]) * kNodeDofs) +=
+          re.segment<kNodeDofs>(a * kNodeDofs);
+    if (wantTangent) {
+      const auto& pos = elemPos_[e];
+      double* values = K_.valuePtr();
+      for (int a = 0; a < kElemDofs; ++a)
+        for (int b = 0; b < kElemDofs; ++b)
+          if (pos[a * kElemDofs + b] >= 0) values[pos[a * kElemDofs + b]] += ke(a, b);
     }
-    if (failed >= 0) return Status::failure("element " + std::to_string(failed + 1) + ": " + failure.why);
   }
-  forceScale_ = scale;
 
   if (const auto& ground = model_.ground()) {
     for (int n = 0; n < model_.numNodes(); ++n) {

@@ -52,7 +52,6 @@ class Assembler {
 
  private:
   void buildPattern();
-  void colorElements();
   void gather(const Element& e, const State& s, ElementKinematics& kin) const;
 
   Model& model_;
@@ -60,8 +59,6 @@ class Assembler {
   SparseMatrix K_;
   std::vector<std::array<int, kElemDofs * kElemDofs>> elemPos_;  // index into K_ values, -1: none
   std::vector<int> diagPos_;                                     // per equation
-  std::vector<int> colorStart_, colorElems_;  // elements grouped by colour (no shared node)
-  bool serialLastColor_ = false;
   Eigen::VectorXd r_, fRef_, fGrav_;
   int patternVersion_ = -1;
   double forceScale_ = 0;
