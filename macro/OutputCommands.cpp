@@ -142,6 +142,7 @@ class PlotCommand final : public SolutionCommand {
     CurveSpec c;
     c.xColumn = resolveColumn(rec, 0, p);
     c.yColumn = resolveColumn(rec, 1, p);
+    c.written = toLower(rec.text(0)) + " " + toLower(rec.text(1));
     c.xLabel = rec.size() >= 4 ? label(rec.text(2)) : c.xColumn;
     c.yLabel = rec.size() >= 4 ? label(rec.text(3)) : c.yColumn;
     // FEAP's convention: an empty or zero factor is the default 1.

@@ -27,13 +27,17 @@ struct CurveSpec {
   std::string xColumn, yColumn;  // "disp_10_1", "reac_10_1", "time", "prop", "total", ...
   std::string xLabel, yLabel;    // axis labels as printed
   double xScale = 1, yScale = 1;
+  // The columns as the deck writes them ("disp_n+1_3"): the runs of a mesh study
+  // plot the same quantity under other node numbers.
+  std::string written;
 
   // "<y>_vs_<x>": the file name after the stem.
   std::string fileName() const { return yColumn + "_vs_" + xColumn; }
-  // Same columns, labels and scales: the same picture (overlays join those).
+  // The same picture (overlays join those): the same columns as written, labels
+  // and scales.
   bool sameAs(const CurveSpec& o) const {
-    return xColumn == o.xColumn && yColumn == o.yColumn && xLabel == o.xLabel &&
-           yLabel == o.yLabel && xScale == o.xScale && yScale == o.yScale;
+    return written == o.written && xLabel == o.xLabel && yLabel == o.yLabel &&
+           xScale == o.xScale && yScale == o.yScale;
   }
 };
 
