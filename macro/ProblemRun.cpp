@@ -514,6 +514,10 @@ void ProblemRun::saveRestart(const Macro& m) {
   } catch (const std::exception& e) {
     fail(m, e.what());
   }
+  // The linear solver starts afresh here, as it does in a run restarted from this
+  // file (a new analysis: CHOLMOD first again, KLU's pivot order chosen anew), so
+  // that the two runs stay identical to the last bit.
+  analysis_->setLinearSolver(analysis_->linearSolverName());
   const State& s = analysis_->state();
   log_ << "  SAVE   " << file.string() << ": step " << s.step << ", t = " << fmt("%.6e", s.t) << "\n";
 }
