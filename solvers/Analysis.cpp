@@ -119,8 +119,13 @@ void Analysis::updateRates() {
 Status Analysis::advance() {
   Status st = commit();
   if (!st) return st;
-  state_.t = state_.tn + state_.dt;
-  state_.prop = tableFactor(1, state_.t);
+  beginStep(state_.tn + state_.dt, 1.0);
+  return Status::success();
+}
+
+void Analysis::beginStep(double time, double pathScale) {
+  state_.t = time;
+  state_.prop = tableFactor(1, time);
   applyPrescribed();
   updateRates();
   history_.clear();
@@ -128,9 +133,11 @@ Status Analysis::advance() {
   converged_ = false;
   stepInc_.setZero();
   stepDlambda_ = 0;
-  if (path_) path_->beginStep();
+  if (path_) {
+    path_->setStepScale(pathScale);
+    path_->beginStep();
+  }
   dirty_ = true;
-  return Status::success();
 }
 
 Status Analysis::assembleAndFactor(bool symmetric) {
@@ -191,19 +198,7 @@ Status Analysis::solveFraction(double fraction, double tEnd, bool lineSearch) {
   state_.v = state_.vn;
   state_.a = state_.an;
   state_.arcLambda = state_.arcLambdan;
-  state_.t = state_.tn + fraction * (tEnd - state_.tn);
-  state_.prop = tableFactor(1, state_.t);
-  applyPrescribed();
-  updateRates();
-  history_.clear();
-  energy0_ = 0;
-  stepInc_.setZero();
-  stepDlambda_ = 0;
-  if (path_) {
-    path_->setStepScale(fraction);
-    path_->beginStep();
-  }
-  dirty_ = true;
+  beginStep(state_.tn + fraction * (tEnd - state_.tn), fraction);
   IterationInfo it;
   for (int k = 0; k < 60; ++k) {
     const Status st = iterate(lineSearch, true, it);
@@ -278,19 +273,7 @@ Status Analysis::locateHingeEvent(IterationInfo& info, bool lineSearch) {
   locating_ = false;
   if (!st) return st;
   // The rest of the step.
-  state_.t = tEnd;
-  state_.prop = tableFactor(1, state_.t);
-  applyPrescribed();
-  updateRates();
-  history_.clear();
-  energy0_ = 0;
-  stepInc_.setZero();
-  stepDlambda_ = 0;
-  if (path_) {
-    path_->setStepScale(1.0 - s);
-    path_->beginStep();
-  }
-  dirty_ = true;
+  beginStep(tEnd, 1.0 - s);
   info.converged = false;
   return Status::success();
 }

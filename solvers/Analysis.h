@@ -112,6 +112,10 @@ class Analysis {
 
  private:
   void applyPrescribed();
+  // Start a step (or part of one) at `time` from the committed state: load
+  // factors, prescribed values, rates, a fresh iteration history; the path
+  // following takes pathScale of its nominal increment.
+  void beginStep(double time, double pathScale);
   void updateRates();
   Status assembleAndFactor(bool symmetric);
   void applyIncrement(const Eigen::VectorXd& du, double scale);
