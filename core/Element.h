@@ -1,7 +1,8 @@
 #pragma once
 // The element contract. Narrow on purpose: nodes, residual + tangent for a trial
 // state, mass, body load, commit/revert, report. Extra abilities are separate
-// small interfaces (core/Hinge.h for softening hinges, JointCarrier for joints).
+// small interfaces (core/Hinge.h for softening hinges, core/Checkpoint.h for
+// restart files); a joint is a decorator (elements/JointedElement.h).
 //
 // Trial state is a pure function of the committed state plus the trial kinematics:
 // evaluate() may be called any number of times; only commit() changes history,
