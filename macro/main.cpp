@@ -42,16 +42,36 @@ void usage(std::ostream& os) {
         "  <stem>_<y>_vs_<x>.svg with a legend entry per run (see --help SWEEp)\n";
 }
 
+// The options of both modes: -o DIR, -q, --solver NAME. Returns 1 when argv[i]
+// is one (i then stands on its last word), 0 when it is not, -1 after reporting
+// an error.
+int deckOption(int argc, char** argv, int& i, c2d::DeckOptions& options) {
+  const std::string a = argv[i];
+  if (a == "-o" && i + 1 < argc) {
+    options.outDir = argv[++i];
+  } else if (a == "-q" || a == "--quiet") {
+    options.quiet = true;
+  } else if (a == "--solver" && i + 1 < argc) {
+    options.solver = argv[++i];
+    if (!c2d::makeLinearSolver(options.solver)) {
+      std::cerr << "collapse2d: unknown linear solver '" << options.solver << "'\n";
+      usage(std::cerr);
+      return -1;
+    }
+  } else {
+    return 0;
+  }
+  return 1;
+}
+
 // collapse2d run [options] [-j N] DECK...
 int batchMain(int argc, char** argv, const c2d::SolutionCommands& commands) {
   c2d::BatchOptions options;
   std::vector<std::string> decks;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "-o" && i + 1 < argc) {
-      options.deck.outDir = argv[++i];
-    } else if (a == "-q" || a == "--quiet") {
-      options.deck.quiet = true;
+    if (const int known = deckOption(argc, argv, i, options.deck); known != 0) {
+      if (known < 0) return 64;
     } else if ((a == "-j" || a == "--jobs") && i + 1 < argc) {
       options.jobs = std::atoi(argv[++i]);
       if (options.jobs < 1) {
@@ -60,12 +80,6 @@ int batchMain(int argc, char** argv, const c2d::SolutionCommands& commands) {
       }
     } else if (a.rfind("-j", 0) == 0 && a.size() > 2 && std::isdigit(static_cast<unsigned char>(a[2]))) {
       options.jobs = std::max(1, std::atoi(a.c_str() + 2));
-    } else if (a == "--solver" && i + 1 < argc) {
-      options.deck.solver = argv[++i];
-      if (!c2d::makeLinearSolver(options.deck.solver)) {
-        std::cerr << "collapse2d: unknown linear solver '" << options.deck.solver << "'\n";
-        return 64;
-      }
     } else if (!a.empty() && a[0] == '-') {
       std::cerr << "collapse2d run: unknown option '" << a << "'\n";
       usage(std::cerr);
@@ -104,17 +118,8 @@ int main(int argc, char** argv) {
       c2d::printAllHelp(std::cout, commands);
       return 0;
     }
-    if (a == "-o" && i + 1 < argc) {
-      options.outDir = argv[++i];
-    } else if (a == "-q" || a == "--quiet") {
-      options.quiet = true;
-    } else if (a == "--solver" && i + 1 < argc) {
-      options.solver = argv[++i];
-      if (!c2d::makeLinearSolver(options.solver)) {
-        std::cerr << "collapse2d: unknown linear solver '" << options.solver << "'\n";
-        usage(std::cerr);
-        return 64;
-      }
+    if (const int known = deckOption(argc, argv, i, options); known != 0) {
+      if (known < 0) return 64;
     } else if (a.rfind("-i", 0) == 0 && a.size() > 2) {
       // FEAP: -iIname reads Iname and writes the log Oname.
       const std::string in = a.substr(2);

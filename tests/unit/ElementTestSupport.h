@@ -1,11 +1,42 @@
 #pragma once
-// Shared by the element tests: the tangent by central differences of an
-// element's residual.
+// Shared by the element tests: random element vectors, a section given by its
+// resultant stiffnesses, and the tangent by central differences of an element's
+// residual.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "core/Element.h"
+#include "core/MaterialSet.h"
 
 namespace c2d::test {
+
+inline ElemVec randomVec(std::mt19937& gen, double scale) {
+  std::uniform_real_distribution<double> u(-scale, scale);
+  ElemVec v;
+  for (int i = 0; i < kElemDofs; ++i) v(i) = u(gen);
+  return v;
+}
+
+// EA = 2e4, GA = 8e3, EI = 1e2 (A = 2, I = 0.05 for the mass, density 0.5).
+inline MaterialSet resultantMaterial(Kinematics kin, bool shear = true,
+                                     MassType mass = MassType::Consistent) {
+  MaterialSet m;
+  m.number = 1;
+  m.elementType = "FRAMe";
+  m.kinematics = kin;
+  m.shear = shear;
+  m.E = 1.0e4;
+  m.nu = 0.25;
+  m.A = 2.0;
+  m.I = 0.05;
+  m.resEA = 2.0e4;
+  m.resGA = 8.0e3;
+  m.resEI = 1.0e2;
+  m.density = 0.5;
+  m.mass = mass;
+  return m;
+}
 
 // dr/dd by central differences with step h, each residual evaluated without tangent.
 inline ElemMat centralDifferenceTangent(Element& e, const ElementKinematics& kin,

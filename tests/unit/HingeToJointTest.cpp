@@ -21,31 +21,14 @@
 #include "elements/ReissnerFrame.h"
 #include "solvers/Analysis.h"
 #include "solvers/TimeIntegrator.h"
+#include "tests/unit/ElementTestSupport.h"
 
 namespace c2d {
 namespace {
 
 // --- ReissnerFrame initial strain ---------------------------------------------
 
-MaterialSet reissnerMaterial() {
-  MaterialSet m;
-  m.number = 1;
-  m.kinematics = Kinematics::Finite;
-  m.resEA = 2.0e4;
-  m.resGA = 8.0e3;
-  m.resEI = 1.0e2;
-  m.density = 0.5;
-  m.A = 2.0;
-  m.I = 0.05;
-  return m;
-}
-
-ElemVec randomVec(std::mt19937& gen, double scale) {
-  std::uniform_real_distribution<double> u(-scale, scale);
-  ElemVec v;
-  for (int i = 0; i < kElemDofs; ++i) v(i) = u(gen);
-  return v;
-}
+MaterialSet reissnerMaterial() { return test::resultantMaterial(Kinematics::Finite); }
 
 TEST(HingeToJointInitialStrain, ShiftsResultantsEnergyAndKeepsTheMidPointIdentity) {
   std::mt19937 gen(11);
@@ -61,7 +44,7 @@ TEST(HingeToJointInitialStrain, ShiftsResultantsEnergyAndKeepsTheMidPointIdentit
   for (double alpha : {0.0, 0.15}) {
     StepRule mid = TimeIntegrator::midPoint(alpha, 0).rule(0.1);
     mid.ca = mid.av = mid.aa = 0;  // internal forces only
-    const ElemVec dn = randomVec(gen, 0.2), d = dn + randomVec(gen, 0.2);
+    const ElemVec dn = test::randomVec(gen, 0.2), d = dn + test::randomVec(gen, 0.2);
     ElemVec r;
     ElemMat k, unused;
     ASSERT_TRUE(shifted.evaluate({d, dn, ElemVec::Zero(), ElemVec::Zero()}, mid, true, r, k).ok);

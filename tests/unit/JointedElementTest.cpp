@@ -27,20 +27,8 @@ namespace {
 enum class Inner { Reissner, Timoshenko, EulerBernoulli };
 
 MaterialSet frameMaterial(Inner kind) {
-  MaterialSet m;
-  m.number = 1;
-  m.elementType = "FRAMe";
-  m.kinematics = kind == Inner::Reissner ? Kinematics::Finite : Kinematics::Small;
-  m.shear = kind != Inner::EulerBernoulli;
-  m.E = 1.0e4;
-  m.nu = 0.25;
-  m.A = 2.0;
-  m.I = 0.05;
-  m.resEA = 2.0e4;
-  m.resGA = 8.0e3;
-  m.resEI = 1.0e2;
-  m.density = 0.5;
-  return m;
+  return test::resultantMaterial(kind == Inner::Reissner ? Kinematics::Finite : Kinematics::Small,
+                                  kind != Inner::EulerBernoulli);
 }
 
 std::unique_ptr<Element> makeInner(Inner kind, const Vec2& x1, const Vec2& x2) {
@@ -59,13 +47,6 @@ StepRule ruleFor(Scheme s) {
       return TimeIntegrator::midPoint(0.1, 0.05).rule(0.05);
   }
   return {};
-}
-
-ElemVec randomVec(std::mt19937& gen, double scale) {
-  std::uniform_real_distribution<double> u(-scale, scale);
-  ElemVec v;
-  for (int i = 0; i < kElemDofs; ++i) v(i) = u(gen);
-  return v;
 }
 
 Eigen::Matrix2d rot(double a) {
@@ -94,9 +75,9 @@ TEST_P(JointedElementTangent, CondensedTangentMatchesCentralDifferences) {
   const double scale = kind == Inner::Reissner ? 0.15 : 0.05;
   for (int trial = 0; trial < 3; ++trial) {
     const ElementKinematics kin{
-        rigidMotion(x1, x2, 0.8 * trial, Vec2(0.2, -0.1)) + randomVec(gen, scale),
-        rigidMotion(x1, x2, 0.8 * trial - 0.1, Vec2(0.1, 0)) + randomVec(gen, scale),
-        randomVec(gen, 1.0), randomVec(gen, 5.0)};
+        rigidMotion(x1, x2, 0.8 * trial, Vec2(0.2, -0.1)) + test::randomVec(gen, scale),
+        rigidMotion(x1, x2, 0.8 * trial - 0.1, Vec2(0.1, 0)) + test::randomVec(gen, scale),
+        test::randomVec(gen, 1.0), test::randomVec(gen, 5.0)};
     ElemVec r;
     ElemMat k;
     ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
@@ -190,10 +171,10 @@ TEST(JointedElement, CommitRevertAndRelativeRatesFollowTheStepRule) {
   JointedElement e(makeInner(Inner::Reissner, x1, x2), 0, 2);
   e.setRelativeState(0.2, 0.7, -1.5);
   const StepRule rule = ruleFor(Scheme::Newmark);
-  const ElementKinematics a{randomVec(gen, 0.1), randomVec(gen, 0.1), randomVec(gen, 1.0),
-                            randomVec(gen, 1.0)};
+  const ElementKinematics a{test::randomVec(gen, 0.1), test::randomVec(gen, 0.1), test::randomVec(gen, 1.0),
+                            test::randomVec(gen, 1.0)};
   ElementKinematics b = a;
-  b.d += randomVec(gen, 0.1);
+  b.d += test::randomVec(gen, 0.1);
   ElemVec r;
   ElemMat k;
   ASSERT_TRUE(e.evaluate(a, rule, true, r, k).ok);

@@ -27,13 +27,6 @@ MaterialSet frameMaterial(bool shear, MassType mass = MassType::Consistent) {
   return m;
 }
 
-ElemVec randomVec(std::mt19937& gen, double scale) {
-  std::uniform_real_distribution<double> u(-scale, scale);
-  ElemVec v;
-  for (int i = 0; i < kElemDofs; ++i) v(i) = u(gen);
-  return v;
-}
-
 StepRule makeRule(Scheme scheme, double alpha = 0) {
   StepRule r;
   r.scheme = scheme;
@@ -83,8 +76,8 @@ TEST_P(LinearFrameParam, LinearFrameTangentMatchesFiniteDifferences) {
   const StepRule rules[] = {makeRule(Scheme::Static), makeRule(Scheme::Newmark),
                             makeRule(Scheme::MidPoint, 0.0), makeRule(Scheme::MidPoint, 0.2)};
   for (const StepRule& rule : rules) {
-    ElementKinematics kin{randomVec(gen, 0.01), randomVec(gen, 0.01), randomVec(gen, 0.5),
-                          randomVec(gen, 5.0)};
+    ElementKinematics kin{test::randomVec(gen, 0.01), test::randomVec(gen, 0.01), test::randomVec(gen, 0.5),
+                          test::randomVec(gen, 5.0)};
     ElemVec r;
     ElemMat k;
     ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
@@ -112,7 +105,7 @@ TEST_P(LinearFrameParam, LinearFrameMidPointEnergyIdentity) {
   LinearFrame e(frameMaterial(GetParam()), {0, 1}, Vec2(0.5, 0.5), Vec2(2.0, 1.5));
   for (double alpha : {0.0, 0.2}) {
     for (int trial = 0; trial < 5; ++trial) {
-      const ElemVec d = randomVec(gen, 0.02), dn = randomVec(gen, 0.02);
+      const ElemVec d = test::randomVec(gen, 0.02), dn = test::randomVec(gen, 0.02);
       ElemVec r;
       ElemMat k;
       ASSERT_TRUE(e.evaluate({dn, dn, ElemVec::Zero(), ElemVec::Zero()},

@@ -20,20 +20,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 MaterialSet reissnerMaterial(MassType mass = MassType::Consistent) {
-  MaterialSet m;
-  m.number = 3;
-  m.elementType = "FRAMe";
-  m.kinematics = Kinematics::Finite;
-  m.E = 1.0e4;
-  m.nu = 0.25;
-  m.A = 2.0;
-  m.I = 0.05;
-  m.resEA = 2.0e4;
-  m.resGA = 8.0e3;
-  m.resEI = 1.0e2;
-  m.density = 0.5;
-  m.mass = mass;
-  return m;
+  return test::resultantMaterial(Kinematics::Finite, true, mass);
 }
 
 Eigen::Matrix2d rot(double a) {
@@ -47,16 +34,9 @@ ElemVec rigidMotion(const Vec2& x1, const Vec2& x2, double w, const Vec2& c, con
   return d;
 }
 
-ElemVec randomVec(std::mt19937& gen, double scale) {
-  std::uniform_real_distribution<double> u(-scale, scale);
-  ElemVec v;
-  for (int i = 0; i < kElemDofs; ++i) v(i) = u(gen);
-  return v;
-}
-
 // A deformed state: a large rigid rotation w plus a random perturbation.
 ElemVec deformedState(std::mt19937& gen, const Vec2& x1, const Vec2& x2, double w) {
-  return rigidMotion(x1, x2, w, Vec2(0.2, 0.1), Vec2(0.3, -0.4)) + randomVec(gen, 0.08);
+  return rigidMotion(x1, x2, w, Vec2(0.2, 0.1), Vec2(0.3, -0.4)) + test::randomVec(gen, 0.08);
 }
 
 StepRule makeRule(Scheme scheme, double alpha = 0) {
@@ -110,7 +90,7 @@ TEST(ReissnerFrameTangent, MatchesFiniteDifferencesForEveryScheme) {
     for (const StepRule& rule : rules) {
       for (auto [w1, w0] : rotations) {
         ElementKinematics kin{deformedState(gen, x1, x2, w1), deformedState(gen, x1, x2, w0),
-                              randomVec(gen, 1.0), randomVec(gen, 10.0)};
+                              test::randomVec(gen, 1.0), test::randomVec(gen, 10.0)};
         if (w1 == w0) {
           // Same mean rotation exactly: Delta = 0.
           const double m = 0.5 * (kin.d(2) + kin.d(5)) - 0.5 * (kin.dn(2) + kin.dn(5));
