@@ -8,8 +8,6 @@ namespace c2d {
 namespace {
 
 using Mat2 = Eigen::Matrix2d;
-using Mat26 = Eigen::Matrix<double, 2, kElemDofs>;
-using Row6 = Eigen::Matrix<double, 1, kElemDofs>;
 
 // Counterclockwise quarter turn: d Lambda(psi)/d psi = W Lambda(psi).
 const Mat2 kW = (Mat2() << 0, -1, 1, 0).finished();
@@ -43,6 +41,44 @@ double sincPrime(double x) {
 constexpr int uDof(int a) { return kNodeDofs * a; }
 constexpr int thDof(int a) { return kNodeDofs * a + 2; }
 constexpr double nodeSign(int a) { return a == 0 ? -1.0 : 1.0; }
+
+// The strain operators of this element have the form
+//   B = [-P c P c] (2 x 6; P 2 x 2, c a column shared by both rotations),
+//   bk = [0 0 -1/l 0 0 1/l] (curvature),
+// so products with them are written out blockwise.
+
+// f = l (B^T n + bk^T m).
+void strainOperatorForce(double l, const Mat2& p, const Vec2& c, const Vec2& n, double m,
+                         ElemVec& f) {
+  const Vec2 pn = l * (p.transpose() * n);
+  const double cn = l * c.dot(n);
+  for (int a = 0; a < 2; ++a) {
+    f.segment<2>(uDof(a)) = nodeSign(a) * pn;
+    f(thDof(a)) = cn + nodeSign(a) * m;
+  }
+}
+
+// k = w l (B^T C B1 + EI bk^T bk), C = diag(EA, GA), B1 = [-P1 c1 P1 c1].
+void materialTangent(double l, double w, const Mat2& p, const Vec2& c, const Mat2& p1,
+                     const Vec2& c1, double ea, double ga, double ei, ElemMat& k) {
+  const double wl = w * l;
+  const Mat2 cp1 = Vec2(ea, ga).asDiagonal() * p1;
+  const Vec2 cc1(ea * c1.x(), ga * c1.y());
+  const Mat2 uu = wl * (p.transpose() * cp1);
+  const Vec2 ut = wl * (p.transpose() * cc1);
+  const Vec2 tu = wl * (cp1.transpose() * c);
+  const double tt = wl * c.dot(cc1), kk = w * ei / l;
+  for (int a = 0; a < 2; ++a) {
+    const double sa = nodeSign(a);
+    for (int b = 0; b < 2; ++b) {
+      const double sb = nodeSign(b);
+      k.block<2, 2>(uDof(a), uDof(b)) = (sa * sb) * uu;
+      k.block<2, 1>(uDof(a), thDof(b)) = sa * ut;
+      k.block<1, 2>(thDof(a), uDof(b)) = sb * tu.transpose();
+      k(thDof(a), thDof(b)) = tt + sa * sb * kk;
+    }
+  }
+}
 
 }  // namespace
 
@@ -85,29 +121,23 @@ double ReissnerFrame::energy(const ElemVec& d) const {
   return 0.5 * length_ * (ea_ * e(0) * e(0) + ga_ * e(1) * e(1) + ei_ * e(2) * e(2));
 }
 
-// Internal force grad W(d) and its (symmetric) derivative.
-void ReissnerFrame::staticForce(const ElemVec& d, bool wantTangent, ElemVec& f,
-                                ElemMat& k) const {
+// Internal force grad W(d) and its (symmetric) derivative; returns E(d).
+Vec3 ReissnerFrame::staticForce(const ElemVec& d, bool wantTangent, ElemVec& f, ElemMat& k) const {
   const double l = length_;
   const Vec2 g = (x2_ + d.segment<2>(3) - x1_ - d.segment<2>(0)) / l;
   const Mat2 lam = rot(beta0_ + 0.5 * (d(2) + d(5)));
   const Vec2 h = lam.transpose() * g;  // Lambda^T phi'
-  const Vec2 n(ea_ * (h.x() - 1 - e0_(0)), ga_ * (h.y() - e0_(1)));
-  const double m = ei_ * ((d(5) - d(2)) / l - e0_(2));
+  const Vec3 e(h.x() - 1, h.y(), (d(5) - d(2)) / l);
+  const Vec2 n(ea_ * (e(0) - e0_(0)), ga_ * (e(1) - e0_(1)));
+  const double m = ei_ * (e(2) - e0_(2));
 
   // dE/dd: dh/dphi' = Lambda^T, dh/dpsi = -W h, dpsi/dtheta_a = 1/2.
-  Mat26 b = Mat26::Zero();
-  Row6 bk = Row6::Zero();
-  for (int a = 0; a < 2; ++a) {
-    b.block<2, 2>(0, uDof(a)) = nodeSign(a) / l * lam.transpose();
-    b.col(thDof(a)) = -0.5 * kW * h;
-    bk(thDof(a)) = nodeSign(a) / l;
-  }
-  f = l * (b.transpose() * n + bk.transpose() * m);
-  if (!wantTangent) return;
+  const Mat2 p = lam.transpose() / l;
+  const Vec2 c = -0.5 * kW * h;
+  strainOperatorForce(l, p, c, n, m, f);
+  if (!wantTangent) return e;
 
-  const Vec2 c(ea_, ga_);
-  k = l * (b.transpose() * c.asDiagonal() * b + ei_ * bk.transpose() * bk);
+  materialTangent(l, 1.0, p, c, p, c, ea_, ga_, ei_, k);
   // Geometric part n . d(b_j)/d(d_k).
   const Vec2 q = lam * kW.transpose() * n;  // q_i = n . (W Lambda^T e_i)
   const double nh = n.dot(h);
@@ -121,15 +151,17 @@ void ReissnerFrame::staticForce(const ElemVec& d, bool wantTangent, ElemVec& f,
       }
     }
   }
+  return e;
 }
 
 // Energy conserving/decaying internal force between dn and d, and its exact
-// derivative with respect to d. With Lambda_{n+1} = Lambda_mid R(Delta/2) and
-// Lambda_n = Lambda_mid R(-Delta/2), R(x) = cos x + sin x W:
+// derivative with respect to d; returns E(d). With Lambda_{n+1} = Lambda_mid R(Delta/2)
+// and Lambda_n = Lambda_mid R(-Delta/2), R(x) = cos x + sin x W:
 //   E_{n+1} - E_n = cos(Delta/2) Lambda_mid^T (g_{n+1} - g_n)
 //                   - sinc(Delta/2) W Lambda_mid^T g_mid Delta,
-// which defines B_alg (Delta = theta_m,n+1 - theta_m,n, g = phi').
-void ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double alpha,
+// which defines B_alg (Delta = theta_m,n+1 - theta_m,n, g = phi'). The three
+// rotations come from two sine-cosine pairs: Lambda_mid and R(Delta/2).
+Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double alpha,
                                   bool wantTangent, ElemVec& f, ElemMat& k) const {
   const double l = length_;
   const Vec2 g1 = (x2_ + d.segment<2>(3) - x1_ - d.segment<2>(0)) / l;
@@ -137,58 +169,51 @@ void ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double al
   const double th1 = 0.5 * (d(2) + d(5)), th0 = 0.5 * (dn(2) + dn(5));
   const double x = 0.5 * (th1 - th0);  // Delta/2
   const Mat2 lamM = rot(beta0_ + 0.5 * (th1 + th0));
-  const Vec2 aM = lamM.transpose() * (0.5 * (g1 + g0));
-  const double cx = std::cos(x), sx = std::sin(x), sc = sinc(x);
+  const Mat2 rx = rot(x);
+  const double cx = rx(0, 0), sx = rx(1, 0), sc = sinc(x);
+  const Vec2 a1 = lamM.transpose() * g1, a0 = lamM.transpose() * g0;
+  const Vec2 aM = 0.5 * (a1 + a0);
+  const Vec2 h1 = rx.transpose() * a1;  // Lambda_{n+1}^T g1
+  const Vec2 h0 = rx * a0;              // Lambda_n^T g0
 
-  const Vec3 e1 = strains(d), e0 = strains(dn);
+  const Vec3 e1(h1.x() - 1, h1.y(), (d(5) - d(2)) / l);
+  const Vec3 e0(h0.x() - 1, h0.y(), (dn(5) - dn(2)) / l);
   const Vec3 eAlg = (0.5 + alpha) * e1 + (0.5 - alpha) * e0 - e0_;
   const Vec2 n(ea_ * eAlg(0), ga_ * eAlg(1));
   const double m = ei_ * eAlg(2);
 
-  Mat26 b = Mat26::Zero();
-  Row6 bk = Row6::Zero();
-  for (int a = 0; a < 2; ++a) {
-    b.block<2, 2>(0, uDof(a)) = nodeSign(a) * cx / l * lamM.transpose();
-    b.col(thDof(a)) = -0.5 * sc * kW * aM;
-    bk(thDof(a)) = nodeSign(a) / l;
-  }
-  f = l * (b.transpose() * n + bk.transpose() * m);
-  if (!wantTangent) return;
+  const Mat2 p = (cx / l) * lamM.transpose();
+  const Vec2 c = -0.5 * sc * kW * aM;
+  strainOperatorForce(l, p, c, n, m, f);
+  if (!wantTangent) return e1;
 
-  // dE_{n+1}/dd: the consistent operator at d.
-  const Mat2 lam1 = rot(beta0_ + th1);
-  const Vec2 h1 = lam1.transpose() * g1;
-  Mat26 b1 = Mat26::Zero();
-  for (int a = 0; a < 2; ++a) {
-    b1.block<2, 2>(0, uDof(a)) = nodeSign(a) / l * lam1.transpose();
-    b1.col(thDof(a)) = -0.5 * kW * h1;
-  }
-  const Vec2 c(ea_, ga_);
-  k = (0.5 + alpha) * l *
-      (b.transpose() * c.asDiagonal() * b1 + ei_ * bk.transpose() * bk);
+  // dE_{n+1}/dd: the consistent operator at d, Lambda_{n+1} = Lambda_mid R(x).
+  const Mat2 p1 = (lamM * rx).transpose() / l;
+  const Vec2 c1 = -0.5 * kW * h1;
+  materialTangent(l, 0.5 + alpha, p, c, p1, c1, ea_, ga_, ei_, k);
 
   // Geometric part n . d(b_alg,j)/d(d_k); x, psi_mid and g_mid each move with
   // d: dx/dtheta_a = dpsi_mid/dtheta_a = 1/4, dg_mid/du_a = sign_a/(2l).
   const Vec2 q = lamM * kW.transpose() * n;  // q_i = n . (W Lambda_mid^T e_i)
-  const Vec2 p = lamM * n;                    // p_i = n . (Lambda_mid^T e_i)
+  const Vec2 pn = lamM * n;                  // p_i = n . (Lambda_mid^T e_i)
   const double kThTh = -0.125 * l * (sincPrime(x) * n.dot(kW * aM) + sc * n.dot(aM));
   for (int a = 0; a < 2; ++a) {
     for (int bn = 0; bn < 2; ++bn) {
       k(thDof(a), thDof(bn)) += kThTh;
       for (int i = 0; i < 2; ++i) {
-        k(uDof(a) + i, thDof(bn)) += 0.25 * nodeSign(a) * (-sx * p(i) - cx * q(i));
+        k(uDof(a) + i, thDof(bn)) += 0.25 * nodeSign(a) * (-sx * pn(i) - cx * q(i));
         k(thDof(bn), uDof(a) + i) += -0.25 * nodeSign(a) * sc * q(i);
       }
     }
   }
+  return e1;
 }
 
-Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rule,
-                               bool wantTangent, ElemVec& residual, ElemMat& tangent) {
-  if (rule.scheme == Scheme::MidPoint)
-    midPointForce(kin.d, kin.dn, rule.alpha, wantTangent, residual, tangent);
-  else
-    staticForce(kin.d, wantTangent, residual, tangent);
+Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rule, bool wantTangent,
+                               ElemVec& residual, ElemMat& tangent) {
+  const Vec3 strain = rule.scheme == Scheme::MidPoint
+                          ? midPointForce(kin.d, kin.dn, rule.alpha, wantTangent, residual, tangent)
+                          : staticForce(kin.d, wantTangent, residual, tangent);
   if (rule.dynamic()) {
     const ElemVec dd = kin.d - kin.dn;
     const ElemVec aEff = rule.acceleration(dd, kin.vn, kin.an);
@@ -198,7 +223,7 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
   if (!residual.allFinite() || (wantTangent && !tangent.allFinite()))
     return Status::failure("frame-reissner element: non-finite residual or tangent");
 
-  const Vec3 e = strains(kin.d) - e0_;
+  const Vec3 e = strain - e0_;
   trial_.energy = 0.5 * length_ * (ea_ * e(0) * e(0) + ga_ * e(1) * e(1) + ei_ * e(2) * e(2));
   trial_.forces = {ea_ * e(0), ga_ * e(1), ei_ * e(2)};
   return Status::success();

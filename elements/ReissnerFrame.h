@@ -78,8 +78,9 @@ class ReissnerFrame final : public Element, public Checkpoint {
     SectionForces forces;
   };
 
-  void staticForce(const ElemVec& d, bool wantTangent, ElemVec& f, ElemMat& k) const;
-  void midPointForce(const ElemVec& d, const ElemVec& dn, double alpha, bool wantTangent,
+  // Internal force and tangent; both return the strains E(d).
+  Vec3 staticForce(const ElemVec& d, bool wantTangent, ElemVec& f, ElemMat& k) const;
+  Vec3 midPointForce(const ElemVec& d, const ElemVec& dn, double alpha, bool wantTangent,
                      ElemVec& f, ElemMat& k) const;
 
   std::array<int, 2> nodes_;

@@ -1,9 +1,6 @@
 // ReissnerFrame: finite rigid motions, tangents vs finite differences for every
 // scheme, symmetry, the mid-point energy identity, the link to the linear
 // Timoshenko element, and the discrete-exact roll-up of verification.md V1.
-#include "elements/ReissnerFrame.h"
-#include "tests/unit/ElementTestSupport.h"
-
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -13,6 +10,8 @@
 #include <vector>
 
 #include "elements/LinearFrame.h"
+#include "elements/ReissnerFrame.h"
+#include "tests/unit/ElementTestSupport.h"
 
 namespace c2d {
 namespace {
@@ -62,9 +61,9 @@ TEST(ReissnerFrameRigidBody, FiniteRigidMotionsGiveZeroResidual) {
     const ElemVec d = rigidMotion(x1, x2, w, c, t);
     ElemVec r;
     ElemMat k;
-    ASSERT_TRUE(e.evaluate({d, d, ElemVec::Zero(), ElemVec::Zero()}, makeRule(Scheme::Static),
-                           true, r, k)
-                    .ok);
+    ASSERT_TRUE(
+        e.evaluate({d, d, ElemVec::Zero(), ElemVec::Zero()}, makeRule(Scheme::Static), true, r, k)
+            .ok);
     EXPECT_LT(r.norm(), 1e-10) << "w = " << w;
     EXPECT_LT(e.strainEnergy(), 1e-20);
     // Mid-point force between two different rigid positions is zero as well.
@@ -102,8 +101,8 @@ TEST(ReissnerFrameTangent, MatchesFiniteDifferencesForEveryScheme) {
         ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
         const ElemMat fd = test::centralDifferenceTangent(e, kin, rule);
         EXPECT_LT((fd - k).cwiseAbs().maxCoeff(), 1e-7 * k.cwiseAbs().maxCoeff())
-            << "scheme " << static_cast<int>(rule.scheme) << " alpha " << rule.alpha << " w "
-            << w1 << ", " << w0;
+            << "scheme " << static_cast<int>(rule.scheme) << " alpha " << rule.alpha << " w " << w1
+            << ", " << w0;
       }
     }
   }
@@ -158,7 +157,8 @@ TEST(ReissnerFrameMidPoint, EnergyIdentity) {
       ElemMat k;
       ASSERT_TRUE(e.evaluate({d, dn, ElemVec::Zero(), ElemVec::Zero()}, rule, false, r, k).ok);
       const double w = e.energy(d), wn = e.energy(dn);
-      EXPECT_EQ(e.strainEnergy(), w);
+      // The reported energy comes from the mid-point's rotations: equal to round-off.
+      EXPECT_NEAR(e.strainEnergy(), w, 1e-14 * std::abs(w));
       const Vec3 de = e.strains(d) - e.strains(dn);
       const double expected = w - wn + alpha * e.length() * de.dot(c.cwiseProduct(de));
       EXPECT_NEAR((d - dn).dot(r), expected, 1e-12 * (std::abs(w) + std::abs(wn)))
@@ -223,8 +223,7 @@ RollUp solveRollUp(int n, double l, double angle, double m, int steps) {
   const Vec2 t(std::cos(angle), std::sin(angle));
   RollUp s;
   for (int e = 0; e < n; ++e)
-    s.elems.emplace_back(mat, std::array<int, 2>{e, e + 1}, (l * e / n) * t,
-                         (l * (e + 1) / n) * t);
+    s.elems.emplace_back(mat, std::array<int, 2>{e, e + 1}, (l * e / n) * t, (l * (e + 1) / n) * t);
   const int ndof = 3 * (n + 1), nf = ndof - 3;
   s.d = Eigen::VectorXd::Zero(ndof);
   const StepRule rule = makeRule(Scheme::Static);
