@@ -1,5 +1,6 @@
 #include "core/GroundContact.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace c2d {
@@ -31,10 +32,16 @@ ContactForce groundContact(const Ground& g, double yn, double y, const StepRule&
     out.force = -0.5 * g.k * p0 * p0 / dp;
     out.tangent = 0.5 * g.k * p0 * p0 / (dp * dp);
   }
+  // Dissipation (eq 75) on the change of the penetration while in contact,
+  // alpha k (<p1> - <p0>): the paper's alpha k (p1 - p0) when the node is in
+  // contact at both ends of the step, and continuous when it enters or leaves
+  // (alpha k dp would jump by alpha k |p0| as p1 passes zero, and Newton's
+  // method then cycles between the two sides). Its work on the step,
+  // -alpha k (<p1> - <p0>) dp, is never positive.
   const double alpha = g.alpha >= 0 ? g.alpha : rule.alpha;
   if (alpha > 0 && (p1 > 0 || p0 > 0)) {
-    out.force += alpha * g.k * dp;
-    out.tangent += alpha * g.k;
+    out.force += alpha * g.k * (std::max(p1, 0.0) - std::max(p0, 0.0));
+    if (p1 > 0) out.tangent += alpha * g.k;
   }
   return out;
 }

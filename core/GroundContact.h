@@ -5,7 +5,8 @@
 //
 // With the mid-point scheme the force is the discrete gradient of U between t_n
 // and t_n+1, so an impact conserves energy exactly (alpha = 0), plus the
-// dissipative term alpha*k*(g_n+1 - g_n) while in contact (eq 75).
+// dissipative term alpha*k*(<g_n+1> - <g_n>) (eq 75; <.> the positive part, so
+// that the force is continuous when a node enters or leaves contact).
 #include "core/Model.h"
 #include "core/StepRule.h"
 

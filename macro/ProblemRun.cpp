@@ -8,8 +8,8 @@
 #include <iostream>
 #include <sstream>
 
-#include "elements/HingeToJoint.h"
 #include "core/Checkpoint.h"
+#include "elements/HingeToJoint.h"
 #include "elements/Joints.h"
 #include "macro/DeckParser.h"
 #include "macro/DeckReader.h"
@@ -34,7 +34,11 @@ std::string fmt(const char* f, double v) {
 
 ProblemRun::ProblemRun(const Problem& problem, Parameters& params, const SolutionCommands& table,
                        RunOptions options, std::ostream& log)
-    : problem_(problem), params_(params), table_(table), options_(std::move(options)), log_(log),
+    : problem_(problem),
+      params_(params),
+      table_(table),
+      options_(std::move(options)),
+      log_(log),
       outputs_(std::make_unique<RunOutputs>(options_.outDir, options_.stem, problem_.title,
                                             options_.label)) {}
 
@@ -59,7 +63,8 @@ void ProblemRun::run() {
   hingeStep_.assign(model_.numElements(), 0);
   analysis_->onCommit = [this] { onCommit(); };
   analysis_->onHingeActivated = [this](int e, const HingeInfo& h) {
-    log_ << "  hinge  element " << e + 1 << " activated at t = " << fmt("%.6e", analysis_->state().t)
+    log_ << "  hinge  element " << e + 1
+         << " activated at t = " << fmt("%.6e", analysis_->state().t)
          << ", M = " << fmt("%.6e", h.moment) << "\n";
   };
   for (const auto& batch : batches_)
@@ -94,9 +99,10 @@ void ProblemRun::reportDebris() {
   if (left < 0) return;
   log_ << "\n  debris: footprint x in [" << fmt("%.4e", x0min) << ", " << fmt("%.4e", x0max)
        << "], nodes now in [" << fmt("%.4e", xmin) << " (node " << left + 1 << "), "
-       << fmt("%.4e", xmax) << " (node " << right + 1 << ")], highest point y = " << fmt("%.4e", ymax)
-       << "\n  debris: beyond the footprint " << fmt("%.4e", std::max(0.0, x0min - xmin))
-       << " on the left, " << fmt("%.4e", std::max(0.0, xmax - x0max)) << " on the right\n";
+       << fmt("%.4e", xmax) << " (node " << right + 1
+       << ")], highest point y = " << fmt("%.4e", ymax) << "\n  debris: beyond the footprint "
+       << fmt("%.4e", std::max(0.0, x0min - xmin)) << " on the left, "
+       << fmt("%.4e", std::max(0.0, xmax - x0max)) << " on the right\n";
 }
 
 RunSummary ProblemRun::summary() const {
@@ -133,7 +139,8 @@ Flow ProblemRun::runLoop(const Macro& m) {
     if (f == Flow::ExitLoop || diverged_) break;
   }
   if (newton && !analysis_->stepConverged()) {
-    const std::string why = diverged_ ? "diverged" : "did not converge in " + std::to_string(n) + " iterations";
+    const std::string why =
+        diverged_ ? "diverged" : "did not converge in " + std::to_string(n) + " iterations";
     return retryWithCut(m, why);
   }
   return Flow::Next;
@@ -150,8 +157,8 @@ std::string ProblemRun::historyText() const {
   int node = -1, dof = -1;
   const double r = analysis_->largestResidual(node, dof);
   if (node >= 0)
-    os << "    largest residual " << fmt("%.5e", r) << " at node " << node + 1 << ", dof " << dof + 1
-       << "\n";
+    os << "    largest residual " << fmt("%.5e", r) << " at node " << node + 1 << ", dof "
+       << dof + 1 << "\n";
   return os.str();
 }
 
@@ -162,7 +169,8 @@ Flow ProblemRun::retryWithCut(const Macro& loop, const std::string& why) {
       << ", dt = " << fmt("%.4e", s.dt) << ")";
   log_ << "  *** " << msg.str() << "\n" << historyText();
   if (!cutting_)
-    throw AnalysisError(loop.record.fieldLoc(0).str() + ": error: " + msg.str() + "\n" + historyText());
+    throw AnalysisError(loop.record.fieldLoc(0).str() + ": error: " + msg.str() + "\n" +
+                        historyText());
   for (;;) {
     const double dt = 0.5 * analysis_->state().dt;
     if (dt < dtMin_)
@@ -211,8 +219,14 @@ Flow ProblemRun::newtonIteration(const Macro& m, bool update, bool lineSearch, b
     }
     fail(m, st.why + "\n" + historyText());
   }
+  if (info.restarted) {
+    log_ << "  " << (symmetric ? "TANG " : "UTAN ") << "  step " << s.step + 1
+         << ": the predicted start diverges; the step starts again from the committed state\n";
+    return Flow::Next;
+  }
   char buf[160];
-  std::snprintf(buf, sizeof buf, "  %-5s  step %5d  t = %12.5e  it %3d  |R| = %11.4e  |du.R| = %11.4e%s\n",
+  std::snprintf(buf, sizeof buf,
+                "  %-5s  step %5d  t = %12.5e  it %3d  |R| = %11.4e  |du.R| = %11.4e%s\n",
                 symmetric ? "TANG" : "UTAN", s.step + 1, s.t, info.iteration, info.residual,
                 info.energy, info.converged ? "  converged" : "");
   log_ << buf;
@@ -255,7 +269,8 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax) {
   while (!st && cutting_) {
     const double dt = 0.5 * s.dt;
     log_ << "  *** step " << s.step + 1 << " not committed: " << st.why << "\n";
-    if (dt < dtMin_) fail(m, st.why + "; step cutting gave up at the minimum step " + fmt("%.4e", dtMin_));
+    if (dt < dtMin_)
+      fail(m, st.why + "; step cutting gave up at the minimum step " + fmt("%.4e", dtMin_));
     ++cuts_;
     stepsSinceCut_ = 0;
     analysis_->back();
@@ -303,8 +318,8 @@ void ProblemRun::setProportionalLoad(const Macro& m) {
     std::array<double, 5> a{};
     for (int i = 0; i < 5; ++i) a[i] = value(first, 4 + i);
     const int k = static_cast<int>(value(first, 1));
-    analysis_->setLoadFunction(table, ProportionalLoad::formula(k == 0 ? 1 : k, value(first, 2),
-                                                         value(first, 3), a));
+    analysis_->setLoadFunction(
+        table, ProportionalLoad::formula(k == 0 ? 1 : k, value(first, 2), value(first, 3), a));
     log_ << "  PROP   table " << table << ": type 1\n";
     return;
   }
@@ -329,13 +344,15 @@ void ProblemRun::setPathFollowing(const Macro& m) {
     const int node = Expression::parse(rec[0]).evalInt(params_, "node number");
     const int dof = Expression::parse(rec[1]).evalInt(params_, "dof");
     if (node < 1 || node > model_.numNodes() || dof < 1 || dof > 3)
-      throw DeckError(rec.loc, "ARCL: no node " + std::to_string(node) + " dof " + std::to_string(dof),
+      throw DeckError(rec.loc,
+                      "ARCL: no node " + std::to_string(node) + " dof " + std::to_string(dof),
                       rec.lineText());
     analysis_->assembler().refresh();
     const int eq = analysis_->assembler().dofs().eq(node - 1, dof - 1);
     if (eq < 0)
-      throw DeckError(rec.loc, "ARCL: node " + std::to_string(node) + " dof " + std::to_string(dof) +
-                                   " is restrained (displacement control needs a free dof)",
+      throw DeckError(rec.loc,
+                      "ARCL: node " + std::to_string(node) + " dof " + std::to_string(dof) +
+                          " is restrained (displacement control needs a free dof)",
                       rec.lineText());
     analysis_->setPathFollowing(PathFollowing::displacementControl(eq, value(2)));
     log_ << "  ARCL   displacement control of node " << node << " dof " << dof << "\n";
@@ -359,11 +376,13 @@ void ProblemRun::setTimeHistory(const Macro& m) {
                              : TimeHistory::Kind::Stre;
       c.index = Expression::parse(rec[1]).evalInt(params_, "number") - 1;
       c.component = Expression::parse(rec[2]).evalInt(params_, "component") - 1;
-      const int limit = c.kind == TimeHistory::Kind::Stre ? model_.numElements() : model_.numNodes();
+      const int limit =
+          c.kind == TimeHistory::Kind::Stre ? model_.numElements() : model_.numNodes();
       if (c.index < 0 || c.index >= limit || c.component < 0 || c.component > 2)
-        throw DeckError(rec[1].loc, "TPLOt: no such " +
-                                        std::string(c.kind == TimeHistory::Kind::Stre ? "element" : "node") +
-                                        " or component",
+        throw DeckError(rec[1].loc,
+                        "TPLOt: no such " +
+                            std::string(c.kind == TimeHistory::Kind::Stre ? "element" : "node") +
+                            " or component",
                         rec.excerpt(rec[1].loc));
     }
     cols.push_back(c);
@@ -415,7 +434,8 @@ std::vector<int> ProblemRun::selection(const Macro& m, int count) const {
     return out;
   }
   const int n1 = m.numbers[0].evalInt(params_, "first number");
-  int n2 = m.has(1) && !m.record.text(3).empty() ? m.numbers[1].evalInt(params_, "last number") : n1;
+  int n2 =
+      m.has(1) && !m.record.text(3).empty() ? m.numbers[1].evalInt(params_, "last number") : n1;
   int inc = m.has(2) && !m.record.text(4).empty() ? m.numbers[2].evalInt(params_, "increment") : 1;
   if (inc <= 0) inc = 1;
   n2 = std::min(n2, count);
@@ -436,9 +456,11 @@ void ProblemRun::printNodal(const Macro& m) {
   } else if (m.is("velo")) {
     printNodalTable(log_, NodalQuantity::Velocity, model_, s, analysis_->loadFactor(), s.v, nodes);
   } else if (m.is("acce")) {
-    printNodalTable(log_, NodalQuantity::Acceleration, model_, s, analysis_->loadFactor(), s.a, nodes);
+    printNodalTable(log_, NodalQuantity::Acceleration, model_, s, analysis_->loadFactor(), s.a,
+                    nodes);
   } else {
-    printNodalTable(log_, NodalQuantity::Displacement, model_, s, analysis_->loadFactor(), s.u, nodes);
+    printNodalTable(log_, NodalQuantity::Displacement, model_, s, analysis_->loadFactor(), s.u,
+                    nodes);
   }
 }
 
@@ -499,7 +521,8 @@ void ProblemRun::setRunState(const std::string& bytes) {
     throw CheckpointError("hinge steps do not match the element count");
   hingeCount_ = get<int>(in);
   cutting_ = getBool(in);
-  for (double* x : {&dtMin_, &dtNominal_, &energy0_, &energyScale_, &energyError_}) *x = get<double>(in);
+  for (double* x : {&dtMin_, &dtNominal_, &energy0_, &energyScale_, &energyError_})
+    *x = get<double>(in);
   stepsSinceCut_ = get<int>(in);
   cuts_ = get<int>(in);
   energyStarted_ = getBool(in);
@@ -519,7 +542,8 @@ void ProblemRun::saveRestart(const Macro& m) {
   // that the two runs stay identical to the last bit.
   analysis_->setLinearSolver(analysis_->linearSolverName());
   const State& s = analysis_->state();
-  log_ << "  SAVE   " << file.string() << ": step " << s.step << ", t = " << fmt("%.6e", s.t) << "\n";
+  log_ << "  SAVE   " << file.string() << ": step " << s.step << ", t = " << fmt("%.6e", s.t)
+       << "\n";
 }
 
 void ProblemRun::restoreRestart(const Macro& m) {
@@ -535,8 +559,8 @@ void ProblemRun::restoreRestart(const Macro& m) {
     throw AnalysisError(m.record.fieldLoc(0).str() + ": error: REST: " + e.what());
   }
   const State& s = analysis_->state();
-  log_ << "  REST   " << file.string() << ": step " << s.step << ", t = " << fmt("%.6e", s.t) << ", "
-       << model_.numNodes() << " nodes, " << model_.numElements() << " elements, "
+  log_ << "  REST   " << file.string() << ": step " << s.step << ", t = " << fmt("%.6e", s.t)
+       << ", " << model_.numNodes() << " nodes, " << model_.numElements() << " elements, "
        << analysis_->assembler().dofs().numEquations() << " equations\n";
 }
 
@@ -549,14 +573,14 @@ void ProblemRun::onCommit() {
     if (!info.active) continue;
     hingeStep_[e] = s.step;
     ++hingeCount_;
-    log_ << "  hinge  formed in element " << e + 1 << " at step " << s.step << " (t = "
-         << fmt("%.6e", s.t) << ", M = " << fmt("%.6e", info.moment) << ")\n";
+    log_ << "  hinge  formed in element " << e + 1 << " at step " << s.step
+         << " (t = " << fmt("%.6e", s.t) << ", M = " << fmt("%.6e", info.moment) << ")\n";
   }
   if (history_) history_->record(*analysis_);
   if (analysis_->integrator().dynamic()) {
     const Energy en = analysis_->energy();
-    const double scale = std::abs(en.kinetic) + std::abs(en.strain) + std::abs(en.contact) +
-                         std::abs(en.external);
+    const double scale =
+        std::abs(en.kinetic) + std::abs(en.strain) + std::abs(en.contact) + std::abs(en.external);
     if (!energyStarted_) {
       energy0_ = en.total();
       energyStarted_ = true;

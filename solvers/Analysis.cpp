@@ -20,6 +20,7 @@ bool Analysis::setLinearSolver(const std::string& name) {
   solver_ = std::move(s);
   solverName_ = name;
   analyzedVersion_ = -1;
+  factoredInStep_ = false;
   return true;
 }
 
@@ -70,13 +71,19 @@ void Analysis::topologyChanged() {
   const Eigen::Index nd = static_cast<Eigen::Index>(model_.numNodes()) * kNodeDofs;
   R_.setZero(neq);
   du_.setZero(neq);
+  rho_.setZero(neq);
+  drho_.setZero(neq);
   duF_.setZero(neq);
   F_.setZero(neq);
   stepInc_.setZero(neq);
   rNodal_.setZero(nd);
   rRest_n_.setZero(nd);
   dPrescribed_.setZero(nd);
+  coordScale_ = 0;
+  for (int n = 0; n < model_.numNodes(); ++n)
+    coordScale_ = std::max(coordScale_, model_.coord(n).cwiseAbs().maxCoeff());
   analyzedVersion_ = -1;
+  factoredInStep_ = false;
   tableOf_.assign(static_cast<size_t>(nd), 1);
   for (int n = 0; n < model_.numNodes(); ++n)
     for (int d = 0; d < kNodeDofs; ++d)
@@ -127,10 +134,19 @@ void Analysis::beginStep(double time, double pathScale) {
   state_.t = time;
   state_.prop = tableFactor(1, time);
   applyPrescribed();
+  predicted_ = false;
+  if (integrator_.dynamic() && !predictorSuspended_ && state_.vn.size() == state_.u.size()) {
+    const DofMap& dofs = assembler_.dofs();
+    const double h = time - state_.tn;
+    for (Eigen::Index i = 0; i < state_.u.size(); ++i)
+      if (dofs.eq(static_cast<int>(i)) >= 0) state_.u[i] = state_.un[i] + h * state_.vn[i];
+    predicted_ = true;
+  }
   updateRates();
   history_.clear();
   energy0_ = 0;
   converged_ = false;
+  factoredInStep_ = false;
   stepInc_.setZero();
   stepDlambda_ = 0;
   if (path_) {
@@ -140,10 +156,7 @@ void Analysis::beginStep(double time, double pathScale) {
   dirty_ = true;
 }
 
-Status Analysis::assembleAndFactor(bool symmetric) {
-  // The mid-point scheme's algorithmic internal force has an unsymmetric tangent:
-  // TANG then gets an unsymmetric factorization, as UTAN would.
-  symmetric = symmetric && integrator_.kind != TimeIntegrator::Kind::MidPoint;
+Status Analysis::assemble() {
   if (assembler_.patternVersion() != model_.topologyVersion() ||
       R_.size() != assembler_.dofs().numEquations())
     topologyChanged();
@@ -153,14 +166,24 @@ Status Analysis::assembleAndFactor(bool symmetric) {
   assembler_.toEquations(assembler_.nodalResidual(), R_);
   R_ = -R_;
   if (!R_.allFinite()) return Status::failure("non-finite residual");
+  return Status::success();
+}
+
+Status Analysis::factor(bool symmetric) {
+  // The mid-point scheme's algorithmic internal force has an unsymmetric tangent:
+  // TANG then gets an unsymmetric factorization, as UTAN would.
+  symmetric = symmetric && integrator_.kind != TimeIntegrator::Kind::MidPoint;
+  Status st;
   if (analyzedVersion_ != assembler_.patternVersion() || analyzedSymmetric_ != symmetric) {
     st = solver_->analyze(assembler_.tangent(), symmetric);
     if (!st) return st;
     analyzedVersion_ = assembler_.patternVersion();
     analyzedSymmetric_ = symmetric;
   }
+  factoredInStep_ = false;
   st = solver_->factorize(assembler_.tangent());
   if (!st) return Status::failure("singular tangent: " + st.why);
+  factoredInStep_ = true;
   return Status::success();
 }
 
@@ -354,6 +377,28 @@ Status Analysis::addPrescribedIncrement() {
 }
 
 Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
+  const Status st = newtonIteration(lineSearch, symmetric, info);
+  // From a predicted start the iteration fails, or its energy grows past the
+  // first value: the prediction lies outside the region where Newton's method
+  // converges (a fast rotation extrapolated linearly stretches the members).
+  // The step starts again from the committed state.
+  if (predicted_ &&
+      (!st || (!info.converged && info.iteration >= 2 && !(info.energy <= energy0_)))) {
+    for (auto& el : model_.elements()) el->revert();
+    state_.u = state_.un;
+    predictorSuspended_ = true;
+    beginStep(state_.t, 1.0);
+    predictorSuspended_ = false;
+    const int iteration = info.iteration;
+    info = IterationInfo{};
+    info.iteration = iteration;
+    info.restarted = true;
+    return Status::success();
+  }
+  return st;
+}
+
+Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo& info) {
   info = IterationInfo{};
   info.iteration = static_cast<int>(history_.size()) + 1;
   // The first iteration of a static step takes the prescribed displacement
@@ -363,16 +408,32 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
   // element at its yield surface would load plastically there while the
   // solution unloads it, and in a softening step Newton's method can then
   // cycle between sets of branches none of which holds the solution.
-  const bool predictor = info.iteration == 1 && !path_ && !integrator_.dynamic() && holdPrescribed();
-  Status st = assembleAndFactor(symmetric);
+  const bool predictor =
+      info.iteration == 1 && !path_ && !integrator_.dynamic() && holdPrescribed();
+  Status st = assemble();
+  info.residual = R_.norm();
+  // Close to the solution (the residual below 1e-6 of the step's first one)
+  // the tangent changes little from one iteration to the next: the Newton
+  // correction is first sought with the factors of the step's last tangent
+  // (solveWithEarlierFactors). When that succeeds and the correction passes the
+  // convergence test, the step ends without a new factorization.
+  bool reused = false;
+  if (st && !predictor && !path_ && factoredInStep_ && !history_.empty() &&
+      info.residual <= 1e-6 * history_.front().residual) {
+    st = solveWithEarlierFactors(reused);
+    if (!st) return st;
+    reused = reused && convergedAt(std::abs(du_.dot(R_)), info.iteration);
+  }
+  if (st && !reused) st = factor(symmetric);
   if (predictor) {
     if (st) st = addPrescribedIncrement();
     state_.u += dPrescribed_;
   }
   if (!st) return st;
-  info.residual = R_.norm();
-  st = solver_->solve(R_, du_);
-  if (!st) return Status::failure("linear solve failed: " + st.why);
+  if (!reused) {
+    st = solver_->solve(R_, du_);
+    if (!st) return Status::failure("linear solve failed: " + st.why);
+  }
   if (path_) {
     const StepRule rule = integrator_.rule(state_.dt);
     dofFactors(state_.t, rule.loadWeight(), lamn_);
@@ -452,17 +513,7 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
   dirty_ = true;
   ++totalIterations_;
 
-  // FEAP's energy test, and a residual already at round-off level (a step that
-  // changes nothing has no meaningful first energy to compare with).
-  const double roundoff = 1e-10 * assembler_.forceScale();
-  // Stagnation at round-off: the energy no longer falls (less than tenfold in an
-  // iteration) although it is already 1e-10 of the first one: the residual has
-  // reached the precision the model can be evaluated with.
-  const bool stagnated = !history_.empty() && info.iteration >= 3 &&
-                         info.energy <= 1e-10 * energy0_ &&
-                         info.energy >= 0.1 * history_.back().energy;
-  info.converged = energy0_ == 0 || info.energy <= tol_ * energy0_ || stagnated ||
-                   (!path_ && R_.size() > 0 && R_.cwiseAbs().maxCoeff() <= roundoff);
+  info.converged = convergedAt(info.energy, info.iteration);
   if (info.converged && !locating_ && !hinges_.empty()) {
     if (!integrator_.dynamic()) {
       // The demand of the converged state, then the event when a hinge passed Mu.
@@ -490,6 +541,49 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
   converged_ = info.converged;
   history_.push_back(info);
   return Status::success();
+}
+
+Status Analysis::solveWithEarlierFactors(bool& solved) {
+  // Iterative refinement of K du = R with the factors of an earlier K as the
+  // preconditioner: the linear residual shrinks by |K_old^-1 (K - K_old)| per
+  // sweep. Accepted at 1e-6 of R within three sweeps: the correction is then
+  // Newton's to far below the quadratic remainder it leaves, so converged
+  // states (and the energy balance of the conserving scheme) are those of
+  // Newton's method.
+  solved = false;
+  const SparseMatrix& k = assembler_.tangent();
+  const double target = 1e-6 * R_.norm();
+  Status st = solver_->solve(R_, du_);
+  for (int sweep = 0; st && sweep < 3; ++sweep) {
+    rho_.noalias() = k * du_;
+    rho_ = R_ - rho_;
+    if (rho_.norm() <= target) {
+      solved = true;
+      break;
+    }
+    st = solver_->solve(rho_, drho_);
+    du_ += drho_;
+  }
+  if (!st) return Status::failure("linear solve failed: " + st.why);
+  return Status::success();
+}
+
+bool Analysis::convergedAt(double energy, int iteration) const {
+  // FEAP's energy test, and a residual already at round-off level (a step that
+  // changes nothing has no meaningful first energy to compare with).
+  const double e0 = iteration == 1 ? energy : energy0_;
+  const double roundoff = 1e-10 * assembler_.forceScale();
+  // Stagnation at round-off: the energy no longer falls (less than tenfold in an
+  // iteration) although it is already 1e-10 of the first one: the residual has
+  // reached the precision the model can be evaluated with.
+  const bool stagnated = !history_.empty() && iteration >= 3 && energy <= 1e-10 * e0 &&
+                         energy >= 0.1 * history_.back().energy;
+  // A correction below the resolution of the nodal positions (a free body in
+  // uniform motion predicted exactly: its residual is round-off of zero forces).
+  const double positions = coordScale_ + (state_.u.size() ? state_.u.cwiseAbs().maxCoeff() : 0.0);
+  const bool unresolvable = du_.size() > 0 && du_.cwiseAbs().maxCoeff() <= 1e-15 * positions;
+  return e0 == 0 || energy <= tol_ * e0 || stagnated || unresolvable ||
+         (!path_ && R_.size() > 0 && R_.cwiseAbs().maxCoeff() <= roundoff);
 }
 
 double Analysis::largestResidual(int& node, int& dof) const {
@@ -529,7 +623,7 @@ Status Analysis::solveOnly(IterationInfo& info) {
   if (info.iteration == 1) energy0_ = info.energy;
   applyIncrement(du_, 1.0);
   dirty_ = true;
-  info.converged = energy0_ == 0 || info.energy <= tol_ * energy0_;
+  info.converged = convergedAt(info.energy, info.iteration);
   converged_ = info.converged;
   history_.push_back(info);
   return Status::success();
@@ -541,6 +635,7 @@ void Analysis::back() {
   history_.clear();
   energy0_ = 0;
   converged_ = false;
+  factoredInStep_ = false;
   stepInc_.setZero();
   stepDlambda_ = 0;
   if (path_) path_->beginStep();
@@ -624,7 +719,8 @@ void Analysis::writeState(std::ostream& out) const {
   putBool(out, path_.has_value());
   if (path_) path_->write(out);
   putTag(out, "STAT");
-  for (const Eigen::VectorXd* x : {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an})
+  for (const Eigen::VectorXd* x :
+       {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an})
     putVector(out, *x);
   for (double x : {state_.t, state_.tn, state_.dt, state_.prop, state_.propn, state_.arcLambda,
                    state_.arcLambdan})
@@ -636,6 +732,7 @@ void Analysis::writeState(std::ostream& out) const {
   putVector(out, stepInc_);
   putBool(out, converged_);
   putBool(out, dirty_);
+  putBool(out, predicted_);
   put(out, totalIterations_);
   putCount(out, history_.size());
   for (const IterationInfo& i : history_) {
@@ -657,7 +754,8 @@ void Analysis::readState(std::istream& in) {
       integrator_.kind != TimeIntegrator::Kind::Newmark &&
       integrator_.kind != TimeIntegrator::Kind::MidPoint)
     throw CheckpointError("unknown time integrator");
-  for (double* x : {&integrator_.beta, &integrator_.gamma, &integrator_.alpha, &integrator_.betaV, &tol_})
+  for (double* x :
+       {&integrator_.beta, &integrator_.gamma, &integrator_.alpha, &integrator_.betaV, &tol_})
     *x = get<double>(in);
   tables_.assign(getCount(in), std::nullopt);
   for (auto& t : tables_)
@@ -672,17 +770,20 @@ void Analysis::readState(std::istream& in) {
     *x = get<double>(in);
   state_.step = get<int>(in);
   const Eigen::Index nd = static_cast<Eigen::Index>(model_.numNodes()) * kNodeDofs;
-  for (const Eigen::VectorXd* x : {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an})
+  for (const Eigen::VectorXd* x :
+       {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an})
     if (x->size() != nd) throw CheckpointError("state vectors do not match the model's node count");
   topologyChanged();
   expectTag(in, "BOOK");
-  for (double* x : {&externalWork_, &committedDemand_, &stepDlambda_, &energy0_}) *x = get<double>(in);
+  for (double* x : {&externalWork_, &committedDemand_, &stepDlambda_, &energy0_})
+    *x = get<double>(in);
   rRest_n_ = getVector(in);
   stepInc_ = getVector(in);
   if (rRest_n_.size() != nd || stepInc_.size() != assembler_.dofs().numEquations())
     throw CheckpointError("analysis vectors do not match the model");
   converged_ = getBool(in);
   dirty_ = getBool(in);
+  predicted_ = getBool(in);
   totalIterations_ = get<int>(in);
   history_.resize(getCount(in));
   for (IterationInfo& i : history_) {

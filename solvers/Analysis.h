@@ -37,6 +37,7 @@ struct IterationInfo {
   double residual = 0;  // ||R|| before the update
   bool converged = false;
   int hingeActivated = -1;  // element index of a hinge activated at this iteration
+  bool restarted = false;   // the step was started again from the committed state
 };
 
 class Analysis {
@@ -65,6 +66,11 @@ class Analysis {
   // TIME: commit the converged step and advance the time by dt.
   Status advance();
   // TANG,,1 (UTAN when !symmetric): one Newton iteration with update.
+  // Dynamic steps start from the constant-velocity prediction u_n + dt v_n
+  // (free dofs; prescribed ones take their values): the inertia term vanishes
+  // there and a smooth motion leaves a residual of order dt^2, not dt. When an
+  // iteration from the prediction fails or its energy grows past the first
+  // one, the step starts again from u_n (info.restarted, not converged).
   Status iterate(bool lineSearch, bool symmetric, IterationInfo& info);
   // FORM: residual at the current state; returns its norm over the free dofs.
   Status formResidual(double& norm);
@@ -72,6 +78,7 @@ class Analysis {
   Status solveOnly(IterationInfo& info);
   // BACK: return to the last committed state (optionally with a new dt).
   void back();
+
   // Commit the trial state (elements, history, energy bookkeeping); idempotent.
   Status commit();
 
@@ -92,7 +99,10 @@ class Analysis {
   bool stepConverged() const { return converged_; }
 
   // Form and factor the tangent at the current state (TANG without update).
-  Status formTangent(bool symmetric) { return assembleAndFactor(symmetric); }
+  Status formTangent(bool symmetric) {
+    const Status st = assemble();
+    return st ? factor(symmetric) : st;
+  }
 
   // Called for every hinge activated in a Newton iteration: element index (0-based).
   std::function<void(int element, const HingeInfo&)> onHingeActivated;
@@ -112,12 +122,21 @@ class Analysis {
 
  private:
   void applyPrescribed();
+  // One Newton iteration (iterate() without the restart of a predicted step).
+  Status newtonIteration(bool lineSearch, bool symmetric, IterationInfo& info);
   // Start a step (or part of one) at `time` from the committed state: load
   // factors, prescribed values, rates, a fresh iteration history; the path
   // following takes pathScale of its nominal increment.
   void beginStep(double time, double pathScale);
   void updateRates();
-  Status assembleAndFactor(bool symmetric);
+  // Residual and tangent at the current state; factorization of the tangent.
+  Status assemble();
+  Status factor(bool symmetric);
+  // du_ for the residual R_ and the tangent just assembled, with the factors of
+  // an earlier tangent of the step; `solved` false when they are too far off.
+  Status solveWithEarlierFactors(bool& solved);
+  // The convergence tests for an iteration whose correction has this energy |du.R|.
+  bool convergedAt(double energy, int iteration) const;
   void applyIncrement(const Eigen::VectorXd& du, double scale);
   // Tangent predictor of a static step with prescribed displacements: moves the
   // restrained dofs back to their committed values (true when any had moved,
@@ -152,15 +171,17 @@ class Analysis {
   bool analyzedSymmetric_ = true;
   TimeIntegrator integrator_;
   std::vector<std::optional<ProportionalLoad>> tables_;  // index: table number
-  std::vector<int> tableOf_;                            // per node dof
-  Eigen::VectorXd lam_, lamn_;                          // work vectors of dofFactors
+  std::vector<int> tableOf_;                             // per node dof
+  Eigen::VectorXd lam_, lamn_;                           // work vectors of dofFactors
   std::optional<PathFollowing> path_;
   double tol_ = 1e-16;
 
   // Work vectors (sized per topology: nothing allocated inside the Newton loop).
   Eigen::VectorXd R_, du_, duF_, F_, stepInc_, rNodal_, rRest_n_;
+  Eigen::VectorXd rho_, drho_;   // linear residual and its correction (solveWithEarlierFactors)
   Eigen::VectorXd dPrescribed_;  // per node dof: increments of the prescribed values in the step
   double energy0_ = 0;
+  double coordScale_ = 0;  // largest nodal coordinate magnitude
   std::vector<IterationInfo> history_;
   int totalIterations_ = 0;
   bool converged_ = false;
@@ -169,8 +190,11 @@ class Analysis {
   double externalWork_ = 0;
   std::vector<std::pair<int, HingeCarrier*>> hinges_;
   int hingesVersion_ = -1;
-  double committedDemand_ = 0;  // max hinge demand at the last commit
-  bool locating_ = false;       // inside locateHingeEvent: no nested events
+  double committedDemand_ = 0;       // max hinge demand at the last commit
+  bool locating_ = false;            // inside locateHingeEvent: no nested events
+  bool predictorSuspended_ = false;  // beginStep() without the prediction
+  bool predicted_ = false;           // the current step started from the prediction
+  bool factoredInStep_ = false;      // the solver holds factors of a tangent of this step
 };
 
 }  // namespace c2d
