@@ -3,6 +3,7 @@
 #include <sys/ioctl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -132,15 +133,16 @@ Flow ProblemRun::execList(const std::vector<Macro>& list, bool topLevel) {
 Flow ProblemRun::runLoop(const Macro& m) {
   const int n = m.has(0) ? m.numbers[0].evalInt(params_, "loop count") : 1;
   const bool newton = m.newtonLoop();
-  diverged_ = false;
+  diverged_ = stalled_ = false;
   for (int i = 0; i < n; ++i) {
     const Flow f = execList(m.body);
     if (f == Flow::Stop) return f;
     if (f == Flow::ExitLoop || diverged_) break;
   }
   if (newton && !analysis_->stepConverged()) {
-    const std::string why =
-        diverged_ ? "diverged" : "did not converge in " + std::to_string(n) + " iterations";
+    const std::string why = diverged_  ? "diverged"
+                            : stalled_ ? "stalled (its energy repeats)"
+                                       : "did not converge in " + std::to_string(n) + " iterations";
     return retryWithCut(m, why);
   }
   return Flow::Next;
@@ -185,7 +187,7 @@ Flow ProblemRun::retryWithCut(const Macro& loop, const std::string& why) {
     const Status st = analysis_->advance();
     if (!st) throw AnalysisError(loop.record.fieldLoc(0).str() + ": error: " + st.why);
     const int n = loop.has(0) ? loop.numbers[0].evalInt(params_, "loop count") : 1;
-    diverged_ = false;
+    diverged_ = stalled_ = false;
     for (int i = 0; i < n; ++i) {
       const Flow f = execList(loop.body);
       if (f == Flow::Stop) return f;
@@ -233,6 +235,17 @@ Flow ProblemRun::newtonIteration(const Macro& m, bool update, bool lineSearch, b
   const auto& h = analysis_->stepHistory();
   if (h.size() > 4 && info.energy > 1e30 * h.front().energy) {
     diverged_ = true;
+    return Flow::ExitLoop;
+  }
+  // Stalled: the energy repeats with period one or two (a fixed point or a
+  // two-cycle of Newton's method, as on a kinked law): no later iteration of
+  // the loop converges, so the step is cut (or reported) now.
+  const std::size_t n = h.size();
+  auto same = [&](std::size_t a, std::size_t b) {
+    return std::abs(h[a].energy - h[b].energy) <= 1e-6 * std::max(h[a].energy, h[b].energy);
+  };
+  if (!info.converged && n >= 6 && same(n - 1, n - 3) && same(n - 2, n - 4) && same(n - 3, n - 5)) {
+    stalled_ = true;
     return Flow::ExitLoop;
   }
   return info.converged ? Flow::ExitLoop : Flow::Next;

@@ -21,9 +21,9 @@ namespace c2d {
 
 struct RunOptions {
   std::filesystem::path outDir = ".";
-  std::string stem = "run";   // base name of the output files of this run
-  std::string label;          // what tells this run apart (sweep values) in titles and legends
-  bool progress = false;      // a single updating progress line on stderr
+  std::string stem = "run";  // base name of the output files of this run
+  std::string label;         // what tells this run apart (sweep values) in titles and legends
+  bool progress = false;     // a single updating progress line on stderr
   std::string solver = "auto";
 };
 
@@ -109,6 +109,7 @@ class ProblemRun {
   int stepsSinceCut_ = 0;
   int cuts_ = 0;
   bool diverged_ = false;
+  bool stalled_ = false;  // the Newton loop left because its energy repeats
 
   std::vector<int> hingeStep_;  // step at which each element's hinge formed
   int hingeCount_ = 0;

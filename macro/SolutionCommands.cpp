@@ -40,9 +40,13 @@ CommandSpec solution(std::string name, std::string doc, std::vector<FieldSpec> f
 class LoopCommand final : public SolutionCommand {
  public:
   CommandSpec spec() const override {
-    return solution("LOOP", "Repeat the commands up to the matching NEXT n times. A converged "
-                    "Newton iteration (TANG,,1 / UTAN,,1 / SOLV) leaves the innermost loop.",
-                    {word("label", "optional label matched by NEXT"), num("n", "repetitions", "1")});
+    return solution(
+        "LOOP",
+        "Repeat the commands up to the matching NEXT n times. A converged "
+        "Newton iteration (TANG,,1 / UTAN,,1 / SOLV) leaves the innermost loop; so "
+        "does one that diverges or stalls (its energy repeating with period one or "
+        "two), which then counts as unconverged.",
+        {word("label", "optional label matched by NEXT"), num("n", "repetitions", "1")});
   }
   void bind(Macro& m, BindContext& ctx) const override {
     if (m.has(0) && m.numbers[0].evalInt(ctx.params(), "loop count") < 0)
@@ -107,7 +111,8 @@ class MeshCommandMacro final : public SolutionCommand {
                     "Re-enter mesh input (loads, boundary conditions, materials, joints, "
                     "contact, gravity): mesh commands read after END up to an END record, or "
                     "from the file named.",
-                    {word("file", "optional file holding the mesh commands")}, "mesh commands, END");
+                    {word("file", "optional file holding the mesh commands")},
+                    "mesh commands, END");
   }
   void bind(Macro& m, BindContext& ctx) const override {
     if (!m.optionText.empty()) return;
@@ -171,7 +176,8 @@ class SolvCommand final : public SolutionCommand {
 class TolCommand final : public SolutionCommand {
  public:
   CommandSpec spec() const override {
-    return solution("TOL", "Energy convergence tolerance: |du.R| <= tol times the first "
+    return solution("TOL",
+                    "Energy convergence tolerance: |du.R| <= tol times the first "
                     "iteration's value of the step (FEAP's test).",
                     {word("-", ""), num("tol", "tolerance", "1e-16")});
   }
@@ -201,14 +207,15 @@ class DtCommand final : public SolutionCommand {
 class TimeCommand final : public SolutionCommand {
  public:
   CommandSpec spec() const override {
-    return solution("TIME", "Commit the converged step and advance the time by dt; with tmax the "
+    return solution("TIME",
+                    "Commit the converged step and advance the time by dt; with tmax the "
                     "enclosing loop ends once the time has reached tmax.",
                     {word("-", ""), num("tmax", "end time (optional)")});
   }
   Flow run(const Macro& m, ProblemRun& r) const override {
     const bool hasMax = m.has(0) && !m.record.text(2).empty();
-    return r.advanceTime(m, hasMax ? std::optional<double>(m.numbers[0].eval(r.params()))
-                                   : std::nullopt);
+    return r.advanceTime(
+        m, hasMax ? std::optional<double>(m.numbers[0].eval(r.params())) : std::nullopt);
   }
 };
 
@@ -246,10 +253,12 @@ class PropCommand final : public SolutionCommand {
     if (t == 1) {
       ctx.skipBlank();
     } else if (t == 2) {
-      for (const Record& rec : ctx.takeSet(m.record, "proportional load table")) m.data.push_back(rec);
+      for (const Record& rec : ctx.takeSet(m.record, "proportional load table"))
+        m.data.push_back(rec);
     } else {
-      throw DeckError(first[0].loc, "unknown proportional load type " + std::to_string(t) +
-                                        " (1: formula, 2: table, blank record: ramp)",
+      throw DeckError(first[0].loc,
+                      "unknown proportional load type " + std::to_string(t) +
+                          " (1: formula, 2: table, blank record: ramp)",
                       first.excerpt(first[0].loc));
     }
   }
@@ -281,7 +290,8 @@ class DynaCommand final : public SolutionCommand {
     if (k == "ener")
       for (std::size_t i = 0; i < 2 && i < m.numbers.size(); ++i) {
         const double v = m.numbers[i].eval(ctx.params());
-        if (v < 0 || v > 0.5) fail(m, 2 + i, "alpha and beta of the mid-point scheme lie in [0, 1/2]");
+        if (v < 0 || v > 0.5)
+          fail(m, 2 + i, "alpha and beta of the mid-point scheme lie in [0, 1/2]");
       }
   }
   Flow run(const Macro& m, ProblemRun& r) const override {
@@ -308,8 +318,9 @@ class AutoCommand final : public SolutionCommand {
  public:
   CommandSpec spec() const override {
     return solution("AUTOmatic",
-                    "Automatic step cutting: AUTO,CUT,dtmin: a Newton loop that ends unconverged "
-                    "(or a singular tangent) returns to the last committed step, halves dt and "
+                    "Automatic step cutting: AUTO,CUT,dtmin: a Newton loop that ends unconverged, "
+                    "diverges or stalls (or a singular tangent) returns to the last committed "
+                    "step, halves dt and "
                     "retries, down to dtmin; dt grows back after converged steps. AUTO,OFF.",
                     {word("mode", "CUT or OFF"), num("dtmin", "smallest step", "dt/1024")});
   }
@@ -322,8 +333,8 @@ class AutoCommand final : public SolutionCommand {
     if (m.option.rfind("off", 0) == 0) {
       r.setStepCutting(false, 0);
     } else {
-      r.setStepCutting(true, m.has(0) && !m.record.text(2).empty() ? m.numbers[0].eval(r.params())
-                                                                    : 0.0);
+      r.setStepCutting(true,
+                       m.has(0) && !m.record.text(2).empty() ? m.numbers[0].eval(r.params()) : 0.0);
     }
     return Flow::Next;
   }
@@ -337,8 +348,9 @@ class ArclCommand final : public SolutionCommand {
                     "'node dof increment'; ARCL,,1 (or 2): cylindrical arc length, data "
                     "'dlambda0' (load increment of the first step, which sets the arc length); "
                     "ARCL,OFF.",
-                    {word("option", "OFF to switch off"), num("kfl", "1/2 arc length, 4/5 "
-                                                          "displacement control")},
+                    {word("option", "OFF to switch off"), num("kfl",
+                                                              "1/2 arc length, 4/5 "
+                                                              "displacement control")},
                     "node dof increment | dlambda0");
   }
   void bind(Macro& m, BindContext& ctx) const override {
@@ -369,7 +381,8 @@ class ArclCommand final : public SolutionCommand {
 
 class PrintNodalCommand final : public SolutionCommand {
  public:
-  PrintNodalCommand(std::string name, std::string doc) : name_(std::move(name)), doc_(std::move(doc)) {}
+  PrintNodalCommand(std::string name, std::string doc)
+      : name_(std::move(name)), doc_(std::move(doc)) {}
   CommandSpec spec() const override {
     return solution(name_, doc_ + " Nodes n1 to n2 step inc; ,ALL or no numbers: every node.",
                     {word("option", "ALL"), num("n1", "first node"), num("n2", "last node", "n1"),
@@ -426,8 +439,7 @@ class TplotCommand final : public SolutionCommand {
                     "Time histories written every inc steps to <stem>_tplot.csv; records after "
                     "END up to a blank: disp,n,d  velo,n,d  acce,n,d  reac,n,d  stre,e,c "
                     "(c = 1 N, 2 V, 3 M)  ener  arcl.",
-                    {word("-", ""), num("inc", "output every inc steps", "1")},
-                    "kind,n,d");
+                    {word("-", ""), num("inc", "output every inc steps", "1")}, "kind,n,d");
   }
   void bind(Macro& m, BindContext& ctx) const override {
     SolutionCommand::bind(m, ctx);
@@ -436,9 +448,10 @@ class TplotCommand final : public SolutionCommand {
       const std::string k = commandKey(rec.text(0));
       if (k == "ener" || k == "arcl") continue;
       if (k != "disp" && k != "velo" && k != "acce" && k != "reac" && k != "stre")
-        throw DeckError(rec[0].loc, "unknown TPLOt quantity '" + rec.text(0) +
-                                        "' (disp velo acce reac stre ener arcl)",
-                        rec.excerpt(rec[0].loc));
+        throw DeckError(
+            rec[0].loc,
+            "unknown TPLOt quantity '" + rec.text(0) + "' (disp velo acce reac stre ener arcl)",
+            rec.excerpt(rec[0].loc));
       if (rec.size() < 3)
         throw DeckError(rec.fieldLoc(rec.size()), "TPLOt record needs 'kind,number,component'",
                         rec.excerpt(rec.fieldLoc(rec.size())));
@@ -504,9 +517,9 @@ std::vector<Record> BindContext::takeSet(const Record& who, const char* what) {
   std::vector<Record> out;
   for (;;) {
     if (atEnd())
-      throw DeckError(who.loc, std::string("the ") + what +
-                                   " after the BATCh END must end with a blank record",
-                      who.lineText());
+      throw DeckError(
+          who.loc, std::string("the ") + what + " after the BATCh END must end with a blank record",
+          who.lineText());
     const Record& rec = data_[pos_++];
     if (rec.blank()) break;
     out.push_back(rec);
