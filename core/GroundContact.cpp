@@ -39,7 +39,7 @@ ContactForce groundContact(const Ground& g, double yn, double y, const StepRule&
   // method then cycles between the two sides). Its work on the step,
   // -alpha k (<p1> - <p0>) dp, is never positive.
   const double alpha = g.alpha >= 0 ? g.alpha : rule.alpha;
-  if (alpha > 0 && (p1 > 0 || p0 > 0)) {
+  if (alpha > 0) {
     out.force += alpha * g.k * (std::max(p1, 0.0) - std::max(p0, 0.0));
     if (p1 > 0) out.tangent += alpha * g.k;
   }

@@ -73,7 +73,8 @@ std::vector<RunPlan> planRuns(const std::vector<RunInfo>& runs, const std::strin
     if (values.size() > 1 || (missing && !values.empty())) differing.push_back(name);
   }
   for (std::size_t k = 0; k < n; ++k) {
-    plans[k].label = !runs[k].sweep.empty() ? sweepLabel(runs[k].sweep) : paramLabel(differing, runs[k]);
+    plans[k].label =
+        !runs[k].sweep.empty() ? sweepLabel(runs[k].sweep) : paramLabel(differing, runs[k]);
     if (plans[k].label.empty() && n > 1) plans[k].label = "run " + std::to_string(k + 1);
   }
   return plans;
@@ -100,8 +101,12 @@ class Walker {
  public:
   Walker(const SolutionCommands& commands, const DeckOptions& options, std::ostream& log,
          std::ostream* console, std::vector<RunPlan> plans)
-      : commands_(commands), options_(options), log_(log), console_(console),
-        execute_(!plans.empty()), plans_(std::move(plans)) {}
+      : commands_(commands),
+        options_(options),
+        log_(log),
+        console_(console),
+        execute_(!plans.empty()),
+        plans_(std::move(plans)) {}
 
   void walk(const std::vector<TopItem>& items, Parameters& params) {
     for (const TopItem& item : items) {
@@ -159,6 +164,7 @@ class Walker {
     const RunSummary s = run.summary();
     total_.steps += s.steps;
     total_.iterations += s.iterations;
+    total_.factorizations += s.factorizations;
     total_.cuts += s.cuts;
     total_.hinges += s.hinges;
     total_.energyError = std::max(total_.energyError, s.energyError);
@@ -198,9 +204,11 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     check.walk(deck.items, checkParams);
     const std::vector<RunPlan> plans = planRuns(check.infos(), stem);
 
-    const std::filesystem::path dir = options.outDir.empty() ? std::filesystem::path(".") : options.outDir;
+    const std::filesystem::path dir =
+        options.outDir.empty() ? std::filesystem::path(".") : options.outDir;
     std::filesystem::create_directories(dir);
-    const std::filesystem::path logPath = dir / (options.logName.empty() ? stem + ".out" : options.logName);
+    const std::filesystem::path logPath =
+        dir / (options.logName.empty() ? stem + ".out" : options.logName);
     std::ofstream log(logPath);
     if (!log) throw std::runtime_error("cannot write the log " + logPath.string());
     log << "  collapse2d  " << path << "\n";

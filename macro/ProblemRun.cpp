@@ -111,6 +111,7 @@ RunSummary ProblemRun::summary() const {
   if (!analysis_) return s;
   s.steps = analysis_->state().step;
   s.iterations = analysis_->totalIterations();
+  s.factorizations = analysis_->totalFactorizations();
   s.cuts = cuts_;
   s.hinges = hingeCount_;
   s.energyError = energyError_;

@@ -28,7 +28,7 @@ struct RunOptions {
 };
 
 struct RunSummary {
-  int steps = 0, iterations = 0, cuts = 0, hinges = 0;
+  int steps = 0, iterations = 0, factorizations = 0, cuts = 0, hinges = 0;
   double energyError = 0;  // max |total energy - initial| / max energy scale (dynamic runs)
   double seconds = 0;
   bool dynamic = false;  // some step was dynamic (the energy error means something)

@@ -64,6 +64,17 @@ int deckOption(int argc, char** argv, int& i, c2d::DeckOptions& options) {
   return 1;
 }
 
+// Any other word of both modes: a deck, or an unknown option (reported: false).
+bool deckArgument(const std::string& a, const char* program, std::vector<std::string>& decks) {
+  if (!a.empty() && a[0] == '-') {
+    std::cerr << program << ": unknown option '" << a << "'\n";
+    usage(std::cerr);
+    return false;
+  }
+  decks.push_back(a);
+  return true;
+}
+
 // collapse2d run [options] [-j N] DECK...
 int batchMain(int argc, char** argv, const c2d::SolutionCommands& commands) {
   c2d::BatchOptions options;
@@ -78,14 +89,11 @@ int batchMain(int argc, char** argv, const c2d::SolutionCommands& commands) {
         std::cerr << "collapse2d run: -j needs a positive number\n";
         return 64;
       }
-    } else if (a.rfind("-j", 0) == 0 && a.size() > 2 && std::isdigit(static_cast<unsigned char>(a[2]))) {
+    } else if (a.rfind("-j", 0) == 0 && a.size() > 2 &&
+               std::isdigit(static_cast<unsigned char>(a[2]))) {
       options.jobs = std::max(1, std::atoi(a.c_str() + 2));
-    } else if (!a.empty() && a[0] == '-') {
-      std::cerr << "collapse2d run: unknown option '" << a << "'\n";
-      usage(std::cerr);
+    } else if (!deckArgument(a, "collapse2d run", decks)) {
       return 64;
-    } else {
-      decks.push_back(a);
     }
   }
   if (decks.empty()) {
@@ -125,13 +133,10 @@ int main(int argc, char** argv) {
       const std::string in = a.substr(2);
       decks.push_back(in);
       const std::string base = std::filesystem::path(in).filename().string();
-      if (!base.empty() && (base[0] == 'I' || base[0] == 'i')) options.logName = 'O' + base.substr(1);
-    } else if (!a.empty() && a[0] == '-') {
-      std::cerr << "collapse2d: unknown option '" << a << "'\n";
-      usage(std::cerr);
+      if (!base.empty() && (base[0] == 'I' || base[0] == 'i'))
+        options.logName = 'O' + base.substr(1);
+    } else if (!deckArgument(a, "collapse2d", decks)) {
       return 64;
-    } else {
-      decks.push_back(a);
     }
   }
   if (decks.empty()) {

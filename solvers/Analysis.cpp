@@ -20,7 +20,6 @@ bool Analysis::setLinearSolver(const std::string& name) {
   solver_ = std::move(s);
   solverName_ = name;
   analyzedVersion_ = -1;
-  factoredInStep_ = false;
   return true;
 }
 
@@ -83,7 +82,6 @@ void Analysis::topologyChanged() {
   for (int n = 0; n < model_.numNodes(); ++n)
     coordScale_ = std::max(coordScale_, model_.coord(n).cwiseAbs().maxCoeff());
   analyzedVersion_ = -1;
-  factoredInStep_ = false;
   tableOf_.assign(static_cast<size_t>(nd), 1);
   for (int n = 0; n < model_.numNodes(); ++n)
     for (int d = 0; d < kNodeDofs; ++d)
@@ -126,27 +124,25 @@ void Analysis::updateRates() {
 Status Analysis::advance() {
   Status st = commit();
   if (!st) return st;
-  beginStep(state_.tn + state_.dt, 1.0);
+  beginStep(state_.tn + state_.dt, 1.0, true);
   return Status::success();
 }
 
-void Analysis::beginStep(double time, double pathScale) {
+void Analysis::beginStep(double time, double pathScale, bool predict) {
   state_.t = time;
   state_.prop = tableFactor(1, time);
   applyPrescribed();
-  predicted_ = false;
-  if (integrator_.dynamic() && !predictorSuspended_ && state_.vn.size() == state_.u.size()) {
+  predicted_ = predict && integrator_.dynamic() && state_.vn.size() == state_.u.size();
+  if (predicted_) {
     const DofMap& dofs = assembler_.dofs();
     const double h = time - state_.tn;
     for (Eigen::Index i = 0; i < state_.u.size(); ++i)
       if (dofs.eq(static_cast<int>(i)) >= 0) state_.u[i] = state_.un[i] + h * state_.vn[i];
-    predicted_ = true;
   }
   updateRates();
   history_.clear();
   energy0_ = 0;
   converged_ = false;
-  factoredInStep_ = false;
   stepInc_.setZero();
   stepDlambda_ = 0;
   if (path_) {
@@ -180,10 +176,9 @@ Status Analysis::factor(bool symmetric) {
     analyzedVersion_ = assembler_.patternVersion();
     analyzedSymmetric_ = symmetric;
   }
-  factoredInStep_ = false;
   st = solver_->factorize(assembler_.tangent());
   if (!st) return Status::failure("singular tangent: " + st.why);
-  factoredInStep_ = true;
+  ++totalFactorizations_;
   return Status::success();
 }
 
@@ -221,7 +216,7 @@ Status Analysis::solveFraction(double fraction, double tEnd, bool lineSearch) {
   state_.v = state_.vn;
   state_.a = state_.an;
   state_.arcLambda = state_.arcLambdan;
-  beginStep(state_.tn + fraction * (tEnd - state_.tn), fraction);
+  beginStep(state_.tn + fraction * (tEnd - state_.tn), fraction, false);
   IterationInfo it;
   for (int k = 0; k < 60; ++k) {
     const Status st = iterate(lineSearch, true, it);
@@ -296,7 +291,7 @@ Status Analysis::locateHingeEvent(IterationInfo& info, bool lineSearch) {
   locating_ = false;
   if (!st) return st;
   // The rest of the step.
-  beginStep(tEnd, 1.0 - s);
+  beginStep(tEnd, 1.0 - s, false);
   info.converged = false;
   return Status::success();
 }
@@ -386,9 +381,7 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
       (!st || (!info.converged && info.iteration >= 2 && !(info.energy <= energy0_)))) {
     for (auto& el : model_.elements()) el->revert();
     state_.u = state_.un;
-    predictorSuspended_ = true;
-    beginStep(state_.t, 1.0);
-    predictorSuspended_ = false;
+    beginStep(state_.t, 1.0, false);
     const int iteration = info.iteration;
     info = IterationInfo{};
     info.iteration = iteration;
@@ -418,12 +411,10 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
   // (solveWithEarlierFactors). When that succeeds and the correction passes the
   // convergence test, the step ends without a new factorization.
   bool reused = false;
-  if (st && !predictor && !path_ && factoredInStep_ && !history_.empty() &&
-      info.residual <= 1e-6 * history_.front().residual) {
-    st = solveWithEarlierFactors(reused);
-    if (!st) return st;
-    reused = reused && convergedAt(std::abs(du_.dot(R_)), info.iteration);
-  }
+  if (st && !predictor && !path_ && !history_.empty() &&
+      analyzedVersion_ == assembler_.patternVersion() &&
+      info.residual <= 1e-6 * history_.front().residual)
+    reused = solveWithEarlierFactors() && convergedAt(std::abs(du_.dot(R_)), info.iteration);
   if (st && !reused) st = factor(symmetric);
   if (predictor) {
     if (st) st = addPrescribedIncrement();
@@ -543,29 +534,25 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
   return Status::success();
 }
 
-Status Analysis::solveWithEarlierFactors(bool& solved) {
+bool Analysis::solveWithEarlierFactors() {
   // Iterative refinement of K du = R with the factors of an earlier K as the
   // preconditioner: the linear residual shrinks by |K_old^-1 (K - K_old)| per
   // sweep. Accepted at 1e-6 of R within three sweeps: the correction is then
   // Newton's to far below the quadratic remainder it leaves, so converged
   // states (and the energy balance of the conserving scheme) are those of
-  // Newton's method.
-  solved = false;
+  // Newton's method. A solver without valid factors (the last factorization
+  // failed) fails the solve: the caller factors afresh.
   const SparseMatrix& k = assembler_.tangent();
   const double target = 1e-6 * R_.norm();
-  Status st = solver_->solve(R_, du_);
-  for (int sweep = 0; st && sweep < 3; ++sweep) {
+  if (!solver_->solve(R_, du_)) return false;
+  for (int sweep = 0; sweep < 3; ++sweep) {
     rho_.noalias() = k * du_;
     rho_ = R_ - rho_;
-    if (rho_.norm() <= target) {
-      solved = true;
-      break;
-    }
-    st = solver_->solve(rho_, drho_);
+    if (rho_.norm() <= target) return true;
+    if (!solver_->solve(rho_, drho_)) return false;
     du_ += drho_;
   }
-  if (!st) return Status::failure("linear solve failed: " + st.why);
-  return Status::success();
+  return false;
 }
 
 bool Analysis::convergedAt(double energy, int iteration) const {
@@ -635,7 +622,6 @@ void Analysis::back() {
   history_.clear();
   energy0_ = 0;
   converged_ = false;
-  factoredInStep_ = false;
   stepInc_.setZero();
   stepDlambda_ = 0;
   if (path_) path_->beginStep();
@@ -734,6 +720,7 @@ void Analysis::writeState(std::ostream& out) const {
   putBool(out, dirty_);
   putBool(out, predicted_);
   put(out, totalIterations_);
+  put(out, totalFactorizations_);
   putCount(out, history_.size());
   for (const IterationInfo& i : history_) {
     put(out, i.iteration);
@@ -785,6 +772,7 @@ void Analysis::readState(std::istream& in) {
   dirty_ = getBool(in);
   predicted_ = getBool(in);
   totalIterations_ = get<int>(in);
+  totalFactorizations_ = get<int>(in);
   history_.resize(getCount(in));
   for (IterationInfo& i : history_) {
     i.iteration = get<int>(in);

@@ -96,6 +96,7 @@ class Analysis {
   // Node and dof (0-based) of the largest residual component of the last iteration.
   double largestResidual(int& node, int& dof) const;
   int totalIterations() const { return totalIterations_; }
+  int totalFactorizations() const { return totalFactorizations_; }
   bool stepConverged() const { return converged_; }
 
   // Form and factor the tangent at the current state (TANG without update).
@@ -126,15 +127,16 @@ class Analysis {
   Status newtonIteration(bool lineSearch, bool symmetric, IterationInfo& info);
   // Start a step (or part of one) at `time` from the committed state: load
   // factors, prescribed values, rates, a fresh iteration history; the path
-  // following takes pathScale of its nominal increment.
-  void beginStep(double time, double pathScale);
+  // following takes pathScale of its nominal increment. With `predict`, a
+  // dynamic step's free dofs start from the constant-velocity prediction.
+  void beginStep(double time, double pathScale, bool predict);
   void updateRates();
   // Residual and tangent at the current state; factorization of the tangent.
   Status assemble();
   Status factor(bool symmetric);
   // du_ for the residual R_ and the tangent just assembled, with the factors of
-  // an earlier tangent of the step; `solved` false when they are too far off.
-  Status solveWithEarlierFactors(bool& solved);
+  // an earlier tangent of the step; false when they are too far off.
+  bool solveWithEarlierFactors();
   // The convergence tests for an iteration whose correction has this energy |du.R|.
   bool convergedAt(double energy, int iteration) const;
   void applyIncrement(const Eigen::VectorXd& du, double scale);
@@ -184,17 +186,16 @@ class Analysis {
   double coordScale_ = 0;  // largest nodal coordinate magnitude
   std::vector<IterationInfo> history_;
   int totalIterations_ = 0;
+  int totalFactorizations_ = 0;
   bool converged_ = false;
   bool dirty_ = false;  // trial differs from committed
   double stepDlambda_ = 0;
   double externalWork_ = 0;
   std::vector<std::pair<int, HingeCarrier*>> hinges_;
   int hingesVersion_ = -1;
-  double committedDemand_ = 0;       // max hinge demand at the last commit
-  bool locating_ = false;            // inside locateHingeEvent: no nested events
-  bool predictorSuspended_ = false;  // beginStep() without the prediction
-  bool predicted_ = false;           // the current step started from the prediction
-  bool factoredInStep_ = false;      // the solver holds factors of a tangent of this step
+  double committedDemand_ = 0;  // max hinge demand at the last commit
+  bool locating_ = false;       // inside locateHingeEvent: no nested events
+  bool predicted_ = false;      // the current step started from the prediction
 };
 
 }  // namespace c2d

@@ -114,4 +114,3 @@ BENCHMARK_CAPTURE(factorizeAndSolve, eigen_ldlt, std::string("eigen-ldlt"))
     ->Arg(10000)
     ->Arg(40000)
     ->Unit(benchmark::kMillisecond);
-

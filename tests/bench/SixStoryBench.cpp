@@ -4,7 +4,7 @@
 //    contact and gravity until the frame lies on the ground;
 //  - SixStoryStatic: the static failure analysis to the full mechanism
 //    (decks/paper/six_story_static_meshes.inp, its 288-element run only).
-// Counters: steps, Newton iterations, seconds per iteration.
+// Counters: steps, Newton iterations, factorizations, seconds per iteration.
 // Run: build/tests/benchmarks --benchmark_filter=SixStory
 #include <benchmark/benchmark.h>
 
@@ -18,7 +18,8 @@ namespace {
 
 // The deck sits in the source tree: found from this file's own path.
 std::filesystem::path paperDeck(const char* name) {
-  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "decks" / "paper" / name;
+  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "decks" /
+         "paper" / name;
 }
 
 void runDeck(benchmark::State& st, const std::filesystem::path& deck) {
@@ -32,7 +33,7 @@ void runDeck(benchmark::State& st, const std::filesystem::path& deck) {
   c2d::DeckOptions opt;
   opt.outDir = dir;
   opt.quiet = true;
-  int iterations = 0, steps = 0, cuts = 0;
+  int iterations = 0, factorizations = 0, steps = 0, cuts = 0;
   for (auto _ : st) {
     std::ostringstream out;
     const c2d::DeckOutcome o = c2d::runDeck(deck.string(), opt, commands, out);
@@ -41,14 +42,16 @@ void runDeck(benchmark::State& st, const std::filesystem::path& deck) {
       return;
     }
     iterations = o.total.iterations;
+    factorizations = o.total.factorizations;
     steps = o.total.steps;
     cuts = o.total.cuts;
   }
   st.counters["steps"] = steps;
   st.counters["newton_its"] = iterations;
+  st.counters["factorizations"] = factorizations;
   st.counters["cuts"] = cuts;
-  st.counters["s_per_it"] =
-      benchmark::Counter(iterations, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  st.counters["s_per_it"] = benchmark::Counter(
+      iterations, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void BM_SixStoryWorkflow(benchmark::State& st) { runDeck(st, paperDeck("six_story_collapse.inp")); }
@@ -69,7 +72,8 @@ void BM_SixStoryStatic(benchmark::State& st) {
   replace("  nc = 2 4 8\n  nb = 4 6 12", "  nc = 8\n  nb = 12");
   replace("INCLude,six_story_frame.inc", "INCLude," + dir + "six_story_frame.inc");
   replace("MESH,six_story_loads.inc", "MESH," + dir + "six_story_loads.inc");
-  const std::filesystem::path copy = std::filesystem::temp_directory_path() / "c2d_six_story_static_288.inp";
+  const std::filesystem::path copy =
+      std::filesystem::temp_directory_path() / "c2d_six_story_static_288.inp";
   std::ofstream(copy) << deck;
   runDeck(st, copy);
 }
