@@ -16,6 +16,7 @@ bool Assembler::refresh() {
   buildPattern();
   const Eigen::Index nd = static_cast<Eigen::Index>(model_.numNodes()) * kNodeDofs;
   r_.setZero(nd);
+  fContact_.setZero(nd);
   fRef_.setZero(nd);
   fGrav_.setZero(nd);
   for (int n = 0; n < model_.numNodes(); ++n)
@@ -111,6 +112,7 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
   }
 
   if (const auto& ground = model_.ground()) {
+    fContact_.setZero();
     for (int n = 0; n < model_.numNodes(); ++n) {
       // A shared joint's slave moves with its master: its contact is the master's.
       if (!dofs_.used(n) || dofs_.aliased(n)) continue;
@@ -119,6 +121,7 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
       const ContactForce c = groundContact(*ground, y0 + s.un[iv], y0 + s.u[iv], rule);
       if (c.force == 0 && c.tangent == 0) continue;
       r_[iv] -= c.force;
+      fContact_[iv] = c.force;
       const int eq = dofs_.eq(n, 1);
       if (wantTangent && eq >= 0) K_.valuePtr()[diagPos_[eq]] += c.tangent;
     }

@@ -41,6 +41,9 @@ class Assembler {
   // External load vector (FORCe pattern, unit factor) per node dof.
   const Eigen::VectorXd& referenceLoad() const { return fRef_; }
   const Eigen::VectorXd& gravityLoad() const { return fGrav_; }
+  // Contact forces on the nodes at the last assembly (per node dof; included in
+  // the residual with a minus sign).
+  const Eigen::VectorXd& contactForces() const { return fContact_; }
 
   // Scatter a node-dof vector to equations (and back).
   void toEquations(const Eigen::VectorXd& nodal, Eigen::VectorXd& eqs) const;
@@ -59,7 +62,7 @@ class Assembler {
   SparseMatrix K_;
   std::vector<std::array<int, kElemDofs * kElemDofs>> elemPos_;  // index into K_ values, -1: none
   std::vector<int> diagPos_;                                     // per equation
-  Eigen::VectorXd r_, fRef_, fGrav_;
+  Eigen::VectorXd r_, fRef_, fGrav_, fContact_;
   int patternVersion_ = -1;
   double forceScale_ = 0;
 };

@@ -13,6 +13,7 @@ struct HingeInfo {
   double jump = 0;            // rotation jump alpha (rad)
   double moment = 0;          // hinge moment t (signed)
   double softening = 0;       // softening variable xi = |alpha| accumulated
+  double ultimate = 0;        // the ultimate moment Mu of the law
 };
 
 class HingeCarrier {

@@ -14,9 +14,11 @@ struct HardeningData {
   double Mc = 0, My = 0, Kh1 = 0, Kh2 = 0;
 };
 
-// SOFTening LINEar Mu Ks: hinge opens when |M| reaches Mu; t = Mu + Ks*xi, Ks < 0, down to 0.
+// SOFTening LINEar Mu Ks [thetaR]: hinge opens when |M| reaches Mu; t = Mu + Ks*xi, Ks < 0,
+// down to 0; a joint made of the hinge ruptures when its relative rotation exceeds thetaR (rad).
 struct SofteningData {
   double Mu = 0, Ks = 0;
+  std::optional<double> thetaR;
 };
 
 struct MaterialSet {

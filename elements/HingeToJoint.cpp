@@ -1,12 +1,15 @@
 #include "elements/HingeToJoint.h"
 
 #include <algorithm>
+#include <functional>
+#include <optional>
 #include <cmath>
 #include <map>
 #include <memory>
 #include <string>
 
 #include "core/Hinge.h"
+#include "elements/InelasticFrame.h"
 #include "elements/JointedElement.h"
 #include "elements/Joints.h"
 #include "elements/ReissnerFrame.h"
@@ -35,60 +38,80 @@ ElementKinematics gather(const std::array<int, 2>& nodes, const State& s) {
   return kin;
 }
 
-bool isReissner(const Element& e) {
-  if (dynamic_cast<const ReissnerFrame*>(&e)) return true;
-  if (auto* j = dynamic_cast<const JointedElement*>(&e))
-    return dynamic_cast<const ReissnerFrame*>(&j->inner()) != nullptr;
-  return false;
+const ReissnerFrame* asReissner(const Element& e) {
+  return dynamic_cast<const ReissnerFrame*>(&innermost(e));
+}
+
+// The bending section history of an element with a hinge law, if it has one.
+std::optional<HingedBendingState> sectionOf(const Element& e) {
+  const Element& in = innermost(e);
+  if (auto* r = dynamic_cast<const ReissnerFrame*>(&in)) return r->section();
+  if (auto* f = dynamic_cast<const InelasticFrame*>(&in)) return f->section();
+  return std::nullopt;
+}
+
+// Ends of an element that already carry a joint (its wrappers' slave ends).
+std::array<bool, 2> jointedEnds(const Element& e) {
+  std::array<bool, 2> ends{false, false};
+  for (auto* j = dynamic_cast<const JointedElement*>(&e); j;
+       j = dynamic_cast<const JointedElement*>(&j->inner()))
+    ends[j->slaveEnd()] = true;
+  return ends;
 }
 
 [[noreturn]] void fail(int element, const std::string& why) {
   throw AnalysisError("HINGE2JOINT: element " + std::to_string(element + 1) + ": " + why);
 }
 
-}  // namespace
 
-std::vector<CreatedJoint> hingeToJoint(Model& model, State& state) {
+// The joint-making shared by HINGE2JOINT and the joints of failed hinges:
+// elements for which wantsJoint() holds get a joint, elements for which
+// rebuild() holds (and those) are rebuilt as Reissner beams.
+std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
+                                  const std::function<bool(const Element&, const HingeInfo&)>& wantsJoint,
+                                  const std::function<bool(const Element&)>& rebuildAlways) {
   state.resize(model.numNodes());
   const StepRule statics{};
   const int ne = model.numElements();
 
   // 1. Section forces (and end moments) of every element to be rebuilt, at the
   //    current displacements.
-  std::vector<char> rebuild(ne, 0);
+  std::vector<char> rebuild(ne, 0), joint(ne, 0);
   std::vector<SectionForces> forces(ne);
+  std::vector<std::optional<HingedBendingState>> sections(ne);
   std::vector<ElemVec> endForces(ne, ElemVec::Zero());
   std::map<int, Relative> slaves;  // slave node -> its joint's master and relative state
   for (int e = 0; e < ne; ++e) {
     Element& el = model.element(e);
-    if (isReissner(el)) continue;
+    const auto* carrier = dynamic_cast<const HingeCarrier*>(&innermost(el));
+    joint[e] = carrier && wantsJoint(el, carrier->hinge());
+    if (!joint[e] && !rebuildAlways(el)) continue;
     rebuild[e] = 1;
     ElemVec r;
     ElemMat k;
-    if (auto* je = dynamic_cast<JointedElement*>(&el)) {
-      // The relative rates belong to the dynamics so far: keep them; the static
-      // evaluation only solves psi_r at the current displacements.
-      Relative rel{je->masterNode(), 0, je->relativeVelocity(), je->relativeAcceleration()};
-      if (Status st = el.evaluate(gather(el.nodes(), state), statics, false, r, k); !st)
-        fail(e, st.why);
-      rel.psi = je->relativeRotation();
-      slaves[je->slaveNode()] = rel;
-    } else if (Status st = el.evaluate(gather(el.nodes(), state), statics, false, r, k); !st) {
+    if (Status st = el.evaluate(gather(el.nodes(), state), statics, false, r, k); !st)
       fail(e, st.why);
-    }
+    // The relative rates belong to the dynamics so far: keep them; the static
+    // evaluation only solves psi_r at the current displacements.
+    for (auto* je = dynamic_cast<JointedElement*>(&el); je;
+         je = dynamic_cast<JointedElement*>(&je->inner()))
+      slaves[je->slaveNode()] = Relative{je->masterNode(), je->relativeRotation(),
+                                         je->relativeVelocity(), je->relativeAcceleration()};
     forces[e] = el.sectionForces();
+    sections[e] = sectionOf(el);
     endForces[e] = r;
   }
 
-  // 2. A joint for every active hinge.
+  // 2. A joint for every hinge that asks for one.
   std::vector<CreatedJoint> created;
   std::map<int, int> hingeEnd;  // element -> end that gets the slave
+  std::vector<int> attached(model.numNodes(), 0);
+  for (int e = 0; e < ne; ++e)
+    for (int node : model.element(e).nodes()) ++attached[node];
+  for (const Joint& j : model.joints()) attached[j.master] = attached[j.slave] = 2;
   for (int e = 0; e < ne; ++e) {
-    if (!rebuild[e] || dynamic_cast<const JointedElement*>(&model.element(e))) continue;
-    const auto* carrier = dynamic_cast<const HingeCarrier*>(&model.element(e));
-    if (!carrier) continue;
-    const HingeInfo h = carrier->hinge();
-    if (!h.active) continue;
+    if (!joint[e]) continue;
+    const HingeInfo h = dynamic_cast<const HingeCarrier&>(innermost(model.element(e))).hinge();
     int end = 0;
     if (h.position > 0.5 + kTieTolerance) {
       end = 1;
@@ -96,10 +119,36 @@ std::vector<CreatedJoint> hingeToJoint(Model& model, State& state) {
       const double m1 = std::abs(endForces[e](2)), m2 = std::abs(endForces[e](5));
       end = m2 > m1 + kTieTolerance * (m1 + m2) ? 1 : 0;
     }
+    const std::array<bool, 2> taken = jointedEnds(model.element(e));
+    const std::array<int, 2> ends = model.element(e).nodes();
+    // An end node that no other element uses and whose rotation is free needs
+    // no joint (a joint there would leave the node's rotation without any
+    // stiffness or inertia): the node's own rotation takes the jump.
+    auto freeEnd = [&](int a) {
+      return !taken[a] && attached[ends[a]] == 1 && model.bound(ends[a])[2] == 0;
+    };
+    if (freeEnd(end) || freeEnd(1 - end)) {
+      if (!freeEnd(end)) end = 1 - end;
+      const Eigen::Index rot = static_cast<Eigen::Index>(ends[end]) * kNodeDofs + 2;
+      const double shift = end == 0 ? h.jump : -h.jump;
+      state.u[rot] += shift;
+      state.un[rot] += shift;
+      CreatedJoint cj;
+      cj.element = e;
+      cj.slaveEnd = end;
+      cj.master = ends[end];
+      cj.position = h.position;
+      cj.jump = h.jump;
+      cj.relativeRotation = shift;
+      created.push_back(cj);  // slave -1: the node's own rotation is the free one
+      continue;
+    }
+    if (taken[end]) end = 1 - end;
+    if (taken[end]) fail(e, "both ends already carry a joint");
     CreatedJoint cj;
     cj.element = e;
     cj.slaveEnd = end;
-    cj.master = model.element(e).nodes()[end];
+    cj.master = ends[end];
     const Vec2 x = model.coord(cj.master);  // a copy: addNode reallocates the coordinates
     cj.slave = model.addNode(x);
     cj.position = h.position;
@@ -111,22 +160,24 @@ std::vector<CreatedJoint> hingeToJoint(Model& model, State& state) {
   }
   state.resize(model.numNodes());
 
-  // 3. Every element rebuilt as an elastic Reissner beam with the old section forces.
+  // 3. Every element rebuilt as a Reissner beam with the old section forces.
   for (int e = 0; e < ne; ++e) {
     if (!rebuild[e]) continue;
     std::unique_ptr<Element> old = std::move(model.elements()[e]);
-    if (auto* je = dynamic_cast<JointedElement*>(old.get())) old = je->release();
+    while (auto* je = dynamic_cast<JointedElement*>(old.get())) old = je->release();
     std::array<int, 2> nodes = old->nodes();
     if (auto it = hingeEnd.find(e); it != hingeEnd.end()) {
       for (const CreatedJoint& cj : created)
-        if (cj.element == e) nodes[it->second] = cj.slave;
+        if (cj.element == e && cj.slave >= 0) nodes[it->second] = cj.slave;
     }
     const MaterialSet* source = model.material(old->materialNumber());
     if (!source) fail(e, "material set " + std::to_string(old->materialNumber()) + " is missing");
     MaterialSet mat = *source;
     mat.kinematics = Kinematics::Finite;
-    mat.hardening.reset();
-    mat.softening.reset();
+    if (laws == MemberLaws::Elastic) {
+      mat.hardening.reset();
+      mat.softening.reset();
+    }
     auto frame =
         std::make_unique<ReissnerFrame>(mat, nodes, model.coord(nodes[0]), model.coord(nodes[1]));
 
@@ -146,11 +197,22 @@ std::vector<CreatedJoint> hingeToJoint(Model& model, State& state) {
     }
     const SectionForces& f = forces[e];
     const Vec3 c = frame->sectionStiffness();
-    frame->setInitialStrain(frame->strains(d) - Vec3(f.N / c(0), f.V / c(1), f.M / c(2)));
+    double kp = 0;
+    if (!frame->bendingLaw().isElastic()) {
+      HingedBendingState section = sections[e].value_or(HingedBendingState{});
+      if (joint[e]) {  // the jump went into the joint: the section closes, capacity fresh
+        section.jump = SofteningState{};
+        section.hingeActive = section.hingeFailed = false;
+      }
+      section.M = f.M;
+      kp = section.bulk.kp;
+      frame->setSection(section);
+    }
+    frame->setInitialStrain(frame->strains(d) - Vec3(f.N / c(0), f.V / c(1), kp + f.M / c(2)));
     model.elements()[e] = std::move(frame);
   }
   for (const CreatedJoint& cj : created)
-    model.joints().push_back(Joint{cj.master, cj.slave, JointForm::Condensed});
+    if (cj.slave >= 0) model.joints().push_back(Joint{cj.master, cj.slave, JointForm::Condensed});
 
   // 4. Wrap the slave ends, restore the relative states, write the slave nodes.
   installJoints(model);
@@ -173,19 +235,45 @@ std::vector<CreatedJoint> hingeToJoint(Model& model, State& state) {
     Element& el = model.element(e);
     ElemVec r;
     ElemMat k;
-    if (auto* je = dynamic_cast<JointedElement*>(&el)) {
-      const ElementKinematics kin =
-          je->innerKinematics(gather(el.nodes(), state), je->relativeRotation());
-      if (Status st = je->inner().evaluate(kin, statics, false, r, k); !st) fail(e, st.why);
-      je->inner().commit();
-    } else {
-      if (Status st = el.evaluate(gather(el.nodes(), state), statics, false, r, k); !st)
-        fail(e, st.why);
-      el.commit();
+    ElementKinematics kin = gather(el.nodes(), state);
+    Element* in = &el;
+    while (auto* je = dynamic_cast<JointedElement*>(in)) {
+      kin = je->innerKinematics(kin, je->relativeRotation());
+      in = &je->inner();
     }
+    if (Status st = in->evaluate(kin, statics, false, r, k); !st) fail(e, st.why);
+    in->commit();
   }
   if (std::find(rebuild.begin(), rebuild.end(), 1) != rebuild.end()) model.bumpTopology();
   return created;
+}
+
+}  // namespace
+
+std::vector<CreatedJoint> hingeToJoint(Model& model, State& state, MemberLaws laws) {
+  const auto active = [](const Element&, const HingeInfo& h) { return h.active; };
+  const auto rebuild = [laws](const Element& e) {
+    const ReissnerFrame* r = asReissner(e);
+    return !r || (laws == MemberLaws::Elastic && !r->bendingLaw().isElastic());
+  };
+  return convert(model, state, laws, active, rebuild);
+}
+
+std::vector<CreatedJoint> jointFailedHinges(Model& model, State& state) {
+  // Only geometrically exact elements: the failure phase keeps its embedded
+  // hinges. An element that already carries a joint keeps its failed hinge as
+  // a free embedded one (a second joint would leave the element without any
+  // rotational stiffness between its two free ends).
+  const auto failed = [](const Element& e, const HingeInfo& h) {
+    return h.active && h.failed && asReissner(e) && !dynamic_cast<const JointedElement*>(&e);
+  };
+  bool any = false;
+  for (int e = 0; e < model.numElements() && !any; ++e)
+    if (auto* c = dynamic_cast<const HingeCarrier*>(&innermost(model.element(e))))
+      any = failed(model.element(e), c->hinge());
+  if (!any) return {};
+  return convert(model, state, MemberLaws::Inelastic, failed,
+                 [](const Element&) { return false; });
 }
 
 }  // namespace c2d

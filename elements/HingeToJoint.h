@@ -20,13 +20,15 @@
 //    the element starts at psi1 + alpha, so psi_r = psi_s - psi_m = +alpha; moving
 //    it to end 2 the element ends at psi2 - alpha, so psi_r = -alpha. Either way
 //    the element's curvature (psi2 - psi1 - alpha)/l is the one it had.
-// Then every element that is not yet a ReissnerFrame is rebuilt as one, from a
-// copy of its material set with kinematics = Finite and the hardening and
-// softening data dropped (the collapse phase has elastic members; the model's
-// material sets are not changed), with the initial strain
-//   E0 = E(d) - C^-1 (N, V, M)_old
+// Then every element that is not yet a ReissnerFrame (with MemberLaws::Elastic:
+// not yet an elastic one) is rebuilt as one, from a copy of its material set
+// with kinematics = Finite and, for MemberLaws::Elastic, the hardening and
+// softening data dropped (the model's material sets are not changed), with the
+// initial strain
+//   E0 = E(d) - C^-1 (N, V, M)_old    (inelastic bending: E0_3 = K(d) - kp - M/EI)
 // so that its section forces at the current displacements d (the slave end
-// rotated by psi_m + psi_r) equal the old element's. Elements at the slaves of
+// rotated by psi_m + psi_r) equal the old element's. An element that gets a
+// joint at one end and already has one there gets it at its other end. Elements at the slaves of
 // Condensed joints are wrapped by installJoints() (elements/Joints.h); existing
 // jointed elements are rebuilt inside their wrapper and keep their relative
 // rotation and its rates.
@@ -48,16 +50,37 @@ namespace c2d {
 
 struct CreatedJoint {
   int element = -1;             // 0-based element index
-  int master = -1, slave = -1;  // 0-based node indices (slave: the new node)
+  // 0-based node indices (slave: the new node; -1 when the element's end node is
+  // used by no other element and free to rotate: its own rotation took the jump)
+  int master = -1, slave = -1;
   int slaveEnd = 0;             // 0: element node 1, 1: element node 2
   double position = 0.5;        // hinge position s_d / l_e
   double jump = 0;              // rotation jump alpha of the hinge
   double relativeRotation = 0;  // psi_r at the start: +alpha (end 1) or -alpha (end 2)
 };
 
+// What becomes of the members.
+enum class MemberLaws {
+  Elastic,    // HINGE2JOINT: elastic Reissner beams from now on (the paper)
+  Inelastic,  // HINGE2JOINT,INELastic: Reissner beams that keep their hardening and
+              // softening laws and history (bulk plastic curvature); every element can
+              // open a hinge (an element whose hinge became a joint: a new one)
+};
+
 // Bumps the topology version when it rebuilt anything (a model already in the
 // collapse phase is left unchanged). Throws AnalysisError when an element's material set is missing
 // or an element cannot be evaluated at the current state.
-std::vector<CreatedJoint> hingeToJoint(Model& model, State& state);
+std::vector<CreatedJoint> hingeToJoint(Model& model, State& state,
+                                       MemberLaws laws = MemberLaws::Elastic);
+
+// During a run, after a commit: every geometrically exact element whose hinge
+// has fully softened (moment zero) gets its revolute joint, as above with
+// MemberLaws::Inelastic but for those elements only, so that the pieces can
+// fold freely. The state is continuous: positions and velocities of every node
+// are kept, the new joint starts with the jump as its relative rotation and zero
+// relative rates, and the element's section forces are unchanged. (Small
+// displacement elements keep their free embedded hinge: the failure phase of
+// the paper.) Returns the joints made.
+std::vector<CreatedJoint> jointFailedHinges(Model& model, State& state);
 
 }  // namespace c2d

@@ -8,17 +8,6 @@ namespace c2d {
 
 namespace {
 
-BilinearHardening makeBending(const MaterialSet& mat) {
-  if (!mat.hardening) return BilinearHardening::elastic(mat.EI());
-  const HardeningData& h = *mat.hardening;
-  return {mat.EI(), h.Mc, h.My, h.Kh1, h.Kh2};
-}
-
-std::optional<LinearSoftening> makeSoftening(const MaterialSet& mat) {
-  if (!mat.softening) return std::nullopt;
-  return LinearSoftening(mat.softening->Mu, mat.softening->Ks);
-}
-
 // Strain-displacement rows at the midpoint, element frame, dof order
 // (u1, v1, theta1, u2, v2, theta2).
 struct Rows {
@@ -43,8 +32,7 @@ InelasticFrame::InelasticFrame(const MaterialSet& mat, const std::array<int, 2>&
       EA_(mat.EA()),
       GA_(mat.GA()),
       rhoA_(mat.rhoA()),
-      bending_(makeBending(mat)),
-      softening_(makeSoftening(mat)) {
+      law_(mat) {
   if (!(length_ > 0)) throw std::invalid_argument("frame element with coincident nodes");
   if (!(EA_ > 0) || !(GA_ > 0))
     throw std::invalid_argument("frame element needs positive EA and GA");
@@ -74,70 +62,22 @@ InelasticFrame::InelasticFrame(const MaterialSet& mat, const std::array<int, 2>&
   }
 }
 
-Status InelasticFrame::respond(const ElemVec& dl, const PointState& from, bool activeHinge,
-                               double hingeSign, PointState& to, double& bendingTangent) const {
-  const double l = length_;
-  const double EI = bending_.EI();
-  const Rows b = midpointRows(l);
-  const double eps = b.eps.dot(dl), gamma = b.gamma.dot(dl), kappaD = b.kappa.dot(dl);
-
-  to = from;
-  to.hingeActive = activeHinge;
-  double M = 0;
-  if (!activeHinge) {
-    const BendingResponse r = bending_.returnMap(from.bulk, kappaD);
-    M = r.M;
-    bendingTangent = r.tangent;
-    to.bulk = r.state;
-    to.hingeFailed = false;
-  } else {
-    // Bulk elastic with frozen plastic curvature (eq 33); kappa = kappaD - alpha/l.
-    const double k = EI / l;  // condensation term EI*Gbar^2*l
-    const LinearSoftening& law = *softening_;
-    if (law.capacity(from.jump.xi) > 0 && !(k + law.Ks() > 0)) {
-      std::ostringstream msg;
-      msg << "softening hinge: element length l_e = " << l << " must be below EI/|Ks| = "
-          << EI / -law.Ks() << " (K_alpha_alpha = EI/l_e + Ks = " << k + law.Ks()
-          << " is not positive); refine the mesh";
-      return Status::failure(msg.str());
-    }
-    if (!from.hingeActive) {
-      to.hingeSign = hingeSign;
-      const double xiU = bending_.hardeningAt(law.Mu());
-      if (std::isfinite(xiU) && xiU > to.bulk.xi) {
-        to.bulk.kp += hingeSign * (xiU - to.bulk.xi);
-        to.bulk.xi = xiU;
-      }
-    }
-    const double mTrial = EI * (kappaD - from.jump.alpha / l - to.bulk.kp);
-    SofteningResponse r;
-    if (Status st = law.returnMap(from.jump, mTrial, k, r); !st) return st;
-    M = r.t;  // hinge equation h = -M + t = 0
-    bendingTangent = EI * r.tangent;
-    to.jump = r.state;
-    to.hingeFailed = r.failed;
-  }
-  to.forces.N = EA_ * eps;
-  to.forces.V = GA_ * gamma;
-  to.forces.M = M;
-  if (!std::isfinite(M) || !std::isfinite(to.forces.N) || !std::isfinite(to.forces.V) ||
-      !std::isfinite(bendingTangent))
-    return Status::failure("inelastic frame: non-finite section forces");
-  return Status::success();
-}
-
 Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& rule,
                                 bool wantTangent, ElemVec& residual, ElemMat& tangent) {
   const ElemVec dl = rotation_ * kin.d;
-  PointState next;
-  double kt = 0;
-  const bool active = committed_.hingeActive || trial_.hingeActive;
-  const double sign = committed_.hingeActive ? committed_.hingeSign : trial_.hingeSign;
-  if (Status st = respond(dl, committed_, active, sign, next, kt); !st) return st;
-  trial_ = next;
-
   const double l = length_;
   const Rows b = midpointRows(l);
+  const HingedBendingState& from = committed_.section;
+  const double openSign =
+      !from.hingeActive && trial_.section.hingeActive ? trial_.section.hingeSign : 0.0;
+  HingedBendingResponse bend;
+  if (Status st = law_.respond(b.kappa.dot(dl), l, from, openSign, bend); !st) return st;
+  trial_.section = bend.state;
+  trial_.forces = {EA_ * b.eps.dot(dl), GA_ * b.gamma.dot(dl), bend.state.M};
+  const double kt = bend.tangent;
+  if (!std::isfinite(trial_.forces.N) || !std::isfinite(trial_.forces.V))
+    return Status::failure("inelastic frame: non-finite section forces");
+
   // The mid-point scheme takes the stress resultants between t_n and t_n+1: for
   // the elastic axial and shear parts the weighted strains, for the bending
   // moment the weighted moments of the committed and the trial state.
@@ -178,39 +118,35 @@ ElemVec InelasticFrame::bodyLoad(const Vec2& g) const {
 
 double InelasticFrame::strainEnergy() const {
   const SectionForces& f = trial_.forces;
-  return 0.5 * length_ * (f.N * f.N / EA_ + f.V * f.V / GA_ + f.M * f.M / bending_.EI());
+  return 0.5 * length_ * (f.N * f.N / EA_ + f.V * f.V / GA_ + f.M * f.M / law_.EI());
 }
 
 SectionForces InelasticFrame::sectionForces() const { return trial_.forces; }
 
-double InelasticFrame::hingeDemand() const {
-  if (!softening_ || trial_.hingeActive) return 0;
-  return std::abs(trial_.forces.M) / softening_->Mu();
-}
+double InelasticFrame::hingeDemand() const { return law_.demand(trial_.section); }
 
 void InelasticFrame::activateHinge() {
-  if (!softening_ || trial_.hingeActive) return;
-  trial_.hingeActive = true;
-  trial_.hingeSign = trial_.forces.M >= 0 ? 1.0 : -1.0;
+  if (!law_.canActivate(trial_.section)) return;
+  trial_.section.hingeActive = true;
+  trial_.section.hingeSign = trial_.forces.M >= 0 ? 1.0 : -1.0;
 }
 
 HingeInfo InelasticFrame::hinge() const {
+  const HingedBendingState& s = trial_.section;
   HingeInfo h;
-  h.active = trial_.hingeActive;
-  h.failed = trial_.hingeFailed;
+  h.active = s.hingeActive;
+  h.failed = s.hingeFailed;
   h.position = 0.5;
-  h.jump = trial_.jump.alpha;
+  h.jump = s.jump.alpha;
   h.moment = trial_.forces.M;
-  h.softening = trial_.jump.xi;
+  h.softening = s.jump.xi;
+  if (law_.softening()) h.ultimate = law_.softening()->Mu();
   return h;
 }
 
 // ------------------------------------------------------------ restart files
 
 // A field added to the history must be added to the restart file too.
-static_assert(sizeof(BendingState) == 2 * sizeof(double) &&
-                  sizeof(SofteningState) == 2 * sizeof(double),
-              "restart files: InelasticFrame::writeState/readState write every history field");
 
 void InelasticFrame::writeState(std::ostream& out) const {
   using namespace checkpoint;
@@ -220,11 +156,8 @@ void InelasticFrame::writeState(std::ostream& out) const {
   putFixed(out, rotation_);
   putFixed(out, mass_);
   for (const PointState* p : {&committed_, &trial_}) {
-    for (double x : {p->bulk.kp, p->bulk.xi, p->jump.alpha, p->jump.xi, p->hingeSign, p->forces.N,
-                     p->forces.V, p->forces.M})
-      put(out, x);
-    putBool(out, p->hingeActive);
-    putBool(out, p->hingeFailed);
+    putSection(out, p->section);
+    for (double x : {p->forces.N, p->forces.V, p->forces.M}) put(out, x);
   }
 }
 
@@ -236,11 +169,8 @@ void InelasticFrame::readState(std::istream& in) {
   getFixed(in, rotation_);
   getFixed(in, mass_);
   for (PointState* p : {&committed_, &trial_}) {
-    for (double* x : {&p->bulk.kp, &p->bulk.xi, &p->jump.alpha, &p->jump.xi, &p->hingeSign,
-                      &p->forces.N, &p->forces.V, &p->forces.M})
-      *x = get<double>(in);
-    p->hingeActive = getBool(in);
-    p->hingeFailed = getBool(in);
+    p->section = getSection(in);
+    for (double* x : {&p->forces.N, &p->forces.V, &p->forces.M}) *x = get<double>(in);
   }
 }
 

@@ -8,26 +8,19 @@
 // Enhanced kinematics (eqs 20-24) with Gbar = -1/l_e: in the element frame
 //   eps = (u2 - u1)/l,  gamma = (v2 - v1)/l - (theta1 + theta2)/2,
 //   kappa = (theta2 - theta1)/l - alpha/l.
-// The local (hinge) equation h = -M + t = 0 makes the hinge moment t equal to the
-// bulk moment M at the midpoint. alpha is solved in closed form inside evaluate()
-// and condensed statically (eq 32), so the residual depends on d alone and the
-// tangent is its exact derivative. Once the hinge is active the bulk plastic
-// curvature is frozen (eq 33) and the bulk is elastic. It freezes at the value
-// where the bulk's yield radius reaches Mu (the plastic curvature kappa_p,u of
-// verification.md V2), continuing the committed state along the hardening law in
-// the direction of the moment at activation; a committed state already past Mu
-// keeps its own. So the post-peak response does not depend on the step in which
-// the solver happens to activate the hinge.
+// Bending, the hinge and its condensation are materials/HingedBending (shared
+// with the finite-rotation ReissnerFrame), so the residual depends on d alone
+// and the tangent is its exact derivative.
 //
 // The hinge never activates by itself: the solver asks hingeDemand() and calls
 // activateHinge() on one element at a time. Activate at a state where the demand
 // is 1 or just above (cut the step back to it): the hinge is then at its
 // capacity and takes the softening tangent, and the other elements, on their
 // yield surface, the elastic one, which are the branches of the solution (their
-// moment cannot exceed the hinge's). Below Mu the freeze above lowers the moment
-// by EI/Kh times the gap, which can leave the hinge rigid (EI/Kh2 is about 285
-// for the paper's data), and Newton's method then cycles between sets of
-// branches none of which holds the solution.
+// moment cannot exceed the hinge's). Below Mu the freeze of the bulk plastic
+// curvature lowers the moment by EI/Kh times the gap, which can leave the hinge
+// rigid (EI/Kh2 is about 285 for the paper's data), and Newton's method then
+// cycles between sets of branches none of which holds the solution.
 //
 // The element is always a Timoshenko beam (SHEAr OFF is not honoured here: the
 // one-point element is free of shear locking). Dynamics as in LinearFrame:
@@ -41,8 +34,7 @@
 #include "core/Element.h"
 #include "core/Hinge.h"
 #include "core/MaterialSet.h"
-#include "materials/BilinearHardening.h"
-#include "materials/LinearSoftening.h"
+#include "materials/HingedBending.h"
 
 namespace c2d {
 
@@ -74,6 +66,9 @@ class InelasticFrame final : public Element, public HingeCarrier, public Checkpo
   HingeInfo hinge() const override;
 
   double length() const { return length_; }
+  const HingedBending& bendingLaw() const { return law_; }
+  // Section history at the last evaluated state (committed after commit()).
+  const HingedBendingState& section() const { return trial_.section; }
 
   // Restart files: every member after the construction data except the
   // material laws' parameters, which the constructor rebuilds from the
@@ -83,28 +78,19 @@ class InelasticFrame final : public Element, public HingeCarrier, public Checkpo
 
  private:
   // History of the integration point: value type, committed and trial copies.
+  // A hinge activated in the trial state (activateHinge) opens in the next
+  // evaluation with the sign recorded in trial_.section.hingeSign.
   struct PointState {
-    BendingState bulk;
-    SofteningState jump;
-    bool hingeActive = false;
-    bool hingeFailed = false;
-    double hingeSign = 1;  // sign of the bulk moment when the hinge was activated
+    HingedBendingState section;
     SectionForces forces;  // at the state's displacements (element frame)
   };
-
-  // Section response at local nodal displacements dl from the committed history
-  // `from`, with the hinge active or not (hingeSign: its sign at activation);
-  // fills the trial state and dM/d(kappa_d), kappa_d = (theta2 - theta1)/l.
-  Status respond(const ElemVec& dl, const PointState& from, bool activeHinge, double hingeSign,
-                 PointState& to, double& bendingTangent) const;
 
   std::array<int, 2> nodes_;
   int material_;
   double length_;
   double EA_, GA_;
   double rhoA_;  // mass per unit length
-  BilinearHardening bending_;
-  std::optional<LinearSoftening> softening_;
+  HingedBending law_;
   ElemMat rotation_;  // global -> element frame, block diagonal
   ElemMat mass_;
   PointState committed_, trial_;

@@ -120,6 +120,13 @@ std::unique_ptr<Element> JointedElement::release() {
   return std::move(inner_);
 }
 
+void JointedElement::replaceInner(std::unique_ptr<Element> inner) {
+  const int master = nodes_[slaveEnd_];
+  inner_ = std::move(inner);
+  nodes_ = inner_->nodes();
+  nodes_[slaveEnd_] = master;
+}
+
 // ------------------------------------------------------------ restart files
 
 void JointedElement::writeState(std::ostream& out) const {

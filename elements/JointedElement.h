@@ -84,6 +84,10 @@ class JointedElement final : public Element, public Checkpoint {
   const Element& inner() const { return *inner_; }
   // Hands the wrapped element back (its node at slaveEnd set to the slave).
   std::unique_ptr<Element> release();
+  // Replaces the wrapped element (one with the same nodes, or a wrapper whose
+  // joint was removed); the master stays at slaveEnd.
+  void replaceInner(std::unique_ptr<Element> inner);
+  std::unique_ptr<Element> takeInner() { return std::move(inner_); }
 
   // Kinematics the wrapped element sees for the given outer kinematics and psi_r
   // (committed psi_r history for d_n, v_n, a_n).

@@ -1,5 +1,6 @@
 #include "elements/Joints.h"
 
+#include <cmath>
 #include <memory>
 
 namespace c2d {
@@ -21,17 +22,33 @@ bool isMasterOfAnotherJoint(const Model& model, int node) {
 
 }  // namespace
 
+Element& innermost(Element& e) {
+  Element* el = &e;
+  while (auto* j = dynamic_cast<JointedElement*>(el)) el = &j->inner();
+  return *el;
+}
+
+const Element& innermost(const Element& e) {
+  const Element* el = &e;
+  while (auto* j = dynamic_cast<const JointedElement*>(el)) el = &j->inner();
+  return *el;
+}
+
 std::vector<JointedElement*> jointedElements(Model& model) {
   std::vector<JointedElement*> out;
   for (int e = 0; e < model.numElements(); ++e)
-    if (auto* j = dynamic_cast<JointedElement*>(&model.element(e))) out.push_back(j);
+    for (auto* j = dynamic_cast<JointedElement*>(&model.element(e)); j;
+         j = dynamic_cast<JointedElement*>(&j->inner()))
+      out.push_back(j);
   return out;
 }
 
 std::vector<const JointedElement*> jointedElements(const Model& model) {
   std::vector<const JointedElement*> out;
   for (int e = 0; e < model.numElements(); ++e)
-    if (auto* j = dynamic_cast<const JointedElement*>(&model.element(e))) out.push_back(j);
+    for (auto* j = dynamic_cast<const JointedElement*>(&model.element(e)); j;
+         j = dynamic_cast<const JointedElement*>(&j->inner()))
+      out.push_back(j);
   return out;
 }
 
@@ -67,6 +84,66 @@ int installJoints(Model& model) {
   }
   if (changed) model.bumpTopology();
   return changed;
+}
+
+namespace {
+
+// The element chain `el` without the joint at `slave`.
+std::unique_ptr<Element> withoutJoint(std::unique_ptr<Element> el, int slave) {
+  auto* je = dynamic_cast<JointedElement*>(el.get());
+  if (!je) return el;
+  if (je->slaveNode() == slave) return je->release();
+  je->replaceInner(withoutJoint(je->takeInner(), slave));
+  return el;
+}
+
+}  // namespace
+
+std::vector<RupturedJoint> ruptureJoints(Model& model, State& state) {
+  std::vector<RupturedJoint> out;
+  std::vector<char> gone(model.joints().size(), 0);
+  bool synced = false;
+  for (std::size_t k = 0; k < model.joints().size(); ++k) {
+    const Joint& joint = model.joints()[k];
+    int element = -1;
+    double rotation = 0;
+    for (int e = 0; e < model.numElements() && element < 0; ++e) {
+      if (joint.form == JointForm::Condensed) {
+        for (auto* je = dynamic_cast<const JointedElement*>(&model.element(e)); je;
+             je = dynamic_cast<const JointedElement*>(&je->inner()))
+          if (je->slaveNode() == joint.slave) {
+            element = e;
+            rotation = je->committedRelativeRotation();
+          }
+      } else {
+        const auto n = model.element(e).nodes();
+        if (n[0] == joint.slave || n[1] == joint.slave) {
+          element = e;
+          rotation = state.un[joint.slave * kNodeDofs + 2] - state.un[joint.master * kNodeDofs + 2];
+        }
+      }
+    }
+    if (element < 0) continue;
+    const MaterialSet* mat = model.material(innermost(model.element(element)).materialNumber());
+    if (!mat || !mat->softening || !mat->softening->thetaR) continue;
+    const double limit = *mat->softening->thetaR;
+    if (!(std::abs(rotation) > limit)) continue;
+    if (!synced) {  // the slave nodes' state from the joints, before any is removed
+      syncSlaveNodes(model, state);
+      synced = true;
+    }
+    if (joint.form == JointForm::Condensed)
+      model.elements()[element] = withoutJoint(std::move(model.elements()[element]), joint.slave);
+    gone[k] = 1;
+    out.push_back(RupturedJoint{joint.master, joint.slave, element, rotation, limit});
+  }
+  if (out.empty()) return out;
+  std::vector<Joint> kept;
+  for (std::size_t k = 0; k < model.joints().size(); ++k)
+    if (!gone[k]) kept.push_back(model.joints()[k]);
+  model.joints() = std::move(kept);
+  model.bumpTopology();
+  return out;
 }
 
 void syncSlaveNodes(const Model& model, State& state) {

@@ -26,10 +26,32 @@ namespace c2d {
 // joints it wrapped or switched.
 int installJoints(Model& model);
 
-// The jointed elements of the model (borrowed pointers, valid until the
-// element list changes).
+// The element inside any joint wrappers (an element with joints at both ends
+// is wrapped twice).
+Element& innermost(Element& e);
+const Element& innermost(const Element& e);
+
+// The jointed elements of the model, wrappers inside wrappers included
+// (borrowed pointers, valid until the element list changes).
 std::vector<JointedElement*> jointedElements(Model& model);
 std::vector<const JointedElement*> jointedElements(const Model& model);
+
+// A joint that ruptured: the two pieces separated at the slave node.
+struct RupturedJoint {
+  int master = -1, slave = -1;  // 0-based nodes
+  int element = -1;             // 0-based index of the element at the slave
+  double rotation = 0;          // relative rotation at rupture (rad)
+  double limit = 0;             // the rupture rotation thetaR of that element's material
+};
+
+// After a commit: every joint whose relative rotation exceeds in magnitude the
+// rupture rotation thetaR of the material of the element at its slave
+// (SOFTening LINEar Mu Ks thetaR) ruptures: the joint is removed, and the slave
+// node, at the master's position with the slave rotation and their rates,
+// becomes a node of its own, so the pieces separate in translation too. The
+// state is continuous (nothing moves, no velocity changes). Bumps the topology
+// version when anything ruptured.
+std::vector<RupturedJoint> ruptureJoints(Model& model, State& state);
 
 // Writes the state of the slave nodes of Condensed joints into the state
 // vectors, for output: translations, velocities and accelerations are the

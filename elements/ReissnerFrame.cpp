@@ -93,7 +93,8 @@ ReissnerFrame::ReissnerFrame(const MaterialSet& mat, const std::array<int, 2>& n
       ea_(mat.EA()),
       ga_(mat.GA()),
       ei_(mat.EI()),
-      rhoA_(mat.rhoA()) {
+      rhoA_(mat.rhoA()),
+      law_(mat) {
   assert(length_ > 0 && "element of zero length");
   // Rotation is additive in 2D: the kinetic energy is quadratic in the nodal
   // velocities, so the mass matrix is constant (linear shape functions).
@@ -121,15 +122,16 @@ double ReissnerFrame::energy(const ElemVec& d) const {
   return 0.5 * length_ * (ea_ * e(0) * e(0) + ga_ * e(1) * e(1) + ei_ * e(2) * e(2));
 }
 
-// Internal force grad W(d) and its (symmetric) derivative; returns E(d).
-Vec3 ReissnerFrame::staticForce(const ElemVec& d, bool wantTangent, ElemVec& f, ElemMat& k) const {
+// Internal force grad W(d) and its (symmetric) derivative for the bending
+// moment m and its tangent kt = dm/dK at d; returns E(d).
+Vec3 ReissnerFrame::staticForce(const ElemVec& d, double m, double kt, bool wantTangent, ElemVec& f,
+                                ElemMat& k) const {
   const double l = length_;
   const Vec2 g = (x2_ + d.segment<2>(3) - x1_ - d.segment<2>(0)) / l;
   const Mat2 lam = rot(beta0_ + 0.5 * (d(2) + d(5)));
   const Vec2 h = lam.transpose() * g;  // Lambda^T phi'
   const Vec3 e(h.x() - 1, h.y(), (d(5) - d(2)) / l);
   const Vec2 n(ea_ * (e(0) - e0_(0)), ga_ * (e(1) - e0_(1)));
-  const double m = ei_ * (e(2) - e0_(2));
 
   // dE/dd: dh/dphi' = Lambda^T, dh/dpsi = -W h, dpsi/dtheta_a = 1/2.
   const Mat2 p = lam.transpose() / l;
@@ -137,7 +139,7 @@ Vec3 ReissnerFrame::staticForce(const ElemVec& d, bool wantTangent, ElemVec& f, 
   strainOperatorForce(l, p, c, n, m, f);
   if (!wantTangent) return e;
 
-  materialTangent(l, 1.0, p, c, p, c, ea_, ga_, ei_, k);
+  materialTangent(l, 1.0, p, c, p, c, ea_, ga_, kt, k);
   // Geometric part n . d(b_j)/d(d_k).
   const Vec2 q = lam * kW.transpose() * n;  // q_i = n . (W Lambda^T e_i)
   const double nh = n.dot(h);
@@ -161,8 +163,9 @@ Vec3 ReissnerFrame::staticForce(const ElemVec& d, bool wantTangent, ElemVec& f, 
 //                   - sinc(Delta/2) W Lambda_mid^T g_mid Delta,
 // which defines B_alg (Delta = theta_m,n+1 - theta_m,n, g = phi'). The three
 // rotations come from two sine-cosine pairs: Lambda_mid and R(Delta/2).
-Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double alpha,
-                                  bool wantTangent, ElemVec& f, ElemMat& k) const {
+// m: the algorithmic bending moment, kt: dm/dK_{n+1} / (1/2 + alpha).
+Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double alpha, double m,
+                                  double kt, bool wantTangent, ElemVec& f, ElemMat& k) const {
   const double l = length_;
   const Vec2 g1 = (x2_ + d.segment<2>(3) - x1_ - d.segment<2>(0)) / l;
   const Vec2 g0 = (x2_ + dn.segment<2>(3) - x1_ - dn.segment<2>(0)) / l;
@@ -180,7 +183,6 @@ Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double al
   const Vec3 e0(h0.x() - 1, h0.y(), (dn(5) - dn(2)) / l);
   const Vec3 eAlg = (0.5 + alpha) * e1 + (0.5 - alpha) * e0 - e0_;
   const Vec2 n(ea_ * eAlg(0), ga_ * eAlg(1));
-  const double m = ei_ * eAlg(2);
 
   const Mat2 p = (cx / l) * lamM.transpose();
   const Vec2 c = -0.5 * sc * kW * aM;
@@ -190,7 +192,7 @@ Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double al
   // dE_{n+1}/dd: the consistent operator at d, Lambda_{n+1} = Lambda_mid R(x).
   const Mat2 p1 = (lamM * rx).transpose() / l;
   const Vec2 c1 = -0.5 * kW * h1;
-  materialTangent(l, 0.5 + alpha, p, c, p1, c1, ea_, ga_, ei_, k);
+  materialTangent(l, 0.5 + alpha, p, c, p1, c1, ea_, ga_, kt, k);
 
   // Geometric part n . d(b_alg,j)/d(d_k); x, psi_mid and g_mid each move with
   // d: dx/dtheta_a = dpsi_mid/dtheta_a = 1/4, dg_mid/du_a = sign_a/(2l).
@@ -211,9 +213,29 @@ Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double al
 
 Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rule, bool wantTangent,
                                ElemVec& residual, ElemMat& tangent) {
-  const Vec3 strain = rule.scheme == Scheme::MidPoint
-                          ? midPointForce(kin.d, kin.dn, rule.alpha, wantTangent, residual, tangent)
-                          : staticForce(kin.d, wantTangent, residual, tangent);
+  // Bending first: the curvature K = (theta2 - theta1)/l is linear in d.
+  const HingedBendingState& from = committed_.section;
+  const double openSign =
+      !from.hingeActive && trial_.section.hingeActive ? trial_.section.hingeSign : 0.0;
+  HingedBendingResponse bend;
+  if (Status st = law_.respond((kin.d(5) - kin.d(2)) / length_ - e0_(2), length_, from, openSign,
+                               bend);
+      !st)
+    return st;
+  const double m1 = bend.state.M;
+  Vec3 strain;
+  if (rule.scheme == Scheme::MidPoint) {
+    // Resultants at the alpha-weighted point: for bending the weighted moments
+    // of the committed and the trial state; an elastic section's moment at t_n
+    // is that of the curvature at d_n.
+    const double w = 0.5 + rule.alpha;
+    const double mn =
+        law_.isElastic() ? law_.EI() * ((kin.dn(5) - kin.dn(2)) / length_ - e0_(2)) : from.M;
+    strain = midPointForce(kin.d, kin.dn, rule.alpha, w * m1 + (1 - w) * mn, bend.tangent,
+                           wantTangent, residual, tangent);
+  } else {
+    strain = staticForce(kin.d, m1, bend.tangent, wantTangent, residual, tangent);
+  }
   if (rule.dynamic()) {
     const ElemVec dd = kin.d - kin.dn;
     const ElemVec aEff = rule.acceleration(dd, kin.vn, kin.an);
@@ -224,10 +246,35 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
     return Status::failure("frame-reissner element: non-finite residual or tangent");
 
   const Vec3 e = strain - e0_;
-  trial_.energy = 0.5 * length_ * (ea_ * e(0) * e(0) + ga_ * e(1) * e(1) + ei_ * e(2) * e(2));
-  trial_.forces = {ea_ * e(0), ga_ * e(1), ei_ * e(2)};
+  trial_.section = bend.state;
+  trial_.forces = {ea_ * e(0), ga_ * e(1), m1};
+  trial_.energy =
+      0.5 * length_ * (ea_ * e(0) * e(0) + ga_ * e(1) * e(1)) + length_ * law_.energyDensity(bend.state);
   return Status::success();
 }
+
+double ReissnerFrame::hingeDemand() const { return law_.demand(trial_.section); }
+
+void ReissnerFrame::activateHinge() {
+  if (!law_.canActivate(trial_.section)) return;
+  trial_.section.hingeActive = true;
+  trial_.section.hingeSign = trial_.forces.M >= 0 ? 1.0 : -1.0;
+}
+
+HingeInfo ReissnerFrame::hinge() const {
+  const HingedBendingState& s = trial_.section;
+  HingeInfo h;
+  h.active = s.hingeActive;
+  h.failed = s.hingeFailed;
+  h.position = 0.5;
+  h.jump = s.jump.alpha;
+  h.moment = trial_.forces.M;
+  h.softening = s.jump.xi;
+  if (law_.softening()) h.ultimate = law_.softening()->Mu();
+  return h;
+}
+
+void ReissnerFrame::setSection(const HingedBendingState& s) { trial_.section = committed_.section = s; }
 
 ElemVec ReissnerFrame::bodyLoad(const Vec2& g) const {
   ElemVec f = ElemVec::Zero();
@@ -247,8 +294,12 @@ void ReissnerFrame::writeState(std::ostream& out) const {
   for (double x : {length_, beta0_, ea_, ga_, ei_, rhoA_}) put(out, x);
   putFixed(out, e0_);
   putFixed(out, mass_);
-  for (const Report* r : {&trial_, &committed_})
+  // The material set may have hinge laws that this element dropped (HINGE2JOINT).
+  putBool(out, law_.isElastic());
+  for (const Report* r : {&trial_, &committed_}) {
     for (double x : {r->energy, r->forces.N, r->forces.V, r->forces.M}) put(out, x);
+    putSection(out, r->section);
+  }
 }
 
 void ReissnerFrame::readState(std::istream& in) {
@@ -260,8 +311,11 @@ void ReissnerFrame::readState(std::istream& in) {
   for (double* x : {&length_, &beta0_, &ea_, &ga_, &ei_, &rhoA_}) *x = get<double>(in);
   getFixed(in, e0_);
   getFixed(in, mass_);
-  for (Report* r : {&trial_, &committed_})
+  if (getBool(in)) law_ = HingedBending(BilinearHardening::elastic(ei_), std::nullopt);
+  for (Report* r : {&trial_, &committed_}) {
     for (double* x : {&r->energy, &r->forces.N, &r->forces.V, &r->forces.M}) *x = get<double>(in);
+    r->section = getSection(in);
+  }
 }
 
 }  // namespace c2d

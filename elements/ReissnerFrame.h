@@ -21,16 +21,28 @@
 // scheme both E_n and E_{n+1} are shifted, so dE and the identity above are
 // unchanged. It carries the section forces of a failure-phase element over to
 // the collapse phase without releasing its plastic deformation.
+//
+// Bending follows materials/HingedBending: elastic (M = EI (K - K0)) unless the
+// material set has HARDening (bilinear hardening of the moment) and SOFTening
+// (a softening hinge at the midpoint, embedded rotation discontinuity,
+// condensed: with one-point integration the jump changes only the curvature,
+// K - alpha/l, so the hinge works at any displacement and rotation). Under the
+// mid-point scheme the bending moment is the weighted moment
+// (1/2 + alpha) M_{n+1} + (1/2 - alpha) M_n; for an elastic section that is the
+// moment of the weighted curvature above. The hinge opens only when the solver
+// asks (core/Hinge.h), as in InelasticFrame.
 #include <array>
 #include <string>
 
 #include "core/Checkpoint.h"
 #include "core/Element.h"
+#include "core/Hinge.h"
 #include "core/MaterialSet.h"
+#include "materials/HingedBending.h"
 
 namespace c2d {
 
-class ReissnerFrame final : public Element, public Checkpoint {
+class ReissnerFrame final : public Element, public HingeCarrier, public Checkpoint {
  public:
   ReissnerFrame(const MaterialSet& mat, const std::array<int, 2>& nodes, const Vec2& x1,
                 const Vec2& x2);
@@ -55,7 +67,16 @@ class ReissnerFrame final : public Element, public Checkpoint {
   // d_{n+1}, for every scheme (not the mid-point algorithmic averages).
   SectionForces sectionForces() const override { return trial_.forces; }
 
+  double hingeDemand() const override;
+  void activateHinge() override;
+  HingeInfo hinge() const override;
+
   double length() const { return length_; }
+  const HingedBending& bendingLaw() const { return law_; }
+  // Section history at the last evaluated state; setSection() sets both the
+  // trial and the committed history (the start of a phase).
+  const HingedBendingState& section() const { return trial_.section; }
+  void setSection(const HingedBendingState& s);
   double referenceAngle() const { return beta0_; }
   // Initial strain (axial, shear, curvature); zero unless set.
   void setInitialStrain(const Vec3& e0) { e0_ = e0; }
@@ -76,12 +97,14 @@ class ReissnerFrame final : public Element, public Checkpoint {
   struct Report {
     double energy = 0;
     SectionForces forces;
+    HingedBendingState section;
   };
 
   // Internal force and tangent; both return the strains E(d).
-  Vec3 staticForce(const ElemVec& d, bool wantTangent, ElemVec& f, ElemMat& k) const;
-  Vec3 midPointForce(const ElemVec& d, const ElemVec& dn, double alpha, bool wantTangent,
-                     ElemVec& f, ElemMat& k) const;
+  Vec3 staticForce(const ElemVec& d, double m, double kt, bool wantTangent, ElemVec& f,
+                   ElemMat& k) const;
+  Vec3 midPointForce(const ElemVec& d, const ElemVec& dn, double alpha, double m, double kt,
+                     bool wantTangent, ElemVec& f, ElemMat& k) const;
 
   std::array<int, 2> nodes_;
   int materialNumber_ = 0;
@@ -90,6 +113,7 @@ class ReissnerFrame final : public Element, public Checkpoint {
   double beta0_ = 0;
   double ea_ = 0, ga_ = 0, ei_ = 0, rhoA_ = 0;
   Vec3 e0_ = Vec3::Zero();
+  HingedBending law_;
   ElemMat mass_;  // global frame
   Report trial_, committed_;
 };

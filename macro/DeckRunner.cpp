@@ -86,10 +86,17 @@ std::string summaryText(const RunSummary& s) {
                 s.steps == 1 ? "" : "s", s.iterations, s.iterations == 1 ? "" : "s", s.cuts,
                 s.cuts == 1 ? "" : "s", s.hinges, s.hinges == 1 ? "" : "s");
   std::string out = buf;
-  if (s.dynamic) {
-    std::snprintf(buf, sizeof buf, ", energy error %.2e", s.energyError);
+  if (s.jointsFormed || s.jointsRuptured) {
+    std::snprintf(buf, sizeof buf, ", %d joint%s formed, %d ruptured", s.jointsFormed,
+                  s.jointsFormed == 1 ? "" : "s", s.jointsRuptured);
     out += buf;
   }
+  if (s.maxMomentRatio > 0) {
+    std::snprintf(buf, sizeof buf, ", max |M|/Mu %.4f", s.maxMomentRatio);
+    out += buf;
+  }
+  std::snprintf(buf, sizeof buf, ", energy error %.2e", s.energyError);
+  out += buf;
   std::snprintf(buf, sizeof buf, ", %.2f s", s.seconds);
   return out + buf;
 }
@@ -170,6 +177,9 @@ class Walker {
     total_.energyError = std::max(total_.energyError, s.energyError);
     total_.seconds += s.seconds;
     total_.dynamic = total_.dynamic || s.dynamic;
+    total_.maxMomentRatio = std::max(total_.maxMomentRatio, s.maxMomentRatio);
+    total_.jointsFormed += s.jointsFormed;
+    total_.jointsRuptured += s.jointsRuptured;
     log_ << "\n  summary: " << summaryText(s) << "\n";
     if (console_ && !options_.quiet && plans_.size() > 1)
       *console_ << "  " << ro.stem << ": " << summaryText(s) << "\n" << std::flush;

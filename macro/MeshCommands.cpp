@@ -261,6 +261,7 @@ void echoMaterial(std::ostream& os, const MaterialSet& m) {
   if (m.softening) {
     line("Softening Mu", m.softening->Mu);
     line("Softening Ks", m.softening->Ks);
+    if (m.softening->thetaR) line("Rupture thetaR", *m.softening->thetaR);
   }
 }
 
@@ -392,13 +393,19 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
       if (v[3] < 0) failAt(r, 5, "Kh2 must not be negative");
       mat.hardening = HardeningData{v[0], v[1], v[2], v[3]};
     } else if (key == "soft") {
-      const std::string syntax = "SOFTening LINEar Mu Ks";
+      const std::string syntax = "SOFTening LINEar Mu Ks [thetaR]";
       numericText(syntax);
       if (!keywordMatches(text2, "LINEar")) failAt(r, 1, "expected LINEar", "write " + syntax);
-      const auto v = values(2, 2, syntax);
+      const auto v = values(3, 2, syntax);
       if (v[0] <= 0) failAt(r, 2, "Mu must be positive");
       if (v[1] >= 0) failAt(r, 3, "Ks must be negative (softening)");
-      mat.softening = SofteningData{v[0], v[1]};
+      mat.softening = SofteningData{v[0], v[1], std::nullopt};
+      if (r.size() > 4 && !r.text(4).empty()) {
+        if (!(v[2] > v[0] / -v[1]))
+          failAt(r, 4, "the rupture rotation thetaR must exceed the failure jump Mu/|Ks| = " +
+                           std::to_string(v[0] / -v[1]));
+        mat.softening->thetaR = v[2];
+      }
     }
   }
 
@@ -999,9 +1006,12 @@ void registerMaterialSubRecords(CommandRegistry& r) {
                  expr("Kh1", "modulus"), expr("Kh2", "modulus")}));
   r.add(subSpec(
       "SOFTening",
-      "SOFTening LINEar Mu Ks: softening hinge activated when |M| reaches Mu; hinge "
-      "moment Mu + Ks*jump down to zero (Ks < 0).",
-      {text("LINEar", ""), expr("Mu", "ultimate moment"), expr("Ks", "softening modulus")}));
+      "SOFTening LINEar Mu Ks [thetaR]: softening hinge activated when |M| reaches Mu; hinge "
+      "moment Mu + Ks*jump down to zero (Ks < 0). With FINIte kinematics a fully softened "
+      "hinge becomes a revolute joint during the run; a joint whose relative rotation "
+      "exceeds thetaR (rad) ruptures and the pieces separate.",
+      {text("LINEar", ""), expr("Mu", "ultimate moment"), expr("Ks", "softening modulus"),
+       expr("thetaR", "rupture rotation of the joint (optional)")}));
 }
 
 // ---------------------------------------------------------------------------

@@ -68,6 +68,24 @@ void ProblemRun::run() {
          << " activated at t = " << fmt("%.6e", analysis_->state().t)
          << ", M = " << fmt("%.6e", h.moment) << "\n";
   };
+  analysis_->topologyEvents().onEvent = [this](const TopologyEvent& ev) {
+    hingeStep_.resize(model_.numElements(), 0);
+    const double t = analysis_->state().t;
+    if (ev.kind == TopologyEvent::Kind::JointFormed) {
+      ++jointsFormed_;
+      log_ << "  joint  formed at t = " << fmt("%.6e", t) << ": element " << ev.element + 1
+           << ", fully softened hinge, at node " << ev.master + 1
+           << (ev.slave >= 0 ? " (slave node " + std::to_string(ev.slave + 1) + ")"
+                             : " (a free end: the node's rotation)")
+           << ", relative rotation " << fmt("%.6e", ev.rotation) << "\n";
+    } else {
+      ++jointsRuptured_;
+      log_ << "  joint  ruptured at t = " << fmt("%.6e", t) << ": element " << ev.element + 1
+           << " separates at node " << ev.master + 1 << " (new node " << ev.slave + 1
+           << "), relative rotation " << fmt("%.6e", ev.rotation) << " beyond thetaR = "
+           << fmt("%.6e", ev.limit) << "\n";
+    }
+  };
   for (const auto& batch : batches_)
     if (execList(batch, true) == Flow::Stop) break;
   const Status st = analysis_->commit();
@@ -116,7 +134,10 @@ RunSummary ProblemRun::summary() const {
   s.hinges = hingeCount_;
   s.energyError = energyError_;
   s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  s.dynamic = energyStarted_;
+  s.dynamic = dynamicSeen_;
+  s.maxMomentRatio = maxMomentRatio_;
+  s.jointsFormed = jointsFormed_;
+  s.jointsRuptured = jointsRuptured_;
   return s;
 }
 
@@ -490,17 +511,20 @@ void ProblemRun::printHinges() {
   printHingeTable(log_, model_, analysis_->state(), analysis_->loadFactor(), hingeStep_);
 }
 
-void ProblemRun::hingesToJoints(const Macro& m) {
+void ProblemRun::hingesToJoints(const Macro& m, MemberLaws laws) {
   const Status st = analysis_->commit();
   if (!st) fail(m, st.why);
-  const std::vector<CreatedJoint> joints = hingeToJoint(model_, analysis_->state());
+  const std::vector<CreatedJoint> joints = hingeToJoint(model_, analysis_->state(), laws);
   analysis_->topologyChanged();
   hingeStep_.resize(model_.numElements(), 0);
-  log_ << "  HINGE2JOINT  " << joints.size() << " hinges became joints; " << model_.numNodes()
+  log_ << "  HINGE2JOINT  " << joints.size() << " hinges became joints, members "
+       << (laws == MemberLaws::Elastic ? "elastic" : "keep their laws") << "; " << model_.numNodes()
        << " nodes, " << analysis_->assembler().dofs().numEquations() << " equations\n";
   for (const CreatedJoint& j : joints)
-    log_ << "    element " << j.element + 1 << ": joint master " << j.master + 1 << " slave "
-         << j.slave + 1 << " (element end " << j.slaveEnd + 1 << "), relative rotation "
+    log_ << "    element " << j.element + 1 << ": joint master " << j.master + 1
+         << (j.slave >= 0 ? " slave " + std::to_string(j.slave + 1)
+                          : " (a free end: the node's rotation)")
+         << " (element end " << j.slaveEnd + 1 << "), relative rotation "
          << fmt("%.6e", j.relativeRotation) << "\n";
 }
 
@@ -519,10 +543,11 @@ std::string ProblemRun::runState() const {
   for (int s : hingeStep_) put(out, s);
   put(out, hingeCount_);
   putBool(out, cutting_);
-  for (double x : {dtMin_, dtNominal_, energy0_, energyScale_, energyError_}) put(out, x);
-  put(out, stepsSinceCut_);
-  put(out, cuts_);
+  for (double x : {dtMin_, dtNominal_, energy0_, energyScale_, energyError_, maxMomentRatio_})
+    put(out, x);
+  for (int x : {stepsSinceCut_, cuts_, jointsFormed_, jointsRuptured_}) put(out, x);
   putBool(out, energyStarted_);
+  putBool(out, dynamicSeen_);
   return out.str();
 }
 
@@ -535,11 +560,12 @@ void ProblemRun::setRunState(const std::string& bytes) {
     throw CheckpointError("hinge steps do not match the element count");
   hingeCount_ = get<int>(in);
   cutting_ = getBool(in);
-  for (double* x : {&dtMin_, &dtNominal_, &energy0_, &energyScale_, &energyError_})
+  for (double* x :
+       {&dtMin_, &dtNominal_, &energy0_, &energyScale_, &energyError_, &maxMomentRatio_})
     *x = get<double>(in);
-  stepsSinceCut_ = get<int>(in);
-  cuts_ = get<int>(in);
+  for (int* x : {&stepsSinceCut_, &cuts_, &jointsFormed_, &jointsRuptured_}) *x = get<int>(in);
   energyStarted_ = getBool(in);
+  dynamicSeen_ = getBool(in);
 }
 
 void ProblemRun::saveRestart(const Macro& m) {
@@ -590,18 +616,24 @@ void ProblemRun::onCommit() {
     log_ << "  hinge  formed in element " << e + 1 << " at step " << s.step
          << " (t = " << fmt("%.6e", s.t) << ", M = " << fmt("%.6e", info.moment) << ")\n";
   }
+  for (const auto& [e, h] : analysis_->hingeCarriers()) {
+    const HingeInfo info = h->hinge();
+    if (info.ultimate > 0)
+      maxMomentRatio_ = std::max(maxMomentRatio_, std::abs(info.moment) / info.ultimate);
+  }
   if (history_) history_->record(*analysis_);
-  if (analysis_->integrator().dynamic()) {
+  dynamicSeen_ = dynamicSeen_ || analysis_->integrator().dynamic();
+  {
     const Energy en = analysis_->energy();
-    const double scale =
-        std::abs(en.kinetic) + std::abs(en.strain) + std::abs(en.contact) + std::abs(en.external);
+    const double scale = std::abs(en.kinetic) + std::abs(en.strain) + std::abs(en.contact) +
+                         std::abs(en.external) + std::abs(en.dissipated);
     if (!energyStarted_) {
-      energy0_ = en.total();
+      energy0_ = en.balance();
       energyStarted_ = true;
     }
     energyScale_ = std::max(energyScale_, scale);
     if (energyScale_ > 0)
-      energyError_ = std::max(energyError_, std::abs(en.total() - energy0_) / energyScale_);
+      energyError_ = std::max(energyError_, std::abs(en.balance() - energy0_) / energyScale_);
   }
   outputs_->onCommit(model_, analysis_->state());
   progress(false);

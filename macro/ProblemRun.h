@@ -15,6 +15,7 @@
 #include "macro/RunOutputs.h"
 #include "macro/SolutionCommand.h"
 #include "macro/TimeHistory.h"
+#include "elements/HingeToJoint.h"
 #include "solvers/Analysis.h"
 
 namespace c2d {
@@ -29,9 +30,14 @@ struct RunOptions {
 
 struct RunSummary {
   int steps = 0, iterations = 0, factorizations = 0, cuts = 0, hinges = 0;
-  double energyError = 0;  // max |total energy - initial| / max energy scale (dynamic runs)
+  // max |balance - initial balance| / max energy scale, the balance being kinetic + strain +
+  // contact - external + dissipated (solvers/EnergyAccount.h): how well the run's energy
+  // account closes, in static and dynamic runs
+  double energyError = 0;
   double seconds = 0;
-  bool dynamic = false;  // some step was dynamic (the energy error means something)
+  bool dynamic = false;         // some step was dynamic
+  double maxMomentRatio = 0;    // largest |M|/Mu of an element with a softening law, any time
+  int jointsFormed = 0, jointsRuptured = 0;  // during the run (fully softened hinges, ruptures)
 };
 
 class ProblemRun {
@@ -67,7 +73,7 @@ class ProblemRun {
   void setPathFollowing(const Macro& m);
   void setTimeHistory(const Macro& m);
   void reenterMesh(const Macro& m);
-  void hingesToJoints(const Macro& m);
+  void hingesToJoints(const Macro& m, MemberLaws laws);
   // SAVE[,name]: commit the converged step and write <outDir>/<name>.rst (default
   // name: the run's stem). REST[,name]: replace the model and the analysis state
   // by the ones saved there; the following commands continue from them.
@@ -113,8 +119,11 @@ class ProblemRun {
 
   std::vector<int> hingeStep_;  // step at which each element's hinge formed
   int hingeCount_ = 0;
+  int jointsFormed_ = 0, jointsRuptured_ = 0;
+  double maxMomentRatio_ = 0;
   double energy0_ = 0, energyScale_ = 0, energyError_ = 0;
   bool energyStarted_ = false;
+  bool dynamicSeen_ = false;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point lastProgress_;
   bool progressShown_ = false;

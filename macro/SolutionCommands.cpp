@@ -422,12 +422,20 @@ class HingeToJointCommand final : public SolutionCommand {
                     "End of the failure phase: every activated softening hinge becomes a revolute "
                     "joint (at the element end nearer the hinge; its jump becomes the joint's "
                     "relative rotation), every element becomes an elastic geometrically exact "
-                    "(FINIte) beam starting with its current section forces; the current "
-                    "displacements are the initial state, velocities zero.",
-                    {});
+                    "(FINIte) beam starting with its current section forces (the paper); the "
+                    "current displacements and velocities are kept. HINGe2joint,INELastic: the "
+                    "same, but the members keep their hardening and softening laws and history "
+                    "in FINIte kinematics, so new hinges form, fail into joints and rupture "
+                    "during the collapse.",
+                    {word("option", "INELastic: members keep their laws")});
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    if (!m.option.empty() && !keywordMatches(m.optionText, "INELastic"))
+      fail(m, 1, "unknown option '" + m.optionText + "' (INELastic is the only one)");
   }
   Flow run(const Macro& m, ProblemRun& r) const override {
-    r.hingesToJoints(m);
+    r.hingesToJoints(m, m.option.empty() ? MemberLaws::Elastic : MemberLaws::Inelastic);
     return Flow::Next;
   }
 };
@@ -438,7 +446,10 @@ class TplotCommand final : public SolutionCommand {
     return solution("TPLOt",
                     "Time histories written every inc steps to <stem>_tplot.csv; records after "
                     "END up to a blank: disp,n,d  velo,n,d  acce,n,d  reac,n,d  stre,e,c "
-                    "(c = 1 N, 2 V, 3 M)  ener  arcl.",
+                    "(c = 1 N, 2 V, 3 M)  ener  arcl. ener gives kinetic, strain, contact, external, "
+                    "total = kinetic + strain + contact - external, dissipated (plastic work, the "
+                    "mid-point scheme's algorithmic and contact dissipation since the start) and "
+                    "balance = total + dissipated, constant to the solver tolerance.",
                     {word("-", ""), num("inc", "output every inc steps", "1")}, "kind,n,d");
   }
   void bind(Macro& m, BindContext& ctx) const override {

@@ -17,7 +17,9 @@ TimeHistory::TimeHistory(std::filesystem::path path, std::vector<Column> columns
       case Kind::Stre: header_.push_back("stre_" + n + "_" + d); break;
       case Kind::Arcl: header_.push_back("arcl"); break;
       case Kind::Ener:
-        for (const char* e : {"kinetic", "strain", "contact", "external", "total"}) header_.push_back(e);
+        for (const char* e : {"kinetic", "strain", "contact", "external", "total", "dissipated",
+                              "balance"})
+          header_.push_back(e);
         break;
     }
   }
@@ -50,7 +52,9 @@ void TimeHistory::record(Analysis& analysis, bool force) {
       case Kind::Ener:
         if (!energyDone) en = analysis.energy();
         energyDone = true;
-        for (double v : {en.kinetic, en.strain, en.contact, en.external, en.total()}) row.push_back(v);
+        for (double v : {en.kinetic, en.strain, en.contact, en.external, en.total(), en.dissipated,
+                         en.balance()})
+          row.push_back(v);
         break;
     }
   }

@@ -8,7 +8,7 @@
 
 namespace c2d {
 
-Analysis::Analysis(Model& model) : model_(model), assembler_(model) {
+Analysis::Analysis(Model& model) : model_(model), assembler_(model), hinges_(*this) {
   setLinearSolver("auto");
   state_.prop = state_.propn = 1.0;  // FEAP: loads at full value until a PROP table is given
   topologyChanged();
@@ -76,7 +76,7 @@ void Analysis::topologyChanged() {
   F_.setZero(neq);
   stepInc_.setZero(neq);
   rNodal_.setZero(nd);
-  rRest_n_.setZero(nd);
+  account_.resize(model_.numNodes());
   dPrescribed_.setZero(nd);
   coordScale_ = 0;
   for (int n = 0; n < model_.numNodes(); ++n)
@@ -86,14 +86,6 @@ void Analysis::topologyChanged() {
   for (int n = 0; n < model_.numNodes(); ++n)
     for (int d = 0; d < kNodeDofs; ++d)
       tableOf_[static_cast<size_t>(n) * kNodeDofs + d] = std::max(1, model_.loadTable(n)[d]);
-  collectHingeCarriers();
-}
-
-void Analysis::collectHingeCarriers() {
-  hinges_.clear();
-  for (int e = 0; e < model_.numElements(); ++e)
-    if (auto* h = dynamic_cast<HingeCarrier*>(&model_.element(e))) hinges_.emplace_back(e, h);
-  hingesVersion_ = model_.topologyVersion();
 }
 
 double Analysis::loadFactor() const { return state_.prop * (path_ ? state_.arcLambda : 1.0); }
@@ -111,7 +103,7 @@ void Analysis::applyPrescribed() {
 }
 
 void Analysis::updateRates() {
-  const StepRule rule = integrator_.rule(state_.dt);
+  const StepRule rule = stepRule();
   if (!rule.dynamic()) {
     state_.v.setZero();
     state_.a.setZero();
@@ -156,7 +148,7 @@ Status Analysis::assemble() {
   if (assembler_.patternVersion() != model_.topologyVersion() ||
       R_.size() != assembler_.dofs().numEquations())
     topologyChanged();
-  const StepRule rule = integrator_.rule(state_.dt);
+  const StepRule rule = stepRule();
   Status st = assembler_.assemble(state_, rule, stepLoadFactors(rule), true);
   if (!st) return st;
   assembler_.toEquations(assembler_.nodalResidual(), R_);
@@ -193,129 +185,6 @@ void Analysis::applyIncrement(const Eigen::VectorXd& du, double scale) {
   updateRates();
 }
 
-double Analysis::maxHingeDemand(int& element) {
-  if (hingesVersion_ != model_.topologyVersion()) collectHingeCarriers();
-  double demand = 0;
-  for (const auto& [e, h] : hinges_) demand = std::max(demand, h->hingeDemand());
-  // Demands equal to round-off (a uniform moment) go to the lowest element
-  // number, so that the place where the hinge opens does not depend on the
-  // last bits of the solution.
-  element = -1;
-  for (const auto& [e, h] : hinges_)
-    if (demand > 0 && h->hingeDemand() >= demand * (1 - 1e-12)) {
-      element = e;
-      break;
-    }
-  return demand;
-}
-
-Status Analysis::solveFraction(double fraction, double tEnd, bool lineSearch) {
-  // Elements keep their trial flags (a hinge just activated); their trial
-  // history follows from the committed one at the next evaluation.
-  state_.u = state_.un;
-  state_.v = state_.vn;
-  state_.a = state_.an;
-  state_.arcLambda = state_.arcLambdan;
-  beginStep(state_.tn + fraction * (tEnd - state_.tn), fraction, false);
-  IterationInfo it;
-  for (int k = 0; k < 60; ++k) {
-    const Status st = iterate(lineSearch, true, it);
-    if (!st) return st;
-    if (it.converged) break;
-  }
-  if (!it.converged)
-    return Status::failure("no convergence while locating the load level where a hinge opens");
-  // Element states at the converged displacements.
-  const StepRule rule = integrator_.rule(state_.dt);
-  return assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
-}
-
-Status Analysis::locateHingeEvent(IterationInfo& info, bool lineSearch) {
-  // The demand is piecewise linear in the load level: regula falsi (Illinois)
-  // on the step fraction for max demand in [1, 1 + 1e-12]. From above, so that
-  // every element is at or past its ultimate moment when the hinge opens: the
-  // opening element's hinge is then at its capacity and takes the softening
-  // branch (InelasticFrame freezes its bulk at the plastic curvature of Mu,
-  // which from a state below Mu would lower the moment by EI/Kh times the gap
-  // and leave the hinge rigid), and the others, on their yield surface, take
-  // the elastic one.
-  constexpr double kBand = 1e-12;
-  locating_ = true;
-  const double tEnd = state_.t;
-  int element = -1;
-  double sLo = 0, dLo = committedDemand_, sHi = 1, dHi = maxHingeDemand(element);
-  double s = 0;
-  bool found = dLo >= 1.0;  // the committed state is already at Mu: open there
-  Status st;
-  int side = 0;
-  for (int k = 0; k < 60 && !found; ++k) {
-    s = sLo + (1.0 + 0.5 * kBand - dLo) * (sHi - sLo) / (dHi - dLo);
-    s = std::clamp(s, sLo + 1e-6 * (sHi - sLo), sHi - 1e-6 * (sHi - sLo));
-    st = solveFraction(s, tEnd, lineSearch);
-    if (!st) break;
-    const double d = maxHingeDemand(element);
-    found = d >= 1.0 && d <= 1.0 + kBand;
-    if (found) break;
-    if (d > 1.0) {
-      sHi = s;
-      dHi = d;
-      if (side == -1) dLo = 1.0 - 0.5 * (1.0 - dLo);
-      side = -1;
-    } else {
-      sLo = s;
-      dLo = d;
-      if (side == 1) dHi = 1.0 + 0.5 * (dHi - 1.0);
-      side = 1;
-    }
-  }
-  // Not located within the band: open at the closest level found past Mu.
-  if (st && !found) s = sHi;
-  if (st && (!found || s == 0)) st = solveFraction(s, tEnd, lineSearch);
-  if (st) st = commit();  // the sub-step up to the hinge's ultimate moment
-  if (st) {
-    maxHingeDemand(element);
-    for (const auto& [e, h] : hinges_)
-      if (e == element) {
-        h->activateHinge();
-        if (onHingeActivated) onHingeActivated(e, h->hinge());
-      }
-    info.hingeActivated = element;
-    // At the ultimate moment the open hinge has no jump yet (to 1e-12): the
-    // committed state is already the equilibrium; evaluate the elements with the
-    // hinge active.
-    dirty_ = true;
-    const StepRule rule = integrator_.rule(state_.dt);
-    st = assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
-  }
-  if (st) st = commit();
-  locating_ = false;
-  if (!st) return st;
-  // The rest of the step.
-  beginStep(tEnd, 1.0 - s, false);
-  info.converged = false;
-  return Status::success();
-}
-
-int Analysis::activateCriticalHinge() {
-  if (hingesVersion_ != model_.topologyVersion()) collectHingeCarriers();
-  int best = -1;
-  double demand = 1.0 + 1e-9;
-  for (const auto& [e, h] : hinges_) {
-    const double d = h->hingeDemand();
-    if (d > demand) {
-      demand = d;
-      best = e;
-    }
-  }
-  if (best < 0) return -1;
-  for (const auto& [e, h] : hinges_)
-    if (e == best) {
-      h->activateHinge();
-      if (onHingeActivated) onHingeActivated(e, h->hinge());
-    }
-  return best;
-}
-
 bool Analysis::holdPrescribed() {
   if (assembler_.patternVersion() != model_.topologyVersion()) topologyChanged();
   const DofMap& dofs = assembler_.dofs();
@@ -336,7 +205,7 @@ bool Analysis::holdPrescribed() {
 
 Status Analysis::addPrescribedIncrement() {
   const DofMap& dofs = assembler_.dofs();
-  const StepRule rule = integrator_.rule(state_.dt);
+  const StepRule rule = stepRule();
   ElementKinematics kin;
   ElemVec re, dp;
   ElemMat ke;
@@ -426,7 +295,7 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
     if (!st) return Status::failure("linear solve failed: " + st.why);
   }
   if (path_) {
-    const StepRule rule = integrator_.rule(state_.dt);
+    const StepRule rule = stepRule();
     dofFactors(state_.t, rule.loadWeight(), lamn_);
     lamn_ = lamn_.cwiseProduct(assembler_.referenceLoad());
     assembler_.toEquations(lamn_, F_);
@@ -455,7 +324,7 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
     // With a kinked law (Kh2/EI = 1/285 in the paper's data) the full Newton
     // step from an overshooting iterate can land past the reverse yield
     // surface, and plain Newton then cycles; the bracketed search does not.
-    const StepRule rule = integrator_.rule(state_.dt);
+    const StepRule rule = stepRule();
     const double g0 = du_.dot(R_);
     auto g = [&](double step, double& out) -> Status {
       applyIncrement(du_, step);
@@ -505,28 +374,15 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
   ++totalIterations_;
 
   info.converged = convergedAt(info.energy, info.iteration);
-  if (info.converged && !locating_ && !hinges_.empty()) {
-    if (!integrator_.dynamic()) {
-      // The demand of the converged state, then the event when a hinge passed Mu.
-      const StepRule rule = integrator_.rule(state_.dt);
-      st = assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
-      if (!st) return st;
-      int e = -1;
-      // Past Mu by more than the location band: elements left at their
-      // ultimate moment by a located event (demand up to 1 + 1e-12) do not
-      // open a second hinge in a step that does not load them further.
-      if (maxHingeDemand(e) > 1.0 + 1e-9) {
-        st = locateHingeEvent(info, lineSearch);
-        if (!st) return st;
-        converged_ = false;
-        return Status::success();  // the rest of the step starts a new iteration history
-      }
-    } else {
-      const int h = activateCriticalHinge();
-      if (h >= 0) {
-        info.converged = false;
-        info.hingeActivated = h;
-      }
+  if (info.converged) {
+    // A hinge past its ultimate moment: the event is located, and the rest of
+    // the step starts a new iteration history.
+    bool handled = false;
+    st = hinges_.afterConvergence(info, lineSearch, handled);
+    if (!st) return st;
+    if (handled) {
+      converged_ = false;
+      return Status::success();
     }
   }
   converged_ = info.converged;
@@ -589,7 +445,7 @@ double Analysis::largestResidual(int& node, int& dof) const {
 
 Status Analysis::formResidual(double& norm) {
   if (assembler_.patternVersion() != model_.topologyVersion()) topologyChanged();
-  const StepRule rule = integrator_.rule(state_.dt);
+  const StepRule rule = stepRule();
   Status st = assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
   if (!st) return st;
   assembler_.toEquations(assembler_.nodalResidual(), R_);
@@ -628,65 +484,48 @@ void Analysis::back() {
   dirty_ = false;
 }
 
+StepRule Analysis::stepRule() const {
+  // A sub-step (a located hinge event, the rest of a step) has its own length.
+  const double h = state_.t - state_.tn;
+  return integrator_.rule(h > 0 ? h : state_.dt);
+}
+
+Status Analysis::evaluateState() {
+  const StepRule rule = stepRule();
+  return assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
+}
+
 Status Analysis::commit() {
   if (!dirty_) return Status::success();
   if (assembler_.patternVersion() != model_.topologyVersion()) topologyChanged();
-  const StepRule rule = integrator_.rule(state_.dt);
+  const StepRule rule = stepRule();
   Status st = assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
   if (!st) return st;
-  // Loads at the step's load point: the mid-point's, or the trapezoidal mean.
-  if (rule.scheme != Scheme::MidPoint) {
-    dofFactors(state_.tn, path_ ? state_.arcLambdan : 1.0, lamn_);
-    lam_ = 0.5 * (lam_ + lamn_);
-  }
-  // External work of the step: loads at the step's load point, reactions on the
-  // prescribed dofs (mid-point: the algorithmic ones; otherwise the trapezoidal rule).
-  const Eigen::VectorXd& r = assembler_.nodalResidual();
-  const DofMap& dofs = assembler_.dofs();
-  double work = 0;
-  for (Eigen::Index i = 0; i < r.size(); ++i) {
-    const double du = state_.u[i] - state_.un[i];
-    work += du * (lam_[i] * assembler_.referenceLoad()[i] + assembler_.gravityLoad()[i]);
-    const int n = static_cast<int>(i / kNodeDofs), d = static_cast<int>(i % kNodeDofs);
-    if (dofs.used(n) && dofs.restrained(n, d)) {
-      const double rr = rule.scheme == Scheme::MidPoint ? r[i] : 0.5 * (r[i] + rRest_n_[i]);
-      work += du * rr;
-      rRest_n_[i] = r[i];
-    }
-  }
-  externalWork_ += work;
+  dofFactors(state_.tn, path_ ? state_.arcLambdan : 1.0, lamn_);
+  account_.commitStep(assembler_, state_, rule, lam_, lamn_);
   for (auto& el : model_.elements()) el->commit();
-  {
-    int e = -1;
-    committedDemand_ = maxHingeDemand(e);
-  }
+  hinges_.committed();
   if (path_) {
     path_->endStep(stepInc_, stepDlambda_);
     path_->setStepScale(1.0);
   }
   state_.commit();
   dirty_ = false;
+  if (topology_.afterCommit(model_, state_)) topologyChanged();
   if (onCommit) onCommit();
   return Status::success();
 }
 
 Status Analysis::reactions(Eigen::VectorXd& r) {
   if (assembler_.patternVersion() != model_.topologyVersion()) topologyChanged();
-  const StepRule rule = integrator_.rule(state_.dt);
+  const StepRule rule = stepRule();
   Status st = assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
   if (!st) return st;
   r = assembler_.nodalResidual();
   return Status::success();
 }
 
-Energy Analysis::energy() {
-  Energy e;
-  e.kinetic = assembler_.kineticEnergy(state_);
-  e.strain = assembler_.strainEnergy();
-  e.contact = assembler_.contactEnergy(state_);
-  e.external = externalWork_;
-  return e;
-}
+Energy Analysis::energy() { return account_.energy(assembler_, state_); }
 
 // ------------------------------------------------------------ restart files
 
@@ -713,8 +552,8 @@ void Analysis::writeState(std::ostream& out) const {
     put(out, x);
   put(out, state_.step);
   putTag(out, "BOOK");
-  for (double x : {externalWork_, committedDemand_, stepDlambda_, energy0_}) put(out, x);
-  putVector(out, rRest_n_);
+  for (double x : {hinges_.committedDemand(), stepDlambda_, energy0_}) put(out, x);
+  account_.write(out);
   putVector(out, stepInc_);
   putBool(out, converged_);
   putBool(out, dirty_);
@@ -762,11 +601,12 @@ void Analysis::readState(std::istream& in) {
     if (x->size() != nd) throw CheckpointError("state vectors do not match the model's node count");
   topologyChanged();
   expectTag(in, "BOOK");
-  for (double* x : {&externalWork_, &committedDemand_, &stepDlambda_, &energy0_})
-    *x = get<double>(in);
-  rRest_n_ = getVector(in);
+  hinges_.setCommittedDemand(get<double>(in));
+  for (double* x : {&stepDlambda_, &energy0_}) *x = get<double>(in);
+  account_.read(in);
   stepInc_ = getVector(in);
-  if (rRest_n_.size() != nd || stepInc_.size() != assembler_.dofs().numEquations())
+  account_.resize(model_.numNodes());
+  if (stepInc_.size() != assembler_.dofs().numEquations())
     throw CheckpointError("analysis vectors do not match the model");
   converged_ = getBool(in);
   dirty_ = getBool(in);

@@ -18,18 +18,15 @@
 #include "core/Hinge.h"
 #include "core/Model.h"
 #include "core/State.h"
+#include "solvers/EnergyAccount.h"
+#include "solvers/HingeEvents.h"
 #include "solvers/LinearSolver.h"
 #include "solvers/PathFollowing.h"
 #include "solvers/ProportionalLoad.h"
 #include "solvers/TimeIntegrator.h"
+#include "solvers/TopologyEvents.h"
 
 namespace c2d {
-
-struct Energy {
-  double kinetic = 0, strain = 0, contact = 0;
-  double external = 0;  // work of loads, self-weight and reactions since the start
-  double total() const { return kinetic + strain + contact - external; }
-};
 
 struct IterationInfo {
   int iteration = 0;    // within the step, 1-based
@@ -41,6 +38,8 @@ struct IterationInfo {
 };
 
 class Analysis {
+  friend class HingeEvents;  // locates events inside a step: sub-steps from the committed state
+
  public:
   explicit Analysis(Model& model);
 
@@ -89,10 +88,7 @@ class Analysis {
   double tableFactor(int table, double time) const;
   const std::vector<IterationInfo>& stepHistory() const { return history_; }
   // The elements that can carry a softening hinge: (element index, ability).
-  const std::vector<std::pair<int, HingeCarrier*>>& hingeCarriers() {
-    if (hingesVersion_ != model_.topologyVersion()) collectHingeCarriers();
-    return hinges_;
-  }
+  const std::vector<std::pair<int, HingeCarrier*>>& hingeCarriers() { return hinges_.carriers(); }
   // Node and dof (0-based) of the largest residual component of the last iteration.
   double largestResidual(int& node, int& dof) const;
   int totalIterations() const { return totalIterations_; }
@@ -109,6 +105,8 @@ class Analysis {
   std::function<void(int element, const HingeInfo&)> onHingeActivated;
   // Called after every commit, with the committed state in place.
   std::function<void()> onCommit;
+  // Joints formed and ruptured during the run (after a commit; set onEvent to hear of them).
+  TopologyEvents& topologyEvents() { return topology_; }
 
   // Topology change (MESH re-entry, HINGE2JOINT): carry the state to the new node count.
   void topologyChanged();
@@ -148,21 +146,14 @@ class Analysis {
   // increments back).
   bool holdPrescribed();
   Status addPrescribedIncrement();
-  int activateCriticalHinge();
-  // The most critical inactive hinge at the last evaluated state: demand |M|/Mu.
-  double maxHingeDemand(int& element);
-  // A converged static step took a hinge past its ultimate moment: locate the
-  // load level where the demand is 1, commit there, activate the hinge, converge
-  // at that level, commit, and set up the rest of the step.
-  Status locateHingeEvent(IterationInfo& info, bool lineSearch);
-  // Newton from the committed state to the load level `fraction` of the step,
-  // with the line search when the step's own iterations use it.
-  Status solveFraction(double fraction, double tEnd, bool lineSearch);
+  // The step rule of the current step (its length t - t_n; dt before the first step).
+  StepRule stepRule() const;
+  // Evaluates the elements at the current state (no tangent).
+  Status evaluateState();
   // Per node dof: the factor of its load table at `time` (times the arc-length factor).
   void dofFactors(double time, double arc, Eigen::VectorXd& out) const;
   // Factors at the step rule's load point (t_n+1, or the mid-point).
   const Eigen::VectorXd& stepLoadFactors(const StepRule& rule);
-  void collectHingeCarriers();
 
   Model& model_;
   State state_;
@@ -179,7 +170,7 @@ class Analysis {
   double tol_ = 1e-16;
 
   // Work vectors (sized per topology: nothing allocated inside the Newton loop).
-  Eigen::VectorXd R_, du_, duF_, F_, stepInc_, rNodal_, rRest_n_;
+  Eigen::VectorXd R_, du_, duF_, F_, stepInc_, rNodal_;
   Eigen::VectorXd rho_, drho_;   // linear residual and its correction (solveWithEarlierFactors)
   Eigen::VectorXd dPrescribed_;  // per node dof: increments of the prescribed values in the step
   double energy0_ = 0;
@@ -190,11 +181,9 @@ class Analysis {
   bool converged_ = false;
   bool dirty_ = false;  // trial differs from committed
   double stepDlambda_ = 0;
-  double externalWork_ = 0;
-  std::vector<std::pair<int, HingeCarrier*>> hinges_;
-  int hingesVersion_ = -1;
-  double committedDemand_ = 0;  // max hinge demand at the last commit
-  bool locating_ = false;       // inside locateHingeEvent: no nested events
+  EnergyAccount account_;
+  HingeEvents hinges_;
+  TopologyEvents topology_;
   bool predicted_ = false;      // the current step started from the prediction
 };
 

@@ -69,7 +69,7 @@ MaterialSet material() {
   m.resGA = kGA;
   m.resEI = kEI;
   m.hardening = HardeningData{kMc, kMy, kKh1, kKh2};
-  m.softening = SofteningData{kMu, kKs};
+  m.softening = SofteningData{kMu, kKs, std::nullopt};
   return m;
 }
 

@@ -35,7 +35,7 @@ MaterialSet material(int number, double Mu) {
   m.resGA = 1.25e6;
   m.resEI = kEI;
   m.hardening = HardeningData{kMc, kMy, kKh1, kKh2};
-  m.softening = SofteningData{Mu, kKs};
+  m.softening = SofteningData{Mu, kKs, std::nullopt};
   return m;
 }
 

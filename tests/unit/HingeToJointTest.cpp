@@ -103,7 +103,7 @@ MaterialSet softeningMaterial() {
   m.density = 2.5;
   m.A = 0.12;
   m.I = 0.0016;
-  m.softening = SofteningData{kMu, kKs};
+  m.softening = SofteningData{kMu, kKs, std::nullopt};
   return m;
 }
 

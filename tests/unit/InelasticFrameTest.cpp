@@ -30,7 +30,7 @@ MaterialSet v2Material() {
   m.resGA = 1.2e6;
   m.resEI = kEI;
   m.hardening = HardeningData{kMc, kMy, kKh1, kKh2};
-  m.softening = SofteningData{kMu, kKs};
+  m.softening = SofteningData{kMu, kKs, std::nullopt};
   return m;
 }
 

@@ -1,0 +1,62 @@
+#pragma once
+// The energy account of a run, kept step by step at every commit:
+//   kinetic, strain (stored elastic energy of the elements), contact (penalty
+//   energy), external (work of loads, self-weight and reactions since the start),
+//   dissipated (everything the model turned into heat since the start: plastic
+//   work of hardening and softening, the mid-point scheme's algorithmic
+//   dissipation, contact dissipation; Newmark's energy error shows here too,
+//   with either sign),
+//   balance = kinetic + strain + contact - external + dissipated,
+// which stays constant to the solver's tolerance in every analysis.
+//
+// The work of a step is taken at the step's load point with the forces the
+// equations were solved with: under the mid-point scheme the algorithmic forces
+// (every force of the residual is evaluated at the load point), otherwise the
+// trapezoidal mean of the forces at t_n and t_n+1. With du = u_n+1 - u_n:
+//   external   += du . loads + du . reactions (restrained dofs)
+//   dissipated += du . f_elements - du . f_contact - change of (kinetic + strain + contact)
+// where f_elements are the elements' internal and inertia forces. The balance
+// then changes by du . R over the free dofs only, R the residual: zero at a
+// converged state, so the balance measures how well the equations were solved
+// and that every force is accounted for. Dissipation is not inferred from the
+// balance: it is the work of the element forces that the elements did not store.
+#include <istream>
+#include <ostream>
+
+#include "core/Assembler.h"
+#include "core/State.h"
+#include "core/StepRule.h"
+
+namespace c2d {
+
+struct Energy {
+  double kinetic = 0, strain = 0, contact = 0;
+  double external = 0;    // work of loads, self-weight and reactions since the start
+  double dissipated = 0;  // since the start (see above)
+  double total() const { return kinetic + strain + contact - external; }
+  double balance() const { return total() + dissipated; }
+};
+
+class EnergyAccount {
+ public:
+  // Books the step from the committed state to s (trial = converged), with the
+  // assembler's last evaluation at s under `rule` and the load factors
+  // `loadFactors` of that evaluation; loadFactorsN: the factors at t_n (used by
+  // the trapezoidal rule).
+  void commitStep(const Assembler& a, const State& s, const StepRule& rule,
+                  const Eigen::VectorXd& loadFactors, const Eigen::VectorXd& loadFactorsN);
+  // The account now, with the energies of the last evaluation.
+  Energy energy(const Assembler& a, const State& s) const;
+  // Node count changed (nodes appended): keeps the values of the existing nodes.
+  void resize(int numNodes);
+
+  void write(std::ostream& out) const;
+  void read(std::istream& in);
+
+ private:
+  double external_ = 0, dissipated_ = 0;
+  double storedN_ = 0;            // kinetic + strain + contact at t_n
+  Eigen::VectorXd feN_, fcN_, rN_;  // element forces, contact forces, residual at t_n
+};
+
+}  // namespace c2d

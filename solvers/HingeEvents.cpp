@@ -1,0 +1,147 @@
+#include "solvers/HingeEvents.h"
+
+#include <algorithm>
+
+#include "elements/Joints.h"
+#include "solvers/Analysis.h"
+
+namespace c2d {
+
+namespace {
+
+// Demand band of a located event: the hinge opens at 1 <= demand <= 1 + kBand.
+constexpr double kBand = 1e-12;
+// A converged state past Mu by more than this opens an event. Elements left at
+// their ultimate moment by a located event (demand up to 1 + kBand) do not
+// open a second hinge in a step that does not load them further.
+constexpr double kTrigger = 1e-9;
+
+}  // namespace
+
+const std::vector<std::pair<int, HingeCarrier*>>& HingeEvents::carriers() {
+  Model& model = an_.model();
+  if (carriersVersion_ == model.topologyVersion()) return carriers_;
+  carriers_.clear();
+  for (int e = 0; e < model.numElements(); ++e)
+    if (auto* h = dynamic_cast<HingeCarrier*>(&innermost(model.element(e))))
+      carriers_.emplace_back(e, h);
+  carriersVersion_ = model.topologyVersion();
+  return carriers_;
+}
+
+double HingeEvents::maxDemand(int& element) {
+  double demand = 0;
+  for (const auto& [e, h] : carriers()) demand = std::max(demand, h->hingeDemand());
+  // Demands equal to round-off (a uniform moment) go to the lowest element
+  // number, so that the place where the hinge opens does not depend on the
+  // last bits of the solution.
+  element = -1;
+  for (const auto& [e, h] : carriers_)
+    if (demand > 0 && h->hingeDemand() >= demand * (1 - 1e-12)) {
+      element = e;
+      break;
+    }
+  return demand;
+}
+
+void HingeEvents::committed() {
+  int e = -1;
+  committedDemand_ = maxDemand(e);
+}
+
+void HingeEvents::open(int element) {
+  for (const auto& [e, h] : carriers())
+    if (e == element) {
+      h->activateHinge();
+      if (an_.onHingeActivated) an_.onHingeActivated(e, h->hinge());
+    }
+}
+
+Status HingeEvents::afterConvergence(IterationInfo& info, bool lineSearch, bool& handled) {
+  handled = false;
+  if (locating_ || carriers().empty()) return Status::success();
+  // The demand of the converged state.
+  if (Status st = an_.evaluateState(); !st) return st;
+  int e = -1;
+  if (maxDemand(e) <= 1.0 + kTrigger) return Status::success();
+  handled = true;
+  return locate(info, lineSearch);
+}
+
+Status HingeEvents::solveFraction(double fraction, double tEnd, bool lineSearch) {
+  // Elements keep their trial flags (a hinge just activated); their trial
+  // history follows from the committed one at the next evaluation.
+  State& s = an_.state_;
+  s.u = s.un;
+  s.v = s.vn;
+  s.a = s.an;
+  s.arcLambda = s.arcLambdan;
+  // A dynamic sub-step's rule follows from its length (Analysis::stepRule).
+  an_.beginStep(s.tn + fraction * (tEnd - s.tn), fraction, false);
+  IterationInfo it;
+  for (int k = 0; k < 60; ++k) {
+    const Status st = an_.iterate(lineSearch, true, it);
+    if (!st) return st;
+    if (it.converged) break;
+  }
+  if (!it.converged)
+    return Status::failure("no convergence while locating the point where a hinge opens");
+  return an_.evaluateState();  // element states at the converged displacements
+}
+
+Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
+  // The demand is piecewise smooth in the step fraction: regula falsi
+  // (Illinois) for max demand in [1, 1 + kBand], from above (see the header).
+  State& s = an_.state_;
+  locating_ = true;
+  const double tEnd = s.t;
+  int element = -1;
+  double sLo = 0, dLo = committedDemand_, sHi = 1, dHi = maxDemand(element);
+  double f = 0;
+  bool found = dLo >= 1.0;  // the committed state is already at Mu: open there
+  Status st;
+  int side = 0;
+  for (int k = 0; k < 60 && !found; ++k) {
+    f = sLo + (1.0 + 0.5 * kBand - dLo) * (sHi - sLo) / (dHi - dLo);
+    f = std::clamp(f, sLo + 1e-6 * (sHi - sLo), sHi - 1e-6 * (sHi - sLo));
+    st = solveFraction(f, tEnd, lineSearch);
+    if (!st) break;
+    const double d = maxDemand(element);
+    found = d >= 1.0 && d <= 1.0 + kBand;
+    if (found) break;
+    if (d > 1.0) {
+      sHi = f;
+      dHi = d;
+      if (side == -1) dLo = 1.0 - 0.5 * (1.0 - dLo);
+      side = -1;
+    } else {
+      sLo = f;
+      dLo = d;
+      if (side == 1) dHi = 1.0 + 0.5 * (dHi - 1.0);
+      side = 1;
+    }
+  }
+  // Not located within the band: open at the closest point found past Mu.
+  if (st && !found) f = sHi;
+  if (st && (!found || f == 0)) st = solveFraction(f, tEnd, lineSearch);
+  if (st) st = an_.commit();  // the sub-step up to the hinge's ultimate moment
+  if (st) {
+    maxDemand(element);
+    open(element);
+    info.hingeActivated = element;
+    // At the ultimate moment the open hinge has no jump yet (to 1e-12): the
+    // committed state is already the equilibrium; evaluate the elements with
+    // the hinge active and commit (the step is of zero length).
+    an_.dirty_ = true;
+    st = an_.evaluateState();
+  }
+  if (st) st = an_.commit();
+  locating_ = false;
+  if (!st) return st;
+  // The rest of the step.
+  an_.beginStep(tEnd, 1.0 - f, false);
+  info.converged = false;
+  return Status::success();
+}
+
+}  // namespace c2d

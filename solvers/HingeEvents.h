@@ -1,0 +1,65 @@
+#pragma once
+// Where softening hinges open during an analysis (core/Hinge.h).
+//
+// Elements never activate their own hinge. After a converged step in which the
+// largest demand |M|/Mu of a closed hinge exceeds 1, the step is cut back to
+// the point where the demand is 1 (regula falsi on the step fraction, each
+// trial a Newton solve from the committed state: the load level in statics,
+// the time in dynamics), that state is committed, that one hinge opens, the
+// state is committed again, and the rest of the step is solved. So a uniform
+// moment opens exactly one hinge, the peak of a load-displacement curve is a
+// computed point, and in a collapse no member carries more than its ultimate
+// moment beyond the location band.
+//
+// From above: every element is at or past its ultimate moment when the hinge
+// opens, so the opening element's hinge is at its capacity and takes the
+// softening branch (the bulk freezes at the plastic curvature of Mu, which
+// from a state below Mu would lower the moment by EI/Kh times the gap and leave
+// the hinge rigid), and the others, on their yield surface, take the elastic one.
+#include <utility>
+#include <vector>
+
+#include "core/Error.h"
+#include "core/Hinge.h"
+
+namespace c2d {
+
+class Analysis;
+struct IterationInfo;
+
+class HingeEvents {
+ public:
+  explicit HingeEvents(Analysis& analysis) : an_(analysis) {}
+
+  // The elements that can carry a softening hinge (through a joint's wrapper
+  // too): (element index, ability); rebuilt when the topology changed.
+  const std::vector<std::pair<int, HingeCarrier*>>& carriers();
+  // The most critical closed hinge at the last evaluated state: demand |M|/Mu
+  // (the lowest element number among ties to round-off).
+  double maxDemand(int& element);
+  // After a converged iteration: when a hinge passed Mu by more than the
+  // location band, locates the event, opens the hinge and sets up the rest of
+  // the step (info.converged false, info.hingeActivated set). `handled` tells
+  // whether it did.
+  Status afterConvergence(IterationInfo& info, bool lineSearch, bool& handled);
+  // At every commit: the demand of the committed state.
+  void committed();
+  bool locating() const { return locating_; }
+
+  double committedDemand() const { return committedDemand_; }
+  void setCommittedDemand(double d) { committedDemand_ = d; }
+
+ private:
+  Status locate(IterationInfo& info, bool lineSearch);
+  // Newton from the committed state to the fraction `fraction` of the step ending at tEnd.
+  Status solveFraction(double fraction, double tEnd, bool lineSearch);
+  void open(int element);
+
+  Analysis& an_;
+  std::vector<std::pair<int, HingeCarrier*>> carriers_;
+  int carriersVersion_ = -1;
+  double committedDemand_ = 0;  // max demand at the last commit
+  bool locating_ = false;       // inside locate(): no nested events
+};
+
+}  // namespace c2d
