@@ -63,6 +63,7 @@ void ProblemRun::run() {
   if (!analysis_->setLinearSolver(options_.solver))
     throw AnalysisError("unknown linear solver '" + options_.solver + "'");
   hingeStep_.assign(model_.numElements(), 0);
+  input_ = ModelFingerprint::of(model_);  // before any solution command changes the model
   analysis_->onCommit = [this] { onCommit(); };
   analysis_->onHingeActivated = [this](int e, const HingeInfo& h) {
     log_ << "  hinge  element " << e + 1
@@ -607,7 +608,7 @@ void ProblemRun::saveRestart(const Macro& m) {
   if (!st) fail(m, st.why);
   const std::filesystem::path file = restartPath(m);
   try {
-    c2d::saveRestart(file, model_, *analysis_, runState());
+    c2d::saveRestart(file, model_, *analysis_, runState(), input_);
   } catch (const std::exception& e) {
     fail(m, e.what());
   }
@@ -623,7 +624,7 @@ void ProblemRun::saveRestart(const Macro& m) {
 void ProblemRun::restoreRestart(const Macro& m) {
   const std::filesystem::path file = restartPath(m);
   try {
-    const std::string mine = loadRestart(file, model_, *analysis_);
+    const std::string mine = loadRestart(file, model_, *analysis_, &input_);
     try {
       setRunState(mine);
     } catch (const CheckpointError& e) {

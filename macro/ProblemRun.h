@@ -16,6 +16,7 @@
 #include "macro/SolutionCommand.h"
 #include "macro/TimeHistory.h"
 #include "solvers/Analysis.h"
+#include "solvers/ModelFingerprint.h"
 
 namespace c2d {
 
@@ -113,7 +114,8 @@ class ProblemRun {
   double dtMin_ = 0, dtNominal_ = 0;
   int stepsSinceCut_ = 0;
   int cuts_ = 0;
-  std::string lastFailure_;  // why the last Newton iteration failed (under step cutting)
+  std::string lastFailure_;
+  ModelFingerprint input_;  // the model as the deck's mesh input built it (SAVE / REST)  // why the last Newton iteration failed (under step cutting)
   bool diverged_ = false;
   bool stalled_ = false;  // the Newton loop left because its energy repeats
 

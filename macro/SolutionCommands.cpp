@@ -515,7 +515,9 @@ class RestCommand final : public SolutionCommand {
                     "replaced by the saved ones (the deck's mesh input is still read and checked "
                     "first), and the following commands continue from the saved step. Output "
                     "commands (TPLOt, PLOT, PVIEw) are not saved: give them again after REST. A "
-                    "truncated, corrupted or foreign file is an error.",
+                    "truncated, corrupted or foreign file is an error, and so is a file written for "
+                    "another model (the deck's node coordinates, elements, materials, boundary "
+                    "codes or loads differ from those the saving deck started with).",
                     {word("name", "restart file name (optional; .rst is added)")});
   }
   Flow run(const Macro& m, ProblemRun& r) const override {
