@@ -464,7 +464,7 @@ void ProblemRun::setTimeHistory(const Macro& m) {
   }
   const int every = m.has(0) ? m.numbers[0].evalInt(params_, "TPLOt increment") : 1;
   history_ = std::make_unique<TimeHistory>(options_.outDir / (options_.stem + "_tplot.csv"),
-                                           std::move(cols), every);
+                                           std::move(cols), every, analysis_->tableCount());
 }
 
 namespace {

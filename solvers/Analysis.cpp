@@ -43,6 +43,12 @@ double Analysis::tableFactor(int table, double time) const {
   return 1.0;
 }
 
+int Analysis::tableCount() const {
+  int n = std::max(1, static_cast<int>(tables_.size()) - 1);
+  for (int t : tableOf_) n = std::max(n, t);
+  return n;
+}
+
 void Analysis::dofFactors(double time, double arc, Eigen::VectorXd& out) const {
   constexpr int kCached = 16;
   double values[kCached];

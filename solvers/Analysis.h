@@ -94,6 +94,8 @@ class Analysis {
   Energy energy();
   double loadFactor() const;  // multiplier of table-1 FORCe at t_n+1 (with the arc-length factor)
   double tableFactor(int table, double time) const;
+  // The highest load table number in use (FPROportional or PROP,,n); 1 at least.
+  int tableCount() const;
   const std::vector<IterationInfo>& stepHistory() const { return history_; }
   // The elements that can carry a softening hinge: (element index, ability).
   const std::vector<std::pair<int, HingeCarrier*>>& hingeCarriers() {
