@@ -18,6 +18,7 @@
 #include "macro/MeshCommands.h"
 #include "macro/OutputCommands.h"
 #include "macro/Report.h"
+#include "solvers/ConvergenceTest.h"
 #include "solvers/ProportionalLoad.h"
 #include "solvers/RestartFile.h"
 
@@ -62,6 +63,7 @@ void ProblemRun::run() {
   if (!analysis_->setLinearSolver(options_.solver))
     throw AnalysisError("unknown linear solver '" + options_.solver + "'");
   hingeStep_.assign(model_.numElements(), 0);
+  input_ = ModelFingerprint::of(model_);  // before any solution command changes the model
   analysis_->onCommit = [this] { onCommit(); };
   analysis_->onHingeActivated = [this](int e, const HingeInfo& h) {
     log_ << "  hinge  element " << e + 1
@@ -156,13 +158,15 @@ Flow ProblemRun::runLoop(const Macro& m) {
   const int n = m.has(0) ? m.numbers[0].evalInt(params_, "loop count") : 1;
   const bool newton = m.newtonLoop();
   diverged_ = stalled_ = false;
+  lastFailure_.clear();
   for (int i = 0; i < n; ++i) {
     const Flow f = execList(m.body);
     if (f == Flow::Stop) return f;
     if (f == Flow::ExitLoop || diverged_) break;
   }
   if (newton && !analysis_->stepConverged()) {
-    const std::string why = diverged_  ? "diverged"
+    const std::string why = diverged_  ? "diverged" + (lastFailure_.empty() ? std::string()
+                                                                             : " (" + lastFailure_ + ")")
                             : stalled_ ? "stalled (its energy repeats)"
                                        : "did not converge in " + std::to_string(n) + " iterations";
     return retryWithCut(m, why);
@@ -186,25 +190,62 @@ std::string ProblemRun::historyText() const {
   return os.str();
 }
 
+std::string ProblemRun::advice(const std::string& why, bool lineSearch, int iterations) const {
+  std::ostringstream os;
+  os << "    to try:";
+  if (why.find("singular") != std::string::npos) {
+    os << " the model may be a mechanism or have lost all stiffness somewhere: check the "
+          "BOUNdary codes, joints and released hinges near the node named;";
+  }
+  if (analysis_->pathFollowing())
+    os << " a smaller path increment (ARCL data)";
+  else
+    os << " a smaller step (DT,,dt)";
+  if (!cutting_)
+    os << ", step cutting (AUTO,CUT,dtmin)";
+  else
+    os << ", a smaller dtmin (AUTO,CUT,dtmin)";
+  if (!lineSearch && !analysis_->pathFollowing()) os << ", a line search (TANG,LINE,1)";
+  if (iterations > 0) os << ", more iterations (LOOP,," << 2 * iterations << ")";
+  os << ", a looser tolerance (TOL,,etol,rtol)\n";
+  return os.str();
+}
+
+namespace {
+
+// The loop's Newton command uses the line search (TANG,LINE,1).
+bool usesLineSearch(const Macro& loop) {
+  for (const Macro& b : loop.body)
+    if ((b.is("tang") || b.is("utan")) && b.option.rfind("line", 0) == 0) return true;
+  return false;
+}
+
+}  // namespace
+
 Flow ProblemRun::retryWithCut(const Macro& loop, const std::string& why) {
   const State& s = analysis_->state();
   std::ostringstream msg;
   msg << "Newton iteration " << why << " in step " << s.step + 1 << " (t = " << fmt("%.6e", s.t)
       << ", dt = " << fmt("%.4e", s.dt) << ")";
   log_ << "  *** " << msg.str() << "\n" << historyText();
+  const int iterations = loop.has(0) ? loop.numbers[0].evalInt(params_, "loop count") : 1;
+  const bool unconverged = why.rfind("did not converge", 0) == 0;
   if (!cutting_)
     throw AnalysisError(loop.record.fieldLoc(0).str() + ": error: " + msg.str() + "\n" +
-                        historyText());
+                        historyText() +
+                        advice(why, usesLineSearch(loop), unconverged ? iterations : 0));
   for (;;) {
     const double dt = 0.5 * analysis_->state().dt;
     if (dt < dtMin_)
       throw AnalysisError(loop.record.fieldLoc(0).str() + ": error: " + msg.str() +
                           "; step cutting gave up at the minimum step " + fmt("%.4e", dtMin_) +
-                          "\n" + historyText());
+                          "\n" + historyText() +
+                          advice(why, usesLineSearch(loop), unconverged ? iterations : 0));
     ++cuts_;
     stepsSinceCut_ = 0;
     analysis_->back();
     analysis_->setDt(dt);
+    scalePathIncrement();
     log_ << "  cut    step to dt = " << fmt("%.4e", dt) << "\n";
     const Status st = analysis_->advance();
     if (!st) throw AnalysisError(loop.record.fieldLoc(0).str() + ": error: " + st.why);
@@ -238,10 +279,11 @@ Flow ProblemRun::newtonIteration(const Macro& m, bool update, bool lineSearch, b
   if (!st) {
     if (cutting_) {
       log_ << "  *** " << st.why << "\n";
+      lastFailure_ = st.why;
       diverged_ = true;
       return Flow::ExitLoop;
     }
-    fail(m, st.why + "\n" + historyText());
+    fail(m, st.why + "\n" + historyText() + advice(st.why, lineSearch, 0));
   }
   if (info.restarted) {
     log_ << "  " << (symmetric ? "TANG " : "UTAN ") << "  step " << s.step + 1
@@ -259,16 +301,21 @@ Flow ProblemRun::newtonIteration(const Macro& m, bool update, bool lineSearch, b
     diverged_ = true;
     return Flow::ExitLoop;
   }
+  if (info.globalized)
+    log_ << "  " << (symmetric ? "TANG " : "UTAN ") << "  step " << s.step + 1
+         << ": Newton's iterates cycle (energy or residual repeating with period one or two); "
+            "the step starts again from the committed state with the line search of TANG,LINE\n";
   // Stalled: the energy repeats with period one or two (a fixed point or a
-  // two-cycle of Newton's method, as on a kinked law): no later iteration of
-  // the loop converges, so the step is cut (or reported) now.
-  const std::size_t n = h.size();
-  auto same = [&](std::size_t a, std::size_t b) {
-    return std::abs(h[a].energy - h[b].energy) <= 1e-6 * std::max(h[a].energy, h[b].energy);
-  };
-  if (!info.converged && n >= 6 && same(n - 1, n - 3) && same(n - 2, n - 4) && same(n - 3, n - 5)) {
-    stalled_ = true;
-    return Flow::ExitLoop;
+  // two-cycle of Newton's method that the line search did not break): no later
+  // iteration of the loop converges, so the step is cut (or reported) now.
+  if (!info.converged && h.size() >= 6) {
+    double energies[6];
+    const std::size_t n = std::min<std::size_t>(h.size(), 6);
+    for (std::size_t k = 0; k < n; ++k) energies[k] = h[h.size() - n + k].energy;
+    if (repeatsWithPeriod(energies, n, 2, 3)) {
+      stalled_ = true;
+      return Flow::ExitLoop;
+    }
   }
   return info.converged ? Flow::ExitLoop : Flow::Next;
 }
@@ -298,6 +345,7 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax) {
     stepsSinceCut_ = 0;
   }
   if (cutting_ && tmax && s.t + s.dt > *tmax) analysis_->setDt(*tmax - s.t);
+  scalePathIncrement();
   Status st = analysis_->advance();
   // The converged step could not be committed (an element cannot be evaluated
   // at it): with step cutting it is dropped and taken again in halves.
@@ -310,6 +358,7 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax) {
     stepsSinceCut_ = 0;
     analysis_->back();
     analysis_->setDt(dt);
+    scalePathIncrement();
     log_ << "  cut    step to dt = " << fmt("%.4e", dt) << "\n";
     st = analysis_->advance();
   }
@@ -317,6 +366,15 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax) {
   log_ << "  TIME   t = " << fmt("%.6e", s.t) << "  prop = " << fmt("%.6e", analysis_->loadFactor())
        << "\n";
   return Flow::Next;
+}
+
+void ProblemRun::scalePathIncrement() {
+  // A cut step is a cut path increment too (displacement increment or arc
+  // length): otherwise the retried step would repeat the same Newton history.
+  PathFollowing* p = analysis_->pathFollowing();
+  if (!p) return;
+  const double dt = analysis_->state().dt;
+  p->setIncrementScale(cutting_ && dtNominal_ > 0 && dt < dtNominal_ ? dt / dtNominal_ : 1.0);
 }
 
 void ProblemRun::setDt(double dt) {
@@ -367,6 +425,9 @@ void ProblemRun::setProportionalLoad(const Macro& m) {
 }
 
 void ProblemRun::setPathFollowing(const Macro& m) {
+  // The converged step belongs to the control it was computed under: committed
+  // (and written to TPLOt) before the switch, as TIME would have done.
+  if (const Status st = analysis_->commit(); !st) fail(m, st.why);
   if (m.option == "off") {
     analysis_->setPathFollowing(std::nullopt);
     log_ << "  ARCL   off\n";
@@ -424,7 +485,7 @@ void ProblemRun::setTimeHistory(const Macro& m) {
   }
   const int every = m.has(0) ? m.numbers[0].evalInt(params_, "TPLOt increment") : 1;
   history_ = std::make_unique<TimeHistory>(options_.outDir / (options_.stem + "_tplot.csv"),
-                                           std::move(cols), every);
+                                           std::move(cols), every, analysis_->tableCount());
 }
 
 namespace {
@@ -573,7 +634,7 @@ void ProblemRun::saveRestart(const Macro& m) {
   if (!st) fail(m, st.why);
   const std::filesystem::path file = restartPath(m);
   try {
-    c2d::saveRestart(file, model_, *analysis_, runState());
+    c2d::saveRestart(file, model_, *analysis_, runState(), input_);
   } catch (const std::exception& e) {
     fail(m, e.what());
   }
@@ -589,7 +650,7 @@ void ProblemRun::saveRestart(const Macro& m) {
 void ProblemRun::restoreRestart(const Macro& m) {
   const std::filesystem::path file = restartPath(m);
   try {
-    const std::string mine = loadRestart(file, model_, *analysis_);
+    const std::string mine = loadRestart(file, model_, *analysis_, &input_);
     try {
       setRunState(mine);
     } catch (const CheckpointError& e) {

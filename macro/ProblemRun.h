@@ -17,6 +17,7 @@
 #include "macro/TimeHistory.h"
 #include "elements/HingeToJoint.h"
 #include "solvers/Analysis.h"
+#include "solvers/ModelFingerprint.h"
 
 namespace c2d {
 
@@ -67,6 +68,8 @@ class ProblemRun {
   Flow solveOnly(const Macro& m);
   Flow advanceTime(const Macro& m, std::optional<double> tmax);
   void setDt(double dt);
+  // Under step cutting the path-following increment follows dt / nominal dt.
+  void scalePathIncrement();
   void setProportionalLoad(const Macro& m);
   void setIntegrator(const TimeIntegrator& ti);
   void setStepCutting(bool on, double dtMin);
@@ -88,6 +91,9 @@ class ProblemRun {
   Flow retryWithCut(const Macro& loop, const std::string& why);
   [[noreturn]] void fail(const Macro& m, const std::string& what) const;
   std::string historyText() const;
+  // What to try after a failed Newton loop (the reason, whether it used the
+  // line search, its iteration count when it ran out of iterations).
+  std::string advice(const std::string& why, bool lineSearch, int iterations) const;
   std::vector<int> selection(const Macro& m, int count) const;
   void onCommit();
   void reportDebris();
@@ -114,6 +120,8 @@ class ProblemRun {
   double dtMin_ = 0, dtNominal_ = 0;
   int stepsSinceCut_ = 0;
   int cuts_ = 0;
+  std::string lastFailure_;
+  ModelFingerprint input_;  // the model as the deck's mesh input built it (SAVE / REST)  // why the last Newton iteration failed (under step cutting)
   bool diverged_ = false;
   bool stalled_ = false;  // the Newton loop left because its energy repeats
 

@@ -177,14 +177,36 @@ class TolCommand final : public SolutionCommand {
  public:
   CommandSpec spec() const override {
     return solution("TOL",
-                    "Energy convergence tolerance: |du.R| <= tol times the first "
-                    "iteration's value of the step (FEAP's test).",
-                    {word("-", ""), num("tol", "tolerance", "1e-16")});
+                    "Convergence tolerances. TOL,,etol,rtol: a Newton step has converged when "
+                    "|du.R| <= etol times the step's first value (FEAP's energy test, default "
+                    "1e-16) or, with rtol > 0, when the residual norm ||R|| <= rtol times the "
+                    "step's first one (default 0: off). TOL,ENER,value (FEAPpv): |du.R| below "
+                    "value counts as converged.",
+                    {word("option", "ENER: absolute energy value"), num("etol", "energy tolerance", "1e-16"),
+                     num("rtol", "residual-force tolerance (0: off)", "0")});
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    if (!m.option.empty() && m.option.rfind("ener", 0) != 0)
+      fail(m, 1, "unknown option '" + m.optionText + "' (TOL,,etol,rtol or TOL,ENER,value)");
   }
   Flow run(const Macro& m, ProblemRun& r) const override {
-    const double tol = m.numbers.empty() ? 1e-16 : m.numbers[0].eval(r.params());
-    if (!(tol > 0)) fail(m, 2, "the tolerance must be positive");
-    r.analysis().setTolerance(tol);
+    auto value = [&](std::size_t i, double def) {
+      return m.has(i) && !m.record.text(2 + i).empty() ? m.numbers[i].eval(r.params()) : def;
+    };
+    ConvergenceTest t = r.analysis().convergenceTest();
+    if (!m.option.empty()) {
+      const double zero = value(0, 0.0);
+      if (!(zero >= 0)) fail(m, 2, "the energy value must not be negative");
+      t.energyZero = zero;
+    } else {
+      const double etol = value(0, 1e-16), rtol = value(1, 0.0);
+      if (!(etol > 0)) fail(m, 2, "the tolerance must be positive");
+      if (!(rtol >= 0)) fail(m, 3, "the residual tolerance must not be negative");
+      t.energyTol = etol;
+      t.residualTol = rtol;
+    }
+    r.analysis().setConvergenceTest(t);
     return Flow::Next;
   }
 };
@@ -446,7 +468,8 @@ class TplotCommand final : public SolutionCommand {
     return solution("TPLOt",
                     "Time histories written every inc steps to <stem>_tplot.csv; records after "
                     "END up to a blank: disp,n,d  velo,n,d  acce,n,d  reac,n,d  stre,e,c "
-                    "(c = 1 N, 2 V, 3 M)  ener  arcl. ener gives kinetic, strain, contact, external, "
+                    "(c = 1 N, 2 V, 3 M)  ener  arcl. Columns time, prop (load table 1's factor), with "
+                    "several load tables prop_1, prop_2, ... (each table's), then the records'. ener gives kinetic, strain, contact, external, "
                     "total = kinetic + strain + contact - external, dissipated (plastic work, the "
                     "mid-point scheme's algorithmic and contact dissipation since the start) and "
                     "balance = total + dissipated, constant to the solver tolerance.",
@@ -504,7 +527,9 @@ class RestCommand final : public SolutionCommand {
                     "replaced by the saved ones (the deck's mesh input is still read and checked "
                     "first), and the following commands continue from the saved step. Output "
                     "commands (TPLOt, PLOT, PVIEw) are not saved: give them again after REST. A "
-                    "truncated, corrupted or foreign file is an error.",
+                    "truncated, corrupted or foreign file is an error, and so is a file written for "
+                    "another model (the deck's node coordinates, elements, materials, boundary "
+                    "codes or loads differ from those the saving deck started with).",
                     {word("name", "restart file name (optional; .rst is added)")});
   }
   Flow run(const Macro& m, ProblemRun& r) const override {

@@ -4,9 +4,15 @@
 
 namespace c2d {
 
-TimeHistory::TimeHistory(std::filesystem::path path, std::vector<Column> columns, int every)
-    : file_(std::move(path)), columns_(std::move(columns)), every_(every < 1 ? 1 : every) {
+TimeHistory::TimeHistory(std::filesystem::path path, std::vector<Column> columns, int every,
+                         int tables)
+    : file_(std::move(path)),
+      columns_(std::move(columns)),
+      every_(every < 1 ? 1 : every),
+      tables_(tables < 1 ? 1 : tables) {
   header_ = {"time", "prop"};
+  if (tables_ > 1)
+    for (int k = 1; k <= tables_; ++k) header_.push_back("prop_" + std::to_string(k));
   for (const Column& c : columns_) {
     const std::string n = std::to_string(c.index + 1), d = std::to_string(c.component + 1);
     switch (c.kind) {
@@ -33,6 +39,10 @@ void TimeHistory::record(Analysis& analysis, bool force) {
   if (!force && s.step % every_ != 0) return;
   lastStep_ = s.step;
   std::vector<double> row = {s.t, analysis.loadFactor()};
+  if (tables_ > 1) {
+    const double arc = analysis.pathFollowing() ? s.arcLambda : 1.0;
+    for (int k = 1; k <= tables_; ++k) row.push_back(arc * analysis.tableFactor(k, s.t));
+  }
   const Eigen::VectorXd& r = analysis.assembler().nodalResidual();
   bool energyDone = false;
   Energy en;

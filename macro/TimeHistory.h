@@ -1,6 +1,8 @@
 #pragma once
 // TPLOt: time histories written every inc steps to <stem>_tplot.csv, with a
-// header row: time, prop, then one column per requested quantity
+// header row: time, prop (table 1's factor, times the arc-length factor),
+// with several load tables prop_1, prop_2, ... (each table's), then one column
+// per requested quantity
 // (disp_n_d, velo_n_d, acce_n_d, reac_n_d, stre_e_c; ener gives kinetic,
 // strain, contact, external, total; arcl gives the arc-length load factor).
 // The file is written under "<name>.part" and renamed when the run completes,
@@ -24,7 +26,8 @@ class TimeHistory {
     int component = 0;  // 0-based dof or section force (N, V, M)
   };
 
-  TimeHistory(std::filesystem::path path, std::vector<Column> columns, int every);
+  // tables: the number of load tables in use (prop_k columns when above 1).
+  TimeHistory(std::filesystem::path path, std::vector<Column> columns, int every, int tables = 1);
   // Writes a row for the committed step when step % every == 0 (reactions from
   // the residual the commit assembled).
   void record(Analysis& analysis, bool force = false);
@@ -41,6 +44,7 @@ class TimeHistory {
   std::vector<std::string> header_;
   std::vector<std::vector<double>> rows_;
   int every_ = 1;
+  int tables_ = 1;
   int lastStep_ = -1;
 };
 

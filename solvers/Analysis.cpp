@@ -2,11 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "core/Checkpoint.h"
+#include "solvers/LineSearch.h"
 
 namespace c2d {
+
+namespace {
+// Largest |K du - R| / |R| accepted from a fresh factorization (checkSolve).
+constexpr double kSingularResidual = 1e-6;
+}  // namespace
 
 Analysis::Analysis(Model& model) : model_(model), assembler_(model), hinges_(*this) {
   setLinearSolver("auto");
@@ -36,6 +43,12 @@ double Analysis::tableFactor(int table, double time) const {
   return 1.0;
 }
 
+int Analysis::tableCount() const {
+  int n = std::max(1, static_cast<int>(tables_.size()) - 1);
+  for (int t : tableOf_) n = std::max(n, t);
+  return n;
+}
+
 void Analysis::dofFactors(double time, double arc, Eigen::VectorXd& out) const {
   constexpr int kCached = 16;
   double values[kCached];
@@ -57,10 +70,11 @@ const Eigen::VectorXd& Analysis::stepLoadFactors(const StepRule& rule) {
 }
 
 void Analysis::setPathFollowing(std::optional<PathFollowing> p) {
+  const bool wasOn = path_.has_value();
   path_ = std::move(p);
-  if (path_ && state_.arcLambda == 0 && state_.arcLambdan == 0) {
-    state_.arcLambda = state_.arcLambdan = 0;
-  }
+  // Switched on after load-controlled steps: the load level reached stays
+  // applied (factor 1), and the path following moves it from there.
+  if (path_ && !wasOn && state_.step > 0) state_.arcLambda = state_.arcLambdan = 1.0;
 }
 
 void Analysis::topologyChanged() {
@@ -135,6 +149,7 @@ void Analysis::beginStep(double time, double pathScale, bool predict) {
   history_.clear();
   energy0_ = 0;
   converged_ = false;
+  globalized_ = false;
   stepInc_.setZero();
   stepDlambda_ = 0;
   if (path_) {
@@ -293,6 +308,8 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
   if (!reused) {
     st = solver_->solve(R_, du_);
     if (!st) return Status::failure("linear solve failed: " + st.why);
+    st = checkSolve();
+    if (!st) return st;
   }
   if (path_) {
     const StepRule rule = stepRule();
@@ -316,58 +333,16 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
   if (info.iteration == 1) energy0_ = info.energy;
 
   double s = 1.0;
-  if (lineSearch && !path_ && info.iteration > 1 && info.energy > 0) {
-    // Search on g(s) = du . R(u + s du), accepted when |g(s)| <= 0.8 |g(0)|. For
-    // a convex incremental potential (hardening) g falls monotonically through
-    // zero: once g(s) changes sign the root is bracketed and regula falsi
-    // (Illinois) keeps it so; before that the secant extrapolates (up to s = 4).
-    // With a kinked law (Kh2/EI = 1/285 in the paper's data) the full Newton
-    // step from an overshooting iterate can land past the reverse yield
-    // surface, and plain Newton then cycles; the bracketed search does not.
+  if ((lineSearch || globalized_) && !path_ && info.iteration > 1 && info.energy > 0) {
     const StepRule rule = stepRule();
-    const double g0 = du_.dot(R_);
-    auto g = [&](double step, double& out) -> Status {
+    s = bracketedLineSearch(du_.dot(R_), [&](double step, double& out) -> bool {
       applyIncrement(du_, step);
-      Status s2 = assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
-      Eigen::VectorXd& Rt = duF_;  // reuse work vector
-      assembler_.toEquations(assembler_.nodalResidual(), Rt);
-      out = -du_.dot(Rt);
+      const Status s2 = assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
+      assembler_.toEquations(assembler_.nodalResidual(), duF_);  // reuse work vector
+      out = -du_.dot(duF_);
       applyIncrement(du_, -step);
-      return s2;
-    };
-    double g1 = 0;
-    if (g(1.0, g1) && std::abs(g1) > 0.8 * std::abs(g0)) {
-      double sLo = 0, gLo = g0, sHi = 1, gHi = g1, sn = 1, gn = g1;
-      int side = 0;
-      for (int k = 0; k < 10 && std::abs(gn) > 0.8 * std::abs(g0); ++k) {
-        const bool bracketed = (gLo > 0) != (gHi > 0);
-        if (bracketed) {
-          sn = sHi - gHi * (sHi - sLo) / (gHi - gLo);
-        } else if (gHi != gLo && std::abs(gHi) < std::abs(gLo)) {
-          sn = std::min(4.0, sHi - gHi * (sHi - sLo) / (gHi - gLo));
-        } else {
-          break;  // g grows along the direction: no better step to find here
-        }
-        if (!g(sn, gn)) break;
-        if (!bracketed) {
-          sLo = sHi;
-          gLo = gHi;
-          sHi = sn;
-          gHi = gn;
-        } else if ((gn > 0) == (gLo > 0)) {
-          sLo = sn;
-          gLo = gn;
-          if (side == 1) gHi *= 0.5;
-          side = 1;
-        } else {
-          sHi = sn;
-          gHi = gn;
-          if (side == -1) gLo *= 0.5;
-          side = -1;
-        }
-      }
-      s = sn;
-    }
+      return s2.ok;
+    });
   }
   applyIncrement(du_, s);
   dirty_ = true;
@@ -378,7 +353,7 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
     // A hinge past its ultimate moment: the event is located, and the rest of
     // the step starts a new iteration history.
     bool handled = false;
-    st = hinges_.afterConvergence(info, lineSearch, handled);
+    st = hinges_.afterConvergence(info, lineSearch || globalized_, handled);
     if (!st) return st;
     if (handled) {
       converged_ = false;
@@ -387,6 +362,63 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
   }
   converged_ = info.converged;
   history_.push_back(info);
+  // Plain Newton cycling (on the kinks of a hardening law): the step starts
+  // again from the committed state with the line search of TANG,LINE, so that
+  // a step TANG,LINE converges converges here too, through the same iterates.
+  if (!info.converged && !lineSearch && !globalized_ && !path_ && cycling()) {
+    for (auto& el : model_.elements()) el->revert();
+    state_.u = state_.un;
+    beginStep(state_.t, 1.0, false);
+    globalized_ = true;
+    info.globalized = true;
+  }
+  return Status::success();
+}
+
+bool Analysis::cycling() const {
+  // The energy (or the residual) of the last iteration equals that of the one
+  // before, or the last two equal the two before.
+  constexpr std::size_t kWindow = 4;
+  const std::size_t n = history_.size();
+  if (n < kWindow) return false;
+  double energy[kWindow], residual[kWindow];
+  for (std::size_t k = 0; k < kWindow; ++k) {
+    energy[k] = history_[n - kWindow + k].energy;
+    residual[k] = history_[n - kWindow + k].residual;
+  }
+  for (const double* v : {energy, residual})
+    if (repeatsWithPeriod(v, kWindow, 1, 1) || repeatsWithPeriod(v, kWindow, 2, 2)) return true;
+  return false;
+}
+
+Status Analysis::checkSolve() {
+  // A pivoting LU of a singular tangent (a mechanism) finishes with pivots at
+  // round-off level: the correction is huge and does not solve K du = R. A
+  // backward-stable solve leaves |K du - R| at round-off of |K| |du|: at most
+  // 2e-10 of |R| over the regression decks (the arch with EI/EA = 1e-12 included).
+  const SparseMatrix& k = assembler_.tangent();
+  rho_.noalias() = k * du_;
+  rho_ -= R_;
+  const double bad = rho_.norm(), scale = R_.norm();
+  if (!(bad <= kSingularResidual * scale) && scale > 0) {
+    // The mechanism's motion: the largest component of the correction.
+    const DofMap& dofs = assembler_.dofs();
+    int node = -1, dof = -1;
+    double largest = -1;
+    for (int i = 0; i < dofs.numNodes() * kNodeDofs; ++i) {
+      const int eq = dofs.eq(i);
+      if (eq < 0 || eq >= du_.size() || !(std::abs(du_[eq]) > largest)) continue;
+      largest = std::abs(du_[eq]);
+      node = i / kNodeDofs;
+      dof = i % kNodeDofs;
+    }
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.2e", bad / scale);
+    return Status::failure("singular tangent: the solve leaves " + std::string(buf) +
+                           " of the residual unbalanced (a mechanism?); the correction is "
+                           "largest at node " + std::to_string(node + 1) + ", dof " +
+                           std::to_string(dof + 1));
+  }
   return Status::success();
 }
 
@@ -412,21 +444,19 @@ bool Analysis::solveWithEarlierFactors() {
 }
 
 bool Analysis::convergedAt(double energy, int iteration) const {
-  // FEAP's energy test, and a residual already at round-off level (a step that
-  // changes nothing has no meaningful first energy to compare with).
-  const double e0 = iteration == 1 ? energy : energy0_;
-  const double roundoff = 1e-10 * assembler_.forceScale();
-  // Stagnation at round-off: the energy no longer falls (less than tenfold in an
-  // iteration) although it is already 1e-10 of the first one: the residual has
-  // reached the precision the model can be evaluated with.
-  const bool stagnated = !history_.empty() && iteration >= 3 && energy <= 1e-10 * e0 &&
-                         energy >= 0.1 * history_.back().energy;
-  // A correction below the resolution of the nodal positions (a free body in
-  // uniform motion predicted exactly: its residual is round-off of zero forces).
-  const double positions = coordScale_ + (state_.u.size() ? state_.u.cwiseAbs().maxCoeff() : 0.0);
-  const bool unresolvable = du_.size() > 0 && du_.cwiseAbs().maxCoeff() <= 1e-15 * positions;
-  return e0 == 0 || energy <= tol_ * e0 || stagnated || unresolvable ||
-         (!path_ && R_.size() > 0 && R_.cwiseAbs().maxCoeff() <= roundoff);
+  ConvergenceTest::Figures f;
+  f.iteration = iteration;
+  f.energy = energy;
+  f.energy0 = energy0_;
+  f.previousEnergy = history_.empty() ? -1.0 : history_.back().energy;
+  f.residual = R_.norm();
+  f.residual0 = history_.empty() ? f.residual : history_.front().residual;
+  f.largestResidual = R_.size() ? R_.cwiseAbs().maxCoeff() : 0.0;
+  f.roundoff = 1e-10 * assembler_.forceScale();
+  f.largestCorrection = du_.size() ? du_.cwiseAbs().maxCoeff() : 0.0;
+  f.positions = coordScale_ + (state_.u.size() ? state_.u.cwiseAbs().maxCoeff() : 0.0);
+  f.pathFollowing = path_.has_value();
+  return test_.converged(f);
 }
 
 double Analysis::largestResidual(int& node, int& dof) const {
@@ -478,6 +508,7 @@ void Analysis::back() {
   history_.clear();
   energy0_ = 0;
   converged_ = false;
+  globalized_ = false;
   stepInc_.setZero();
   stepDlambda_ = 0;
   if (path_) path_->beginStep();
@@ -534,7 +565,8 @@ void Analysis::writeState(std::ostream& out) const {
   putTag(out, "ANLS");
   putString(out, solverName_);
   put(out, integrator_.kind);
-  for (double x : {integrator_.beta, integrator_.gamma, integrator_.alpha, integrator_.betaV, tol_})
+  for (double x : {integrator_.beta, integrator_.gamma, integrator_.alpha, integrator_.betaV,
+                   test_.energyTol, test_.residualTol, test_.energyZero})
     put(out, x);
   putCount(out, tables_.size());
   for (const auto& t : tables_) {
@@ -558,6 +590,7 @@ void Analysis::writeState(std::ostream& out) const {
   putBool(out, converged_);
   putBool(out, dirty_);
   putBool(out, predicted_);
+  putBool(out, globalized_);
   put(out, totalIterations_);
   put(out, totalFactorizations_);
   putCount(out, history_.size());
@@ -581,7 +614,8 @@ void Analysis::readState(std::istream& in) {
       integrator_.kind != TimeIntegrator::Kind::MidPoint)
     throw CheckpointError("unknown time integrator");
   for (double* x :
-       {&integrator_.beta, &integrator_.gamma, &integrator_.alpha, &integrator_.betaV, &tol_})
+       {&integrator_.beta, &integrator_.gamma, &integrator_.alpha, &integrator_.betaV,
+        &test_.energyTol, &test_.residualTol, &test_.energyZero})
     *x = get<double>(in);
   tables_.assign(getCount(in), std::nullopt);
   for (auto& t : tables_)
@@ -611,6 +645,7 @@ void Analysis::readState(std::istream& in) {
   converged_ = getBool(in);
   dirty_ = getBool(in);
   predicted_ = getBool(in);
+  globalized_ = getBool(in);
   totalIterations_ = get<int>(in);
   totalFactorizations_ = get<int>(in);
   history_.resize(getCount(in));

@@ -18,6 +18,7 @@
 #include "core/Hinge.h"
 #include "core/Model.h"
 #include "core/State.h"
+#include "solvers/ConvergenceTest.h"
 #include "solvers/EnergyAccount.h"
 #include "solvers/HingeEvents.h"
 #include "solvers/LinearSolver.h"
@@ -35,6 +36,9 @@ struct IterationInfo {
   bool converged = false;
   int hingeActivated = -1;  // element index of a hinge activated at this iteration
   bool restarted = false;   // the step was started again from the committed state
+  // Plain Newton cycled (energy or residual repeating with period one or two):
+  // the step starts again from the committed state with the line search.
+  bool globalized = false;
 };
 
 class Analysis {
@@ -53,8 +57,11 @@ class Analysis {
   const std::string& linearSolverName() const { return solverName_; }
   void setIntegrator(const TimeIntegrator& ti) { integrator_ = ti; }
   const TimeIntegrator& integrator() const { return integrator_; }
-  void setTolerance(double tol) { tol_ = tol; }
-  double tolerance() const { return tol_; }
+  void setTolerance(double tol) { test_.energyTol = tol; }
+  double tolerance() const { return test_.energyTol; }
+  // TOL,,etol,rtol and TOL,ENER,value: the whole convergence test.
+  void setConvergenceTest(const ConvergenceTest& t) { test_ = t; }
+  const ConvergenceTest& convergenceTest() const { return test_; }
   void setDt(double dt) { state_.dt = dt; }
   // Proportional load table `table` (PROP,,n) as a function of time; dofs follow
   // table 1 unless FPROportional says otherwise; a table never given is 1 (FEAP).
@@ -86,6 +93,8 @@ class Analysis {
   Energy energy();
   double loadFactor() const;  // multiplier of table-1 FORCe at t_n+1 (with the arc-length factor)
   double tableFactor(int table, double time) const;
+  // The highest load table number in use (FPROportional or PROP,,n); 1 at least.
+  int tableCount() const;
   const std::vector<IterationInfo>& stepHistory() const { return history_; }
   // The elements that can carry a softening hinge: (element index, ability).
   const std::vector<std::pair<int, HingeCarrier*>>& hingeCarriers() { return hinges_.carriers(); }
@@ -135,8 +144,13 @@ class Analysis {
   // du_ for the residual R_ and the tangent just assembled, with the factors of
   // an earlier tangent of the step; false when they are too far off.
   bool solveWithEarlierFactors();
+  // du_ from fresh factors solves K du = R: otherwise the tangent is singular
+  // (the failure names the node and dof where the correction is largest).
+  Status checkSolve();
   // The convergence tests for an iteration whose correction has this energy |du.R|.
   bool convergedAt(double energy, int iteration) const;
+  // The step's iterations repeat with period one or two (plain Newton cycling).
+  bool cycling() const;
   void applyIncrement(const Eigen::VectorXd& du, double scale);
   // Tangent predictor of a static step with prescribed displacements: moves the
   // restrained dofs back to their committed values (true when any had moved,
@@ -167,7 +181,7 @@ class Analysis {
   std::vector<int> tableOf_;                             // per node dof
   Eigen::VectorXd lam_, lamn_;                           // work vectors of dofFactors
   std::optional<PathFollowing> path_;
-  double tol_ = 1e-16;
+  ConvergenceTest test_;
 
   // Work vectors (sized per topology: nothing allocated inside the Newton loop).
   Eigen::VectorXd R_, du_, duF_, F_, stepInc_, rNodal_;
@@ -185,6 +199,7 @@ class Analysis {
   HingeEvents hinges_;
   TopologyEvents topology_;
   bool predicted_ = false;      // the current step started from the prediction
+  bool globalized_ = false;     // the step's plain Newton cycled: line search from then on
 };
 
 }  // namespace c2d

@@ -27,9 +27,10 @@ Status PathFollowing::correction(const Eigen::VectorXd& stepIncrement, const Eig
                                  const Eigen::VectorXd& duF, double& dlambda) {
   const bool predictor = predictor_;
   predictor_ = false;
+  const double scale = scale_ * cut_;
   if (kind_ == Kind::DisplacementControl) {
     if (eq_ < 0) return Status::failure("the controlled dof is not a free equation");
-    const double target = predictor ? scale_ * increment_ : scale_ * increment_ - stepIncrement[eq_];
+    const double target = predictor ? scale * increment_ : scale * increment_ - stepIncrement[eq_];
     if (std::abs(duF[eq_]) < 1e-300)
       return Status::failure("the load does not move the controlled dof (zero stiffness coupling)");
     dlambda = (target - duR[eq_]) / duF[eq_];
@@ -38,21 +39,22 @@ Status PathFollowing::correction(const Eigen::VectorXd& stepIncrement, const Eig
   // Cylindrical arc length.
   if (predictor) {
     if (ds_ == 0) {
-      dlambda = firstDlambda_;
+      // The nominal arc length is the first step's; a cut first step takes its part.
+      dlambda = cut_ * firstDlambda_;
       ds_ = std::abs(firstDlambda_) * duF.norm();
       if (ds_ == 0) return Status::failure("arc length: zero load pattern response");
       return Status::success();
     }
     double sign = lastDirection_;
     if (lastIncrement_.size() == duF.size()) sign = lastIncrement_.dot(duF) >= 0 ? 1.0 : -1.0;
-    dlambda = sign * scale_ * ds_ / duF.norm();
+    dlambda = sign * scale * ds_ / duF.norm();
     return Status::success();
   }
   // ||a + dlambda duF||^2 = ds^2 with a = stepIncrement + duR
   const Eigen::VectorXd& s = stepIncrement;
   const double A = duF.squaredNorm();
   const double B = 2.0 * (s + duR).dot(duF);
-  const double C = (s + duR).squaredNorm() - scale_ * scale_ * ds_ * ds_;
+  const double C = (s + duR).squaredNorm() - scale * scale * ds_ * ds_;
   const double disc = B * B - 4 * A * C;
   if (disc < 0) {
     // No real root: take the closest point (minimum of the quadratic), a common remedy.
@@ -77,7 +79,7 @@ void PathFollowing::write(std::ostream& out) const {
   using namespace checkpoint;
   put(out, kind_);
   put(out, eq_);
-  for (double x : {increment_, ds_, firstDlambda_, lastDirection_, scale_}) put(out, x);
+  for (double x : {increment_, ds_, firstDlambda_, lastDirection_, scale_, cut_}) put(out, x);
   putVector(out, lastIncrement_);
   putBool(out, predictor_);
 }
@@ -89,7 +91,7 @@ PathFollowing PathFollowing::read(std::istream& in) {
   if (p.kind_ != Kind::DisplacementControl && p.kind_ != Kind::ArcLength)
     throw CheckpointError("unknown path following kind");
   p.eq_ = get<int>(in);
-  for (double* x : {&p.increment_, &p.ds_, &p.firstDlambda_, &p.lastDirection_, &p.scale_})
+  for (double* x : {&p.increment_, &p.ds_, &p.firstDlambda_, &p.lastDirection_, &p.scale_, &p.cut_})
     *x = get<double>(in);
   p.lastIncrement_ = getVector(in);
   p.predictor_ = getBool(in);

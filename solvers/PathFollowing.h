@@ -32,6 +32,10 @@ class PathFollowing {
   // Fraction of the nominal step increment (displacement increment or arc length)
   // for the coming step: a located sub-step takes part of a step.
   void setStepScale(double s) { scale_ = s; }
+  // Fraction of the nominal increment for every step from now on (step
+  // cutting: dt / nominal dt), on top of the step scale.
+  void setIncrementScale(double c) { cut_ = c; }
+  double incrementScale() const { return cut_; }
   // Load-factor correction for this iteration. du (step increment so far, free dofs),
   // duR, duF: the two solutions. Returns the failure when no real root exists.
   Status correction(const Eigen::VectorXd& stepIncrement, const Eigen::VectorXd& duR,
@@ -52,6 +56,7 @@ class PathFollowing {
   Eigen::VectorXd lastIncrement_;
   bool predictor_ = true;
   double scale_ = 1.0;
+  double cut_ = 1.0;
 };
 
 }  // namespace c2d

@@ -30,8 +30,9 @@ std::uint64_t fnv1a(const std::string& bytes) {
 }  // namespace
 
 void saveRestart(const std::filesystem::path& file, const Model& model, const Analysis& analysis,
-                 const std::string& extra) {
+                 const std::string& extra, const ModelFingerprint& input) {
   std::ostringstream payload(std::ios::binary);
+  input.write(payload);
   writeModel(payload, model);
   analysis.writeState(payload);
   checkpoint::putTag(payload, "USER");
@@ -50,7 +51,8 @@ void saveRestart(const std::filesystem::path& file, const Model& model, const An
   out.commit();
 }
 
-std::string loadRestart(const std::filesystem::path& file, Model& model, Analysis& analysis) {
+std::string loadRestart(const std::filesystem::path& file, Model& model, Analysis& analysis,
+                        const ModelFingerprint* fingerprint) {
   const std::string name = "restart file '" + file.string() + "': ";
   std::ifstream in(file, std::ios::binary);
   if (!in) throw CheckpointError(name + "cannot be opened (" + std::strerror(errno) + ")");
@@ -84,6 +86,13 @@ std::string loadRestart(const std::filesystem::path& file, Model& model, Analysi
 
   std::istringstream is(body, std::ios::binary);
   try {
+    const ModelFingerprint saved = ModelFingerprint::read(is);
+    if (fingerprint) {
+      const std::string differs = fingerprint->differences(saved);
+      if (!differs.empty())
+        throw CheckpointError("written for another model: the " + differs +
+                              " differ from this deck's");
+    }
     Model restored = readModel(is, model.topologyVersion() + 1);
     model = std::move(restored);
     analysis.readState(is);

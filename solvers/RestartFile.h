@@ -7,7 +7,8 @@
 //   version     uint32   kRestartVersion
 //   byte order  uint32   0x01020304 as written
 //   size        uint64   payload bytes
-//   payload              the model (elements/ModelCheckpoint), the analysis
+//   payload              the fingerprint of the deck's model (ModelFingerprint),
+//                        the model (elements/ModelCheckpoint), the analysis
 //                        (Analysis::writeState), the caller's section
 //   checksum    uint64   FNV-1a of the payload
 // Reading checks all of them before it changes anything: a truncated,
@@ -18,19 +19,24 @@
 
 #include "core/Model.h"
 #include "solvers/Analysis.h"
+#include "solvers/ModelFingerprint.h"
 
 namespace c2d {
 
 inline constexpr unsigned kRestartVersion = 3;
 
 // Writes the committed state: call Analysis::commit() first. `extra` is the
-// caller's own section (opaque here). Throws std::runtime_error on I/O failure.
+// caller's own section (opaque here); `input` the fingerprint of the model as
+// the deck's mesh input built it. Throws std::runtime_error on I/O failure.
 void saveRestart(const std::filesystem::path& file, const Model& model, const Analysis& analysis,
-                 const std::string& extra);
+                 const std::string& extra, const ModelFingerprint& input = {});
 
 // Replaces `model` (in place: the analysis keeps referring to it) and the
-// analysis state by the saved ones; returns the caller's section. Throws
-// CheckpointError with a message that names the file.
-std::string loadRestart(const std::filesystem::path& file, Model& model, Analysis& analysis);
+// analysis state by the saved ones; returns the caller's section. With
+// `expected` (the fingerprint of the reading deck's model), a file written for
+// another model is refused, naming what differs. Throws CheckpointError with a
+// message that names the file.
+std::string loadRestart(const std::filesystem::path& file, Model& model, Analysis& analysis,
+                        const ModelFingerprint* expected = nullptr);
 
 }  // namespace c2d

@@ -3,7 +3,7 @@
 
 Usage: cantilever_moment_axial_ref.py RUNDIR > cantilever_moment_axial.ref
 The step schedule (time t, tip rotation t theta_f) is read from the run's time
-column; every other number is the closed form (see the deck header): the
+column, the factors of the load tables (prop_1, prop_2) from the run's too; every other number is the closed form (see the deck header): the
 moment-rotation curve of Fig. 8, the tip shortening N L/EA, the axial force -N.
 The located row at Mu is checked against the closed-form time.
 """
@@ -54,6 +54,7 @@ def main():
         print(f"== {name} ==")
         print(",".join(rows[0]))
         times = [float(r[0]) for r in rows[1:]]
+        tables = [i for i, c in enumerate(rows[0]) if c.startswith("prop_")]
         peak = [i for i, t in enumerate(times) if abs(t - tu) < 1e-9]
         if len(peak) != 2:
             sys.exit(f"set {k}: no located row at t = {tu:.10f}")
@@ -62,7 +63,9 @@ def main():
                 t, M = tu, s[2]
             else:
                 M = moment(t * thf, t > tu)
-            print(",".join(f"{x:.10e}" for x in (t, t, -N * L / EA, t * thf, M, -N, M)))
+            factors = tuple(float(rows[i + 1][c]) for c in tables)
+            values = (t, t) + factors + (-N * L / EA, t * thf, M, -N, M)
+            print(",".join(f"{x:.10e}" for x in values))
 
 
 main()

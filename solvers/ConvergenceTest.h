@@ -1,0 +1,50 @@
+#pragma once
+// When a Newton iteration has converged, and when it has stopped making
+// progress. Figures per iteration: the energy |du.R| of the correction (with
+// the load-factor part under path following) and the residual norm ||R||
+// before the update.
+//
+// Converged when any of these holds:
+//   - FEAP's energy test: |du.R| <= energyTol * |du.R| of the step's first
+//     iteration (TOL,,etol), or below FEAPpv's absolute value (TOL,ENER,value);
+//   - the residual test: ||R|| <= residualTol * ||R|| of the step's first
+//     iteration (TOL,,etol,rtol; off when 0);
+//   - the residual already at round-off of the largest element force (not
+//     under path following, whose load factor still moves);
+//   - stagnation at round-off: the energy no longer falls tenfold although it
+//     is already 1e-10 of the first one;
+//   - a correction below the resolution of the nodal positions (a free body
+//     in uniform motion is predicted exactly; its residual is round-off of zero).
+#include <cstddef>
+
+namespace c2d {
+
+struct ConvergenceTest {
+  double energyTol = 1e-16;
+  double residualTol = 0;
+  double energyZero = 0;
+
+  struct Figures {
+    int iteration = 1;             // within the step, 1-based
+    double energy = 0;             // |du.R| of this iteration
+    double energy0 = 0;            // of the step's first iteration
+    double previousEnergy = -1;    // of the iteration before (< 0: none)
+    double residual = 0;           // ||R|| before this update
+    double residual0 = 0;          // of the step's first iteration
+    double largestResidual = 0;    // max |R_i|
+    double roundoff = 0;           // round-off level of the element forces
+    double largestCorrection = 0;  // max |du_i|
+    double positions = 0;          // largest coordinate plus displacement magnitude
+    bool pathFollowing = false;
+  };
+  bool converged(const Figures& f) const;
+};
+
+// Newton's method cycling: each of the last `matches` values equals the one
+// `period` iterations before (to 1e-6 relative). On a kinked constitutive law
+// the iterates jump between the branches (period two) or come back to the
+// same residual (period one), and no later iteration converges.
+// values[0 .. n-1] in iteration order.
+bool repeatsWithPeriod(const double* values, std::size_t n, int period, int matches);
+
+}  // namespace c2d

@@ -1,0 +1,104 @@
+#include "solvers/ModelFingerprint.h"
+
+#include <cstring>
+
+#include "core/Checkpoint.h"
+
+namespace c2d {
+
+namespace {
+
+// FNV-1a over the raw bytes of the values fed to it: the same deck gives the
+// same bits, so equal inputs hash equal and any changed number changes the hash.
+class Hash {
+ public:
+  template <class T>
+  Hash& add(const T& value) {
+    unsigned char bytes[sizeof(T)];
+    std::memcpy(bytes, &value, sizeof(T));
+    for (unsigned char c : bytes) {
+      h_ ^= c;
+      h_ *= 1099511628211ull;
+    }
+    return *this;
+  }
+  Hash& add(const std::string& s) {
+    add(s.size());
+    for (char c : s) add(c);
+    return *this;
+  }
+  std::uint64_t value() const { return h_; }
+
+ private:
+  std::uint64_t h_ = 14695981039346656037ull;
+};
+
+}  // namespace
+
+ModelFingerprint ModelFingerprint::of(const Model& model) {
+  Hash coords, elements, materials, boundary, loads;
+  coords.add(model.numNodes());
+  for (int n = 0; n < model.numNodes(); ++n) {
+    coords.add(model.hasCoord(n));
+    coords.add(model.coord(n).x()).add(model.coord(n).y());
+    for (int d = 0; d < kNodeDofs; ++d) {
+      boundary.add(model.bound(n)[d] != 0);
+      loads.add(model.force(n)[d]).add(model.disp(n)[d]).add(model.loadTable(n)[d]);
+    }
+  }
+  elements.add(model.numElements());
+  for (int e = 0; e < model.numElements(); ++e) {
+    const Element& el = model.element(e);
+    elements.add(el.nodes()[0]).add(el.nodes()[1]).add(el.materialNumber());
+  }
+  for (const auto& [number, m] : model.materials()) {
+    materials.add(number).add(m.elementType);
+    for (double x : {m.E, m.nu, m.A, m.I, m.kappa, m.EA(), m.GA(), m.EI(), m.density})
+      materials.add(x);
+    materials.add(m.shear).add(m.kinematics).add(m.mass);
+    materials.add(m.hardening.has_value());
+    if (m.hardening)
+      for (double x : {m.hardening->Mc, m.hardening->My, m.hardening->Kh1, m.hardening->Kh2})
+        materials.add(x);
+    materials.add(m.softening.has_value());
+    if (m.softening) materials.add(m.softening->Mu).add(m.softening->Ks);
+  }
+  boundary.add(model.joints().size());
+  for (const Joint& j : model.joints()) boundary.add(j.master).add(j.slave);
+  loads.add(model.gravity().x()).add(model.gravity().y()).add(model.ground().has_value());
+  if (model.ground())
+    loads.add(model.ground()->y0).add(model.ground()->k).add(model.ground()->alpha);
+  return {coords.value(), elements.value(), materials.value(), boundary.value(), loads.value()};
+}
+
+std::string ModelFingerprint::differences(const ModelFingerprint& o) const {
+  std::string out;
+  auto note = [&](bool differs, const char* what) {
+    if (!differs) return;
+    if (!out.empty()) out += ", ";
+    out += what;
+  };
+  note(coordinates != o.coordinates, "node coordinates");
+  note(elements != o.elements, "element connectivity or material numbers");
+  note(materials != o.materials, "material data");
+  note(boundary != o.boundary, "boundary codes or joints");
+  note(loads != o.loads, "loads (forces, prescribed values, load tables, gravity, contact)");
+  return out;
+}
+
+void ModelFingerprint::write(std::ostream& out) const {
+  using namespace checkpoint;
+  putTag(out, "FPRT");
+  for (std::uint64_t x : {coordinates, elements, materials, boundary, loads}) put(out, x);
+}
+
+ModelFingerprint ModelFingerprint::read(std::istream& in) {
+  using namespace checkpoint;
+  expectTag(in, "FPRT");
+  ModelFingerprint f;
+  for (std::uint64_t* x : {&f.coordinates, &f.elements, &f.materials, &f.boundary, &f.loads})
+    *x = get<std::uint64_t>(in);
+  return f;
+}
+
+}  // namespace c2d

@@ -1,0 +1,63 @@
+// The convergence test and the cycle detection of the Newton driver.
+#include <gtest/gtest.h>
+
+#include "solvers/ConvergenceTest.h"
+
+namespace c2d {
+namespace {
+
+ConvergenceTest::Figures figures(int iteration, double energy, double residual) {
+  ConvergenceTest::Figures f;
+  f.iteration = iteration;
+  f.energy = energy;
+  f.energy0 = 1.0;
+  f.previousEnergy = 1e6 * energy;  // falling fast: not stagnated
+  f.residual = residual;
+  f.residual0 = 100.0;
+  f.largestResidual = residual;
+  f.roundoff = 1e-12;
+  f.largestCorrection = 1.0;
+  f.positions = 1.0;
+  return f;
+}
+
+TEST(ConvergenceTest, EnergyTestAsFeap) {
+  ConvergenceTest t;
+  EXPECT_FALSE(t.converged(figures(2, 1e-12, 1.0)));
+  EXPECT_TRUE(t.converged(figures(2, 1e-17, 1.0)));
+  t.energyTol = 1e-10;
+  EXPECT_TRUE(t.converged(figures(2, 1e-12, 1.0)));
+}
+
+TEST(ConvergenceTest, ResidualToleranceOnlyWhenSet) {
+  ConvergenceTest t;
+  EXPECT_FALSE(t.converged(figures(3, 1e-12, 1e-5)));  // ||R|| = 1e-7 of the first
+  t.residualTol = 1e-6;
+  EXPECT_TRUE(t.converged(figures(3, 1e-12, 1e-5)));
+  EXPECT_FALSE(t.converged(figures(3, 1e-12, 1e-3)));
+}
+
+TEST(ConvergenceTest, AbsoluteEnergyValue) {
+  ConvergenceTest t;
+  t.energyZero = 1e-8;
+  EXPECT_TRUE(t.converged(figures(2, 1e-9, 1.0)));
+  EXPECT_FALSE(t.converged(figures(2, 1e-7, 1.0)));
+}
+
+TEST(ConvergenceTest, CyclesOfPeriodOneAndTwo) {
+  const double two[] = {5.0, 4.1e2, 1.03e3, 4.1e2, 1.03e3, 4.1e2};
+  EXPECT_TRUE(repeatsWithPeriod(two, 6, 2, 2));
+  EXPECT_TRUE(repeatsWithPeriod(two, 6, 2, 3));
+  EXPECT_FALSE(repeatsWithPeriod(two, 6, 2, 4));
+  EXPECT_FALSE(repeatsWithPeriod(two, 6, 1, 1));
+  const double one[] = {1.99e3, 5.19, 3.27e2, 1.03e3, 1.03e3};
+  EXPECT_TRUE(repeatsWithPeriod(one, 5, 1, 1));
+  EXPECT_FALSE(repeatsWithPeriod(one, 5, 1, 2));
+  const double converging[] = {1.0, 1e-3, 1e-7, 1e-15};
+  EXPECT_FALSE(repeatsWithPeriod(converging, 4, 1, 1));
+  EXPECT_FALSE(repeatsWithPeriod(converging, 4, 2, 2));
+  EXPECT_FALSE(repeatsWithPeriod(converging, 1, 1, 1));  // too short
+}
+
+}  // namespace
+}  // namespace c2d
