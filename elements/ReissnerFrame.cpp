@@ -264,4 +264,22 @@ void ReissnerFrame::readState(std::istream& in) {
     for (double* x : {&r->energy, &r->forces.N, &r->forces.V, &r->forces.M}) *x = get<double>(in);
 }
 
+// ------------------------------------------------------------ material change
+
+Status ReissnerFrame::setMaterial(const MaterialSet& mat, const ElemVec& d) {
+  const ReissnerFrame fresh(mat, nodes_, x1_, x2_);
+  const Vec3 c = fresh.sectionStiffness();
+  if (!(c.array() > 0).all())
+    return Status::failure("the new section stiffnesses EA, GA, EI must be positive");
+  const Vec3 e = strains(d);
+  const Vec3 forces = sectionStiffness().cwiseProduct(e - e0_);
+  ea_ = fresh.ea_;
+  ga_ = fresh.ga_;
+  ei_ = fresh.ei_;
+  rhoA_ = fresh.rhoA_;
+  mass_ = fresh.mass_;
+  e0_ = e - forces.cwiseQuotient(c);
+  return Status::success();
+}
+
 }  // namespace c2d

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include "core/Checkpoint.h"
@@ -31,6 +33,9 @@ std::string fmt(const char* f, double v) {
   return buf;
 }
 
+void checkMaterialKinematics(const std::vector<Macro>& list, std::map<int, Kinematics>& kinematics,
+                             const std::set<int>& used, const Parameters& params);
+
 }  // namespace
 
 ProblemRun::ProblemRun(const Problem& problem, Parameters& params, const SolutionCommands& table,
@@ -54,6 +59,12 @@ void ProblemRun::bind(bool echo) {
   for (const BatchBlock& b : problem_.batches)
     batches_.push_back(bindBatch(b.commands, b.data, table_, scratch));
   checkPlotColumns(batches_, scratch);
+  std::map<int, Kinematics> kinematics;
+  for (const auto& [number, mat] : model_.materials()) kinematics[number] = mat.kinematics;
+  std::set<int> used;
+  for (const auto& e : model_.elements())
+    if (e) used.insert(e->materialNumber());
+  for (const auto& batch : batches_) checkMaterialKinematics(batch, kinematics, used, params_);
 }
 
 void ProblemRun::run() {
@@ -423,13 +434,53 @@ std::vector<MeshItem> meshReentryItems(const Macro& m) {
   return parseMeshRecords(std::move(records), m.record.loc.file);
 }
 
+// MATErial records of MESH re-entries, in deck order, that would change the
+// kinematics of a set whose elements exist: refused before any computing (the
+// re-entry checks again when it is applied). A re-entry that builds elements
+// is left to that check.
+void checkMaterialKinematics(const std::vector<Macro>& list, std::map<int, Kinematics>& kinematics,
+                             const std::set<int>& used, const Parameters& params) {
+  for (const Macro& m : list) {
+    checkMaterialKinematics(m.body, kinematics, used, params);
+    if (!m.is("mesh")) continue;
+    const std::vector<MeshItem> items = meshReentryItems(m);
+    bool builds = false;
+    for (const MeshItem& item : items)
+      if (const auto* c = std::get_if<MeshCommand>(&item))
+        builds = builds || c->head.is("ELEMents") || c->head.is("BLOCk");
+    if (builds) continue;
+    for (const MeshItem& item : items) {
+      const auto* c = std::get_if<MeshCommand>(&item);
+      if (!c || !c->head.is("MATErial") || c->head.size() < 2) continue;
+      int number = 0;
+      try {
+        number = Expression::parse(c->head[1]).evalInt(params, "material number");
+      } catch (const DeckError&) {
+        continue;  // a parameter set later: checked when the re-entry is applied
+      }
+      Kinematics kin = Kinematics::Small;
+      const Record* where = &c->head;
+      for (const Record& r : c->data) {
+        if (r.is("SMALl") || r.is("FINIte")) {
+          kin = r.is("SMALl") ? Kinematics::Small : Kinematics::Finite;
+          where = &r;
+        }
+      }
+      if (auto it = kinematics.find(number);
+          it != kinematics.end() && used.count(number) && it->second != kin)
+        refuseKinematicsChange(*where, number, it->second);
+      kinematics[number] = kin;
+    }
+  }
+}
+
 }  // namespace
 
 void ProblemRun::reenterMesh(const Macro& m) {
   const std::vector<MeshItem> items = meshReentryItems(m);
   const Status st = analysis_->commit();
   if (!st) fail(m, st.why);
-  applyMesh(items, params_, model_, &log_);
+  applyMesh(items, params_, model_, &log_, nullptr, &analysis_->state());
   installJoints(model_);
   model_.bumpTopology();
   analysis_->topologyChanged();

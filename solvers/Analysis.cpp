@@ -87,6 +87,9 @@ void Analysis::topologyChanged() {
     for (int d = 0; d < kNodeDofs; ++d)
       tableOf_[static_cast<size_t>(n) * kNodeDofs + d] = std::max(1, model_.loadTable(n)[d]);
   collectHingeCarriers();
+  // A material change (MESH re-entry) may have given the hinges new ultimate moments.
+  int critical = -1;
+  committedDemand_ = maxHingeDemand(critical);
 }
 
 void Analysis::collectHingeCarriers() {
