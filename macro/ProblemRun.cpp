@@ -33,8 +33,13 @@ std::string fmt(const char* f, double v) {
   return buf;
 }
 
-void checkMaterialKinematics(const std::vector<Macro>& list, std::map<int, Kinematics>& kinematics,
-                             const std::set<int>& used, const Parameters& params);
+// What a MESH re-entry may not change in a material set with elements.
+struct MaterialShape {
+  Kinematics kinematics = Kinematics::Small;
+  bool elastic = false;  // SMALl without HARDening/SOFTening: elastic frame elements
+};
+void checkMaterialChanges(const std::vector<Macro>& list, std::map<int, MaterialShape>& sets,
+                          const std::set<int>& used, const Parameters& params, bool& collapse);
 
 }  // namespace
 
@@ -59,12 +64,15 @@ void ProblemRun::bind(bool echo) {
   for (const BatchBlock& b : problem_.batches)
     batches_.push_back(bindBatch(b.commands, b.data, table_, scratch));
   checkPlotColumns(batches_, scratch);
-  std::map<int, Kinematics> kinematics;
-  for (const auto& [number, mat] : model_.materials()) kinematics[number] = mat.kinematics;
+  std::map<int, MaterialShape> sets;
+  for (const auto& [number, mat] : model_.materials())
+    sets[number] = {mat.kinematics,
+                    mat.kinematics == Kinematics::Small && !mat.hardening && !mat.softening};
   std::set<int> used;
   for (const auto& e : model_.elements())
     if (e) used.insert(e->materialNumber());
-  for (const auto& batch : batches_) checkMaterialKinematics(batch, kinematics, used, params_);
+  bool collapse = false;
+  for (const auto& batch : batches_) checkMaterialChanges(batch, sets, used, params_, collapse);
 }
 
 void ProblemRun::run() {
@@ -435,13 +443,15 @@ std::vector<MeshItem> meshReentryItems(const Macro& m) {
 }
 
 // MATErial records of MESH re-entries, in deck order, that would change the
-// kinematics of a set whose elements exist: refused before any computing (the
-// re-entry checks again when it is applied). A re-entry that builds elements
-// is left to that check.
-void checkMaterialKinematics(const std::vector<Macro>& list, std::map<int, Kinematics>& kinematics,
-                             const std::set<int>& used, const Parameters& params) {
+// kinematics of a set whose elements exist, or give HARDening/SOFTening to its
+// elastic frame elements (before HINGe2joint, which makes them elastic Reissner
+// beams that ignore the laws): refused before any computing (the re-entry checks
+// again when it is applied). A re-entry that builds elements is left to that check.
+void checkMaterialChanges(const std::vector<Macro>& list, std::map<int, MaterialShape>& sets,
+                          const std::set<int>& used, const Parameters& params, bool& collapse) {
   for (const Macro& m : list) {
-    checkMaterialKinematics(m.body, kinematics, used, params);
+    checkMaterialChanges(m.body, sets, used, params, collapse);
+    if (m.is("hing")) collapse = true;
     if (!m.is("mesh")) continue;
     const std::vector<MeshItem> items = meshReentryItems(m);
     bool builds = false;
@@ -460,16 +470,28 @@ void checkMaterialKinematics(const std::vector<Macro>& list, std::map<int, Kinem
       }
       Kinematics kin = Kinematics::Small;
       const Record* where = &c->head;
+      const Record* law = nullptr;
       for (const Record& r : c->data) {
         if (r.is("SMALl") || r.is("FINIte")) {
           kin = r.is("SMALl") ? Kinematics::Small : Kinematics::Finite;
           where = &r;
         }
+        if (!law && (r.is("HARDening") || r.is("SOFTening"))) law = &r;
       }
-      if (auto it = kinematics.find(number);
-          it != kinematics.end() && used.count(number) && it->second != kin)
-        refuseKinematicsChange(*where, number, it->second);
-      kinematics[number] = kin;
+      auto it = sets.find(number);
+      if (it != sets.end() && used.count(number)) {
+        if (it->second.kinematics != kin)
+          refuseKinematicsChange(*where, number, it->second.kinematics);
+        if (it->second.elastic && law && !collapse)
+          throw DeckError(law->fieldLoc(0),
+                          "material " + std::to_string(number) +
+                              " has elastic frame elements (built without HARDening and "
+                              "SOFTening): the laws cannot be added in a MESH re-entry",
+                          law->excerpt(law->fieldLoc(0).col),
+                          "give the laws in the mesh input, where the elements are built");
+        continue;  // the elements keep their class
+      }
+      sets[number] = {kin, kin == Kinematics::Small && !law};
     }
   }
 }
