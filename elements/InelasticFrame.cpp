@@ -64,7 +64,7 @@ InelasticFrame::InelasticFrame(const MaterialSet& mat, const std::array<int, 2>&
 
 Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& rule,
                                 bool wantTangent, ElemVec& residual, ElemMat& tangent) {
-  const ElemVec dl = rotation_ * kin.d;
+  const ElemVec dl = rotation_ * kin.d - dl0_;
   const double l = length_;
   const Rows b = midpointRows(l);
   const HingedBendingState& from = committed_.section;
@@ -82,7 +82,7 @@ Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& ru
   // the elastic axial and shear parts the weighted strains, for the bending
   // moment the weighted moments of the committed and the trial state.
   const double w = rule.scheme == Scheme::MidPoint ? 0.5 + rule.alpha : 1.0;
-  const ElemVec dln = rotation_ * kin.dn;
+  const ElemVec dln = rotation_ * kin.dn - dl0_;
   const SectionForces& f1 = trial_.forces;
   const double N = w * f1.N + (1 - w) * EA_ * b.eps.dot(dln);
   const double V = w * f1.V + (1 - w) * GA_ * b.gamma.dot(dln);
@@ -159,6 +159,7 @@ void InelasticFrame::writeState(std::ostream& out) const {
     putSection(out, p->section);
     for (double x : {p->forces.N, p->forces.V, p->forces.M}) put(out, x);
   }
+  putFixed(out, dl0_);
 }
 
 void InelasticFrame::readState(std::istream& in) {
@@ -172,6 +173,74 @@ void InelasticFrame::readState(std::istream& in) {
     p->section = getSection(in);
     for (double* x : {&p->forces.N, &p->forces.V, &p->forces.M}) *x = get<double>(in);
   }
+  getFixed(in, dl0_);
+}
+
+// ------------------------------------------------------------ material change
+
+Status InelasticFrame::setMaterial(const MaterialSet& mat, const ElemVec& d) {
+  if (mat.kinematics != Kinematics::Small)
+    return Status::failure(
+        "the element has small (SMALl) kinematics; it cannot change to FINIte here (HINGe2joint "
+        "switches elements to finite kinematics)");
+  const double l = length_;
+  std::optional<InelasticFrame> fresh;
+  try {
+    fresh.emplace(mat, nodes_, Vec2::Zero(), Vec2(l * rotation_(0, 0), l * rotation_(0, 1)));
+  } catch (const std::invalid_argument& e) {
+    return Status::failure(e.what());
+  }
+  const PointState& c = committed_;
+  const double m = std::abs(c.forces.M);
+  auto fmt = [](double v) {
+    std::ostringstream s;
+    s.precision(6);
+    s << v;
+    return s.str();
+  };
+  if (c.section.hingeActive) {
+    if (!fresh->law_.softening())
+      return Status::failure("its softening hinge is active: the SOFTening law cannot be removed");
+    const LinearSoftening& law = *fresh->law_.softening();
+    if (c.section.hingeFailed && law.capacity(c.section.jump.xi) > 0)
+      return Status::failure(
+          "its hinge is fully softened: the new SOFTening law would give it "
+          "back a capacity of " +
+          fmt(law.capacity(c.section.jump.xi)));
+    if (m > law.capacity(c.section.jump.xi) * (1 + 1e-9))
+      return Status::failure("its active hinge carries |M| = " + fmt(m) +
+                             ", above the capacity Mu + Ks*xi = " + fmt(law.capacity(c.section.jump.xi)) +
+                             " of the new SOFTening law");
+  } else {
+    if (fresh->law_.softening() && m > fresh->law_.softening()->Mu() * (1 + 1e-9))
+      return Status::failure("its moment |M| = " + fmt(m) +
+                             " is above the new Mu = " + fmt(fresh->law_.softening()->Mu()) +
+                             " (the hinge would open past its capacity)");
+    const double radius = fresh->law_.bending().yieldRadius(c.section.bulk.xi);
+    if (m > radius * (1 + 1e-9))
+      return Status::failure("its moment |M| = " + fmt(m) + " is above the yield moment " +
+                             fmt(radius) + " of the new HARDening law at its hardening state");
+  }
+  // Target strains that give the committed section forces under the new data;
+  // the stress-free displacement takes the rest of the current strains.
+  const double ei = fresh->law_.EI();
+  const Rows b = midpointRows(l);
+  const ElemVec dl = rotation_ * d;
+  const double eps = c.forces.N / fresh->EA_, gamma = c.forces.V / fresh->GA_;
+  const double kappaD = c.section.bulk.kp + (c.section.hingeActive ? c.section.jump.alpha / l : 0.0) + c.forces.M / ei;
+  const double e0 = b.eps.dot(dl) - eps, g0 = b.gamma.dot(dl) - gamma,
+               k0 = b.kappa.dot(dl) - kappaD;
+  ElemVec dl0 = ElemVec::Zero();  // u2 = l e0, theta2 = l k0, v2 from gamma = v2/l - theta2/2
+  dl0(3) = l * e0;
+  dl0(5) = l * k0;
+  dl0(4) = l * (g0 + 0.5 * dl0(5));
+  EA_ = fresh->EA_;
+  GA_ = fresh->GA_;
+  rhoA_ = fresh->rhoA_;
+  law_ = fresh->law_;
+  mass_ = fresh->mass_;
+  dl0_ = dl0;
+  return Status::success();
 }
 
 }  // namespace c2d

@@ -33,12 +33,16 @@
 #include "core/Checkpoint.h"
 #include "core/Element.h"
 #include "core/Hinge.h"
+#include "core/MaterialChange.h"
 #include "core/MaterialSet.h"
 #include "materials/HingedBending.h"
 
 namespace c2d {
 
-class InelasticFrame final : public Element, public HingeCarrier, public Checkpoint {
+class InelasticFrame final : public Element,
+                             public HingeCarrier,
+                             public Checkpoint,
+                             public MaterialChange {
  public:
   // x1, x2: reference coordinates of the nodes. Bending uses the HARDening data
   // when given (elastic otherwise); the hinge exists only with SOFTening data.
@@ -94,6 +98,19 @@ class InelasticFrame final : public Element, public HingeCarrier, public Checkpo
   ElemMat rotation_;  // global -> element frame, block diagonal
   ElemMat mass_;
   PointState committed_, trial_;
+
+ public:
+  // New stiffness, density, mass type, HARDening and SOFTening data; section
+  // forces at d and the history kept (core/MaterialChange.h), through a
+  // stress-free local displacement. Refused: FINIte kinematics; removing the
+  // SOFTening law of an active hinge; a law under which the committed state is
+  // not admissible (|M| above the new yield radius, or above the new Mu of an
+  // inactive hinge, or above the new capacity of an active one); capacity given
+  // back to a fully softened hinge.
+  Status setMaterial(const MaterialSet& mat, const ElemVec& d) override;
+
+ private:
+  ElemVec dl0_ = ElemVec::Zero();  // stress-free displacement (element frame); zero unless changed
 };
 
 }  // namespace c2d

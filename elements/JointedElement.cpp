@@ -150,4 +150,15 @@ void JointedElement::readState(std::istream& in) {
   slaveRotation_ = get<double>(in);
 }
 
+Status JointedElement::setMaterial(const MaterialSet& mat, const ElemVec& d) {
+  auto* inner = dynamic_cast<MaterialChange*>(inner_.get());
+  if (!inner)
+    return Status::failure("element type '" + inner_->typeName() + "' keeps its material");
+  ElementKinematics outer;
+  outer.d = outer.dn = d;
+  outer.vn.setZero();
+  outer.an.setZero();
+  return inner->setMaterial(mat, innerKinematics(outer, committed_.psi).d);
+}
+
 }  // namespace c2d

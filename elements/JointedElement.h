@@ -27,10 +27,11 @@
 
 #include "core/Checkpoint.h"
 #include "core/Element.h"
+#include "core/MaterialChange.h"
 
 namespace c2d {
 
-class JointedElement final : public Element, public Checkpoint {
+class JointedElement final : public Element, public Checkpoint, public MaterialChange {
  public:
   // inner: the element as built on its own nodes (its node at slaveEnd is the
   // slave); master: the joint's master node, which replaces the slave in nodes().
@@ -92,6 +93,10 @@ class JointedElement final : public Element, public Checkpoint {
   // Kinematics the wrapped element sees for the given outer kinematics and psi_r
   // (committed psi_r history for d_n, v_n, a_n).
   ElementKinematics innerKinematics(const ElementKinematics& outer, double psi) const;
+
+  // Forwarded to the wrapped element at the displacements it sees (the slave
+  // end rotated by the committed psi_r); the relative rotation is kept.
+  Status setMaterial(const MaterialSet& mat, const ElemVec& d) override;
 
   // Restart files: the joint's own data (outer nodes, slave, relative rotation
   // and rates, trial and committed); the wrapped element is written separately

@@ -1,5 +1,6 @@
 #include "elements/LinearFrame.h"
 
+#include <Eigen/LU>
 #include <cassert>
 #include <cmath>
 
@@ -143,9 +144,9 @@ Status LinearFrame::evaluate(const ElementKinematics& kin, const StepRule& rule,
   if (rule.scheme == Scheme::MidPoint) {
     wk = 0.5 + rule.alpha;
     const ElemVec dAlg = wk * kin.d + (0.5 - rule.alpha) * kin.dn;
-    residual = stiffness_ * dAlg;
+    residual = stiffness_ * (dAlg - d0_);
   } else {
-    residual = stiffness_ * kin.d;
+    residual = stiffness_ * (kin.d - d0_);
   }
   if (rule.dynamic()) {
     const ElemVec dd = kin.d - kin.dn;
@@ -158,8 +159,9 @@ Status LinearFrame::evaluate(const ElementKinematics& kin, const StepRule& rule,
   }
   if (!residual.allFinite()) return Status::failure("frame element: non-finite residual");
 
-  trial_.energy = 0.5 * kin.d.dot(stiffness_ * kin.d);
-  trial_.forces = forcesAt(kin.d);
+  const ElemVec dElastic = kin.d - d0_;
+  trial_.energy = 0.5 * dElastic.dot(stiffness_ * dElastic);
+  trial_.forces = forcesAt(dElastic);
   return Status::success();
 }
 
@@ -189,6 +191,7 @@ void LinearFrame::writeState(std::ostream& out) const {
   putFixed(out, mass_);
   for (const Report* r : {&trial_, &committed_})
     for (double x : {r->energy, r->forces.N, r->forces.V, r->forces.M}) put(out, x);
+  putFixed(out, d0_);
 }
 
 void LinearFrame::readState(std::istream& in) {
@@ -201,6 +204,48 @@ void LinearFrame::readState(std::istream& in) {
   getFixed(in, mass_);
   for (Report* r : {&trial_, &committed_})
     for (double* x : {&r->energy, &r->forces.N, &r->forces.V, &r->forces.M}) *x = get<double>(in);
+  getFixed(in, d0_);
+}
+
+// ------------------------------------------------------------ material change
+
+Status LinearFrame::setMaterial(const MaterialSet& mat, const ElemVec& d) {
+  if (mat.kinematics != Kinematics::Small)
+    return Status::failure(
+        "the element has small (SMALl) kinematics; it cannot change to FINIte here (HINGe2joint "
+        "switches elements to finite kinematics)");
+  if (mat.hardening || mat.softening)
+    return Status::failure(
+        "the element is an elastic frame (its set had no HARDening or SOFTening when it was "
+        "built); the laws cannot be added to it");
+  const LinearFrame fresh(mat, nodes_, Vec2::Zero(), length_ * Vec2(cos_, sin_));
+  if (!(fresh.ea_ > 0) || !(fresh.ei_ > 0) || (fresh.shear_ && !(fresh.ga_ > 0)))
+    return Status::failure("the new section stiffnesses must be positive");
+  // Solve K_new x = f (the old end forces, which are self-equilibrated) for the
+  // x without rigid-body part: K_new plus a multiple of the projector onto the
+  // rigid-body modes (two translations and the rotation about the midpoint,
+  // mutually orthogonal) is regular and maps that x to f.
+  const ElemVec f = stiffness_ * (d - d0_);
+  const double h = 0.5 * length_;
+  ElemVec tx, ty, rz;
+  tx << 1, 0, 0, 1, 0, 0;
+  ty << 0, 1, 0, 0, 1, 0;
+  rz << h * sin_, -h * cos_, 1, -h * sin_, h * cos_, 1;
+  ElemMat a = fresh.stiffness_;
+  const double scale = fresh.stiffness_.diagonal().maxCoeff();
+  for (const ElemVec* v : {&tx, &ty, &rz})
+    a += scale * (*v / v->norm()) * (*v / v->norm()).transpose();
+  const ElemVec x = a.partialPivLu().solve(f);
+  if (!x.allFinite()) return Status::failure("the new stiffness matrix is singular");
+  shear_ = fresh.shear_;
+  ea_ = fresh.ea_;
+  ga_ = fresh.ga_;
+  ei_ = fresh.ei_;
+  rhoA_ = fresh.rhoA_;
+  stiffness_ = fresh.stiffness_;
+  mass_ = fresh.mass_;
+  d0_ = d - x;
+  return Status::success();
 }
 
 }  // namespace c2d

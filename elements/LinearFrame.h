@@ -9,16 +9,22 @@
 // Element frame: t = (x2 - x1)/l along the axis, n = (-t_y, t_x); local dofs
 // (u_t, u_n, theta) per node. Strains: eps = u_t', gamma = u_n' - theta,
 // kappa = theta'. Resultants N = EA eps, V = GA gamma, M = EI kappa.
+//
+// A material change (core/MaterialChange.h) keeps the end forces at the
+// committed displacements d_c: the element then works on d - d0 with the
+// stress-free displacement d0 chosen so that K_new (d_c - d0) equals the old
+// end forces (d0 has no rigid-body part; zero unless the material changed).
 #include <array>
 #include <string>
 
 #include "core/Checkpoint.h"
 #include "core/Element.h"
+#include "core/MaterialChange.h"
 #include "core/MaterialSet.h"
 
 namespace c2d {
 
-class LinearFrame final : public Element, public Checkpoint {
+class LinearFrame final : public Element, public Checkpoint, public MaterialChange {
  public:
   LinearFrame(const MaterialSet& mat, const std::array<int, 2>& nodes, const Vec2& x1,
               const Vec2& x2);
@@ -53,6 +59,12 @@ class LinearFrame final : public Element, public Checkpoint {
   void writeState(std::ostream& out) const override;
   void readState(std::istream& in) override;
 
+  // New E, nu, A, I, kappa (or resultants), SHEAr, density and mass type; end
+  // forces kept. Refuses FINIte kinematics and HARDening/SOFTening data (an
+  // elastic frame cannot become an inelastic one).
+  Status setMaterial(const MaterialSet& mat, const ElemVec& d) override;
+  const ElemVec& stressFreeDisplacement() const { return d0_; }
+
  private:
   struct Report {
     double energy = 0;
@@ -68,6 +80,7 @@ class LinearFrame final : public Element, public Checkpoint {
   ElemMat stiffness_;  // global frame
   ElemMat mass_;       // global frame
   Report trial_, committed_;
+  ElemVec d0_ = ElemVec::Zero();  // stress-free displacement (global frame)
 };
 
 }  // namespace c2d

@@ -318,4 +318,33 @@ void ReissnerFrame::readState(std::istream& in) {
   }
 }
 
+// ------------------------------------------------------------ material change
+
+Status ReissnerFrame::setMaterial(const MaterialSet& mat, const ElemVec& d) {
+  const ReissnerFrame fresh(mat, nodes_, x1_, x2_);
+  const Vec3 c = fresh.sectionStiffness();
+  if (!(c.array() > 0).all())
+    return Status::failure("the new section stiffnesses EA, GA, EI must be positive");
+  const Vec3 e = strains(d);
+  const HingedBendingState& section = committed_.section;
+  const Vec2 nv(ea_ * (e(0) - e0_(0)), ga_ * (e(1) - e0_(1)));
+  // An element whose laws HINGE2JOINT dropped stays elastic (with the new EI).
+  HingedBending law = law_.isElastic() ? HingedBending(BilinearHardening::elastic(c(2)), std::nullopt)
+                                       : fresh.law_;
+  if (law.hasHinge() && !section.hingeActive && std::abs(section.M) > law.softening()->Mu() * (1 + 1e-9))
+    return Status::failure("its moment is above the new Mu (the hinge would open past its capacity)");
+  if (section.hingeActive && !law.hasHinge())
+    return Status::failure("its softening hinge is active: the SOFTening law cannot be removed");
+  ea_ = fresh.ea_;
+  ga_ = fresh.ga_;
+  ei_ = fresh.ei_;
+  rhoA_ = fresh.rhoA_;
+  mass_ = fresh.mass_;
+  law_ = law;
+  const double alpha = section.hingeActive ? section.jump.alpha / length_ : 0.0;
+  e0_ = Vec3(e(0) - nv.x() / c(0), e(1) - nv.y() / c(1),
+             e(2) - section.bulk.kp - alpha - section.M / c(2));
+  return Status::success();
+}
+
 }  // namespace c2d

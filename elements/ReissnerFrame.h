@@ -37,12 +37,13 @@
 #include "core/Checkpoint.h"
 #include "core/Element.h"
 #include "core/Hinge.h"
+#include "core/MaterialChange.h"
 #include "core/MaterialSet.h"
 #include "materials/HingedBending.h"
 
 namespace c2d {
 
-class ReissnerFrame final : public Element, public HingeCarrier, public Checkpoint {
+class ReissnerFrame final : public Element, public HingeCarrier, public Checkpoint, public MaterialChange {
  public:
   ReissnerFrame(const MaterialSet& mat, const std::array<int, 2>& nodes, const Vec2& x1,
                 const Vec2& x2);
@@ -116,6 +117,14 @@ class ReissnerFrame final : public Element, public HingeCarrier, public Checkpoi
   HingedBending law_;
   ElemMat mass_;  // global frame
   Report trial_, committed_;
+
+ public:
+  // New EA, GA, EI, density and mass type; the section forces at d are kept by
+  // a new initial strain E0 = E(d) - C_new^-1 C_old (E(d) - E0_old)
+  // (core/MaterialChange.h). Either kinematics keyword is accepted: after
+  // HINGe2joint the elements of a SMALl set are Reissner beams. HARDening and
+  // SOFTening data are not used by this elastic element.
+  Status setMaterial(const MaterialSet& mat, const ElemVec& d) override;
 };
 
 }  // namespace c2d

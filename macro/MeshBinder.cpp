@@ -94,8 +94,9 @@ Model buildModel(const Problem& problem, Parameters& params, std::ostream* echo)
 }
 
 void applyMesh(const std::vector<MeshItem>& items, Parameters& params, Model& model,
-               std::ostream* echo, const Record* end) {
+               std::ostream* echo, const Record* end, const State* state) {
   MeshBinder binder(model, params, echo);
+  binder.setState(state);
   binder.apply(items);
   SourceLoc where;
   std::string text;

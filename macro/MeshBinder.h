@@ -34,6 +34,8 @@ class MeshBinder {
   void finish(const SourceLoc& where, const std::string& whereText = {});
 
   const CommandRegistry& registry() const { return registry_; }
+  // The analysis state a MESH re-entry starts from (material sets given again).
+  void setState(const State* state) { ctx_.state = state; }
 
  private:
   MeshContext ctx_;
@@ -46,8 +48,10 @@ Model buildModel(const Problem& problem, Parameters& params, std::ostream* echo)
 
 // Mesh items applied to an existing model (MESH re-entry), then finished: new
 // ELEMents/BLOCk elements are built (replacing elements of the same number);
-// existing elements are kept. end, when given, locates end-of-mesh errors.
+// existing elements are kept; those of a material set given again take its new
+// data with their state (committed displacements from state; null: zero).
+// end, when given, locates end-of-mesh errors.
 void applyMesh(const std::vector<MeshItem>& items, Parameters& params, Model& model,
-               std::ostream* echo, const Record* end = nullptr);
+               std::ostream* echo, const Record* end = nullptr, const State* state = nullptr);
 
 }  // namespace c2d

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "elements/ElementFactory.h"
+#include "elements/MaterialUpdate.h"
 #include "macro/Expression.h"
 
 namespace c2d {
@@ -291,6 +292,7 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
 
   bool elastic = false, section = false;
   const Record* densityRec = nullptr;
+  const Record* kinematicsRec = nullptr;
   for (std::size_t k = 1; k < cmd.data.size(); ++k) {
     const Record& r = cmd.data[k];
     const CommandSpec* s = subs.find(r[0].text);
@@ -356,6 +358,7 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
     } else if (key == "smal" || key == "fini") {
       ctx.maxFields(r, 1, s->name);
       mat.kinematics = key == "smal" ? Kinematics::Small : Kinematics::Finite;
+      kinematicsRec = &r;
     } else if (key == "dens") {
       const std::string syntax = "DENSity,,rho";
       numericText(syntax);
@@ -424,6 +427,12 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
     failAt(*densityRec, 2, "DENSity needs the section area: give CROSs SECTion A I too");
 
   if (auto* os = ctx.out()) echoMaterial(*os, mat);
+  if (const MaterialSet* before = ctx.model.material(m)) {
+    auto [it, added] = ctx.changedMaterials.try_emplace(m);
+    if (added) it->second.before = before->kinematics;  // as the existing elements have it
+    it->second.head = h;
+    it->second.kinematics = kinematicsRec ? *kinematicsRec : Record{};
+  }
   ctx.model.materials()[m] = mat;
 }
 
@@ -881,7 +890,15 @@ std::vector<MeshCommandEntry> meshCommandTable() {
                applyElements});
   t.push_back({meshSpec("MATErial",
                         "Material set m: the element type record (FRAMe), then material records "
-                        "(see Material records) up to the blank record.",
+                        "(see Material records) up to the blank record. Given again in a MESH "
+                        "re-entry, the set's elements take the new data from the next step: their "
+                        "section forces at the converged state and their history (plastic "
+                        "curvature, hinge, initial strain, joint rotations) are kept and the new "
+                        "stiffness acts on the increments; stiffness, SHEAr, density, MASS, "
+                        "HARDening and SOFTening may change. Refused: SMALl <-> FINIte (use "
+                        "HINGe2joint), HARDening/SOFTening for elastic SMALl elements, removing "
+                        "the SOFTening of an active hinge, a Mu or yield moment below the "
+                        "element's moment, capacity given back to a failed hinge.",
                         {expr("m", "material set number"), text("label", "free text")},
                         "FRAMe, then material records", {}),
                applyMaterial});
@@ -1017,6 +1034,16 @@ void registerMaterialSubRecords(CommandRegistry& r) {
 // ---------------------------------------------------------------------------
 // end of the mesh input
 
+void refuseKinematicsChange(const Record& r, int m, Kinematics before) {
+  const std::string was = before == Kinematics::Small ? "SMALl" : "FINIte";
+  failAt(r, 0,
+         "material " + std::to_string(m) + " has elements with " + was +
+             " kinematics: the kinematics of a material set cannot change in a MESH re-entry",
+         "keep " + was +
+             "; HINGe2joint switches the elements to finite kinematics with their "
+             "state");
+}
+
 void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whereText) {
   Model& model = ctx.model;
 
@@ -1042,6 +1069,31 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
     const Vec2& x2 = model.coord(pe.nodes[1] - 1);
     if ((x2 - x1).norm() == 0) failAt(r, 3, what + " has zero length");
     model.setElement(num - 1, makeElement(*mat, {pe.nodes[0] - 1, pe.nodes[1] - 1}, x1, x2));
+  }
+
+  // MATErial given again: its existing elements (not rebuilt above) take the
+  // new data with their state. A change of kinematics is refused at the record;
+  // an element that cannot take the data ends the analysis at the record.
+  if (!ctx.changedMaterials.empty()) {
+    std::vector<int> rebuilt;
+    for (const auto& [num, pe] : ctx.elements) rebuilt.push_back(num - 1);
+    const State none;
+    for (const auto& [m, src] : ctx.changedMaterials) {
+      const MaterialSet& mat = *model.material(m);
+      bool used = false;
+      for (int e = 0; e < model.numElements() && !used; ++e)
+        used = model.elements()[e] && model.element(e).materialNumber() == m &&
+               std::find(rebuilt.begin(), rebuilt.end(), e) == rebuilt.end();
+      if (!used) continue;
+      if (mat.kinematics != src.before)
+        refuseKinematicsChange(src.kinematics.blank() ? src.head : src.kinematics, m, src.before);
+      const Status st = changeMaterial(model, ctx.state ? *ctx.state : none, mat, rebuilt);
+      if (!st)
+        throw AnalysisError(src.head.fieldLoc(0).str() + ": error: MATErial," + std::to_string(m) +
+                            " given again: " + st.why);
+      if (auto* os = ctx.out())
+        *os << "      Material set " << m << " given again: its elements take the new data\n";
+    }
   }
 
   if (auto* os = ctx.out(); os && !ctx.deferred.empty()) {
@@ -1092,6 +1144,7 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
 
   if (ctx.topologyChanged) model.bumpTopology();
   ctx.elements.clear();
+  ctx.changedMaterials.clear();
   ctx.deferred.clear();
   ctx.joints.clear();
   ctx.referencedNodes.clear();

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/Model.h"
+#include "core/State.h"
 #include "macro/CommandSpec.h"
 #include "macro/Deck.h"
 #include "macro/Parameters.h"
@@ -54,6 +55,18 @@ struct MeshContext {
   int highestNode = 0, highestElement = 0, lastBlockMaterial = 0;
   bool topologyChanged = false;
 
+  // MATErial given again for a set that exists: the new data go to the set's
+  // existing elements when the mesh input is complete (elements/MaterialUpdate).
+  struct MaterialChangeSource {
+    Kinematics before = Kinematics::Small;
+    Record head;        // MATErial,m
+    Record kinematics;  // its SMALl/FINIte record (blank: none given)
+  };
+  std::map<int, MaterialChangeSource> changedMaterials;
+  // The analysis state of a MESH re-entry (committed displacements); null: a
+  // model not yet analysed.
+  const State* state = nullptr;
+
   std::ostream* out() const { return print ? echo : nullptr; }
 
   // Value of field i (0 when absent or empty).
@@ -85,5 +98,10 @@ void registerMaterialSubRecords(CommandRegistry& registry);
 // joints and check that nothing is left undefined; where locates the errors
 // that belong to no single record.
 void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whereText);
+
+// The DeckError for a MATErial record given again (r: its SMALl/FINIte record,
+// or the MATErial record) that would change the kinematics of set m, whose
+// elements have `before`.
+[[noreturn]] void refuseKinematicsChange(const Record& r, int m, Kinematics before);
 
 }  // namespace c2d

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include "core/Checkpoint.h"
@@ -32,6 +34,14 @@ std::string fmt(const char* f, double v) {
   return buf;
 }
 
+// What a MESH re-entry may not change in a material set with elements.
+struct MaterialShape {
+  Kinematics kinematics = Kinematics::Small;
+  bool elastic = false;  // SMALl without HARDening/SOFTening: elastic frame elements
+};
+void checkMaterialChanges(const std::vector<Macro>& list, std::map<int, MaterialShape>& sets,
+                          const std::set<int>& used, const Parameters& params, bool& collapse);
+
 }  // namespace
 
 ProblemRun::ProblemRun(const Problem& problem, Parameters& params, const SolutionCommands& table,
@@ -55,6 +65,15 @@ void ProblemRun::bind(bool echo) {
   for (const BatchBlock& b : problem_.batches)
     batches_.push_back(bindBatch(b.commands, b.data, table_, scratch));
   checkPlotColumns(batches_, scratch);
+  std::map<int, MaterialShape> sets;
+  for (const auto& [number, mat] : model_.materials())
+    sets[number] = {mat.kinematics,
+                    mat.kinematics == Kinematics::Small && !mat.hardening && !mat.softening};
+  std::set<int> used;
+  for (const auto& e : model_.elements())
+    if (e) used.insert(e->materialNumber());
+  bool collapse = false;
+  for (const auto& batch : batches_) checkMaterialChanges(batch, sets, used, params_, collapse);
 }
 
 void ProblemRun::run() {
@@ -505,13 +524,67 @@ std::vector<MeshItem> meshReentryItems(const Macro& m) {
   return parseMeshRecords(std::move(records), m.record.loc.file);
 }
 
+// MATErial records of MESH re-entries, in deck order, that would change the
+// kinematics of a set whose elements exist, or give HARDening/SOFTening to its
+// elastic frame elements (before HINGe2joint, which makes them elastic Reissner
+// beams that ignore the laws): refused before any computing (the re-entry checks
+// again when it is applied). A re-entry that builds elements is left to that check.
+void checkMaterialChanges(const std::vector<Macro>& list, std::map<int, MaterialShape>& sets,
+                          const std::set<int>& used, const Parameters& params, bool& collapse) {
+  for (const Macro& m : list) {
+    checkMaterialChanges(m.body, sets, used, params, collapse);
+    if (m.is("hing")) collapse = true;
+    if (!m.is("mesh")) continue;
+    const std::vector<MeshItem> items = meshReentryItems(m);
+    bool builds = false;
+    for (const MeshItem& item : items)
+      if (const auto* c = std::get_if<MeshCommand>(&item))
+        builds = builds || c->head.is("ELEMents") || c->head.is("BLOCk");
+    if (builds) continue;
+    for (const MeshItem& item : items) {
+      const auto* c = std::get_if<MeshCommand>(&item);
+      if (!c || !c->head.is("MATErial") || c->head.size() < 2) continue;
+      int number = 0;
+      try {
+        number = Expression::parse(c->head[1]).evalInt(params, "material number");
+      } catch (const DeckError&) {
+        continue;  // a parameter set later: checked when the re-entry is applied
+      }
+      Kinematics kin = Kinematics::Small;
+      const Record* where = &c->head;
+      const Record* law = nullptr;
+      for (const Record& r : c->data) {
+        if (r.is("SMALl") || r.is("FINIte")) {
+          kin = r.is("SMALl") ? Kinematics::Small : Kinematics::Finite;
+          where = &r;
+        }
+        if (!law && (r.is("HARDening") || r.is("SOFTening"))) law = &r;
+      }
+      auto it = sets.find(number);
+      if (it != sets.end() && used.count(number)) {
+        if (it->second.kinematics != kin)
+          refuseKinematicsChange(*where, number, it->second.kinematics);
+        if (it->second.elastic && law && !collapse)
+          throw DeckError(law->fieldLoc(0),
+                          "material " + std::to_string(number) +
+                              " has elastic frame elements (built without HARDening and "
+                              "SOFTening): the laws cannot be added in a MESH re-entry",
+                          law->excerpt(law->fieldLoc(0).col),
+                          "give the laws in the mesh input, where the elements are built");
+        continue;  // the elements keep their class
+      }
+      sets[number] = {kin, kin == Kinematics::Small && !law};
+    }
+  }
+}
+
 }  // namespace
 
 void ProblemRun::reenterMesh(const Macro& m) {
   const std::vector<MeshItem> items = meshReentryItems(m);
   const Status st = analysis_->commit();
   if (!st) fail(m, st.why);
-  applyMesh(items, params_, model_, &log_);
+  applyMesh(items, params_, model_, &log_, nullptr, &analysis_->state());
   installJoints(model_);
   model_.bumpTopology();
   analysis_->topologyChanged();

@@ -100,6 +100,8 @@ void Analysis::topologyChanged() {
   for (int n = 0; n < model_.numNodes(); ++n)
     for (int d = 0; d < kNodeDofs; ++d)
       tableOf_[static_cast<size_t>(n) * kNodeDofs + d] = std::max(1, model_.loadTable(n)[d]);
+  // A material change (MESH re-entry) may have given the hinges new ultimate moments.
+  hinges_.committed();
 }
 
 double Analysis::loadFactor() const { return state_.prop * (path_ ? state_.arcLambda : 1.0); }
