@@ -85,6 +85,9 @@ void DeckReader::include(const Record& rec, const std::string& baseDir,
   p = p.lexically_normal();
   const std::string name = p.string();
 
+  if (fs::is_directory(p))
+    throw DeckError(rec[1].loc, "included file '" + name + "' is a directory",
+                    rec.excerpt(rec[1].loc));
   std::ifstream in(p, std::ios::binary);
   if (!in)
     throw DeckError(rec[1].loc, "cannot open included file '" + name + "'",
@@ -102,7 +105,8 @@ void DeckReader::include(const Record& rec, const std::string& baseDir,
 void DeckReader::readText(const std::string& text, const std::string& name,
                           const std::string& baseDir, std::vector<std::string>& openFiles,
                           std::vector<Record>& out) {
-  std::size_t start = 0;
+  // A UTF-8 byte-order mark (editors on Windows write one) is not part of the first record.
+  std::size_t start = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
   int lineNo = 0;
   while (start < text.size()) {
     std::size_t nl = text.find('\n', start);
@@ -120,6 +124,8 @@ void DeckReader::readText(const std::string& text, const std::string& name,
 }
 
 std::vector<Record> DeckReader::readFile(const std::string& path) {
+  if (std::filesystem::is_directory(path))
+    throw DeckError({path, 0, 0}, "'" + path + "' is a directory, not a deck file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw DeckError({path, 0, 0}, "cannot open deck file '" + path + "'");
   namespace fs = std::filesystem;

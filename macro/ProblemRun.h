@@ -15,6 +15,7 @@
 #include "macro/RunOutputs.h"
 #include "macro/SolutionCommand.h"
 #include "macro/TimeHistory.h"
+#include "macro/Warnings.h"
 #include "solvers/Analysis.h"
 
 namespace c2d {
@@ -25,6 +26,7 @@ struct RunOptions {
   std::string label;         // what tells this run apart (sweep values) in titles and legends
   bool progress = false;     // a single updating progress line on stderr
   std::string solver = "auto";
+  Warnings* warnings = nullptr;  // where bind() puts deck warnings (null: dropped)
 };
 
 struct RunSummary {
@@ -42,6 +44,9 @@ class ProblemRun {
 
   // Build the mesh and bind every BATCh block (no computing): throws DeckError.
   void bind(bool echo);
+  // The parameter table as binding left it: PARA commands of the BATCh blocks
+  // applied in deck order (what a later top-level LOOP count sees).
+  const Parameters& boundParams() const { return boundParams_; }
   // Execute the bound BATCh blocks; throws AnalysisError when the analysis fails.
   void run();
   RunSummary summary() const;
@@ -74,6 +79,8 @@ class ProblemRun {
   void saveRestart(const Macro& m);
   void restoreRestart(const Macro& m);
   void printNodal(const Macro& m);
+  // FORM,LONG / FORM,SHORt: the digits of the nodal tables (FEAP's fmt_long).
+  void setLongFormat(bool on) { longFormat_ = on; }
   void printStresses(const Macro& m);
   void printHinges();
 
@@ -98,6 +105,7 @@ class ProblemRun {
   std::ostream& log_;
 
   Model model_;
+  Parameters boundParams_;
   std::unique_ptr<Analysis> analysis_;
   std::vector<std::vector<Macro>> batches_;
   std::unique_ptr<TimeHistory> history_;
@@ -110,6 +118,10 @@ class ProblemRun {
   int cuts_ = 0;
   bool diverged_ = false;
   bool stalled_ = false;  // the Newton loop left because its energy repeats
+
+  bool arcLengthFromDt_ = false;
+  bool longFormat_ =
+      false;  // FORM,LONG  // ARCL without dlambda0: set up when the first step starts
 
   std::vector<int> hingeStep_;  // step at which each element's hinge formed
   int hingeCount_ = 0;

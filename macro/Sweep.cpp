@@ -1,6 +1,7 @@
 #include "macro/Sweep.h"
 
 #include <cctype>
+#include <cstdint>
 #include <cstdio>
 
 namespace c2d {
@@ -24,6 +25,15 @@ std::string sweepTag(const SweepValues& values) {
           c == '=' || c == '_'))
       c = '_';
   return tag;
+}
+
+std::string fitFileStem(const std::string& stem, std::size_t max) {
+  if (stem.size() <= max || max < 10) return stem;
+  std::uint32_t h = 2166136261u;  // FNV-1a
+  for (unsigned char c : stem) h = (h ^ c) * 16777619u;
+  char hex[12];
+  std::snprintf(hex, sizeof hex, "_%08x", static_cast<unsigned>(h));
+  return stem.substr(0, max - 9) + hex;
 }
 
 std::string sweepLabel(const SweepValues& values) {
