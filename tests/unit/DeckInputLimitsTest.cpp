@@ -48,6 +48,8 @@ TEST(DeckInput, DirectoryIsNotADeck) {
   EXPECT_THROW(DeckReader::readFile(dir.path().string()), DeckError);
   const std::string main = dir.write("main.inp", "INCLude .\n");
   expectDeckError([&] { DeckReader::readFile(main); }, main, 1, 9, "is a directory");
+  const std::string dev = dir.write("dev.inp", "INCLude /dev/zero\n");
+  expectDeckError([&] { DeckReader::readFile(dev); }, dev, 1, 9, "is not a regular file");
 }
 
 TEST(DeckInput, EmptyDeckAndDeckWithoutProblem) {
