@@ -434,8 +434,16 @@ void ProblemRun::setTimeHistory(const Macro& m) {
   if (every < 1)
     throw DeckError(m.record.fieldLoc(2), "the TPLOt increment must be 1 or more",
                     m.record.excerpt(m.record.fieldLoc(2)));
-  history_ = std::make_unique<TimeHistory>(options_.outDir / (options_.stem + "_tplot.csv"),
-                                           std::move(cols), every);
+  // A later TPLOt of the run completes the file of the one before and starts
+  // <stem>_tplot_2.csv, ... (two writers of one file lost it).
+  std::string name = options_.stem + "_tplot.csv";
+  if (history_) {
+    history_->record(*analysis_, true);
+    history_->finish();
+    name = options_.stem + "_tplot_" + std::to_string(++extraHistories_ + 1) + ".csv";
+  }
+  history_ = std::make_unique<TimeHistory>(options_.outDir / name, std::move(cols), every);
+  log_ << "  TPLOt  " << name << "\n";
 }
 
 namespace {

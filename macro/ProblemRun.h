@@ -119,9 +119,9 @@ class ProblemRun {
   bool diverged_ = false;
   bool stalled_ = false;  // the Newton loop left because its energy repeats
 
-  bool arcLengthFromDt_ = false;
-  bool longFormat_ =
-      false;  // FORM,LONG  // ARCL without dlambda0: set up when the first step starts
+  bool arcLengthFromDt_ = false;  // ARCL without dlambda0: set up when the first step starts
+  bool longFormat_ = false;       // FORM,LONG
+  int extraHistories_ = 0;        // TPLOt commands of the run after the first
 
   std::vector<int> hingeStep_;  // step at which each element's hinge formed
   int hingeCount_ = 0;

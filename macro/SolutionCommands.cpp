@@ -564,7 +564,8 @@ class TplotCommand final : public SolutionCommand {
     return solution("TPLOt",
                     "Time histories written every inc steps to <stem>_tplot.csv; records after "
                     "END up to a blank: disp,n,d  velo,n,d  acce,n,d  reac,n,d  stre,e,c "
-                    "(c = 1 N, 2 V, 3 M)  ener  arcl.",
+                    "(c = 1 N, 2 V, 3 M)  ener  arcl. A later TPLOt of the same run completes "
+                    "that file and starts <stem>_tplot_2.csv, and so on.",
                     {word("-", ""), num("inc", "output every inc steps", "1")}, "kind,n,d");
   }
   void bind(Macro& m, BindContext& ctx) const override {
