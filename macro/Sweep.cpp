@@ -46,6 +46,20 @@ std::string sweepLabel(const SweepValues& values) {
 }
 
 void registerDeckBlocks(CommandRegistry& registry) {
+  CommandSpec feap;
+  feap.name = "FEAP";
+  feap.doc =
+      "Start of a problem: 'FEAP * * title', then the control record 'numnp numel nummat ndm "
+      "ndf nen' (zeros: counted; frames have ndm 2, ndf 3, nen 2), or FEAP's keyword form: "
+      "records of 'keyword value' pairs in any order, NODEs, ELEMents, MATErial, DIMEnsion, "
+      "DOFS, ELNOdes (or NUMNp, NUMEl, NUMMat, NDM, NDF, NEN), e.g. 'NODES=10 ELEMENTS=9 "
+      "MATERIAL=1', ended by a blank record (absent: counted, 2, 3, 2). Then the mesh "
+      "commands up to END, and BATCh blocks.";
+  feap.section = CommandSection::Mesh;
+  feap.data = DataForm::Records;
+  feap.dataSyntax = "numnp numel nummat ndm ndf nen | keyword value ...";
+  registry.add(std::move(feap));
+
   CommandSpec s;
   s.name = "SWEEp";
   s.doc =
