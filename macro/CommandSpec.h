@@ -17,6 +17,7 @@ enum class CommandSection { Mesh, SubRecord, Solution };
 enum class DataForm {
   None,     // the command record is all there is
   Records,  // data records follow, ended by a blank record
+  Single,   // one data record follows (FEAP's SHIFt), unless the values stand on the command
 };
 
 struct FieldSpec {

@@ -55,7 +55,11 @@ struct BatchBlock {
 struct Problem {
   Record head;        // FEAP record
   std::string title;  // the FEAP record after its first word
-  Record control;     // numnp numel nummat ndm ndf nen
+  Record control;     // numnp numel nummat ndm ndf nen (blank when given by keywords)
+  // FEAP's keyword form of the control record instead: records of 'keyword value'
+  // pairs (NODEs n, ELEMents n, MATErial n, DIMEnsion, DOFS, ELNOdes, or NUMNp,
+  // NUMEl, NUMMat, NDM, NDF, NEN), ended by a blank record.
+  std::vector<Record> controlKeywords;
   std::vector<MeshItem> mesh;
   Record meshEnd;  // END of the mesh input
   std::vector<BatchBlock> batches;

@@ -1,8 +1,10 @@
 #include "macro/DeckParser.h"
 
+#include <algorithm>
 #include <cctype>
 
 #include "macro/DeckReader.h"
+#include "macro/Limits.h"
 #include "macro/MeshCommands.h"
 #include "macro/Parameters.h"
 
@@ -18,6 +20,24 @@ bool isStructural(const Record& r) {
 }
 
 bool isParamHead(const Record& r) { return r.is("PARAmeter") || r.is("CONStant"); }
+
+}  // namespace
+
+// FEAP's control keywords (pnewprob): four characters of the name, or the
+// variable's name (NUMNp, NDM, ...).
+int controlKeywordIndex(std::string_view word) {
+  static const char* const names[][2] = {
+      {"NODEs", "NUMNp"},   {"ELEMents", "NUMEl"},   {"MATErial", "NUMMat"},
+      {"DIMEnsion", "NDM"}, {"DOFS", "NDF"},         {"ELNOdes", "NEN"},
+      {"ADD", "NAD"},       {"PROPortional", "NPD"}, {"UPROportional", "NUD"}};
+  for (int i = 0; i < 9; ++i)
+    if (keywordMatches(word, names[i][0]) || keywordMatches(word, names[i][1])) return i;
+  return -1;
+}
+
+namespace {
+
+bool isControlKeyword(std::string_view word) { return controlKeywordIndex(word) >= 0; }
 
 // Is the first field followed by '=' (then the record is an assignment, even if
 // its name looks like a keyword)?
@@ -56,11 +76,33 @@ void DeckParser::skipBlanks() {
   while (!atEnd() && peek().blank()) ++pos_;
 }
 
+namespace {
+
+bool holdsProblem(const std::vector<TopItem>& items) {
+  for (const TopItem& item : items) {
+    if (std::holds_alternative<Problem>(item)) return true;
+    if (const auto* loop = std::get_if<TopLoop>(&item); loop && holdsProblem(loop->body))
+      return true;
+    if (const auto* sweep = std::get_if<TopSweep>(&item); sweep && holdsProblem(sweep->body))
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 Deck DeckParser::parse() {
   Deck deck;
   deck.path = path_;
   deck.items = parseTopItems(nullptr);
   if (!atEnd() && peek().is("STOP")) deck.stop = next();
+  if (!holdsProblem(deck.items)) {
+    const bool empty =
+        std::all_of(records_.begin(), records_.end(), [](const Record& r) { return r.blank(); });
+    throw DeckError({path_, 1, 1},
+                    empty ? "the deck is empty" : "the deck holds no problem (no FEAP record)", {},
+                    "a problem starts with a record 'FEAP * * title'");
+  }
   return deck;
 }
 
@@ -141,11 +183,17 @@ std::vector<TopItem> DeckParser::parseTopItems(const Record* loopHead) {
       return items;
     }
     if (r.is("LOOP")) {
+      if (++loopDepth_ > DeckLimits::kMaxLoopDepth)
+        throw DeckError(
+            r[0].loc,
+            "LOOP nested more than " + std::to_string(DeckLimits::kMaxLoopDepth) + " deep",
+            r.excerpt(r[0].loc));
       TopLoop loop;
       loop.head = next();
       loop.count = loopCount(loop.head);
       loop.body = parseTopItems(&loop.head);
       loop.next = next();  // parseTopItems stops only at NEXT inside a loop
+      --loopDepth_;
       items.emplace_back(std::move(loop));
       continue;
     }
@@ -256,6 +304,34 @@ Problem DeckParser::parseProblem() {
     throw DeckError(p.head[0].loc, "FEAP record without control record",
                     p.head.excerpt(p.head[0].loc),
                     "the next record is: numnp numel nummat ndm ndf nen");
+  if (!peek().blank() && isControlKeyword(peek()[0].text)) {
+    // FEAP's keyword form: 'keyword value' pairs up to a blank record.
+    while (true) {
+      if (atEnd())
+        throw DeckError(p.head[0].loc,
+                        "the keyword form of the control record is not ended by a blank record",
+                        p.head.excerpt(p.head[0].loc), "end it with a blank record");
+      const Record& r = next();
+      if (r.blank()) break;
+      for (std::size_t i = 0; i < r.size(); i += 2) {
+        if (!isControlKeyword(r[i].text))
+          throw DeckError(r[i].loc,
+                          "unknown control keyword '" + r[i].text +
+                              "' (a blank record ends the keyword form of the control record)",
+                          r.excerpt(r[i].loc),
+                          "the keywords are NODEs, ELEMents, MATErial, DIMEnsion, DOFS, "
+                          "ELNOdes (or NUMNp, NUMEl, NUMMat, NDM, NDF, NEN)");
+        if (i + 1 >= r.size() || r[i + 1].text.empty())
+          throw DeckError(r.fieldLoc(i + 1), "control keyword '" + r[i].text + "' has no value",
+                          r.excerpt(r.fieldLoc(i + 1)), "write " + r[i].text + "=n");
+        Expression::parse(r[i + 1]);
+      }
+      p.controlKeywords.push_back(r);
+    }
+    parseMesh(p);
+    parseBatches(p);
+    return p;
+  }
   p.control = next();
   if (!p.control.blank()) {
     const std::string& w = p.control[0].text;
@@ -267,7 +343,11 @@ Problem DeckParser::parseProblem() {
     for (const auto& f : p.control.fields) Expression::parse(f);
   }
   parseMesh(p);
+  parseBatches(p);
+  return p;
+}
 
+void DeckParser::parseBatches(Problem& p) {
   while (true) {
     skipBlanks();
     if (atEnd()) break;
@@ -283,7 +363,6 @@ Problem DeckParser::parseProblem() {
                     "expected BATCh after the END of the mesh input, found '" + r[0].text + "'",
                     r.excerpt(r[0].loc), r.is("END") ? "this END closes nothing" : std::string());
   }
-  return p;
 }
 
 void DeckParser::parseMesh(Problem& p) {
@@ -372,6 +451,19 @@ MeshCommand DeckParser::parseMeshCommand(const CommandSpec& spec) {
   for (std::size_t i = 1; i < c.head.size() && i <= spec.fields.size(); ++i)
     if (spec.fields[i - 1].kind != FieldKind::Text) Expression::parse(c.head[i]);
   if (spec.data == DataForm::None) return c;
+  if (spec.data == DataForm::Single) {
+    // FEAP reads the next record (SHIFt); values on the command record need none.
+    bool inline_ = false;
+    for (std::size_t i = 1; i < c.head.size(); ++i) inline_ = inline_ || !c.head[i].text.empty();
+    if (inline_) return c;
+    if (atEnd())
+      throw DeckError(c.head[0].loc,
+                      "'" + c.head[0].text + "' needs its data record: " + spec.dataSyntax,
+                      c.head.excerpt(c.head[0].loc));
+    if (!peek().blank()) checkDataRecord(peek(), c.head, spec);
+    c.data.push_back(next());
+    return c;
+  }
   while (true) {
     if (atEnd())
       throw DeckError(

@@ -6,6 +6,7 @@
 // with its file:line:col before anything is computed.
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "macro/CommandSpec.h"
@@ -44,6 +45,7 @@ class DeckParser {
   TopSweep parseSweep();
   Problem parseProblem();
   void parseMesh(Problem& p);
+  void parseBatches(Problem& p);
   bool parseMeshItems(std::vector<MeshItem>& items, Record* end);  // false: no END before EOF
   MeshCommand parseMeshCommand(const CommandSpec& spec);
   BatchBlock parseBatch();
@@ -56,7 +58,13 @@ class DeckParser {
   const CommandRegistry& mesh_;
   const CommandRegistry& sub_;
   std::size_t pos_ = 0;
+  int loopDepth_ = 0;  // top-level LOOPs open
 };
+
+// Index of a control keyword in the numeric control record (NODEs/NUMNp 0,
+// ELEMents/NUMEl 1, MATErial/NUMMat 2, DIMEnsion/NDM 3, DOFS/NDF 4, ELNOdes/NEN
+// 5, ADD/NAD 6, PROPortional/NPD 7, UPROportional/NUD 8), -1 for another word.
+int controlKeywordIndex(std::string_view word);
 
 // Reads (INCLude expanded) and parses a deck file. Throws DeckError.
 Deck parseDeck(const std::string& path);

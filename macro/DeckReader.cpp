@@ -12,6 +12,20 @@ namespace {
 bool isBlankChar(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
 bool isSeparator(char c) { return isBlankChar(c) || c == ',' || c == '='; }
 
+// Why path cannot be read as a deck ("" when it can, or does not exist: opening
+// it then says so): a directory, or a device that may never end (/dev/zero).
+// Pipes are read (a deck may come through one).
+std::string notAFile(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const auto st = fs::status(path, ec);
+  if (ec || !fs::exists(st)) return {};
+  if (fs::is_directory(st)) return "is a directory";
+  if (fs::is_character_file(st) || fs::is_block_file(st) || fs::is_socket(st))
+    return "is not a regular file";
+  return {};
+}
+
 std::string slurp(std::ifstream& in) {
   std::ostringstream s;
   s << in.rdbuf();
@@ -85,6 +99,8 @@ void DeckReader::include(const Record& rec, const std::string& baseDir,
   p = p.lexically_normal();
   const std::string name = p.string();
 
+  if (const std::string why = notAFile(p); !why.empty())
+    throw DeckError(rec[1].loc, "included file '" + name + "' " + why, rec.excerpt(rec[1].loc));
   std::ifstream in(p, std::ios::binary);
   if (!in)
     throw DeckError(rec[1].loc, "cannot open included file '" + name + "'",
@@ -102,7 +118,8 @@ void DeckReader::include(const Record& rec, const std::string& baseDir,
 void DeckReader::readText(const std::string& text, const std::string& name,
                           const std::string& baseDir, std::vector<std::string>& openFiles,
                           std::vector<Record>& out) {
-  std::size_t start = 0;
+  // A UTF-8 byte-order mark (editors on Windows write one) is not part of the first record.
+  std::size_t start = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
   int lineNo = 0;
   while (start < text.size()) {
     std::size_t nl = text.find('\n', start);
@@ -120,6 +137,8 @@ void DeckReader::readText(const std::string& text, const std::string& name,
 }
 
 std::vector<Record> DeckReader::readFile(const std::string& path) {
+  if (const std::string why = notAFile(path); !why.empty())
+    throw DeckError({path, 0, 0}, "deck '" + path + "' " + why);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw DeckError({path, 0, 0}, "cannot open deck file '" + path + "'");
   namespace fs = std::filesystem;

@@ -1,12 +1,14 @@
 #include "macro/DeckRunner.h"
 
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <set>
 #include <sstream>
 
 #include "macro/CurveOverlay.h"
 #include "macro/DeckParser.h"
+#include "macro/Limits.h"
 #include "macro/Sweep.h"
 
 namespace c2d {
@@ -46,14 +48,15 @@ std::vector<RunPlan> planRuns(const std::vector<RunInfo>& runs, const std::strin
   std::map<std::string, int> uses;
   for (std::size_t k = 0; k < n; ++k) {
     const RunInfo& r = runs[k];
-    plans[k].stem = !r.sweep.empty() ? stem + "_" + sweepTag(r.sweep)
-                    : n > 1          ? stem + "_" + std::to_string(k + 1)
-                                     : stem;
+    plans[k].stem = fitFileStem(!r.sweep.empty() ? stem + "_" + sweepTag(r.sweep)
+                                : n > 1          ? stem + "_" + std::to_string(k + 1)
+                                                 : stem);
     ++uses[plans[k].stem];
   }
   for (std::size_t k = 0; k < n; ++k)
     if (!runs[k].sweep.empty() && uses[plans[k].stem] > 1)
-      plans[k].stem = stem + "_" + std::to_string(k + 1) + "_" + sweepTag(runs[k].sweep);
+      plans[k].stem =
+          fitFileStem(stem + "_" + std::to_string(k + 1) + "_" + sweepTag(runs[k].sweep));
 
   std::set<std::string> names;
   for (const RunInfo& r : runs)
@@ -107,13 +110,16 @@ std::string summaryText(const RunSummary& s) {
 class Walker {
  public:
   Walker(const SolutionCommands& commands, const DeckOptions& options, std::ostream& log,
-         std::ostream* console, std::vector<RunPlan> plans)
+         std::ostream* console, std::vector<RunPlan> plans, std::string stem = {},
+         Warnings* warnings = nullptr)
       : commands_(commands),
         options_(options),
         log_(log),
         console_(console),
         execute_(!plans.empty()),
-        plans_(std::move(plans)) {}
+        plans_(std::move(plans)),
+        stem_(std::move(stem)),
+        warnings_(warnings) {}
 
   void walk(const std::vector<TopItem>& items, Parameters& params) {
     for (const TopItem& item : items) {
@@ -121,6 +127,17 @@ class Walker {
         pb->apply(params);
       } else if (const auto* loop = std::get_if<TopLoop>(&item)) {
         const int n = loop->count.evalInt(params, "loop count");
+        if (n < 0 || n > DeckLimits::kMaxRuns) {
+          const Record& h = loop->head;
+          const SourceLoc at = loop->count.loc();
+          throw DeckError(
+              at,
+              "top-level LOOP count " + std::to_string(n) +
+                  (n < 0 ? " is negative"
+                         : " is beyond the largest this program takes (" +
+                               std::to_string(DeckLimits::kMaxRuns) + " runs of its problems)"),
+              h.excerpt(at));
+        }
         for (int i = 0; i < n; ++i) walk(loop->body, params);
       } else if (const auto* sweep = std::get_if<TopSweep>(&item)) {
         for (std::size_t i = 0; i < sweep->runs(); ++i) {
@@ -155,11 +172,19 @@ class Walker {
       RunInfo info{sweep_, {}};
       for (const std::string& n : params.names()) info.params[n] = params.get(n);
       infos_.push_back(std::move(info));
+      ro.warnings = warnings_;
       ProblemRun run(p, params, commands_, ro, log_);
       run.bind(false);
+      // PARA commands in the BATCh blocks change the table for what follows (a
+      // later top-level LOOP count), as they will when the problem runs.
+      params = run.boundParams();
       return;
     }
-    const RunPlan& plan = plans_.at(static_cast<std::size_t>(runs_ - 1));
+    // A count that depends on what ran (PARA inside a BATCh loop) may give more
+    // runs than the check pass planned: they are numbered on.
+    if (static_cast<std::size_t>(runs_) > plans_.size())
+      plans_.push_back({stem_ + "_" + std::to_string(runs_), "run " + std::to_string(runs_)});
+    const RunPlan plan = plans_.at(static_cast<std::size_t>(runs_ - 1));
     ro.stem = plan.stem;
     ro.label = plan.label;
     log_ << "\n  collapse2d  " << p.title << "\n";
@@ -192,6 +217,8 @@ class Walker {
   std::ostream* console_;
   bool execute_;
   std::vector<RunPlan> plans_;
+  std::string stem_;
+  Warnings* warnings_;
   std::vector<RunInfo> infos_;
   SweepValues sweep_;
   int runs_ = 0;
@@ -205,14 +232,23 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
                     const SolutionCommands& commands, std::ostream& out) {
   DeckOutcome outcome;
   const std::string stem = std::filesystem::path(path).stem().string();
+  Warnings warnings;
+  bool printed = false;
+  auto printWarnings = [&] {
+    if (printed) return;
+    printed = true;
+    for (const DeckWarning& w : warnings.list()) std::cerr << w.str() << "\n";
+    outcome.warnings = warnings.list();
+  };
   try {
     const Deck deck = parseDeck(path);
     // Check pass: bind everything with a scratch parameter table, log discarded.
     std::ostringstream discard;
     Parameters checkParams;
-    Walker check(commands, options, discard, nullptr, {});
+    Walker check(commands, options, discard, nullptr, {}, stem, &warnings);
     check.walk(deck.items, checkParams);
     const std::vector<RunPlan> plans = planRuns(check.infos(), stem);
+    printWarnings();
 
     const std::filesystem::path dir =
         options.outDir.empty() ? std::filesystem::path(".") : options.outDir;
@@ -222,8 +258,9 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     std::ofstream log(logPath);
     if (!log) throw std::runtime_error("cannot write the log " + logPath.string());
     log << "  collapse2d  " << path << "\n";
+    for (const DeckWarning& w : warnings.list()) log << w.str() << "\n";
     Parameters params;
-    Walker runner(commands, options, log, &out, plans);
+    Walker runner(commands, options, log, &out, plans, stem);
     try {
       if (!plans.empty()) runner.walk(deck.items, params);
       for (const auto& f : runner.overlay().write(dir, stem))
@@ -239,6 +276,7 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
       out << path << ": " << (outcome.runs == 1 ? "" : std::to_string(outcome.runs) + " runs, ")
           << summaryText(outcome.total) << "\n";
   } catch (const DeckError& e) {
+    printWarnings();
     outcome.exitCode = kExitDeckError;
     outcome.message = e.what();
   } catch (const AnalysisError& e) {

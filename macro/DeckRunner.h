@@ -4,9 +4,11 @@
 #include <filesystem>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "macro/ProblemRun.h"
 #include "macro/SolutionCommand.h"
+#include "macro/Warnings.h"
 
 namespace c2d {
 
@@ -26,6 +28,7 @@ struct DeckOutcome {
   std::string message;  // the error, when there is one
   RunSummary total;     // summed over every problem run
   int runs = 0;
+  std::vector<DeckWarning> warnings;  // printed on stderr and in the log
 };
 
 DeckOutcome runDeck(const std::string& path, const DeckOptions& options,

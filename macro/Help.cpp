@@ -47,6 +47,8 @@ void printSpec(std::ostream& os, const CommandSpec& s) {
     printWrapped(os, "        " + f.name + ":", 10, doc);
   }
   if (s.data == DataForm::Records) printWrapped(os, "      data records:", 8, s.dataSyntax);
+  if (s.data == DataForm::Single)
+    printWrapped(os, "      data record:", 8, s.dataSyntax + " (the next record)");
 }
 
 }  // namespace

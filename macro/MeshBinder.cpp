@@ -1,30 +1,78 @@
 #include "macro/MeshBinder.h"
 
+#include <array>
 #include <iomanip>
+#include <map>
 #include <ostream>
+#include <set>
+#include <sstream>
 
+#include "macro/DeckParser.h"
 #include "macro/Expression.h"
+#include "macro/Limits.h"
 
 namespace c2d {
 
-MeshBinder::MeshBinder(Model& model, Parameters& params, std::ostream* echo)
+MeshBinder::MeshBinder(Model& model, Parameters& params, std::ostream* echo, Warnings* warnings)
     : ctx_(model, params, echo), table_(meshCommandTable()), registry_("Mesh commands") {
   for (const auto& e : table_) registry_.add(e.spec);
+  ctx_.warnings = warnings;
 }
+
+namespace {
+const char* const kControlNames[] = {"numnp", "numel", "nummat", "ndm", "ndf",
+                                     "nen",   "nad",   "npd",    "nud"};
+}  // namespace
 
 ControlData MeshBinder::setControl(const Record& r) {
   ctx_.maxFields(r, 9, "numnp numel nummat ndm ndf nen [nad npd nud]");
+  std::array<int, 9> v{};
+  std::array<ControlField, 9> at{};
+  for (std::size_t i = 0; i < 9; ++i) {
+    v[i] = ctx_.integer(r, i, kControlNames[i]);
+    at[i] = {&r, i};
+  }
+  return applyControl(v, at,
+                      "the control record is: numnp numel nummat ndm ndf nen (zeros: counted), "
+                      "e.g. 0 0 0 2 3 2");
+}
+
+ControlData MeshBinder::setControl(const std::vector<Record>& keywords) {
+  // Not given: counted (nodes, elements, materials), what frames are (2, 3, 2), 0.
+  std::array<int, 9> v{0, 0, 0, 2, 3, 2, 0, 0, 0};
+  std::array<ControlField, 9> at{};
+  at.fill({&keywords.front(), 0});
+  std::array<bool, 9> given{};
+  for (const Record& r : keywords)
+    for (std::size_t i = 0; i + 1 < r.size(); i += 2) {
+      const int k = controlKeywordIndex(r[i].text);
+      if (given[k])
+        throw DeckError(r[i].loc, "control keyword '" + r[i].text + "' is given twice",
+                        r.excerpt(r[i].loc));
+      given[k] = true;
+      v[k] = ctx_.integer(r, i + 1, kControlNames[k]);
+      at[k] = {&r, i + 1};
+    }
+  return applyControl(v, at,
+                      "the keyword form of the control record: NODEs=n ELEMents=n MATErial=n "
+                      "(0 or absent: counted) DIMEnsion=2 DOFS=3 ELNOdes=2");
+}
+
+ControlData MeshBinder::applyControl(const std::array<int, 9>& v,
+                                     const std::array<ControlField, 9>& at,
+                                     const std::string& hint) {
+  const auto& names = kControlNames;
   ControlData c;
-  const char* names[] = {"numnp", "numel", "nummat", "ndm", "ndf", "nen", "nad", "npd", "nud"};
-  int v[9] = {};
-  for (std::size_t i = 0; i < 9; ++i) v[i] = ctx_.integer(r, i, names[i]);
   auto fail = [&](std::size_t i, const std::string& msg) {
-    throw DeckError(r.fieldLoc(i), msg, r.excerpt(r.fieldLoc(i)),
-                    "the control record is: numnp numel nummat ndm ndf nen (zeros: counted), "
-                    "e.g. 0 0 0 2 3 2");
+    const Record& r = *at[i].record;
+    throw DeckError(r.fieldLoc(at[i].field), msg, r.excerpt(r.fieldLoc(at[i].field)), hint);
   };
   for (std::size_t i = 0; i < 3; ++i)
     if (v[i] < 0) fail(i, std::string(names[i]) + " must not be negative");
+  const long long limit[3] = {DeckLimits::maxNodes(), DeckLimits::maxElements(),
+                              DeckLimits::kMaxMaterials};
+  for (std::size_t i = 0; i < 3; ++i)
+    if (v[i] > 0) checkNumber(*at[i].record, at[i].field, v[i], limit[i], names[i]);
   if (v[3] != 2) fail(3, "ndm must be 2 (plane frames), got " + std::to_string(v[3]));
   if (v[4] != 3) fail(4, "ndf must be 3 (u, v, theta), got " + std::to_string(v[4]));
   if (v[5] != 0 && v[5] != 2)
@@ -80,16 +128,103 @@ void MeshBinder::finish(const SourceLoc& where, const std::string& whereText) {
   finishMesh(ctx_, where, whereText);
 }
 
-Model buildModel(const Problem& problem, Parameters& params, std::ostream* echo) {
+namespace {
+
+// "3, 4, 7" (at most ten, then "and n more").
+std::string nodeList(const std::vector<int>& nodes) {
+  std::string s;
+  for (std::size_t i = 0; i < nodes.size() && i < 10; ++i)
+    s += (i ? ", " : "") + std::to_string(nodes[i]);
+  if (nodes.size() > 10) s += " and " + std::to_string(nodes.size() - 10) + " more";
+  return s;
+}
+
+}  // namespace
+
+void MeshBinder::checkInitialMesh() {
+  const Model& model = ctx_.model;
+  auto warn = [&](const Record& r, std::size_t i, const std::string& msg) {
+    if (ctx_.warnings) ctx_.warnings->add(r.fieldLoc(i), msg, r.excerpt(r.fieldLoc(i)));
+  };
+
+  if (const auto& g = model.ground(); g && !ctx_.groundOrigin.blank()) {
+    // Nodes below y0 at t = 0 would be thrown out of the ground by the penalty force.
+    const double tol = 1e-9 * model.characteristicLength();
+    std::vector<int> below;
+    int deepest = -1;
+    for (int n = 0; n < model.numNodes(); ++n) {
+      if (!model.hasCoord(n) || model.coord(n).y() >= g->y0 - tol) continue;
+      below.push_back(n + 1);
+      if (deepest < 0 || model.coord(n).y() < model.coord(deepest).y()) deepest = n;
+    }
+    if (!below.empty()) {
+      std::ostringstream msg;
+      msg << (below.size() == 1 ? "node " : "nodes ") << nodeList(below)
+          << (below.size() == 1 ? " lies" : " lie") << " inside the ground y0 = " << g->y0
+          << " at the start (the deepest, node " << deepest + 1 << ", "
+          << g->y0 - model.coord(deepest).y() << " below it)";
+      const Record& r = ctx_.groundOrigin;
+      throw DeckError(r.fieldLoc(2), msg.str(), r.excerpt(r.fieldLoc(2)),
+                      "put the ground at or below the lowest node");
+    }
+  }
+
+  if (model.gravity() != Vec2::Zero() && !ctx_.gravityOrigin.blank()) {
+    std::set<int> without;
+    bool someMass = false;
+    for (const auto& el : model.elements()) {
+      if (!el) continue;
+      const MaterialSet* m = model.material(el->materialNumber());
+      if (!m) continue;
+      if (m->density > 0)
+        someMass = true;
+      else
+        without.insert(m->number);
+    }
+    const Record& r = ctx_.gravityOrigin;
+    if (!someMass)
+      throw DeckError(r.fieldLoc(0), "GRAVity, but no material set has a density: no self-weight",
+                      r.excerpt(r.fieldLoc(0)), "give DENSity,,rho in the material sets");
+    if (!without.empty()) {
+      std::string sets;
+      for (int m : without) sets += (sets.empty() ? "" : ", ") + std::to_string(m);
+      warn(r, 0,
+           std::string(without.size() == 1 ? "material set " : "material sets ") + sets +
+               " without DENSity: GRAVity gives their elements no self-weight");
+    }
+  }
+
+  // Nodes with coordinates that no element uses: one warning per record that gave them.
+  std::vector<char> used(static_cast<std::size_t>(model.numNodes()), 0);
+  for (const auto& el : model.elements())
+    if (el)
+      for (int n : el->nodes()) used[static_cast<std::size_t>(n)] = 1;
+  std::map<const Record*, std::vector<int>> unused;
+  for (int n = 0; n < model.numNodes(); ++n)
+    if (model.hasCoord(n) && !used[static_cast<std::size_t>(n)] &&
+        n < static_cast<int>(ctx_.coordOrigin.size()) && ctx_.coordOrigin[n])
+      unused[ctx_.coordOrigin[n]].push_back(n + 1);
+  for (const auto& [rec, nodes] : unused)
+    warn(*rec, 0,
+         std::string(nodes.size() == 1 ? "node " : "nodes ") + nodeList(nodes) +
+             (nodes.size() == 1 ? " is" : " are") + " used by no element");
+}
+
+Model buildModel(const Problem& problem, Parameters& params, std::ostream* echo, MeshFacts* facts) {
   Model model;
   if (echo) *echo << "\n   " << problem.title << "\n";
-  MeshBinder binder(model, params, echo);
-  binder.setControl(problem.control);
+  MeshBinder binder(model, params, echo, facts ? facts->warnings : nullptr);
+  if (problem.controlKeywords.empty())
+    binder.setControl(problem.control);
+  else
+    binder.setControl(problem.controlKeywords);
   binder.apply(problem.mesh);
   binder.finish(problem.meshEnd.loc, problem.meshEnd.lineText());
   if (model.numElements() == 0)
     throw DeckError(problem.meshEnd.loc, "the mesh has no elements", problem.meshEnd.lineText(),
                     "give ELEMents (or a BLOCk) before END");
+  binder.checkInitialMesh();
+  if (facts) facts->loadTables = binder.loadTableRefs();
   return model;
 }
 

@@ -12,6 +12,7 @@
 #include "elements/ElementFactory.h"
 #include "elements/MaterialUpdate.h"
 #include "macro/Expression.h"
+#include "macro/Limits.h"
 
 namespace c2d {
 
@@ -28,7 +29,7 @@ int MeshContext::integer(const Record& r, std::size_t i, std::string_view what) 
   return Expression::parse(r[i]).evalInt(params, what);
 }
 
-void MeshContext::ensureNode(int n, const Record& r, std::size_t i) {
+void MeshContext::ensureNode(long long n, const Record& r, std::size_t i) {
   if (n < 1)
     throw DeckError(r.fieldLoc(i),
                     "node " + std::to_string(n) + " does not exist (nodes start at 1)",
@@ -38,7 +39,8 @@ void MeshContext::ensureNode(int n, const Record& r, std::size_t i) {
                     "node " + std::to_string(n) + " is beyond numnp = " + std::to_string(maxNodes) +
                         " of the control record",
                     r.excerpt(r.fieldLoc(i)), "raise numnp, or set it to 0 to have nodes counted");
-  if (n > model.numNodes()) model.resizeNodes(n);
+  checkNumber(r, i, n, DeckLimits::maxNodes(), "node");
+  if (n > model.numNodes()) model.resizeNodes(static_cast<int>(n));
 }
 
 int MeshContext::node(const Record& r, std::size_t i, std::string_view what) {
@@ -62,6 +64,7 @@ int MeshContext::elementNumber(const Record& r, std::size_t i) {
         "element " + std::to_string(e) + " is beyond numel = " + std::to_string(maxElements) +
             " of the control record",
         r.excerpt(r.fieldLoc(i)), "raise numel, or set it to 0 to have elements counted");
+  checkNumber(r, i, e, DeckLimits::maxElements(), "element");
   return e;
 }
 
@@ -75,7 +78,13 @@ int MeshContext::materialNumber(const Record& r, std::size_t i) {
                     "material " + std::to_string(m) + " is beyond nummat = " +
                         std::to_string(maxMaterials) + " of the control record",
                     r.excerpt(r.fieldLoc(i)), "raise nummat, or set it to 0 to have them counted");
+  checkNumber(r, i, m, DeckLimits::kMaxMaterials, "material set");
   return m;
+}
+
+void MeshContext::setCoordOrigin(int n, const Record& r) {
+  if (static_cast<int>(coordOrigin.size()) < n) coordOrigin.resize(n, nullptr);
+  coordOrigin[n - 1] = &r;
 }
 
 void MeshContext::maxFields(const Record& r, std::size_t max, std::string_view syntax) const {
@@ -88,8 +97,6 @@ namespace {
 
 // ---------------------------------------------------------------------------
 // small helpers
-
-int sign(int v) { return v < 0 ? -1 : 1; }
 
 bool looksNumeric(const std::string& t) {
   return !t.empty() && (std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '.' ||
@@ -130,19 +137,31 @@ Mode readMode(const Record& head, Mode dflt) {
 // COORdinates: node ng x y. ng on the earlier of two records generates the nodes
 // between them (n1, n1+ng, ...) by linear interpolation (FEAP genvec).
 
+// The numbers l+s, l+2s, ... strictly between l and n, s = sign(n - l) |ng|
+// (none when l or ng is 0): FEAP's generation between two records, used by
+// every generating command. 64-bit arithmetic, so that an increment near 2^31
+// generates nothing instead of overflowing.
+std::vector<int> generatedBetween(int l, int n, int ng) {
+  std::vector<int> out;
+  if (l == 0 || ng == 0) return out;
+  const long long step = (n >= l ? 1 : -1) * std::llabs(static_cast<long long>(ng));
+  for (long long k = l + step; step > 0 ? k < n : k > n; k += step)
+    out.push_back(static_cast<int>(k));
+  return out;
+}
+
 template <class Assign, class Value>
 void generateBetween(int l, int lg, int n, const Value& xl, const Value& xn, Assign assign) {
-  if (lg == 0 || l == 0) return;
-  const int step = sign(n - l) * std::abs(lg);
-  const int count = (std::abs(n - l + step) - 1) / std::abs(step);
-  int j = 1;
-  for (int k = l + step; (n - k) * step > 0; k += step, ++j)
-    assign(k, xl + (xn - xl) * (static_cast<double>(j) / count));
+  const std::vector<int> ks = generatedBetween(l, n, lg);
+  const double count = static_cast<double>(ks.size() + 1);
+  for (std::size_t j = 0; j < ks.size(); ++j)
+    assign(ks[j], xl + (xn - xl) * (static_cast<double>(j + 1) / count));
 }
 
 void applyCoordinates(MeshContext& ctx, const MeshCommand& cmd) {
   std::set<int> touched;
   int l = 0, lg = 0;
+  const Record* prevRec = nullptr;
   for (const Record& r : cmd.data) {
     ctx.maxFields(r, 4, "node ng x y");
     const int n = ctx.node(r, 0);
@@ -151,11 +170,14 @@ void applyCoordinates(MeshContext& ctx, const MeshCommand& cmd) {
     if (n == l) failAt(r, 0, "node " + std::to_string(n) + " is given on two records in a row");
     const Vec2 xl = l > 0 ? ctx.model.coord(l - 1) : Vec2::Zero();
     ctx.model.setCoord(n - 1, x);
+    ctx.setCoordOrigin(n, r);
     touched.insert(n);
     generateBetween(l, lg, n, xl, x, [&](int k, const Vec2& v) {
       ctx.model.setCoord(k - 1, v);
+      ctx.setCoordOrigin(k, *prevRec);
       touched.insert(k);
     });
+    prevRec = &r;
     ctx.highestNode = std::max({ctx.highestNode, n, l});
     l = n;
     lg = ng;
@@ -194,8 +216,9 @@ void applyElements(MeshContext& ctx, const MeshCommand& cmd) {
     for (int k = lp + 1; lp != 0 && k < e; ++k) {
       MeshContext::PendingElement g = prev;
       for (int a = 0; a < 2; ++a) {
-        g.nodes[a] = prev.nodes[a] + (k - lp) * lg;
-        ctx.ensureNode(g.nodes[a], *prevRec, 3 + a);
+        const long long n = prev.nodes[a] + static_cast<long long>(k - lp) * lg;
+        ctx.ensureNode(n, *prevRec, 3 + a);
+        g.nodes[a] = static_cast<int>(n);
       }
       g.generated = true;
       ctx.elements[k] = g;
@@ -423,6 +446,15 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
     failAt(h, 0, "material " + std::to_string(m) + " has GA = 0 with shear deformation on",
            "give GA, or SHEAr OFF for Euler-Bernoulli");
   }
+  if (mat.hardening && mat.softening && mat.softening->Mu < mat.hardening->My) {
+    const Record* soft = nullptr;
+    for (const Record& r : cmd.data)
+      if (r.is("SOFTening")) soft = &r;
+    std::ostringstream msg;
+    msg << "Mu = " << mat.softening->Mu << " of SOFTening is below My = " << mat.hardening->My
+        << " of HARDening";
+    failAt(*soft, 2, msg.str(), "the hinge forms at Mu, after the hardening up to My: Mu >= My");
+  }
   if (densityRec && mat.density > 0 && mat.A <= 0)
     failAt(*densityRec, 2, "DENSity needs the section area: give CROSs SECTion A I too");
 
@@ -455,13 +487,12 @@ void applyBoundary(MeshContext& ctx, const MeshCommand& cmd) {
         if (c[i] == 0 && ctx.model.bound(l - 1)[i] < 0) c[i] = -1;
     ctx.model.bound(n - 1) = c;
     touched.insert(n);
-    if (lg != 0) {
-      const int step = sign(n - l) * std::abs(lg);
-      for (int k = l + step; (n - k) * step > 0; k += step) {
-        for (int i = 0; i < kNodeDofs; ++i)
-          if (ctx.model.bound(k - step - 1)[i] < 0) ctx.model.bound(k - 1)[i] = -1;
-        touched.insert(k);
-      }
+    int prev = l;
+    for (int k : generatedBetween(l, n, lg)) {
+      for (int i = 0; i < kNodeDofs; ++i)
+        if (ctx.model.bound(prev - 1)[i] < 0) ctx.model.bound(k - 1)[i] = -1;
+      touched.insert(k);
+      prev = k;
     }
     ctx.referencedNodes.emplace(n, r);
     l = n;
@@ -493,12 +524,12 @@ void applyLoadTables(MeshContext& ctx, const MeshCommand& cmd) {
     for (int i = 0; i < kNodeDofs; ++i) {
       p[i] = ctx.integer(r, 2 + i, "proportional load table");
       if (p[i] < 0) failAt(r, 2 + i, "a proportional load table number is 0 or positive");
+      if (p[i] > 0)
+        checkNumber(r, 2 + i, p[i], DeckLimits::kMaxLoadTables, "proportional load table");
+      if (p[i] > 1) ctx.tableRefs.emplace(p[i], std::make_pair(r, 2 + i));
     }
-    if (l != 0 && lg != 0) {
-      const int step = sign(n - l) * std::abs(lg);
-      for (int k = l + step; (n - k) * step > 0; k += step)
-        ctx.model.loadTable(k - 1) = ctx.model.loadTable(l - 1);
-    }
+    for (int k : generatedBetween(l, n, lg))
+      ctx.model.loadTable(k - 1) = ctx.model.loadTable(l - 1);
     ctx.model.loadTable(n - 1) = p;
     ctx.referencedNodes.emplace(n, r);
     l = n;
@@ -680,7 +711,8 @@ void applyBlock(MeshContext& ctx, const MeshCommand& cmd) {
     failAt(t, 0, "only CARTesian blocks are available, not '" + t.text(0) + "'");
   }
   ctx.maxFields(t, 8, "CARTesian nr ns ni ne ma nodinc ntyp");
-  const int nr = std::max(1, ctx.integer(t, 1, "number of elements"));
+  const int nr = ctx.integer(t, 1, "number of elements");
+  if (nr < 1) failAt(t, 1, "a block needs at least one element, got " + std::to_string(nr));
   const int ns = ctx.integer(t, 2, "second direction count");
   int ni = ctx.integer(t, 3, "first node number");
   int ne = ctx.integer(t, 4, "first element number");
@@ -692,6 +724,12 @@ void applyBlock(MeshContext& ctx, const MeshCommand& cmd) {
     failAt(t, ni < 0 ? 3 : ne < 0 ? 4 : 5, "numbers must not be negative");
   if (ni == 0) ni = ctx.highestNode + 1;
   if (ne == 0) ne = ctx.highestElement + 1;
+  // In 64 bits: the block's last node and element must be numbers this program takes.
+  checkNumber(t, 1, static_cast<long long>(ni) + nr, DeckLimits::maxNodes(),
+              "the block's last node", "first node + number of elements");
+  checkNumber(t, 1, static_cast<long long>(ne) + nr - 1, DeckLimits::maxElements(),
+              "the block's last element", "first element + number of elements - 1");
+  checkNumber(t, 5, std::max(ma, 1), DeckLimits::kMaxMaterials, "material set");
   if (ma == 0) ma = std::max(1, ctx.lastBlockMaterial);
   if (ctx.maxMaterials > 0 && ma > ctx.maxMaterials)
     failAt(t, 5,
@@ -721,9 +759,11 @@ void applyBlock(MeshContext& ctx, const MeshCommand& cmd) {
            "the block's last element " + std::to_string(lastElem) +
                " is beyond numel = " + std::to_string(ctx.maxElements));
   ctx.ensureNode(lastNode, t, 3);
-  for (int i = 0; i <= nr; ++i)
+  for (int i = 0; i <= nr; ++i) {
     ctx.model.setCoord(ni + i - 1,
                        master[0] + (master[1] - master[0]) * (static_cast<double>(i) / nr));
+    ctx.setCoordOrigin(ni + i, t);
+  }
   for (int e = 0; e < nr; ++e) ctx.elements[ne + e] = {ma, {ni + e, ni + e + 1}, t, true};
 
   ctx.highestNode = std::max(ctx.highestNode, lastNode);
@@ -778,6 +818,7 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
     if (r.size() > 4 && !r[4].text.empty() && g.alpha < 0)
       failAt(r, 4, "alpha must not be negative (leave it out for the integrator's)");
     ctx.model.ground() = g;
+    ctx.groundOrigin = r;
     previous = &r;
     if (auto* os = ctx.out()) {
       title(*os, "G r o u n d   C o n t a c t");
@@ -799,11 +840,88 @@ void applyGravity(MeshContext& ctx, const MeshCommand& cmd) {
   if (looksNumeric(h.text(1)))
     failAt(h, 1, "GRAVity takes two text fields, then numbers", "write GRAVity,,gx,gy");
   ctx.model.gravity() = Vec2(ctx.number(h, 2), ctx.number(h, 3));
+  ctx.gravityOrigin = h;
   if (auto* os = ctx.out()) {
     title(*os, "G r a v i t y");
     *os << "      gx ";
     num(*os, ctx.model.gravity().x()) << "   gy ";
     num(*os, ctx.model.gravity().y()) << "\n";
+  }
+}
+
+// ---------------------------------------------------------------------------
+// SHIFt and POLAr (FEAP polar.f): POLAr converts nodes whose COORdinates hold
+// (r, theta in degrees) to x = x0 + r cos(theta) + dx, y = y0 + r sin(theta) +
+// dy about the SHIFt origin (x0, y0), now. Records 'NODE n1 n2 inc [dx dy]'
+// (n2 = 0: n1 alone; both ends are converted whatever inc) or 'ALL' (every node
+// with coordinates); a node is converted once.
+
+void applyShift(MeshContext& ctx, const MeshCommand& cmd) {
+  const bool inlineValues = cmd.data.empty();
+  const Record& r = inlineValues ? cmd.head : cmd.data.front();
+  const std::size_t first = inlineValues ? 1 : 0;
+  ctx.maxFields(r, first + 3, inlineValues ? "SHIFt,x0,y0" : "x0 y0");
+  ctx.polarOrigin = Vec2(ctx.number(r, first), ctx.number(r, first + 1));
+  if (auto* os = ctx.out()) {
+    title(*os, "P o l a r   O r i g i n");
+    *os << "      x0 ";
+    num(*os, ctx.polarOrigin.x()) << "   y0 ";
+    num(*os, ctx.polarOrigin.y()) << "\n";
+  }
+}
+
+void applyPolar(MeshContext& ctx, const MeshCommand& cmd) {
+  std::vector<int> converted;
+  const double deg = std::atan(1.0) / 45.0;
+  for (const Record& r : cmd.data) {
+    std::vector<int> nodes;
+    Vec2 shift = Vec2::Zero();
+    if (r.is("ALL")) {
+      ctx.maxFields(r, 1, "ALL");
+      for (int n = 1; n <= ctx.model.numNodes(); ++n)
+        if (ctx.model.hasCoord(n - 1) && !ctx.polarConverted.count(n)) nodes.push_back(n);
+    } else if (r.is("NODEs")) {
+      ctx.maxFields(r, 6, "NODE n1 n2 inc dx dy");
+      const int n1 = ctx.node(r, 1, "first node");
+      // FEAP: n2 = 0 (or empty) converts n1 alone.
+      const int n2 = ctx.integer(r, 2, "last node") == 0 ? n1 : ctx.node(r, 2, "last node");
+      const long long inc =
+          std::max(1LL, std::llabs(static_cast<long long>(ctx.integer(r, 3, "node increment")))) *
+          (n2 >= n1 ? 1 : -1);
+      for (long long n = n1; inc > 0 ? n <= n2 : n >= n2; n += inc)
+        nodes.push_back(static_cast<int>(n));
+      if (nodes.back() != n2) nodes.push_back(n2);
+      shift = Vec2(ctx.number(r, 4), ctx.number(r, 5));
+      for (int n : nodes) {
+        if (!ctx.model.hasCoord(n - 1))
+          failAt(r, 1, "POLAr: node " + std::to_string(n) + " has no coordinates yet");
+        if (const auto it = ctx.polarConverted.find(n); it != ctx.polarConverted.end())
+          failAt(r, 1,
+                 "POLAr: node " + std::to_string(n) + " was converted already (line " +
+                     std::to_string(it->second) + ")");
+      }
+    } else {
+      failAt(r, 0, "unknown POLAr record '" + r.text(0) + "'",
+             "the records are 'NODE n1 n2 inc [dx dy]' or 'ALL'");
+    }
+    for (int n : nodes) {
+      const Vec2 p = ctx.model.coord(n - 1);  // (r, theta in degrees)
+      ctx.model.setCoord(
+          n - 1, ctx.polarOrigin +
+                     Vec2(p.x() * std::cos(p.y() * deg), p.x() * std::sin(p.y() * deg)) + shift);
+      ctx.polarConverted.emplace(n, r.loc.line);
+      converted.push_back(n);
+    }
+  }
+  ctx.topologyChanged = true;
+  if (auto* os = ctx.out()) {
+    title(*os, "C a r t e s i a n   C o o r d i n a t e s   f r o m   P o l a r");
+    *os << "      node      1 Coord      2 Coord\n";
+    for (int k : converted) {
+      *os << std::setw(10) << k;
+      num(*os, ctx.model.coord(k - 1).x());
+      num(*os, ctx.model.coord(k - 1).y()) << "\n";
+    }
   }
 }
 
@@ -971,6 +1089,27 @@ std::vector<MeshCommandEntry> meshCommandTable() {
                         {text("", "empty"), expr("gx", "x acceleration", "0"),
                          expr("gy", "y acceleration", "0")}),
                applyGravity});
+  {
+    CommandSpec shift =
+        meshSpec("SHIFt",
+                 "Origin (x0, y0) of the POLAr conversions (FEAP; default 0 0), "
+                 "on the next record or on the command record (SHIFt,x0,y0).",
+                 {}, "x0 y0", {expr("x0", "origin x", "0"), expr("y0", "origin y", "0")});
+    shift.data = DataForm::Single;
+    t.push_back({shift, applyShift});
+  }
+  t.push_back({meshSpec("POLAr",
+                        "Convert nodes whose COORdinates hold polar values (r, theta in degrees) "
+                        "to x = x0 + r cos(theta) + dx, y = y0 + r sin(theta) + dy about the "
+                        "SHIFt origin, now (FEAP). NODE n1 n2 inc: nodes n1 to n2 step inc (n2 "
+                        "empty: n1 alone; n2 is converted whatever inc); ALL: every node with "
+                        "coordinates not converted yet. A node is converted once.",
+                        {}, "NODE n1 n2 inc [dx dy] | ALL",
+                        {text("NODE/ALL", "which nodes"), expr("n1", "first node"),
+                         expr("n2", "last node", "n1"), expr("inc", "node increment", "1"),
+                         expr("dx", "x shift after the conversion", "0"),
+                         expr("dy", "y shift after the conversion", "0")}),
+               applyPolar});
   t.push_back({meshSpec("PRINt", "Echo the mesh data in the log (default).", {}), applyPrint});
   t.push_back({meshSpec("NOPRint", "Stop echoing the mesh data in the log.", {}), applyNoPrint});
   CommandSpec para = meshSpec("PARAmeter",

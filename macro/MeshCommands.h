@@ -15,6 +15,7 @@
 #include "macro/CommandSpec.h"
 #include "macro/Deck.h"
 #include "macro/Parameters.h"
+#include "macro/Warnings.h"
 
 namespace c2d {
 
@@ -52,6 +53,21 @@ struct MeshContext {
   // Nodes given loads or boundary codes: they must get coordinates.
   std::map<int, Record> referencedNodes;
 
+  // Proportional load tables above 1 named by FPROportional: the first record
+  // and field naming each (PROP must define them).
+  std::map<int, std::pair<Record, std::size_t>> tableRefs;
+
+  // The record that gave each node its coordinates (deck number - 1; the records
+  // outlive the context), for messages about nodes.
+  std::vector<const Record*> coordOrigin;
+  void setCoordOrigin(int n, const Record& r);
+  // The GROUnd record of CONTact and the GRAVity record, blank when not given.
+  Record groundOrigin, gravityOrigin;
+  Warnings* warnings = nullptr;  // null: warnings are dropped
+  // SHIFt: the origin of POLAr; the nodes POLAr converted (each only once, as FEAP).
+  Vec2 polarOrigin = Vec2::Zero();
+  std::map<int, int> polarConverted;  // node -> line of the POLAr record
+
   int highestNode = 0, highestElement = 0, lastBlockMaterial = 0;
   bool topologyChanged = false;
 
@@ -74,7 +90,9 @@ struct MeshContext {
   int integer(const Record& r, std::size_t i, std::string_view what) const;
   // A node number in field i: positive, within numnp; grows the model when counting.
   int node(const Record& r, std::size_t i, std::string_view what = "node number");
-  void ensureNode(int n, const Record& r, std::size_t i);
+  // Node n must exist (grows the model when counting): positive, within numnp
+  // and within DeckLimits; field i of r locates the error.
+  void ensureNode(long long n, const Record& r, std::size_t i);
   int elementNumber(const Record& r, std::size_t i);
   int materialNumber(const Record& r, std::size_t i);
   // DeckError when the record has more than max fields.

@@ -173,7 +173,9 @@ class ParaViewCommand final : public SolutionCommand {
   void bind(Macro& m, BindContext& ctx) const override {
     SolutionCommand::bind(m, ctx);
     if (!m.option.empty() && m.option != "off") fail(m, 1, "PVIEw,,inc or PVIEw,OFF");
-    if (m.option.empty() && value(m, 0, ctx.params(), 0) < 0) fail(m, 2, "negative PVIEw increment");
+    if (m.option.empty() && m.has(0) && !m.record.text(2).empty() &&
+        m.numbers[0].evalInt(ctx.params(), "PVIEw increment") < 0)
+      fail(m, 2, "negative PVIEw increment");
   }
   Flow run(const Macro& m, ProblemRun& r) const override {
     if (m.option == "off") {
@@ -181,7 +183,10 @@ class ParaViewCommand final : public SolutionCommand {
       r.log() << "  PVIEw  off after " << r.outputs().viewsWritten() << " files\n";
       return Flow::Next;
     }
-    const int inc = static_cast<int>(value(m, 0, r.params(), 0));
+    const int inc = m.has(0) && !m.record.text(2).empty()
+                        ? m.numbers[0].evalInt(r.params(), "PVIEw increment")
+                        : 0;
+    if (inc < 0) fail(m, 2, "negative PVIEw increment");
     r.outputs().setViewInterval(inc);
     const auto path = r.outputs().writeView(r.model(), r.analysis().state());
     r.log() << "  PVIEw  " << (path ? path->filename().string() : std::string("state already written"));

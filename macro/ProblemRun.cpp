@@ -58,13 +58,27 @@ ProblemRun::ProblemRun(const Problem& problem, Parameters& params, const Solutio
 ProblemRun::~ProblemRun() { progress(true); }
 
 void ProblemRun::bind(bool echo) {
-  model_ = buildModel(problem_, params_, echo ? &log_ : nullptr);
+  MeshFacts mesh;
+  mesh.warnings = options_.warnings;
+  model_ = buildModel(problem_, params_, echo ? &log_ : nullptr, &mesh);
   installJoints(model_);
-  Parameters scratch = params_;
+  boundParams_ = params_;
   batches_.clear();
+  BindFacts facts;
+  facts.warnings = options_.warnings;
   for (const BatchBlock& b : problem_.batches)
-    batches_.push_back(bindBatch(b.commands, b.data, table_, scratch));
-  checkPlotColumns(batches_, scratch);
+    batches_.push_back(bindBatch(b.commands, b.data, table_, boundParams_, &facts));
+  checkPlotColumns(batches_, boundParams_);
+  // A table that no PROP defines would silently stay at 1 (a restart file brings its own).
+  for (const auto& [table, ref] : mesh.loadTables)
+    if (!facts.restart && !facts.loadTables.count(table)) {
+      const auto& [rec, field] = ref;
+      throw DeckError(rec.fieldLoc(field),
+                      "proportional load table " + std::to_string(table) +
+                          " is defined by no PROP command of this problem",
+                      rec.excerpt(rec.fieldLoc(field)),
+                      "add PROP,," + std::to_string(table) + " to a BATCh block");
+    }
   std::map<int, MaterialShape> sets;
   for (const auto& [number, mat] : model_.materials())
     sets[number] = {mat.kinematics,
@@ -73,7 +87,7 @@ void ProblemRun::bind(bool echo) {
   for (const auto& e : model_.elements())
     if (e) used.insert(e->materialNumber());
   bool collapse = false;
-  for (const auto& batch : batches_) checkMaterialChanges(batch, sets, used, params_, collapse);
+  for (const auto& batch : batches_) checkMaterialChanges(batch, sets, used, boundParams_, collapse);
 }
 
 void ProblemRun::run() {
@@ -364,6 +378,10 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax) {
     stepsSinceCut_ = 0;
   }
   if (cutting_ && tmax && s.t + s.dt > *tmax) analysis_->setDt(*tmax - s.t);
+  if (arcLengthFromDt_) {
+    analysis_->setPathFollowing(PathFollowing::arcLength(s.dt));
+    arcLengthFromDt_ = false;
+  }
   scalePathIncrement();
   Status st = analysis_->advance();
   // The converged step could not be committed (an element cannot be evaluated
@@ -447,12 +465,21 @@ void ProblemRun::setPathFollowing(const Macro& m) {
   // The converged step belongs to the control it was computed under: committed
   // (and written to TPLOt) before the switch, as TIME would have done.
   if (const Status st = analysis_->commit(); !st) fail(m, st.why);
+  arcLengthFromDt_ = false;
   if (m.option == "off") {
     analysis_->setPathFollowing(std::nullopt);
     log_ << "  ARCL   off\n";
     return;
   }
-  const int kfl = m.numbers[0].evalInt(params_, "ARCL kfl");
+  const int kfl =
+      m.has(0) && !m.record.text(2).empty() ? m.numbers[0].evalInt(params_, "ARCL kfl") : 0;
+  if (kfl < 4 && m.data.empty()) {
+    // FEAPpv's arc length: the first step's load increment is its time step,
+    // known when that step starts (advanceTime).
+    arcLengthFromDt_ = true;
+    log_ << "  ARCL   arc length (first load increment: the first step's dt)\n";
+    return;
+  }
   const Record& rec = m.data.front();
   auto value = [&](std::size_t i) { return Expression::parse(rec[i]).eval(params_); };
   if (kfl >= 4) {
@@ -472,7 +499,8 @@ void ProblemRun::setPathFollowing(const Macro& m) {
     analysis_->setPathFollowing(PathFollowing::displacementControl(eq, value(2)));
     log_ << "  ARCL   displacement control of node " << node << " dof " << dof << "\n";
   } else {
-    analysis_->setPathFollowing(PathFollowing::arcLength(value(0)));
+    // 'dlambda0' alone or 'ndamp dlambda0': the last value.
+    analysis_->setPathFollowing(PathFollowing::arcLength(value(rec.size() - 1)));
     log_ << "  ARCL   arc length\n";
   }
 }
@@ -502,9 +530,22 @@ void ProblemRun::setTimeHistory(const Macro& m) {
     }
     cols.push_back(c);
   }
-  const int every = m.has(0) ? m.numbers[0].evalInt(params_, "TPLOt increment") : 1;
-  history_ = std::make_unique<TimeHistory>(options_.outDir / (options_.stem + "_tplot.csv"),
-                                           std::move(cols), every, analysis_->tableCount());
+  const int every =
+      m.has(0) && !m.record.text(2).empty() ? m.numbers[0].evalInt(params_, "TPLOt increment") : 1;
+  if (every < 1)
+    throw DeckError(m.record.fieldLoc(2), "the TPLOt increment must be 1 or more",
+                    m.record.excerpt(m.record.fieldLoc(2)));
+  // A later TPLOt of the run completes the file of the one before and starts
+  // <stem>_tplot_2.csv, ... (two writers of one file lost it).
+  std::string name = options_.stem + "_tplot.csv";
+  if (history_) {
+    history_->record(*analysis_, true);
+    history_->finish();
+    name = options_.stem + "_tplot_" + std::to_string(++extraHistories_ + 1) + ".csv";
+  }
+  history_ = std::make_unique<TimeHistory>(options_.outDir / name, std::move(cols), every,
+                                           analysis_->tableCount());
+  log_ << "  TPLOt  " << name << "\n";
 }
 
 namespace {
@@ -608,7 +649,8 @@ std::vector<int> ProblemRun::selection(const Macro& m, int count) const {
   int inc = m.has(2) && !m.record.text(4).empty() ? m.numbers[2].evalInt(params_, "increment") : 1;
   if (inc <= 0) inc = 1;
   n2 = std::min(n2, count);
-  for (int i = std::max(n1, 1); i <= n2; i += inc) out.push_back(i - 1);
+  // 64 bits: an increment near 2^31 must end the range, not wrap around.
+  for (long long i = std::max(n1, 1); i <= n2; i += inc) out.push_back(static_cast<int>(i - 1));
   return out;
 }
 
@@ -621,15 +663,17 @@ void ProblemRun::printNodal(const Macro& m) {
     Eigen::VectorXd r;
     const Status st = analysis_->reactions(r);
     if (!st) fail(m, st.why);
-    printNodalTable(log_, NodalQuantity::Reaction, model_, s, analysis_->loadFactor(), r, nodes);
+    printNodalTable(log_, NodalQuantity::Reaction, model_, s, analysis_->loadFactor(), r, nodes,
+                    longFormat_);
   } else if (m.is("velo")) {
-    printNodalTable(log_, NodalQuantity::Velocity, model_, s, analysis_->loadFactor(), s.v, nodes);
+    printNodalTable(log_, NodalQuantity::Velocity, model_, s, analysis_->loadFactor(), s.v, nodes,
+                    longFormat_);
   } else if (m.is("acce")) {
     printNodalTable(log_, NodalQuantity::Acceleration, model_, s, analysis_->loadFactor(), s.a,
-                    nodes);
+                    nodes, longFormat_);
   } else {
     printNodalTable(log_, NodalQuantity::Displacement, model_, s, analysis_->loadFactor(), s.u,
-                    nodes);
+                    nodes, longFormat_);
   }
 }
 

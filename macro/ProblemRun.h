@@ -16,6 +16,7 @@
 #include "macro/SolutionCommand.h"
 #include "macro/TimeHistory.h"
 #include "elements/HingeToJoint.h"
+#include "macro/Warnings.h"
 #include "solvers/Analysis.h"
 #include "solvers/ModelFingerprint.h"
 
@@ -27,6 +28,7 @@ struct RunOptions {
   std::string label;         // what tells this run apart (sweep values) in titles and legends
   bool progress = false;     // a single updating progress line on stderr
   std::string solver = "auto";
+  Warnings* warnings = nullptr;  // where bind() puts deck warnings (null: dropped)
 };
 
 struct RunSummary {
@@ -49,6 +51,9 @@ class ProblemRun {
 
   // Build the mesh and bind every BATCh block (no computing): throws DeckError.
   void bind(bool echo);
+  // The parameter table as binding left it: PARA commands of the BATCh blocks
+  // applied in deck order (what a later top-level LOOP count sees).
+  const Parameters& boundParams() const { return boundParams_; }
   // Execute the bound BATCh blocks; throws AnalysisError when the analysis fails.
   void run();
   RunSummary summary() const;
@@ -83,6 +88,8 @@ class ProblemRun {
   void saveRestart(const Macro& m);
   void restoreRestart(const Macro& m);
   void printNodal(const Macro& m);
+  // FORM,LONG / FORM,SHORt: the digits of the nodal tables (FEAP's fmt_long).
+  void setLongFormat(bool on) { longFormat_ = on; }
   void printStresses(const Macro& m);
   void printHinges();
 
@@ -110,6 +117,7 @@ class ProblemRun {
   std::ostream& log_;
 
   Model model_;
+  Parameters boundParams_;
   std::unique_ptr<Analysis> analysis_;
   std::vector<std::vector<Macro>> batches_;
   std::unique_ptr<TimeHistory> history_;
@@ -124,6 +132,10 @@ class ProblemRun {
   ModelFingerprint input_;  // the model as the deck's mesh input built it (SAVE / REST)  // why the last Newton iteration failed (under step cutting)
   bool diverged_ = false;
   bool stalled_ = false;  // the Newton loop left because its energy repeats
+
+  bool arcLengthFromDt_ = false;  // ARCL without dlambda0: set up when the first step starts
+  bool longFormat_ = false;       // FORM,LONG
+  int extraHistories_ = 0;        // TPLOt commands of the run after the first
 
   std::vector<int> hingeStep_;  // step at which each element's hinge formed
   int hingeCount_ = 0;

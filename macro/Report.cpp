@@ -30,7 +30,8 @@ void title(std::ostream& os, const char* spaced, const State& s, double loadFact
 }  // namespace
 
 void printNodalTable(std::ostream& os, NodalQuantity q, const Model& model, const State& state,
-                     double loadFactor, const Eigen::VectorXd& values, const std::vector<int>& nodes) {
+                     double loadFactor, const Eigen::VectorXd& values,
+                     const std::vector<int>& nodes, bool longFormat) {
   const char* spaced = "";
   const char* col = "";
   switch (q) {
@@ -52,18 +53,32 @@ void printNodalTable(std::ostream& os, NodalQuantity q, const Model& model, cons
       break;
   }
   title(os, spaced, state, loadFactor);
-  line(os, "   Node     1 Coord     2 Coord     1 %s     2 %s     3 %s", col, col, col);
+  if (longFormat)
+    line(os, "   Node          1 Coord          2 Coord          1 %s          2 %s          3 %s",
+         col, col, col);
+  else
+    line(os, "   Node     1 Coord     2 Coord     1 %s     2 %s     3 %s", col, col, col);
   double sum[3] = {0, 0, 0};
   for (int n : nodes) {
     const Vec2& x = model.coord(n);
     const double* v = values.data() + static_cast<Eigen::Index>(n) * kNodeDofs;
-    line(os, "%7d %11.4E %11.4E %11.4E %11.4E %11.4E", n + 1, clean(x.x()), clean(x.y()),
-         clean(v[0]), clean(v[1]), clean(v[2]));
+    // FEAP's FORM,LONG: e17.9 instead of e12.4.
+    if (longFormat)
+      line(os, "%7d %16.9E %16.9E %16.9E %16.9E %16.9E", n + 1, clean(x.x()), clean(x.y()),
+           clean(v[0]), clean(v[1]), clean(v[2]));
+    else
+      line(os, "%7d %11.4E %11.4E %11.4E %11.4E %11.4E", n + 1, clean(x.x()), clean(x.y()),
+           clean(v[0]), clean(v[1]), clean(v[2]));
     for (int d = 0; d < 3; ++d) sum[d] += v[d];
   }
-  if (q == NodalQuantity::Reaction)
-    line(os, "   Sum                         %11.4E %11.4E %11.4E", clean(sum[0]), clean(sum[1]),
-         clean(sum[2]));
+  if (q == NodalQuantity::Reaction) {
+    if (longFormat)
+      line(os, "   Sum                                   %16.9E %16.9E %16.9E", clean(sum[0]),
+           clean(sum[1]), clean(sum[2]));
+    else
+      line(os, "   Sum                         %11.4E %11.4E %11.4E", clean(sum[0]), clean(sum[1]),
+           clean(sum[2]));
+  }
   os << '\n';
 }
 

@@ -12,8 +12,10 @@ namespace c2d {
 enum class NodalQuantity { Displacement, Velocity, Acceleration, Reaction };
 
 // nodes: 0-based node indices to print. values: every node dof (node*3 + dof).
+// longFormat: FEAP's FORM,LONG (ten significant digits instead of five).
 void printNodalTable(std::ostream& os, NodalQuantity q, const Model& model, const State& state,
-                     double loadFactor, const Eigen::VectorXd& values, const std::vector<int>& nodes);
+                     double loadFactor, const Eigen::VectorXd& values,
+                     const std::vector<int>& nodes, bool longFormat = false);
 
 void printStressTable(std::ostream& os, Model& model, const State& state, double loadFactor,
                       const std::vector<int>& elements);

@@ -1,8 +1,10 @@
 // The solution commands of the BATCh language (deck language section 6): one
 // small class each, with its declared spec, its bind step and its run step.
 #include <cmath>
+#include <sstream>
 
 #include "macro/DeckParser.h"
+#include "macro/Limits.h"
 #include "macro/OutputCommands.h"
 #include "macro/ProblemRun.h"
 #include "macro/SolutionCommand.h"
@@ -33,6 +35,25 @@ CommandSpec solution(std::string name, std::string doc, std::vector<FieldSpec> f
 
 [[noreturn]] void fail(const Macro& m, std::size_t field, const std::string& what) {
   throw DeckError(m.record.fieldLoc(field), what, m.record.excerpt(m.record.fieldLoc(field)));
+}
+
+std::string formatNumber(double v) {
+  std::ostringstream s;
+  s.precision(12);
+  s << v;
+  return s.str();
+}
+
+// Number i (record field 2 + i) when it is written, not empty.
+bool written(const Macro& m, std::size_t i) { return m.has(i) && !m.record.text(2 + i).empty(); }
+
+// A time step or minimum step written in number i must be positive; checked when
+// the command is bound (before computing) and again when it runs (a parameter
+// may have changed in between).
+void checkPositive(const Macro& m, std::size_t i, const Parameters& p, const std::string& what) {
+  if (!written(m, i)) return;
+  const double v = m.numbers[i].eval(p);
+  if (!(v > 0)) fail(m, 2 + i, what + " must be positive, got " + formatNumber(v));
 }
 
 // ---------------------------------------------------------------- control
@@ -159,9 +180,25 @@ class TangCommand final : public SolutionCommand {
 class FormCommand final : public SolutionCommand {
  public:
   CommandSpec spec() const override {
-    return solution("FORM", "Form the residual at the current state and print its norm.", {});
+    return solution("FORM",
+                    "Form the residual at the current state and print its norm. FORM,LONG / "
+                    "FORM,SHORt (FEAP): nodal tables printed with ten / five significant "
+                    "digits from then on.",
+                    {word("option", "LONG or SHORt")});
   }
-  Flow run(const Macro& m, ProblemRun& r) const override { return r.formResidual(m); }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    if (!m.option.empty() && !keywordMatches(m.option, "LONG") &&
+        !keywordMatches(m.option, "SHORt"))
+      fail(m, 1, "unknown option '" + m.optionText + "' (LONG or SHORt)");
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    if (!m.option.empty()) {
+      r.setLongFormat(keywordMatches(m.option, "LONG"));
+      return Flow::Next;
+    }
+    return r.formResidual(m);
+  }
 };
 
 class SolvCommand final : public SolutionCommand {
@@ -190,6 +227,10 @@ class TolCommand final : public SolutionCommand {
     if (!m.option.empty() && m.option.rfind("ener", 0) != 0)
       fail(m, 1, "unknown option '" + m.optionText + "' (TOL,,etol,rtol or TOL,ENER,value)");
   }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    checkPositive(m, 0, ctx.params(), "the tolerance");
+  }
   Flow run(const Macro& m, ProblemRun& r) const override {
     auto value = [&](std::size_t i, double def) {
       return m.has(i) && !m.record.text(2 + i).empty() ? m.numbers[i].eval(r.params()) : def;
@@ -217,6 +258,11 @@ class DtCommand final : public SolutionCommand {
  public:
   CommandSpec spec() const override {
     return solution("DT", "Time step.", {word("-", ""), num("dt", "time step")});
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    if (!written(m, 0)) fail(m, 2, "DT needs the time step: DT,,dt");
+    checkPositive(m, 0, ctx.params(), "the time step");
   }
   Flow run(const Macro& m, ProblemRun& r) const override {
     const double dt = m.has(0) ? m.numbers[0].eval(r.params()) : 0.0;
@@ -247,9 +293,14 @@ class BackCommand final : public SolutionCommand {
     return solution("BACK", "Return to the last committed step (optionally with a new dt).",
                     {word("-", ""), num("dt", "new time step (optional)")});
   }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    checkPositive(m, 0, ctx.params(), "the new time step");
+  }
   Flow run(const Macro& m, ProblemRun& r) const override {
+    checkPositive(m, 0, r.params(), "the new time step");
     r.analysis().back();
-    if (m.has(0) && !m.record.text(2).empty()) r.setDt(m.numbers[0].eval(r.params()));
+    if (written(m, 0)) r.setDt(m.numbers[0].eval(r.params()));
     r.log() << "  BACK  to t = " << r.analysis().state().t << "\n";
     return Flow::Next;
   }
@@ -267,6 +318,14 @@ class PropCommand final : public SolutionCommand {
   }
   void bind(Macro& m, BindContext& ctx) const override {
     SolutionCommand::bind(m, ctx);
+    int table = 1;
+    if (written(m, 0)) {
+      table = m.numbers[0].evalInt(ctx.params(), "table number");
+      if (table < 0) fail(m, 2, "a proportional load table number is 0 or positive");
+      checkNumber(m.record, 2, std::max(table, 1), DeckLimits::kMaxLoadTables,
+                  "proportional load table");
+    }
+    ctx.loadTables().insert(std::max(table, 1));
     const Record& first = ctx.take(m.record, "proportional load data");
     m.data.push_back(first);
     if (first.blank()) return;
@@ -275,8 +334,23 @@ class PropCommand final : public SolutionCommand {
     if (t == 1) {
       ctx.skipBlank();
     } else if (t == 2) {
-      for (const Record& rec : ctx.takeSet(m.record, "proportional load table"))
+      // The times of a table increase strictly: p(t) is interpolated between them.
+      bool started = false;
+      double last = 0;
+      for (const Record& rec : ctx.takeSet(m.record, "proportional load table")) {
         m.data.push_back(rec);
+        for (std::size_t i = 0; i + 1 < rec.size(); i += 2) {
+          const double time = Expression::parse(rec[i]).eval(ctx.params());
+          if (started && !(time > last))
+            throw DeckError(rec[i].loc,
+                            "time " + formatNumber(time) + " of the proportional load table " +
+                                (time == last ? "repeats the one before it"
+                                              : "comes after the later time " + formatNumber(last)),
+                            rec.excerpt(rec[i].loc), "give the 't p' pairs in increasing time");
+          started = true;
+          last = time;
+        }
+      }
     } else {
       throw DeckError(first[0].loc,
                       "unknown proportional load type " + std::to_string(t) +
@@ -350,11 +424,14 @@ class AutoCommand final : public SolutionCommand {
     SolutionCommand::bind(m, ctx);
     const std::string k = m.option.substr(0, 3);
     if (k != "cut" && k != "off") fail(m, 1, "AUTO,CUT,dtmin or AUTO,OFF");
+    // dtmin <= 0 would let the cutting halve the step forever.
+    if (k == "cut") checkPositive(m, 0, ctx.params(), "the smallest step dtmin");
   }
   Flow run(const Macro& m, ProblemRun& r) const override {
     if (m.option.rfind("off", 0) == 0) {
       r.setStepCutting(false, 0);
     } else {
+      checkPositive(m, 0, r.params(), "the smallest step dtmin");
       r.setStepCutting(true,
                        m.has(0) && !m.record.text(2).empty() ? m.numbers[0].eval(r.params()) : 0.0);
     }
@@ -365,37 +442,86 @@ class AutoCommand final : public SolutionCommand {
 class ArclCommand final : public SolutionCommand {
  public:
   CommandSpec spec() const override {
-    return solution("ARCLength",
-                    "Path following, data after END. ARCL,,4 (or 5): displacement control, data "
-                    "'node dof increment'; ARCL,,1 (or 2): cylindrical arc length, data "
-                    "'dlambda0' (load increment of the first step, which sets the arc length); "
-                    "ARCL,OFF.",
-                    {word("option", "OFF to switch off"), num("kfl",
-                                                              "1/2 arc length, 4/5 "
-                                                              "displacement control")},
-                    "node dof increment | dlambda0");
+    return solution(
+        "ARCLength",
+        "Path following, data records after END as FEAPpv reads them: first 'ndamp' (the "
+        "damping flag, 1: none; 0 is accepted, with a warning, as no damping is applied), "
+        "then for kfl 4 or 5 (displacement control) 'node dof increment'. kfl 1, 2, 3 (0 "
+        "counts as 2): cylindrical arc length set by the first step, whose load increment is "
+        "its time step (FEAPpv) or [ext] dlambda0 written after ndamp, 'ndamp dlambda0'. "
+        "Accepted too: 'node dof increment' alone, and a lone 'dlambda0' other than 0 or 1 "
+        "(with a warning). ARCL,OFF.",
+        {word("option", "OFF to switch off"),
+         num("kfl", "1, 2, 3 arc length; 4, 5 displacement control", "2"),
+         num("lfl", "0 (1, changing a running arc length, is not available)", "0")},
+        "ndamp [dlambda0], then node dof increment (kfl 4, 5)");
   }
   void bind(Macro& m, BindContext& ctx) const override {
     SolutionCommand::bind(m, ctx);
     if (m.option == "off") return;
-    const int kfl = m.has(0) ? m.numbers[0].evalInt(ctx.params(), "ARCL kfl") : 0;
-    if (kfl != 1 && kfl != 2 && kfl != 4 && kfl != 5)
-      fail(m, 2, "ARCL kfl must be 1, 2 (arc length) or 4, 5 (displacement control)");
-    const Record& rec = ctx.take(m.record, "ARCL data");
-    if (rec.blank()) throw DeckError(rec.loc, "ARCL data record expected", m.record.lineText());
-    const std::size_t want = (kfl >= 4) ? 3 : 1;
-    if (rec.size() < want)
-      throw DeckError(rec.fieldLoc(rec.size()),
-                      kfl >= 4 ? "ARCL displacement control needs 'node dof increment'"
-                               : "ARCL arc length needs 'dlambda0'",
-                      rec.excerpt(rec.fieldLoc(rec.size())));
-    for (std::size_t i = 0; i < want; ++i) Expression::parse(rec[i]).eval(ctx.params());
-    m.data.push_back(rec);
+    if (!m.option.empty())
+      fail(m, 1, "unknown option '" + m.optionText + "' (ARCL,,kfl or ARCL,OFF)");
+    const int kfl = kflag(m, ctx.params());
+    if (kfl < 1 || kfl > 5)
+      fail(m, 2, "ARCL kfl must be 1, 2, 3 (arc length) or 4, 5 (displacement control)");
+    if (written(m, 1) && m.numbers[1].evalInt(ctx.params(), "ARCL lfl") != 0)
+      fail(m, 3, "ARCL lfl = 1 (new arc length for a running analysis) is not available");
+    const Record& first = ctx.take(m.record, "ARCL data");
+    if (first.blank())
+      throw DeckError(first.loc, "ARCL data record expected: 'ndamp' (1: no damping)",
+                      m.record.lineText());
+    auto values = [&](const Record& rec, std::size_t want, const char* what) {
+      if (rec.size() < want)
+        throw DeckError(rec.fieldLoc(rec.size()), std::string("ARCL needs '") + what + "'",
+                        rec.excerpt(rec.fieldLoc(rec.size())));
+      std::vector<double> v;
+      for (std::size_t i = 0; i < rec.size(); ++i)
+        v.push_back(Expression::parse(rec[i]).eval(ctx.params()));
+      return v;
+    };
+    const std::vector<double> v = values(first, 1, "ndamp");
+    auto checkDamping = [&](double ndamp) {
+      if (ndamp != 0 && ndamp != 1)
+        throw DeckError(first[0].loc,
+                        "the damping flag ndamp is 0 or 1, got " + formatNumber(ndamp),
+                        first.excerpt(first[0].loc), "FEAPpv's first ARCL record is 'ndamp'");
+      if (ndamp == 0)
+        ctx.warn(first[0].loc,
+                 "ndamp = 0: the load increments of the arc length are not damped here",
+                 first.excerpt(first[0].loc));
+    };
+    if (kfl >= 4) {
+      if (first.size() >= 3) {
+        m.data.push_back(first);  // 'node dof increment' without the damping record
+      } else {
+        checkDamping(v[0]);
+        const Record& rec = ctx.take(m.record, "ARCL record 'node dof increment'");
+        values(rec, 3, "node dof increment");
+        m.data.push_back(rec);
+      }
+    } else if (v.size() >= 2) {
+      checkDamping(v[0]);
+      m.data.push_back(first);  // ndamp dlambda0
+    } else if (v[0] == 0 || v[0] == 1) {
+      checkDamping(v[0]);  // FEAPpv: the first increment is the first step's dt
+    } else {
+      ctx.warn(first[0].loc,
+               "a lone value other than 0 or 1 is read as the first load increment dlambda0; "
+               "FEAPpv reads this record as the damping flag: write 'ndamp dlambda0', e.g. '1 " +
+                   first[0].text + "'",
+               first.excerpt(first[0].loc));
+      m.data.push_back(first);
+    }
     ctx.skipBlank();
   }
   Flow run(const Macro& m, ProblemRun& r) const override {
     r.setPathFollowing(m);
     return Flow::Next;
+  }
+  // FEAP's kfl, 0 counting as 2.
+  static int kflag(const Macro& m, const Parameters& p) {
+    const int k = written(m, 0) ? m.numbers[0].evalInt(p, "ARCL kfl") : 0;
+    return k == 0 ? 2 : k;
   }
 };
 
@@ -472,11 +598,16 @@ class TplotCommand final : public SolutionCommand {
                     "several load tables prop_1, prop_2, ... (each table's), then the records'. ener gives kinetic, strain, contact, external, "
                     "total = kinetic + strain + contact - external, dissipated (plastic work, the "
                     "mid-point scheme's algorithmic and contact dissipation since the start) and "
-                    "balance = total + dissipated, constant to the solver tolerance.",
+                    "balance = total + dissipated, constant to the solver tolerance. A later TPLOt of the "
+                    "same run completes that file and starts <stem>_tplot_2.csv, and so on.",
                     {word("-", ""), num("inc", "output every inc steps", "1")}, "kind,n,d");
   }
   void bind(Macro& m, BindContext& ctx) const override {
     SolutionCommand::bind(m, ctx);
+    if (written(m, 0)) {
+      const int inc = m.numbers[0].evalInt(ctx.params(), "TPLOt increment");
+      if (inc < 1) fail(m, 2, "the TPLOt increment must be 1 or more, got " + std::to_string(inc));
+    }
     m.data = ctx.takeSet(m.record, "TPLOt records");
     for (const Record& rec : m.data) {
       const std::string k = commandKey(rec.text(0));
@@ -531,6 +662,10 @@ class RestCommand final : public SolutionCommand {
                     "another model (the deck's node coordinates, elements, materials, boundary "
                     "codes or loads differ from those the saving deck started with).",
                     {word("name", "restart file name (optional; .rst is added)")});
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    ctx.noteRestart();
   }
   Flow run(const Macro& m, ProblemRun& r) const override {
     r.restoreRestart(m);
@@ -639,8 +774,10 @@ Macro makeMacro(const Record& rec, const SolutionCommands& table) {
 }
 
 // Builds the command tree with LOOP/NEXT matched; returns at the NEXT closing `loop`.
+// depth: loops around this list (bounded, so that the recursion here, in
+// binding and in running stays shallow).
 std::vector<Macro> buildTree(const std::vector<Record>& recs, std::size_t& pos,
-                             const SolutionCommands& table, Macro* loop) {
+                             const SolutionCommands& table, Macro* loop, int depth) {
   std::vector<Macro> out;
   while (pos < recs.size()) {
     const Record& rec = recs[pos++];
@@ -657,7 +794,12 @@ std::vector<Macro> buildTree(const std::vector<Record>& recs, std::size_t& pos,
       return out;
     }
     if (m.is("loop")) {
-      m.body = buildTree(recs, pos, table, &m);
+      if (depth >= DeckLimits::kMaxLoopDepth)
+        throw DeckError(
+            rec[0].loc,
+            "LOOP nested more than " + std::to_string(DeckLimits::kMaxLoopDepth) + " deep",
+            rec.excerpt(rec[0].loc));
+      m.body = buildTree(recs, pos, table, &m, depth + 1);
       if (m.next.blank()) throw DeckError(rec.loc, "LOOP without a matching NEXT", rec.lineText());
     }
     out.push_back(std::move(m));
@@ -675,10 +817,10 @@ void bindTree(std::vector<Macro>& list, BindContext& ctx) {
 }  // namespace
 
 std::vector<Macro> bindBatch(const std::vector<Record>& commands, const std::vector<Record>& data,
-                             const SolutionCommands& table, Parameters& params) {
+                             const SolutionCommands& table, Parameters& params, BindFacts* facts) {
   std::size_t pos = 0;
-  std::vector<Macro> tree = buildTree(commands, pos, table, nullptr);
-  BindContext ctx(data, params);
+  std::vector<Macro> tree = buildTree(commands, pos, table, nullptr, 0);
+  BindContext ctx(data, params, facts);
   bindTree(tree, ctx);
   while (!ctx.atEnd()) {
     const Record& rec = ctx.peek();

@@ -1,6 +1,7 @@
 #include "macro/Sweep.h"
 
 #include <cctype>
+#include <cstdint>
 #include <cstdio>
 
 namespace c2d {
@@ -26,6 +27,15 @@ std::string sweepTag(const SweepValues& values) {
   return tag;
 }
 
+std::string fitFileStem(const std::string& stem, std::size_t max) {
+  if (stem.size() <= max || max < 10) return stem;
+  std::uint32_t h = 2166136261u;  // FNV-1a
+  for (unsigned char c : stem) h = (h ^ c) * 16777619u;
+  char hex[12];
+  std::snprintf(hex, sizeof hex, "_%08x", static_cast<unsigned>(h));
+  return stem.substr(0, max - 9) + hex;
+}
+
 std::string sweepLabel(const SweepValues& values) {
   std::string label;
   for (const auto& [name, v] : values) {
@@ -36,6 +46,20 @@ std::string sweepLabel(const SweepValues& values) {
 }
 
 void registerDeckBlocks(CommandRegistry& registry) {
+  CommandSpec feap;
+  feap.name = "FEAP";
+  feap.doc =
+      "Start of a problem: 'FEAP * * title', then the control record 'numnp numel nummat ndm "
+      "ndf nen' (zeros: counted; frames have ndm 2, ndf 3, nen 2), or FEAP's keyword form: "
+      "records of 'keyword value' pairs in any order, NODEs, ELEMents, MATErial, DIMEnsion, "
+      "DOFS, ELNOdes (or NUMNp, NUMEl, NUMMat, NDM, NDF, NEN), e.g. 'NODES=10 ELEMENTS=9 "
+      "MATERIAL=1', ended by a blank record (absent: counted, 2, 3, 2). Then the mesh "
+      "commands up to END, and BATCh blocks.";
+  feap.section = CommandSection::Mesh;
+  feap.data = DataForm::Records;
+  feap.dataSyntax = "numnp numel nummat ndm ndf nen | keyword value ...";
+  registry.add(std::move(feap));
+
   CommandSpec s;
   s.name = "SWEEp";
   s.doc =

@@ -3,6 +3,7 @@
 // run of a sweep is named. Each run's outputs carry its values in the file
 // names, "<stem>_ks=-393_tplot.csv" (several variables joined by '_'), and its
 // curves in an overlay carry them in the legend, "ks = -393".
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,6 +19,10 @@ using SweepValues = std::vector<std::pair<std::string, double>>;
 std::string formatSweepValue(double value);
 // "ks=-393_mu=100": letters, digits, '.', '-', '+', '=' and '_' only.
 std::string sweepTag(const SweepValues& values);
+// A run's output stem within file-name limits: a stem longer than max
+// characters is cut and ends in '_' and a hash of the whole stem (8 hex
+// digits), so that it stays distinct and the same from run to run.
+std::string fitFileStem(const std::string& stem, std::size_t max = 160);
 // "ks = -393, mu = 100".
 std::string sweepLabel(const SweepValues& values);
 
