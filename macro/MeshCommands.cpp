@@ -11,6 +11,7 @@
 
 #include "elements/ElementFactory.h"
 #include "macro/Expression.h"
+#include "macro/LoadCommands.h"
 
 namespace c2d {
 
@@ -947,6 +948,7 @@ std::vector<MeshCommandEntry> meshCommandTable() {
                         {text("", "empty"), expr("gx", "x acceleration", "0"),
                          expr("gy", "y acceleration", "0")}),
                applyGravity});
+  for (auto& e : loadCommandTable()) t.push_back(std::move(e));
   t.push_back({meshSpec("PRINt", "Echo the mesh data in the log (default).", {}), applyPrint});
   t.push_back({meshSpec("NOPRint", "Stop echoing the mesh data in the log.", {}), applyNoPrint});
   CommandSpec para = meshSpec("PARAmeter",
