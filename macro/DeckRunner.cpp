@@ -90,6 +90,10 @@ std::string summaryText(const RunSummary& s) {
     std::snprintf(buf, sizeof buf, ", energy error %.2e", s.energyError);
     out += buf;
   }
+  if (s.outsideRuns > 0)
+    out += s.debrisRuns == 1 ? std::string(", debris OUTSIDE the site")
+                             : ", debris OUTSIDE the site in " + std::to_string(s.outsideRuns) +
+                                   " of " + std::to_string(s.debrisRuns) + " runs";
   std::snprintf(buf, sizeof buf, ", %.2f s", s.seconds);
   return out + buf;
 }
@@ -170,6 +174,8 @@ class Walker {
     total_.energyError = std::max(total_.energyError, s.energyError);
     total_.seconds += s.seconds;
     total_.dynamic = total_.dynamic || s.dynamic;
+    total_.debrisRuns += s.debrisRuns;
+    total_.outsideRuns += s.outsideRuns;
     log_ << "\n  summary: " << summaryText(s) << "\n";
     if (console_ && !options_.quiet && plans_.size() > 1)
       *console_ << "  " << ro.stem << ": " << summaryText(s) << "\n" << std::flush;

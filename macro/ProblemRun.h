@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/Debris.h"
 #include "core/Model.h"
 #include "macro/Deck.h"
 #include "macro/RunOutputs.h"
@@ -32,6 +33,9 @@ struct RunSummary {
   double energyError = 0;  // max |total energy - initial| / max energy scale (dynamic runs)
   double seconds = 0;
   bool dynamic = false;  // some step was dynamic (the energy error means something)
+  // Runs that ended with ground contact (debris figures), and those of them whose
+  // debris left the site (SITE).
+  int debrisRuns = 0, outsideRuns = 0;
 };
 
 class ProblemRun {
@@ -76,6 +80,11 @@ class ProblemRun {
   void printNodal(const Macro& m);
   void printStresses(const Macro& m);
   void printHinges();
+  // PLOT,DEBRis: <stem>_debris.svg of the current state, drawn again with the
+  // final state at the end of the run.
+  void plotDebris();
+  // The debris figures of a run that ended with ground contact.
+  const std::optional<DebrisFigures>& debris() const { return debris_; }
 
  private:
   Flow execList(const std::vector<Macro>& list, bool topLevel = false);
@@ -115,6 +124,10 @@ class ProblemRun {
   int hingeCount_ = 0;
   double energy0_ = 0, energyScale_ = 0, energyError_ = 0;
   bool energyStarted_ = false;
+  // Debris: the largest total ground force so far and its time; the figures at the end.
+  double peakGroundForce_ = 0, peakGroundTime_ = 0;
+  std::optional<DebrisFigures> debris_;
+  bool debrisPlot_ = false;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point lastProgress_;
   bool progressShown_ = false;
