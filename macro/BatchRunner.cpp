@@ -186,8 +186,8 @@ void printBatchTable(std::ostream& os, const std::vector<BatchResult>& results) 
                     r.deck.c_str(), r.status().c_str(), r.runs, r.steps, r.iterations, r.seconds,
                     debris.c_str());
     else
-      std::snprintf(buf, sizeof buf, "%-*s  %-20s %5s %7s %11s %10.2f\n", static_cast<int>(w), r.deck.c_str(),
-                    r.status().c_str(), "-", "-", "-", r.seconds);
+      std::snprintf(buf, sizeof buf, "%-*s  %-20s %5s %7s %11s %10.2f  %s\n", static_cast<int>(w),
+                    r.deck.c_str(), r.status().c_str(), "-", "-", "-", r.seconds, debris.c_str());
     os << buf;
   }
   os << results.size() << " deck" << (results.size() == 1 ? "" : "s") << ": "

@@ -296,8 +296,10 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     outcome.runs = runner.runs();
     outcome.failedRuns = runner.failed();
     int executed = outcome.runs;
-    if (options.shards > 1)
-      executed = (outcome.runs - options.shard) / options.shards + (outcome.runs >= options.shard ? 1 : 0);
+    if (options.shards > 1) {
+      executed = outcome.runs >= options.shard ? (outcome.runs - options.shard) / options.shards + 1 : 0;
+      outcome.runs = executed;
+    }
     if (outcome.failedRuns > 0) {
       log << "\n  run complete: " << outcome.failedRuns << " of " << executed << " runs failed\n";
       outcome.exitCode = kExitAnalysisFailed;
