@@ -25,9 +25,7 @@ std::string num(double v) {
 
 }  // namespace
 
-bool DebrisFigures::outside() const {
-  return site && (xmin < site->xmin || xmax > site->xmax);
-}
+bool DebrisFigures::outside() const { return site && (xmin < site->xmin || xmax > site->xmax); }
 
 std::string DebrisFigures::siteStatus() const {
   return !site ? "none" : outside() ? "outside" : "inside";

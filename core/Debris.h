@@ -31,7 +31,7 @@ struct DebrisFigures {
   double height = 0;                          // highest point now
   double totalMass = 0, outsideMass = 0;      // outside: 0 without a site
   std::optional<Site> site;
-  double peakGroundForce = 0, peakTime = 0;   // largest total ground force over the run
+  double peakGroundForce = 0, peakTime = 0;  // largest total ground force over the run
 
   // Some node lies outside the site (false without one).
   bool outside() const;

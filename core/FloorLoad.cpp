@@ -19,7 +19,8 @@ double carriedMassPerLength(const Model& model, const ElementLoad& load) {
 }
 
 Eigen::VectorXd floorLoadVector(const Model& model) {
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(model.numNodes()) * kNodeDofs);
+  Eigen::VectorXd f =
+      Eigen::VectorXd::Zero(static_cast<Eigen::Index>(model.numNodes()) * kNodeDofs);
   for (const ElementLoad& l : model.elementLoads()) {
     const double len = referenceLength(model, l.element);
     if (len == 0) continue;
@@ -36,7 +37,8 @@ Eigen::VectorXd floorLoadVector(const Model& model) {
 }
 
 Eigen::VectorXd lumpedNodalMass(const Model& model) {
-  Eigen::VectorXd m = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(model.numNodes()) * kNodeDofs);
+  Eigen::VectorXd m =
+      Eigen::VectorXd::Zero(static_cast<Eigen::Index>(model.numNodes()) * kNodeDofs);
   for (int n = 0; n < model.numNodes(); ++n)
     for (int d = 0; d < kNodeDofs; ++d) m[n * kNodeDofs + d] = model.nodalMass(n)[d];
   for (const ElementLoad& l : model.elementLoads()) {

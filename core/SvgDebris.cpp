@@ -35,10 +35,14 @@ std::string shortNum(double v) {
 std::string escape(const std::string& s) {
   std::string o;
   for (char c : s) {
-    if (c == '<') o += "&lt;";
-    else if (c == '>') o += "&gt;";
-    else if (c == '&') o += "&amp;";
-    else o += c;
+    if (c == '<')
+      o += "&lt;";
+    else if (c == '>')
+      o += "&gt;";
+    else if (c == '&')
+      o += "&amp;";
+    else
+      o += c;
   }
   return o;
 }
@@ -127,23 +131,24 @@ std::string debrisSvg(const Model& model, const State& state, const DebrisFigure
       << "\" height=\"" << px(bh) << "\"/>\n";
   }
   o << "</g>\n";
-  o << "<text x=\"" << px(kLeft - 6) << "\" y=\"" << px(histTop + 4)
-    << "\" text-anchor=\"end\">" << shortNum(hmax) << "</text>\n";
+  o << "<text x=\"" << px(kLeft - 6) << "\" y=\"" << px(histTop + 4) << "\" text-anchor=\"end\">"
+    << shortNum(hmax) << "</text>\n";
   o << "<text x=\"" << px(kLeft - 6) << "\" y=\"" << px(histBottom + 4)
     << "\" text-anchor=\"end\">0</text>\n";
   o << "<text x=\"" << px(kLeft + 6) << "\" y=\"" << px(histTop - 6) << "\">mass per "
     << shortNum(width) << " m of ground [t]</text>\n";
   // x axis ticks: footprint and site limits, the debris extent.
   auto tick = [&](double x, const char* color) {
-    o << "<text x=\"" << px(X(x)) << "\" y=\"" << px(histBottom + 16) << "\" text-anchor=\"middle\" fill=\""
-      << color << "\">" << shortNum(x) << "</text>\n";
+    o << "<text x=\"" << px(X(x)) << "\" y=\"" << px(histBottom + 16)
+      << "\" text-anchor=\"middle\" fill=\"" << color << "\">" << shortNum(x) << "</text>\n";
   };
   tick(d.footprintMin, "#666666");
   tick(d.footprintMax, "#666666");
   // Site limits.
   if (d.site) {
     for (double x : {d.site->xmin, d.site->xmax}) {
-      o << "<path class=\"site\" stroke=\"#D62728\" stroke-width=\"1.5\" stroke-dasharray=\"6 4\" d=\"M"
+      o << "<path class=\"site\" stroke=\"#D62728\" stroke-width=\"1.5\" stroke-dasharray=\"6 4\" "
+           "d=\"M"
         << px(X(x)) << ' ' << px(kTop) << "V" << px(histBottom) << "\"/>\n";
       tick(x, "#D62728");
     }

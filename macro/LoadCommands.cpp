@@ -170,22 +170,22 @@ std::vector<MeshCommandEntry> loadCommandTable() {
                  expr("qy", "load per length, y (down: negative)"),
                  text("MASS", "the load is also mass", "load only")}),
        applyElementLoads});
-  t.push_back({meshSpec("MASS",
-                        "Lumped nodal masses (FEAP's nodal mass input): m1, m2 on the "
-                        "translations, m3 rotary inertia; in dynamics, and loaded by GRAVity. "
-                        "Generation interpolates linearly between records.",
-                        {}, "node ng m1 m2 m3",
-                        {expr("node", "node number"),
-                         expr("ng", "generation increment to the next record", "0"),
-                         expr("m1", "mass, x"), expr("m2", "mass, y"),
-                         expr("m3", "rotary inertia", "0")}),
-               applyNodalMasses});
-  t.push_back({meshSpec("SITE",
-                        "The zone xmin <= x <= xmax the debris must stay in: the debris CSV, "
-                        "PLOT,DEBRis and the run's summary say whether it did. No data records.",
-                        {text("", "empty"), expr("xmin", "left limit"),
-                         expr("xmax", "right limit")}),
-               applySite});
+  t.push_back(
+      {meshSpec(
+           "MASS",
+           "Lumped nodal masses (FEAP's nodal mass input): m1, m2 on the "
+           "translations, m3 rotary inertia; in dynamics, and loaded by GRAVity. "
+           "Generation interpolates linearly between records.",
+           {}, "node ng m1 m2 m3",
+           {expr("node", "node number"), expr("ng", "generation increment to the next record", "0"),
+            expr("m1", "mass, x"), expr("m2", "mass, y"), expr("m3", "rotary inertia", "0")}),
+       applyNodalMasses});
+  t.push_back(
+      {meshSpec("SITE",
+                "The zone xmin <= x <= xmax the debris must stay in: the debris CSV, "
+                "PLOT,DEBRis and the run's summary say whether it did. No data records.",
+                {text("", "empty"), expr("xmin", "left limit"), expr("xmax", "right limit")}),
+       applySite});
   return t;
 }
 

@@ -17,7 +17,8 @@ std::string csvCell(const std::string& text) {
 }
 
 int PlanTable::failed() const {
-  return static_cast<int>(std::count_if(rows_.begin(), rows_.end(), [](const PlanRow& r) { return !r.ok; }));
+  return static_cast<int>(
+      std::count_if(rows_.begin(), rows_.end(), [](const PlanRow& r) { return !r.ok; }));
 }
 
 std::string PlanTable::header() const {
@@ -33,7 +34,8 @@ std::string PlanTable::header() const {
 std::string PlanTable::csv() const {
   // Empty debris cells: as many as the debris header has columns.
   const std::string header = debrisCsvHeader();
-  const std::string noDebris(static_cast<std::size_t>(std::count(header.begin(), header.end(), ',')), ',');
+  const std::string noDebris(
+      static_cast<std::size_t>(std::count(header.begin(), header.end(), ',')), ',');
   std::string out = this->header() + "\n";
   for (const PlanRow& r : rows_) {
     out += std::to_string(r.run);

@@ -68,7 +68,8 @@ std::string ShardSpec::tag() const {
 bool parseShard(const std::string& text, ShardSpec& spec) {
   int i = 0, n = 0;
   char slash = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &i, &slash, &n, &extra) != 3 || slash != '/') return false;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &i, &slash, &n, &extra) != 3 || slash != '/')
+    return false;
   if (n < 1 || i < 1 || i > n) return false;
   spec.index = i;
   spec.count = n;
@@ -109,7 +110,8 @@ std::vector<BatchResult> readBatchCsv(const std::string& text) {
   std::istringstream in(text);
   std::string line;
   if (!std::getline(in, line) || line != kBatchHeader)
-    throw std::runtime_error("not a batch table (its first line is not '" + std::string(kBatchHeader) + "')");
+    throw std::runtime_error("not a batch table (its first line is not '" +
+                             std::string(kBatchHeader) + "')");
   while (std::getline(in, line)) {
     if (line.empty()) continue;
     const auto c = splitCsv(line);
@@ -160,8 +162,9 @@ int mergeParts(const std::filesystem::path& dir, std::ostream& out, std::ostream
   for (const auto& [key, parts] : sets) {
     const auto& [joined, n] = key;
     if (const std::string missing = missingParts(parts, n); !missing.empty()) {
-      err << "collapse2d merge: " << joined << ": part" << (missing.find(',') == std::string::npos ? " " : "s ")
-          << missing << " of " << n << " missing\n";
+      err << "collapse2d merge: " << joined << ": part"
+          << (missing.find(',') == std::string::npos ? " " : "s ") << missing << " of " << n
+          << " missing\n";
       status = 1;
       continue;
     }
@@ -182,7 +185,8 @@ int mergeParts(const std::filesystem::path& dir, std::ostream& out, std::ostream
           continue;
         }
         for (const BatchResult& r : rows) {
-          auto it = std::find_if(merged.begin(), merged.end(), [&](const BatchResult& m) { return m.deck == r.deck; });
+          auto it = std::find_if(merged.begin(), merged.end(),
+                                 [&](const BatchResult& m) { return m.deck == r.deck; });
           if (it == merged.end()) {
             merged.push_back(r);
             continue;
@@ -200,8 +204,8 @@ int mergeParts(const std::filesystem::path& dir, std::ostream& out, std::ostream
         }
       }
       AtomicFile::write(dir / joined, batchCsv(merged));
-      out << joined << ": " << merged.size() << " deck" << (merged.size() == 1 ? "" : "s") << " from "
-          << n << " parts\n";
+      out << joined << ": " << merged.size() << " deck" << (merged.size() == 1 ? "" : "s")
+          << " from " << n << " parts\n";
       printBatchTable(out, merged);
       continue;
     }
@@ -214,18 +218,21 @@ int mergeParts(const std::filesystem::path& dir, std::ostream& out, std::ostream
       if (lines.empty()) continue;
       if (header.empty()) header = lines[0];
       if (lines[0] != header) {
-        err << "collapse2d merge: " << file.string() << ": its columns differ from the other parts'\n";
+        err << "collapse2d merge: " << file.string()
+            << ": its columns differ from the other parts'\n";
         consistent = false;
         break;
       }
-      for (std::size_t k = 1; k < lines.size(); ++k) rows.emplace_back(std::atoi(lines[k].c_str()), lines[k]);
+      for (std::size_t k = 1; k < lines.size(); ++k)
+        rows.emplace_back(std::atoi(lines[k].c_str()), lines[k]);
     }
     if (!consistent || header.empty()) {
       if (header.empty()) err << "collapse2d merge: " << joined << ": the parts are empty\n";
       status = 1;
       continue;
     }
-    std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::stable_sort(rows.begin(), rows.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
     std::string text = header + "\n";
     int failed = 0;
     for (const auto& [run, line] : rows) {
@@ -234,7 +241,8 @@ int mergeParts(const std::filesystem::path& dir, std::ostream& out, std::ostream
       if (std::find(cells.begin(), cells.end(), "failed") != cells.end()) ++failed;
     }
     AtomicFile::write(dir / joined, text);
-    out << joined << ": " << rows.size() << " plans from " << n << " parts, " << failed << " failed\n";
+    out << joined << ": " << rows.size() << " plans from " << n << " parts, " << failed
+        << " failed\n";
   }
   return status;
 }

@@ -26,7 +26,7 @@ namespace c2d {
 struct ShardSpec {
   int index = 1, count = 1;  // part index (1-based) of count
   bool active() const { return count > 1; }
-  std::string tag() const;   // "part2of4"
+  std::string tag() const;  // "part2of4"
 };
 
 // "i/n" with 1 <= i <= n; false when malformed.

@@ -79,13 +79,15 @@ TEST(Debris, PictureShowsFootprintSiteAndHistogram) {
   EXPECT_NE(svg.find("class=\"footprint\""), std::string::npos);
   EXPECT_NE(svg.find("class=\"ground\""), std::string::npos);
   std::size_t sites = 0;
-  for (std::size_t p = svg.find("class=\"site\""); p != std::string::npos; p = svg.find("class=\"site\"", p + 1)) ++sites;
+  for (std::size_t p = svg.find("class=\"site\""); p != std::string::npos;
+       p = svg.find("class=\"site\"", p + 1))
+    ++sites;
   EXPECT_EQ(sites, 2u);
   std::size_t bars = 0;
   const std::size_t hist = svg.find("class=\"histogram\"");
   ASSERT_NE(hist, std::string::npos);
-  for (std::size_t p = svg.find("<rect", hist); p != std::string::npos && p < svg.find("</g>", hist);
-       p = svg.find("<rect", p + 1))
+  for (std::size_t p = svg.find("<rect", hist);
+       p != std::string::npos && p < svg.find("</g>", hist); p = svg.find("<rect", p + 1))
     ++bars;
   // The bars lie on [-3, 1]: 4 of the 10 bins over [-3.5, 6.5] (x range with 5 % margins).
   EXPECT_GE(bars, 4u);
@@ -140,13 +142,14 @@ TEST(Debris, OutsideTheSiteInSummaryAndBatchTable) {
   const SolutionCommands commands;
   std::ostringstream out;
   const std::string decks = std::string(C2D_SOURCE_DIR) + "/decks/";
-  const auto results = runBatch({decks + "output/debris_site.inp", decks + "loads/floor_load_beam.inp"},
-                                o, commands, out);
+  const auto results = runBatch(
+      {decks + "output/debris_site.inp", decks + "loads/floor_load_beam.inp"}, o, commands, out);
   ASSERT_EQ(results.size(), 2u);
   EXPECT_TRUE(results[0].ok()) << results[0].output;
   EXPECT_EQ(results[0].debrisRuns, 1);
   EXPECT_EQ(results[0].outsideRuns, 1);
-  EXPECT_NE(results[0].output.find("debris OUTSIDE the site"), std::string::npos) << results[0].output;
+  EXPECT_NE(results[0].output.find("debris OUTSIDE the site"), std::string::npos)
+      << results[0].output;
   EXPECT_EQ(results[1].debrisRuns, 0);
   std::ostringstream table;
   printBatchTable(table, results);

@@ -63,12 +63,12 @@ TEST(FloorLoad, LumpedLoadsAndMasses) {
   m.elementLoads().push_back({2, Vec2(0, -20), true});
   m.nodalMass(4) = {3, 3, 0.5};
   const Eigen::VectorXd f = floorLoadVector(m);
-  EXPECT_DOUBLE_EQ(f[1 * 3 + 0], 1.0);     // element 2 (nodes 1, 2): qx L/2
-  EXPECT_DOUBLE_EQ(f[1 * 3 + 1], -10.0);   // qy L/2
-  EXPECT_DOUBLE_EQ(f[2 * 3 + 1], -20.0);   // elements 2 and 3 share node 2
+  EXPECT_DOUBLE_EQ(f[1 * 3 + 0], 1.0);    // element 2 (nodes 1, 2): qx L/2
+  EXPECT_DOUBLE_EQ(f[1 * 3 + 1], -10.0);  // qy L/2
+  EXPECT_DOUBLE_EQ(f[2 * 3 + 1], -20.0);  // elements 2 and 3 share node 2
   EXPECT_DOUBLE_EQ(f[3 * 3 + 1], -10.0);
-  EXPECT_DOUBLE_EQ(f[4 * 3 + 1], -30.0);   // weight of the nodal mass m2 g
-  EXPECT_DOUBLE_EQ(f[4 * 3 + 2], 0.0);     // no moments
+  EXPECT_DOUBLE_EQ(f[4 * 3 + 1], -30.0);  // weight of the nodal mass m2 g
+  EXPECT_DOUBLE_EQ(f[4 * 3 + 2], 0.0);    // no moments
   const Eigen::VectorXd mass = lumpedNodalMass(m);
   EXPECT_DOUBLE_EQ(mass[1 * 3 + 1], 0.0);  // a load only
   EXPECT_DOUBLE_EQ(mass[2 * 3 + 0], 1.0);  // |q|/|g| = 2 per length, half of L = 1
@@ -108,7 +108,8 @@ TEST(FloorLoad, TipMassPeriodAndEnergy) {
   EXPECT_GT(scale, 0.0);
   std::vector<double> roots;
   for (std::size_t i = 0; i + 1 < x.size(); ++i)
-    if ((x[i] > 0) != (x[i + 1] > 0)) roots.push_back(t[i] - x[i] * (t[i + 1] - t[i]) / (x[i + 1] - x[i]));
+    if ((x[i] > 0) != (x[i + 1] > 0))
+      roots.push_back(t[i] - x[i] * (t[i + 1] - t[i]) / (x[i + 1] - x[i]));
   ASSERT_GE(roots.size(), 6u);
   const double measured = 2 * (roots.back() - roots.front()) / (roots.size() - 1);
   const double discrete = 2 * kPi * h / (2 * std::atan(omega * h / 2));

@@ -27,7 +27,8 @@ TEST(Shard, ParseAndSelect) {
   EXPECT_EQ(s.count, 3);
   EXPECT_EQ(s.tag(), "part2of3");
   ShardSpec bad;
-  for (const char* t : {"0/3", "4/3", "2", "2/", "a/b", "2/3x", "-1/2"}) EXPECT_FALSE(parseShard(t, bad)) << t;
+  for (const char* t : {"0/3", "4/3", "2", "2/", "a/b", "2/3x", "-1/2"})
+    EXPECT_FALSE(parseShard(t, bad)) << t;
 
   DeckOptions o;
   const std::vector<std::string> decks{"a", "b", "c", "d", "e"};
@@ -80,7 +81,8 @@ TEST(Shard, PartsOfAStudyMergeIntoOneTable) {
     const DeckOutcome o = runDeck(deck, part, commands, console);
     EXPECT_EQ(o.runs, i == 1 ? 2 : 1);
     EXPECT_EQ(o.exitCode, i == 1 ? kExitAnalysisFailed : kExitOk) << o.message;
-    EXPECT_TRUE(std::filesystem::exists(part.outDir / ("plan_study_part" + std::to_string(i) + "of2.out")));
+    EXPECT_TRUE(
+        std::filesystem::exists(part.outDir / ("plan_study_part" + std::to_string(i) + "of2.out")));
     BatchResult r;
     r.deck = deck;
     r.exitCode = o.exitCode;
@@ -95,7 +97,8 @@ TEST(Shard, PartsOfAStudyMergeIntoOneTable) {
   }
   std::ostringstream out, err;
   EXPECT_EQ(mergeParts(part.outDir, out, err), 0) << err.str();
-  EXPECT_EQ(slurp(part.outDir / "plan_study_plans.csv"), slurp(whole.outDir / "plan_study_plans.csv"));
+  EXPECT_EQ(slurp(part.outDir / "plan_study_plans.csv"),
+            slurp(whole.outDir / "plan_study_plans.csv"));
   EXPECT_NE(out.str().find("3 plans from 2 parts, 1 failed"), std::string::npos) << out.str();
   const auto merged = readBatchCsv(slurp(part.outDir / "batch.csv"));
   ASSERT_EQ(merged.size(), 1u);
