@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "core/FloorLoad.h"
 #include "core/GroundContact.h"
 
 namespace c2d {
@@ -31,6 +32,9 @@ bool Assembler::refresh() {
         for (int d = 0; d < kNodeDofs; ++d) fGrav_[nodes[a] * kNodeDofs + d] += fe[a * kNodeDofs + d];
     }
   }
+  // Floor loads (QLOAd) and the weight of nodal masses: constant, like self-weight.
+  fGrav_ += floorLoadVector(model_);
+  mNodal_ = lumpedNodalMass(model_);
   patternVersion_ = model_.topologyVersion();
   return true;
 }
@@ -111,6 +115,16 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
     }
   }
 
+  // Lumped nodal masses (MASS, QLOAd carried as mass): inertia m a_eff per dof.
+  if (rule.dynamic()) {
+    for (Eigen::Index i = 0; i < mNodal_.size(); ++i) {
+      if (mNodal_[i] == 0 || !dofs_.used(static_cast<int>(i / kNodeDofs))) continue;
+      r_[i] += mNodal_[i] * rule.acceleration(s.u[i] - s.un[i], s.vn[i], s.an[i]);
+      const int eq = dofs_.eq(static_cast<int>(i));
+      if (wantTangent && eq >= 0) K_.valuePtr()[diagPos_[eq]] += mNodal_[i] * rule.ca;
+    }
+  }
+
   if (const auto& ground = model_.ground()) {
     fContact_.setZero();
     for (int n = 0; n < model_.numNodes(); ++n) {
@@ -164,6 +178,9 @@ double Assembler::kineticEnergy(const State& s) const {
           s.v.segment<kNodeDofs>(static_cast<Eigen::Index>(nodes[a]) * kNodeDofs);
     w += el.kineticEnergy(v);
   }
+  for (Eigen::Index i = 0; i < mNodal_.size(); ++i)
+    if (mNodal_[i] != 0 && dofs_.used(static_cast<int>(i / kNodeDofs)))
+      w += 0.5 * mNodal_[i] * s.v[i] * s.v[i];
   return w;
 }
 

@@ -2,8 +2,9 @@
 // Assembles the residual and the tangent of the whole model at a trial state.
 //
 // The residual per node dof is r = f_int + M a_eff - f_ext - f_contact. At a free
-// dof it must vanish; at a restrained dof it is the reaction. f_ext is
-// lambda*FORCe plus self-weight, with lambda per dof the factor of its
+// dof it must vanish; at a restrained dof it is the reaction. M holds the
+// elements' masses and the lumped nodal ones (core/FloorLoad.h). f_ext is
+// lambda*FORCe plus the constant loads (self-weight, QLOAd, weight of MASS), with lambda per dof the factor of its
 // proportional load table at the step rule's load point (t_n+1, or the mid-point
 // for the mid-point scheme).
 //
@@ -40,10 +41,13 @@ class Assembler {
   const Eigen::VectorXd& nodalResidual() const { return r_; }  // size numNodes*3
   // External load vector (FORCe pattern, unit factor) per node dof.
   const Eigen::VectorXd& referenceLoad() const { return fRef_; }
+  // Constant loads: self-weight, element loads (QLOAd), weight of nodal masses.
   const Eigen::VectorXd& gravityLoad() const { return fGrav_; }
   // Contact forces on the nodes at the last assembly (per node dof; included in
   // the residual with a minus sign).
   const Eigen::VectorXd& contactForces() const { return fContact_; }
+  // Lumped nodal masses per node dof (MASS, QLOAd carried as mass).
+  const Eigen::VectorXd& nodalMass() const { return mNodal_; }
 
   // Scatter a node-dof vector to equations (and back).
   void toEquations(const Eigen::VectorXd& nodal, Eigen::VectorXd& eqs) const;
@@ -62,7 +66,7 @@ class Assembler {
   SparseMatrix K_;
   std::vector<std::array<int, kElemDofs * kElemDofs>> elemPos_;  // index into K_ values, -1: none
   std::vector<int> diagPos_;                                     // per equation
-  Eigen::VectorXd r_, fRef_, fGrav_, fContact_;
+  Eigen::VectorXd r_, fRef_, fGrav_, fContact_, mNodal_;
   int patternVersion_ = -1;
   double forceScale_ = 0;
 };

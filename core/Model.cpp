@@ -13,6 +13,7 @@ void Model::resizeNodes(int n) {
   table_.resize(n, {0, 0, 0});
   force_.resize(n, {0, 0, 0});
   disp_.resize(n, {0, 0, 0});
+  mass_.resize(n, {0, 0, 0});
 }
 
 int Model::addNode(const Vec2& x) {

@@ -31,6 +31,19 @@ struct Ground {
   double y0 = 0, k = 0, alpha = -1;
 };
 
+// Uniform load per unit reference length on an element, global components
+// (QLOAd); asMass: the load is a weight, |q|/|g| is also mass (core/FloorLoad.h).
+struct ElementLoad {
+  int element = -1;
+  Vec2 q = Vec2::Zero();
+  bool asMass = false;
+};
+
+// The zone x in [xmin, xmax] the debris must stay in (SITE).
+struct Site {
+  double xmin = 0, xmax = 0;
+};
+
 class Model {
  public:
   // --- nodes ---
@@ -55,6 +68,9 @@ class Model {
   // 0: table 1).
   std::array<int, kNodeDofs>& loadTable(int node) { return table_[node]; }
   const std::array<int, kNodeDofs>& loadTable(int node) const { return table_[node]; }
+  // Lumped nodal mass of each dof (MASS: m1, m2 translations, m3 rotary inertia).
+  std::array<double, kNodeDofs>& nodalMass(int node) { return mass_[node]; }
+  const std::array<double, kNodeDofs>& nodalMass(int node) const { return mass_[node]; }
 
   // --- materials and elements ---
   std::map<int, MaterialSet>& materials() { return materials_; }
@@ -75,6 +91,10 @@ class Model {
   const std::optional<Ground>& ground() const { return ground_; }
   Vec2& gravity() { return gravity_; }
   const Vec2& gravity() const { return gravity_; }
+  std::vector<ElementLoad>& elementLoads() { return elementLoads_; }
+  const std::vector<ElementLoad>& elementLoads() const { return elementLoads_; }
+  std::optional<Site>& site() { return site_; }
+  const std::optional<Site>& site() const { return site_; }
 
   // Bumped whenever the dof structure may change (MESH re-entry, HINGE2JOINT):
   // the dof map, sparsity pattern and symbolic factorization are rebuilt.
@@ -88,12 +108,14 @@ class Model {
   std::vector<Vec2> coords_;
   std::vector<char> defined_;
   std::vector<std::array<int, kNodeDofs>> bound_, table_;
-  std::vector<std::array<double, kNodeDofs>> force_, disp_;
+  std::vector<std::array<double, kNodeDofs>> force_, disp_, mass_;
   std::map<int, MaterialSet> materials_;
   std::vector<std::unique_ptr<Element>> elements_;
   std::vector<Joint> joints_;
   std::optional<Ground> ground_;
   Vec2 gravity_ = Vec2::Zero();
+  std::vector<ElementLoad> elementLoads_;
+  std::optional<Site> site_;
   int topologyVersion_ = 0;
 };
 

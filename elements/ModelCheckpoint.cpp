@@ -142,6 +142,19 @@ void writeModel(std::ostream& out, const Model& model) {
   if (model.ground())
     for (double x : {model.ground()->y0, model.ground()->k, model.ground()->alpha}) put(out, x);
   putFixed(out, model.gravity());
+  // Floor loads, nodal masses, the site.
+  putTag(out, "LOAD");
+  putCount(out, model.elementLoads().size());
+  for (const ElementLoad& l : model.elementLoads()) {
+    put(out, l.element);
+    putFixed(out, l.q);
+    putBool(out, l.asMass);
+  }
+  for (int n = 0; n < model.numNodes(); ++n)
+    for (double m : model.nodalMass(n)) put(out, m);
+  putBool(out, model.site().has_value());
+  if (model.site())
+    for (double x : {model.site()->xmin, model.site()->xmax}) put(out, x);
   put(out, model.topologyVersion());
 }
 
@@ -213,6 +226,24 @@ Model readModel(std::istream& in, int minTopologyVersion) {
     model.ground() = g;
   }
   getFixed(in, model.gravity());
+  expectTag(in, "LOAD");
+  const std::size_t loads = getCount(in);
+  for (std::size_t k = 0; k < loads; ++k) {
+    ElementLoad l;
+    l.element = get<int>(in);
+    getFixed(in, l.q);
+    l.asMass = getBool(in);
+    if (l.element < 0 || l.element >= model.numElements())
+      throw CheckpointError("element load on an element out of range");
+    model.elementLoads().push_back(l);
+  }
+  for (int n = 0; n < nodes; ++n)
+    for (double& m : model.nodalMass(n)) m = get<double>(in);
+  if (getBool(in)) {
+    Site site;
+    for (double* x : {&site.xmin, &site.xmax}) *x = get<double>(in);
+    model.site() = site;
+  }
   const int version = get<int>(in);
   while (model.topologyVersion() < std::max(version, minTopologyVersion)) model.bumpTopology();
   return model;

@@ -44,7 +44,8 @@ struct Child {
   if (r.exitCode != 0) std::cerr << r.message << "\n";
   std::cout.flush();
   std::cerr.flush();
-  std::fprintf(c.result, "%d %d %d %d\n", r.exitCode, r.runs, r.total.steps, r.total.iterations);
+  std::fprintf(c.result, "%d %d %d %d %d %d\n", r.exitCode, r.runs, r.total.steps,
+               r.total.iterations, r.total.debrisRuns, r.total.outsideRuns);
   std::fflush(c.result);
   std::fflush(nullptr);
   ::_exit(r.exitCode);
@@ -148,7 +149,9 @@ std::vector<BatchResult> runBatch(const std::vector<std::string>& decks, const B
       r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : kExitInternal;
       int code = 0;
       // A child that exited without its figures (an abort in a library) crashed too.
-      if (!(figures >> code >> r.runs >> r.steps >> r.iterations) && r.exitCode == 0) r.exitCode = kExitInternal;
+      if (!(figures >> code >> r.runs >> r.steps >> r.iterations >> r.debrisRuns >> r.outsideRuns) &&
+          r.exitCode == 0)
+        r.exitCode = kExitInternal;
     }
     ++done;
     if (!r.ok()) ++failed;
@@ -165,18 +168,26 @@ void printBatchTable(std::ostream& os, const std::vector<BatchResult>& results) 
   std::size_t w = 4;
   for (const BatchResult& r : results) w = std::max(w, r.deck.size());
   char buf[512];
-  std::snprintf(buf, sizeof buf, "%-*s  %-20s %5s %7s %11s %10s\n", static_cast<int>(w), "deck", "status",
-                "runs", "steps", "iterations", "wall (s)");
+  std::snprintf(buf, sizeof buf, "%-*s  %-20s %5s %7s %11s %10s  %s\n", static_cast<int>(w), "deck",
+                "status", "runs", "steps", "iterations", "wall (s)", "debris");
   os << "\n" << buf;
   int failed = 0;
   for (const BatchResult& r : results) {
     if (!r.ok()) ++failed;
+    // Debris against the site: "inside", "OUTSIDE" (k of n runs), "-" without ground contact.
+    const std::string debris = r.debrisRuns == 0 ? "-"
+                               : r.outsideRuns == 0
+                                   ? "inside"
+                                   : "OUTSIDE" + (r.debrisRuns > 1 ? " (" + std::to_string(r.outsideRuns) +
+                                                                         " of " + std::to_string(r.debrisRuns) + ")"
+                                                                   : std::string());
     if (r.ok())
-      std::snprintf(buf, sizeof buf, "%-*s  %-20s %5d %7d %11d %10.2f\n", static_cast<int>(w), r.deck.c_str(),
-                    r.status().c_str(), r.runs, r.steps, r.iterations, r.seconds);
+      std::snprintf(buf, sizeof buf, "%-*s  %-20s %5d %7d %11d %10.2f  %s\n", static_cast<int>(w),
+                    r.deck.c_str(), r.status().c_str(), r.runs, r.steps, r.iterations, r.seconds,
+                    debris.c_str());
     else
-      std::snprintf(buf, sizeof buf, "%-*s  %-20s %5s %7s %11s %10.2f\n", static_cast<int>(w), r.deck.c_str(),
-                    r.status().c_str(), "-", "-", "-", r.seconds);
+      std::snprintf(buf, sizeof buf, "%-*s  %-20s %5s %7s %11s %10.2f  %s\n", static_cast<int>(w),
+                    r.deck.c_str(), r.status().c_str(), "-", "-", "-", r.seconds, debris.c_str());
     os << buf;
   }
   os << results.size() << " deck" << (results.size() == 1 ? "" : "s") << ": "

@@ -23,6 +23,7 @@ struct BatchResult {
   int exitCode = 0;   // the deck's exit status (kExitInternal when it crashed)
   int signal = 0;     // the signal that ended the child, 0 when it exited
   int runs = 0, steps = 0, iterations = 0;
+  int debrisRuns = 0, outsideRuns = 0;  // runs with debris figures; those outside the site
   double seconds = 0;  // wall time of the child
   std::string output;  // what the deck printed (messages, summaries)
 

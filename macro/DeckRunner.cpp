@@ -1,5 +1,6 @@
 #include "macro/DeckRunner.h"
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -9,6 +10,7 @@
 #include "macro/CurveOverlay.h"
 #include "macro/DeckParser.h"
 #include "macro/Limits.h"
+#include "macro/PlanTable.h"
 #include "macro/Sweep.h"
 
 namespace c2d {
@@ -94,6 +96,10 @@ std::string summaryText(const RunSummary& s) {
                   s.jointsFormed == 1 ? "" : "s", s.jointsRuptured);
     out += buf;
   }
+  if (s.outsideRuns > 0)
+    out += s.debrisRuns == 1 ? std::string(", debris OUTSIDE the site")
+                             : ", debris OUTSIDE the site in " + std::to_string(s.outsideRuns) +
+                                   " of " + std::to_string(s.debrisRuns) + " runs";
   if (s.maxMomentRatio > 0) {
     std::snprintf(buf, sizeof buf, ", max |M|/Mu %.4f", s.maxMomentRatio);
     out += buf;
@@ -102,6 +108,27 @@ std::string summaryText(const RunSummary& s) {
   out += buf;
   std::snprintf(buf, sizeof buf, ", %.2f s", s.seconds);
   return out + buf;
+}
+
+// A failure as the plans table gives it: its first line, the deck named
+// without its directory ("deck.inp:41:5: error: ...").
+std::string failureReason(const std::string& what) {
+  std::string r = what.substr(0, what.find('\n'));
+  const std::size_t e = r.find(": error: ");
+  if (e != std::string::npos) {
+    const std::size_t slash = r.rfind('/', e);
+    if (slash != std::string::npos) r = r.substr(slash + 1);
+  }
+  return r;
+}
+
+// The swept names of the deck in order of first appearance (the plans table's columns).
+std::vector<std::string> sweptNames(const std::vector<RunInfo>& runs) {
+  std::vector<std::string> names;
+  for (const RunInfo& r : runs)
+    for (const auto& [name, v] : r.sweep)
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  return names;
 }
 
 // Walks the top-level items: PARAmeter blocks, problems, loops, sweeps. In the
@@ -160,6 +187,9 @@ class Walker {
   int runs() const { return runs_; }
   const RunSummary& total() const { return total_; }
   const CurveOverlay& overlay() const { return overlay_; }
+  // The study's table: set before walking when the deck has a SWEEp.
+  void setPlanTable(PlanTable table) { planTable_ = std::move(table); }
+  const std::optional<PlanTable>& planTable() const { return planTable_; }
 
  private:
   void runProblem(const Problem& p, Parameters& params) {
@@ -184,6 +214,8 @@ class Walker {
     // runs than the check pass planned: they are numbered on.
     if (static_cast<std::size_t>(runs_) > plans_.size())
       plans_.push_back({stem_ + "_" + std::to_string(runs_), "run " + std::to_string(runs_)});
+    // A shard runs every n-th run only (runs k with k mod n == i - 1, k from 0).
+    if (options_.shards > 1 && (runs_ - 1) % options_.shards != options_.shard - 1) return;
     const RunPlan plan = plans_.at(static_cast<std::size_t>(runs_ - 1));
     ro.stem = plan.stem;
     ro.label = plan.label;
@@ -191,8 +223,24 @@ class Walker {
     log_ << "  run " << runs_ << " of " << plans_.size() << ", outputs " << ro.stem
          << (plan.label.empty() ? "" : " (" + plan.label + ")") << "\n\n";
     ProblemRun run(p, params, commands_, ro, log_);
-    run.bind(true);
-    run.run();
+    // A run of a study (SWEEp) that fails is reported and the study goes on;
+    // elsewhere a failure ends the deck.
+    PlanRow row{runs_, ro.stem, sweep_, true, {}, {}};
+    try {
+      run.bind(true);
+      run.run();
+    } catch (const std::runtime_error& e) {
+      const bool expected = dynamic_cast<const AnalysisError*>(&e) || dynamic_cast<const DeckError*>(&e);
+      if (sweep_.empty() || !planTable_ || !expected) throw;
+      row.ok = false;
+      row.reason = failureReason(e.what());
+      ++failed_;
+      log_ << "\n  *** run failed\n" << e.what() << "\n";
+      if (console_ && !options_.quiet)
+        *console_ << "  " << ro.stem << ": FAILED: " << row.reason << "\n" << std::flush;
+    }
+    row.debris = run.debris();
+    if (planTable_) planTable_->add(row);
     const RunSummary s = run.summary();
     total_.steps += s.steps;
     total_.iterations += s.iterations;
@@ -205,6 +253,9 @@ class Walker {
     total_.maxMomentRatio = std::max(total_.maxMomentRatio, s.maxMomentRatio);
     total_.jointsFormed += s.jointsFormed;
     total_.jointsRuptured += s.jointsRuptured;
+    total_.debrisRuns += s.debrisRuns;
+    total_.outsideRuns += s.outsideRuns;
+    if (!row.ok) return;
     log_ << "\n  summary: " << summaryText(s) << "\n";
     if (console_ && !options_.quiet && plans_.size() > 1)
       *console_ << "  " << ro.stem << ": " << summaryText(s) << "\n" << std::flush;
@@ -224,9 +275,19 @@ class Walker {
   int runs_ = 0;
   RunSummary total_;
   CurveOverlay overlay_;
+  std::optional<PlanTable> planTable_;
+  int failed_ = 0;
+
+ public:
+  int failed() const { return failed_; }
 };
 
 }  // namespace
+
+std::string shardStem(const std::string& stem, const DeckOptions& options) {
+  if (options.shards <= 1) return stem;
+  return stem + "_part" + std::to_string(options.shard) + "of" + std::to_string(options.shards);
+}
 
 DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
                     const SolutionCommands& commands, std::ostream& out) {
@@ -253,27 +314,51 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     const std::filesystem::path dir =
         options.outDir.empty() ? std::filesystem::path(".") : options.outDir;
     std::filesystem::create_directories(dir);
+    const std::string partStem = shardStem(stem, options);
     const std::filesystem::path logPath =
-        dir / (options.logName.empty() ? stem + ".out" : options.logName);
+        dir / (options.logName.empty() ? partStem + ".out" : options.logName);
     std::ofstream log(logPath);
     if (!log) throw std::runtime_error("cannot write the log " + logPath.string());
     log << "  collapse2d  " << path << "\n";
     for (const DeckWarning& w : warnings.list()) log << w.str() << "\n";
     Parameters params;
     Walker runner(commands, options, log, &out, plans, stem);
+    const std::vector<std::string> swept = sweptNames(check.infos());
+    if (!swept.empty()) runner.setPlanTable(PlanTable(swept));
     try {
       if (!plans.empty()) runner.walk(deck.items, params);
-      for (const auto& f : runner.overlay().write(dir, stem))
+      for (const auto& f : runner.overlay().write(dir, partStem))
         log << "\n  overlay of the runs: " << f.filename().string() << "\n";
+      if (const auto& table = runner.planTable()) {
+        const std::filesystem::path file = dir / (partStem + "_plans.csv");
+        table->write(file);
+        log << "\n  plans: " << file.filename().string() << " (" << table->rows().size()
+            << " runs, " << table->failed() << " failed)\n";
+      }
     } catch (const std::exception& e) {
       log << "\n  *** run failed\n" << e.what() << "\n";
       throw;
     }
-    log << "\n  run complete\n";
     outcome.total = runner.total();
     outcome.runs = runner.runs();
+    outcome.failedRuns = runner.failed();
+    int executed = outcome.runs;
+    if (options.shards > 1) {
+      executed = outcome.runs >= options.shard ? (outcome.runs - options.shard) / options.shards + 1 : 0;
+      outcome.runs = executed;
+    }
+    if (outcome.failedRuns > 0) {
+      log << "\n  run complete: " << outcome.failedRuns << " of " << executed << " runs failed\n";
+      outcome.exitCode = kExitAnalysisFailed;
+      outcome.message = path + ": " + std::to_string(outcome.failedRuns) + " of " +
+                        std::to_string(executed) + " runs of the study failed (see " +
+                        partStem + "_plans.csv and the log)";
+    } else {
+      log << "\n  run complete\n";
+    }
     if (!options.quiet)
-      out << path << ": " << (outcome.runs == 1 ? "" : std::to_string(outcome.runs) + " runs, ")
+      out << path << ": " << (executed == 1 ? "" : std::to_string(executed) + " runs, ")
+          << (outcome.failedRuns ? std::to_string(outcome.failedRuns) + " failed, " : "")
           << summaryText(outcome.total) << "\n";
   } catch (const DeckError& e) {
     printWarnings();

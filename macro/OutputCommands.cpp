@@ -85,9 +85,12 @@ class PlotCommand final : public SolutionCommand {
         "x-y chart of that history, <stem>_<y>_vs_<x>.svg, written when the command runs and "
         "again, complete, at the end of the run (and overlaid across the runs of a SWEEp or "
         "of a top-level LOOP at the end of the deck). Labels: underscores print as blanks. "
+        "PLOT,DEBRis: the debris picture, <stem>_debris.svg: the current state with the ground, "
+        "the footprint and the SITE limits, the mass lying along the ground as a histogram, "
+        "drawn again with the final state at the end of the run. "
         "FEAP's interactive kinds (WIPE, FRAMe, BOUNdary, LOAD, ...) are accepted and draw "
         "nothing.";
-    s.fields = {word("kind", "MESH, DEFOrmed or CURVe"),
+    s.fields = {word("kind", "MESH, DEFOrmed, CURVe or DEBRis"),
                 num("p1", "DEFOrmed: displacement scale (0: automatic); CURVe: x scale factor", "0 / 1"),
                 num("p2", "DEFOrmed: 1 straight chords; CURVe: y scale factor (-1 plots a reaction as a load)",
                     "0 / 1")};
@@ -100,10 +103,10 @@ class PlotCommand final : public SolutionCommand {
   void bind(Macro& m, BindContext& ctx) const override {
     SolutionCommand::bind(m, ctx);
     const std::string k = m.option.substr(0, 4);
-    if (k == "mesh" || k == "defo" || interactiveKind(k)) return;
+    if (k == "mesh" || k == "defo" || k == "debr" || interactiveKind(k)) return;
     if (k != "curv")
-      fail(m, 1, m.optionText.empty() ? "PLOT needs a kind: MESH, DEFOrmed or CURVe"
-                                      : "unknown PLOT kind '" + m.optionText + "' (MESH, DEFOrmed, CURVe)");
+      fail(m, 1, m.optionText.empty() ? "PLOT needs a kind: MESH, DEFOrmed, CURVe or DEBRis"
+                                      : "unknown PLOT kind '" + m.optionText + "' (MESH, DEFOrmed, CURVe, DEBRis)");
     ctx.skipBlank();  // the blank record that ended the previous data set
     const Record& rec = ctx.take(m.record, "PLOT,CURVe record 'xcolumn ycolumn [xlabel ylabel]'");
     if (rec.size() < 2) failData(rec, rec.size(), "PLOT,CURVe needs 'xcolumn ycolumn [xlabel ylabel]'", kColumnHint);
@@ -127,6 +130,8 @@ class PlotCommand final : public SolutionCommand {
       const bool chords = value(m, 1, r.params(), 0.0) != 0;
       r.log() << "  PLOT   deformed shape: "
               << r.outputs().plotDeformed(r.model(), state, scale, !chords).filename().string() << "\n";
+    } else if (k == "debr") {
+      r.plotDebris();
     } else if (k == "curv") {
       const auto path = r.outputs().plotCurve(curveSpec(m, r.params()), r.history());
       r.log() << "  PLOT   curve: "

@@ -11,7 +11,9 @@
 #include <set>
 #include <sstream>
 
+#include "core/AtomicFile.h"
 #include "core/Checkpoint.h"
+#include "core/SvgDebris.h"
 #include "elements/HingeToJoint.h"
 #include "elements/Joints.h"
 #include "macro/DeckParser.h"
@@ -135,28 +137,33 @@ void ProblemRun::run() {
 }
 
 void ProblemRun::reportDebris() {
-  // Where the debris ends up: the horizontal extent of the nodes now, against the
-  // footprint of the reference configuration.
-  const State& s = analysis_->state();
-  double x0min = 1e300, x0max = -1e300, xmin = 1e300, xmax = -1e300, ymax = -1e300;
-  int left = -1, right = -1;
-  for (int n = 0; n < model_.numNodes(); ++n) {
-    if (!model_.hasCoord(n)) continue;
-    const Vec2& x = model_.coord(n);
-    const double cx = x.x() + s.u[n * kNodeDofs], cy = x.y() + s.u[n * kNodeDofs + 1];
-    x0min = std::min(x0min, x.x());
-    x0max = std::max(x0max, x.x());
-    ymax = std::max(ymax, cy);
-    if (cx < xmin) xmin = cx, left = n;
-    if (cx > xmax) xmax = cx, right = n;
-  }
-  if (left < 0) return;
-  log_ << "\n  debris: footprint x in [" << fmt("%.4e", x0min) << ", " << fmt("%.4e", x0max)
-       << "], nodes now in [" << fmt("%.4e", xmin) << " (node " << left + 1 << "), "
-       << fmt("%.4e", xmax) << " (node " << right + 1
-       << ")], highest point y = " << fmt("%.4e", ymax) << "\n  debris: beyond the footprint "
-       << fmt("%.4e", std::max(0.0, x0min - xmin)) << " on the left, "
-       << fmt("%.4e", std::max(0.0, xmax - x0max)) << " on the right\n";
+  // Where the debris ends up, against the footprint and the site: the log's lines,
+  // <stem>_debris.csv (one row), and the picture when PLOT,DEBRis asked for one.
+  DebrisFigures d = debrisFigures(model_, analysis_->state());
+  if (d.leftNode < 0) return;
+  d.peakGroundForce = peakGroundForce_;
+  d.peakTime = peakGroundTime_;
+  debris_ = d;
+  log_ << "\n" << debrisLogLines(d);
+  const std::filesystem::path csv = options_.outDir / (options_.stem + "_debris.csv");
+  AtomicFile::write(csv, debrisCsvHeader() + "\n" + debrisCsvRow(d) + "\n");
+  log_ << "  debris: " << csv.filename().string() << "\n";
+  if (debrisPlot_) plotDebris();
+}
+
+void ProblemRun::plotDebris() {
+  State& s = analysis_->state();
+  if (!model_.joints().empty()) syncSlaveNodes(model_, s);
+  DebrisFigures d = debrisFigures(model_, s);
+  d.peakGroundForce = peakGroundForce_;
+  d.peakTime = peakGroundTime_;
+  std::string title = RunOutputs::displayTitle(problem_.title);
+  if (!options_.label.empty()) title += (title.empty() ? "" : ", ") + options_.label;
+  title += (title.empty() ? "" : ": ") + std::string("debris at t = ") + fmt("%.4g", s.t);
+  const std::filesystem::path path = options_.outDir / (options_.stem + "_debris.svg");
+  saveDebrisSvg(path, model_, s, d, title);
+  debrisPlot_ = true;
+  log_ << "  PLOT   debris: " << path.filename().string() << "\n";
 }
 
 RunSummary ProblemRun::summary() const {
@@ -173,6 +180,8 @@ RunSummary ProblemRun::summary() const {
   s.maxMomentRatio = maxMomentRatio_;
   s.jointsFormed = jointsFormed_;
   s.jointsRuptured = jointsRuptured_;
+  s.debrisRuns = debris_ ? 1 : 0;
+  s.outsideRuns = debris_ && debris_->outside() ? 1 : 0;
   return s;
 }
 
@@ -721,7 +730,8 @@ std::string ProblemRun::runState() const {
   for (int s : hingeStep_) put(out, s);
   put(out, hingeCount_);
   putBool(out, cutting_);
-  for (double x : {dtMin_, dtNominal_, energy0_, energyScale_, energyError_, maxMomentRatio_})
+  for (double x : {dtMin_, dtNominal_, energy0_, energyScale_, energyError_, maxMomentRatio_,
+                   peakGroundForce_, peakGroundTime_})
     put(out, x);
   for (int x : {stepsSinceCut_, cuts_, jointsFormed_, jointsRuptured_}) put(out, x);
   putBool(out, energyStarted_);
@@ -738,8 +748,8 @@ void ProblemRun::setRunState(const std::string& bytes) {
     throw CheckpointError("hinge steps do not match the element count");
   hingeCount_ = get<int>(in);
   cutting_ = getBool(in);
-  for (double* x :
-       {&dtMin_, &dtNominal_, &energy0_, &energyScale_, &energyError_, &maxMomentRatio_})
+  for (double* x : {&dtMin_, &dtNominal_, &energy0_, &energyScale_, &energyError_,
+                    &maxMomentRatio_, &peakGroundForce_, &peakGroundTime_})
     *x = get<double>(in);
   for (int* x : {&stepsSinceCut_, &cuts_, &jointsFormed_, &jointsRuptured_}) *x = get<int>(in);
   energyStarted_ = getBool(in);
@@ -800,6 +810,13 @@ void ProblemRun::onCommit() {
       maxMomentRatio_ = std::max(maxMomentRatio_, std::abs(info.moment) / info.ultimate);
   }
   if (history_) history_->record(*analysis_);
+  if (model_.ground()) {
+    const double f = groundForce(model_, analysis_->assembler().dofs(), s);
+    if (f > peakGroundForce_) {
+      peakGroundForce_ = f;
+      peakGroundTime_ = s.t;
+    }
+  }
   dynamicSeen_ = dynamicSeen_ || analysis_->integrator().dynamic();
   {
     const Energy en = analysis_->energy();

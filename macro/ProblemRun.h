@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/Debris.h"
 #include "core/Model.h"
 #include "macro/Deck.h"
 #include "macro/RunOutputs.h"
@@ -41,6 +42,9 @@ struct RunSummary {
   bool dynamic = false;         // some step was dynamic
   double maxMomentRatio = 0;    // largest |M|/Mu of an element with a softening law, any time
   int jointsFormed = 0, jointsRuptured = 0;  // during the run (fully softened hinges, ruptures)
+  // Runs that ended with ground contact (debris figures), and those of them whose
+  // debris left the site (SITE).
+  int debrisRuns = 0, outsideRuns = 0;
 };
 
 class ProblemRun {
@@ -92,6 +96,11 @@ class ProblemRun {
   void setLongFormat(bool on) { longFormat_ = on; }
   void printStresses(const Macro& m);
   void printHinges();
+  // PLOT,DEBRis: <stem>_debris.svg of the current state, drawn again with the
+  // final state at the end of the run.
+  void plotDebris();
+  // The debris figures of a run that ended with ground contact.
+  const std::optional<DebrisFigures>& debris() const { return debris_; }
 
  private:
   Flow execList(const std::vector<Macro>& list, bool topLevel = false);
@@ -144,6 +153,10 @@ class ProblemRun {
   double energy0_ = 0, energyScale_ = 0, energyError_ = 0;
   bool energyStarted_ = false;
   bool dynamicSeen_ = false;
+  // Debris: the largest total ground force so far and its time; the figures at the end.
+  double peakGroundForce_ = 0, peakGroundTime_ = 0;
+  std::optional<DebrisFigures> debris_;
+  bool debrisPlot_ = false;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point lastProgress_;
   bool progressShown_ = false;

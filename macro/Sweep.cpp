@@ -70,7 +70,12 @@ void registerDeckBlocks(CommandRegistry& registry) {
       "set; each run's outputs are tagged with its values, <stem>_ks=-393_tplot.csv, and every "
       "PLOT,CURVe of the runs is overlaid at the end of the deck in <stem>_<y>_vs_<x>.svg with "
       "one legend entry per run ('ks = -393'). FEAP's LOOP,,n ... NEXT around a problem with a "
-      "PARAmeter block inside still works; its runs are <stem>_1, <stem>_2, ...";
+      "PARAmeter block inside still works; its runs are <stem>_1, <stem>_2, ... "
+      "A sweep is a study of plans (blast times, element numbers: any numeric field takes "
+      "parameters): a run that fails is reported and the others run (exit status 2 if any "
+      "failed), and the study ends with <stem>_plans.csv, one row per run: run number, stem, "
+      "swept values, status (ok/failed) and reason, the debris figures. collapse2d run "
+      "--shard i/n runs the i-th of n interleaved parts; collapse2d merge joins the parts.";
   s.section = CommandSection::Mesh;
   s.data = DataForm::Records;
   s.dataSyntax = "name = v1 v2 ...";

@@ -12,6 +12,7 @@
 #include "macro/BatchRunner.h"
 #include "macro/DeckRunner.h"
 #include "macro/Help.h"
+#include "macro/Shard.h"
 #include "solvers/LinearSolver.h"
 
 namespace {
@@ -21,6 +22,10 @@ void usage(std::ostream& os) {
         "       collapse2d run [options] [-j N] DECK...\n"
         "                                     (batch: every deck in a process of its own,\n"
         "                                     N at once, then a table of the results)\n"
+        "       collapse2d run --shard i/n [options] DECK...\n"
+        "                                     (the i-th of n interleaved parts of the decks,\n"
+        "                                     or of one deck's runs; batch_part<i>of<n>.csv)\n"
+        "       collapse2d merge [DIR]        (join the parts' plan tables and batch tables)\n"
         "       collapse2d -iIname            (FEAP's form: deck Iname, log Oname)\n"
         "       collapse2d --help [COMMAND]   (every command, or one command's fields)\n"
         "options:\n"
@@ -79,10 +84,16 @@ bool deckArgument(const std::string& a, const char* program, std::vector<std::st
 int batchMain(int argc, char** argv, const c2d::SolutionCommands& commands) {
   c2d::BatchOptions options;
   std::vector<std::string> decks;
+  c2d::ShardSpec shard;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (const int known = deckOption(argc, argv, i, options.deck); known != 0) {
       if (known < 0) return 64;
+    } else if (a == "--shard" && i + 1 < argc) {
+      if (!c2d::parseShard(argv[++i], shard)) {
+        std::cerr << "collapse2d run: --shard needs i/n with 1 <= i <= n\n";
+        return 64;
+      }
     } else if ((a == "-j" || a == "--jobs") && i + 1 < argc) {
       options.jobs = std::atoi(argv[++i]);
       if (options.jobs < 1) {
@@ -104,9 +115,12 @@ int batchMain(int argc, char** argv, const c2d::SolutionCommands& commands) {
     std::cerr << "collapse2d run: " << clash << "\n";
     return 64;
   }
+  decks = c2d::shardDecks(decks, shard, options.deck);
   options.progress = !options.deck.quiet && isatty(STDERR_FILENO);
   const auto results = c2d::runBatch(decks, options, commands, std::cout);
   if (!options.deck.quiet) c2d::printBatchTable(std::cout, results);
+  if (shard.active())
+    c2d::writeBatchPart(options.deck.outDir.empty() ? "." : options.deck.outDir, shard, results);
   return c2d::batchExitCode(results);
 }
 
@@ -117,6 +131,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> decks;
   const c2d::SolutionCommands commands;
   if (argc > 1 && std::string(argv[1]) == "run") return batchMain(argc, argv, commands);
+  if (argc > 1 && std::string(argv[1]) == "merge")
+    return c2d::mergeParts(argc > 2 ? argv[2] : ".", std::cout, std::cerr);
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--help" || a == "-h") {

@@ -23,7 +23,7 @@
 
 namespace c2d {
 
-inline constexpr unsigned kRestartVersion = 3;  // 3: stress-free displacements of frames
+inline constexpr unsigned kRestartVersion = 3;
 
 // Writes the committed state: call Analysis::commit() first. `extra` is the
 // caller's own section (opaque here); `input` the fingerprint of the model as

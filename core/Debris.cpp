@@ -1,0 +1,179 @@
+#include "core/Debris.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/FloorLoad.h"
+#include "core/GroundContact.h"
+
+namespace c2d {
+
+namespace {
+
+Vec2 position(const Model& model, const State& s, int n) {
+  const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs;
+  const Vec2 u = i + 1 < s.u.size() ? Vec2(s.u[i], s.u[i + 1]) : Vec2::Zero();
+  return model.coord(n) + u;
+}
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6e", v);
+  return buf;
+}
+
+}  // namespace
+
+bool DebrisFigures::outside() const { return site && (xmin < site->xmin || xmax > site->xmax); }
+
+std::string DebrisFigures::siteStatus() const {
+  return !site ? "none" : outside() ? "outside" : "inside";
+}
+
+std::vector<MassPiece> massPieces(const Model& model, const State& state) {
+  std::vector<MassPiece> pieces;
+  // Translational mass of an element: e^T M e for a unit rigid translation e.
+  ElemVec ex = ElemVec::Zero();
+  ex(0) = ex(3) = 1;
+  std::vector<double> carried(model.numElements(), 0.0);
+  for (const ElementLoad& l : model.elementLoads())
+    if (l.element >= 0 && l.element < model.numElements())
+      carried[l.element] += carriedMassPerLength(model, l);
+  for (int e = 0; e < model.numElements(); ++e) {
+    if (!model.elements()[e]) continue;
+    const Element& el = model.element(e);
+    const auto n = el.nodes();
+    double m = ex.dot(el.mass() * ex);
+    m += carried[e] * (model.coord(n[1]) - model.coord(n[0])).norm();
+    if (m <= 0) continue;
+    const double a = position(model, state, n[0]).x(), b = position(model, state, n[1]).x();
+    pieces.push_back({std::min(a, b), std::max(a, b), m});
+  }
+  for (int n = 0; n < model.numNodes(); ++n) {
+    const double m = std::max(model.nodalMass(n)[0], model.nodalMass(n)[1]);
+    if (m <= 0 || !model.hasCoord(n)) continue;
+    const double x = position(model, state, n).x();
+    pieces.push_back({x, x, m});
+  }
+  return pieces;
+}
+
+namespace {
+
+// Fraction of a piece inside [lo, hi].
+double fractionIn(const MassPiece& p, double lo, double hi) {
+  if (p.x1 - p.x0 <= 1e-12 * std::max(1.0, std::abs(p.x0)))
+    return (p.x0 >= lo && p.x0 <= hi) ? 1.0 : 0.0;
+  return std::max(0.0, std::min(p.x1, hi) - std::max(p.x0, lo)) / (p.x1 - p.x0);
+}
+
+}  // namespace
+
+double massOutside(const std::vector<MassPiece>& pieces, const Site& site) {
+  double m = 0;
+  for (const MassPiece& p : pieces) m += p.mass * (1.0 - fractionIn(p, site.xmin, site.xmax));
+  return m;
+}
+
+std::vector<double> massHistogram(const std::vector<MassPiece>& pieces, double x0, double width,
+                                  int bins) {
+  std::vector<double> h(static_cast<std::size_t>(std::max(bins, 0)), 0.0);
+  if (width <= 0) return h;
+  for (const MassPiece& p : pieces) {
+    if (p.x1 - p.x0 <= 1e-12 * std::max(1.0, std::abs(p.x0))) {
+      const int k = std::clamp(static_cast<int>(std::floor((p.x0 - x0) / width)), 0, bins - 1);
+      if (bins > 0) h[k] += p.mass;
+      continue;
+    }
+    for (int k = 0; k < bins; ++k)
+      h[k] += p.mass * fractionIn(p, x0 + k * width, x0 + (k + 1) * width);
+  }
+  return h;
+}
+
+DebrisFigures debrisFigures(const Model& model, const State& state) {
+  DebrisFigures d;
+  d.site = model.site();
+  bool any = false;
+  for (int n = 0; n < model.numNodes(); ++n) {
+    if (!model.hasCoord(n)) continue;
+    const Vec2 x = position(model, state, n);
+    const double x0 = model.coord(n).x();
+    if (!any) {
+      d.footprintMin = d.footprintMax = x0;
+      d.xmin = d.xmax = x.x();
+      d.height = x.y();
+      d.leftNode = d.rightNode = n;
+      any = true;
+      continue;
+    }
+    d.footprintMin = std::min(d.footprintMin, x0);
+    d.footprintMax = std::max(d.footprintMax, x0);
+    d.height = std::max(d.height, x.y());
+    if (x.x() < d.xmin) d.xmin = x.x(), d.leftNode = n;
+    if (x.x() > d.xmax) d.xmax = x.x(), d.rightNode = n;
+  }
+  if (!any) return d;
+  d.left = std::max(0.0, d.footprintMin - d.xmin);
+  d.right = std::max(0.0, d.xmax - d.footprintMax);
+  const auto pieces = massPieces(model, state);
+  for (const MassPiece& p : pieces) d.totalMass += p.mass;
+  if (d.site) d.outsideMass = massOutside(pieces, *d.site);
+  return d;
+}
+
+double groundForce(const Model& model, const DofMap& dofs, const State& state) {
+  const auto& ground = model.ground();
+  if (!ground) return 0;
+  double f = 0;
+  for (int n = 0; n < model.numNodes() && n < dofs.numNodes(); ++n) {
+    // A shared joint's slave moves with its master: its contact is the master's.
+    if (!dofs.used(n) || dofs.aliased(n)) continue;
+    const double p = penetration(*ground, model.coord(n).y() + state.u[n * kNodeDofs + 1]);
+    if (p > 0) f += ground->k * p;
+  }
+  return f;
+}
+
+std::string debrisCsvHeader() {
+  return "left,right,height,total_mass,outside_mass,site,site_xmin,site_xmax,peak_ground_force,"
+         "peak_time";
+}
+
+std::string debrisCsvRow(const DebrisFigures& d) {
+  std::string row = num(d.left) + "," + num(d.right) + "," + num(d.height) + "," +
+                    num(d.totalMass) + "," + num(d.outsideMass) + "," + d.siteStatus() + ",";
+  row += d.site ? num(d.site->xmin) + "," + num(d.site->xmax) : std::string(",");
+  return row + "," + num(d.peakGroundForce) + "," + num(d.peakTime);
+}
+
+std::string debrisLogLines(const DebrisFigures& d) {
+  char buf[512];
+  std::string out;
+  std::snprintf(buf, sizeof buf,
+                "  debris: footprint x in [%.4e, %.4e] m, nodes now in [%.4e (node %d), %.4e "
+                "(node %d)] m, highest point y = %.4e m\n",
+                d.footprintMin, d.footprintMax, d.xmin, d.leftNode + 1, d.xmax, d.rightNode + 1,
+                d.height);
+  out += buf;
+  std::snprintf(buf, sizeof buf,
+                "  debris: beyond the footprint %.4e m on the left, %.4e m on the right\n", d.left,
+                d.right);
+  out += buf;
+  if (d.site) {
+    std::snprintf(buf, sizeof buf,
+                  "  debris: site x in [%.4e, %.4e] m: %s, mass outside %.4e t of %.4e t\n",
+                  d.site->xmin, d.site->xmax, d.outside() ? "OUTSIDE the site" : "inside the site",
+                  d.outsideMass, d.totalMass);
+  } else {
+    std::snprintf(buf, sizeof buf, "  debris: no site given (SITE,,xmin,xmax), total mass %.4e t\n",
+                  d.totalMass);
+  }
+  out += buf;
+  std::snprintf(buf, sizeof buf, "  debris: peak ground force %.4e kN at t = %.4e s\n",
+                d.peakGroundForce, d.peakTime);
+  return out + buf;
+}
+
+}  // namespace c2d

@@ -1,0 +1,63 @@
+#pragma once
+// Where the debris of a collapse ends up, judged against the site (SITE): the
+// figures of the debris CSV, the log, the plans table and PLOT,DEBRis.
+//
+// Units are the deck's (the paper's decks: m, t, kN, s). The footprint is the
+// x-extent of the nodes in the reference configuration. Masses "lie where they
+// are": an element's translational mass (and the floor mass it carries, QLOAd
+// MASS) is spread uniformly along its current chord, a nodal mass (MASS) sits
+// at its node. The ground force is the penalty force k <y0 - y> summed over
+// the nodes at the given state (the elastic part of the contact force).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/DofMap.h"
+#include "core/Model.h"
+#include "core/State.h"
+
+namespace c2d {
+
+// Mass spread uniformly over x in [x0, x1] (x0 == x1: a point mass).
+struct MassPiece {
+  double x0 = 0, x1 = 0, mass = 0;
+};
+
+struct DebrisFigures {
+  double footprintMin = 0, footprintMax = 0;  // x-extent of the nodes at the start
+  double xmin = 0, xmax = 0;                  // x-extent of the nodes now
+  int leftNode = -1, rightNode = -1;          // the nodes at xmin, xmax (0-based)
+  double left = 0, right = 0;                 // beyond the footprint on each side, >= 0
+  double height = 0;                          // highest point now
+  double totalMass = 0, outsideMass = 0;      // outside: 0 without a site
+  std::optional<Site> site;
+  double peakGroundForce = 0, peakTime = 0;  // largest total ground force over the run
+
+  // Some node lies outside the site (false without one).
+  bool outside() const;
+  // "none", "inside" or "outside".
+  std::string siteStatus() const;
+};
+
+// The figures of the state (peakGroundForce/peakTime are the caller's to fill).
+DebrisFigures debrisFigures(const Model& model, const State& state);
+
+// Every element's and node's mass where it lies now.
+std::vector<MassPiece> massPieces(const Model& model, const State& state);
+// The part of the pieces' mass outside [site.xmin, site.xmax].
+double massOutside(const std::vector<MassPiece>& pieces, const Site& site);
+// Mass per bin of width `width` from x = x0 (bins values; a piece counts in
+// proportion to its overlap with each bin).
+std::vector<double> massHistogram(const std::vector<MassPiece>& pieces, double x0, double width,
+                                  int bins);
+
+// Total ground contact force at the state's positions (0 without ground).
+double groundForce(const Model& model, const DofMap& dofs, const State& state);
+
+// The debris CSV: one header, one row per run (same columns in the plans table).
+std::string debrisCsvHeader();  // "left,right,height,total_mass,outside_mass,site,..."
+std::string debrisCsvRow(const DebrisFigures& d);
+// The log's debris lines (units m, t, kN, s), each starting with "  debris: ".
+std::string debrisLogLines(const DebrisFigures& d);
+
+}  // namespace c2d

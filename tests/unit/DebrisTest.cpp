@@ -1,0 +1,165 @@
+// Debris figures against the site (core/Debris), the debris picture
+// (core/SvgDebris) and the peak ground force of a bar dropped on the ground.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/Debris.h"
+#include "core/SvgDebris.h"
+#include "elements/ElementFactory.h"
+#include "macro/BatchRunner.h"
+#include "macro/DeckRunner.h"
+#include "tests/unit/DeckTestSupport.h"
+
+namespace c2d {
+namespace {
+
+// Two elements of unit mass per length from (0,0) to (4,0), moved by (dx, 0).
+Model twoBars(double dx, State& s) {
+  Model m;
+  MaterialSet mat;
+  mat.number = 1;
+  mat.elementType = "FRAMe";
+  mat.resEA = mat.resGA = 1e6;
+  mat.resEI = 1e4;
+  mat.density = 1;
+  mat.A = 1;
+  m.materials()[1] = mat;
+  for (int i = 0; i < 3; ++i) m.addNode(Vec2(2.0 * i, 0));
+  for (int e = 0; e < 2; ++e)
+    m.setElement(e, makeElement(m.materials().at(1), {e, e + 1}, m.coord(e), m.coord(e + 1)));
+  s.resize(3);
+  for (int n = 0; n < 3; ++n) s.u[3 * n] = dx;
+  return m;
+}
+
+TEST(Debris, MassWhereItLies) {
+  State s;
+  Model m = twoBars(1.0, s);
+  m.nodalMass(2) = {0.5, 0.5, 0};
+  const auto pieces = massPieces(m, s);
+  double total = 0;
+  for (const MassPiece& p : pieces) total += p.mass;
+  EXPECT_NEAR(total, 4.5, 1e-12);
+  // Site [0, 4]: the second bar lies on [3, 5] (half outside), the nodal mass at 5.
+  EXPECT_NEAR(massOutside(pieces, Site{0, 4}), 1.0 + 0.5, 1e-12);
+  const auto h = massHistogram(pieces, 1.0, 1.0, 4);  // bins [1,2) ... [4,5]
+  ASSERT_EQ(h.size(), 4u);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(h[k], 1.0, 1e-12);
+  EXPECT_NEAR(h[3], 1.5, 1e-12);  // the point mass at the last bin's edge counts in it
+
+  m.site() = Site{0, 4};
+  const DebrisFigures d = debrisFigures(m, s);
+  EXPECT_DOUBLE_EQ(d.footprintMin, 0);
+  EXPECT_DOUBLE_EQ(d.footprintMax, 4);
+  EXPECT_DOUBLE_EQ(d.left, 0);
+  EXPECT_DOUBLE_EQ(d.right, 1);
+  EXPECT_TRUE(d.outside());
+  EXPECT_EQ(d.siteStatus(), "outside");
+  EXPECT_NEAR(d.outsideMass, 1.5, 1e-12);
+
+  m.site().reset();
+  const DebrisFigures none = debrisFigures(m, s);
+  EXPECT_EQ(none.siteStatus(), "none");
+  EXPECT_EQ(none.outsideMass, 0);
+  EXPECT_NE(debrisCsvRow(none).find(",none,,,"), std::string::npos) << debrisCsvRow(none);
+  EXPECT_NE(debrisLogLines(none).find("no site given"), std::string::npos);
+}
+
+TEST(Debris, PictureShowsFootprintSiteAndHistogram) {
+  State s;
+  Model m = twoBars(-3.0, s);
+  m.ground() = Ground{0, 1e4, -1};
+  m.site() = Site{-1, 6};
+  const DebrisFigures d = debrisFigures(m, s);
+  EXPECT_DOUBLE_EQ(d.left, 3);
+  const std::string svg = debrisSvg(m, s, d, "two bars", 10);
+  EXPECT_NE(svg.find("class=\"footprint\""), std::string::npos);
+  EXPECT_NE(svg.find("class=\"ground\""), std::string::npos);
+  std::size_t sites = 0;
+  for (std::size_t p = svg.find("class=\"site\""); p != std::string::npos;
+       p = svg.find("class=\"site\"", p + 1))
+    ++sites;
+  EXPECT_EQ(sites, 2u);
+  std::size_t bars = 0;
+  const std::size_t hist = svg.find("class=\"histogram\"");
+  ASSERT_NE(hist, std::string::npos);
+  for (std::size_t p = svg.find("<rect", hist);
+       p != std::string::npos && p < svg.find("</g>", hist); p = svg.find("<rect", p + 1))
+    ++bars;
+  // The bars lie on [-3, 1]: 4 of the 10 bins over [-3.5, 6.5] (x range with 5 % margins).
+  EXPECT_GE(bars, 4u);
+  EXPECT_LE(bars, 6u);
+  EXPECT_NE(svg.find("OUTSIDE the site"), std::string::npos);
+  m.site().reset();
+  const std::string plain = debrisSvg(m, s, debrisFigures(m, s), "two bars", 10);
+  EXPECT_EQ(plain.find("class=\"site\""), std::string::npos);
+}
+
+// The bar of decks/collapse/bar_drop.inp: the largest total ground force is the
+// penalty force at the deepest penetration, K (m g/K + sqrt((m g/K)^2 + m v0^2/K)),
+// sampled at the steps (dt = 5e-4, omega dt = 0.08).
+TEST(Debris, BarDropPeakGroundForce) {
+  testing::DeckTempDir dir;
+  DeckOptions opt;
+  opt.outDir = dir.path();
+  opt.quiet = true;
+  const SolutionCommands commands;
+  std::ostringstream out;
+  const DeckOutcome o =
+      runDeck(std::string(C2D_SOURCE_DIR) + "/decks/collapse/bar_drop.inp", opt, commands, out);
+  ASSERT_EQ(o.exitCode, 0) << o.message;
+  EXPECT_EQ(o.total.debrisRuns, 1);
+  EXPECT_EQ(o.total.outsideRuns, 0);
+  std::ifstream in(dir.path() / "bar_drop_debris.csv");
+  std::string header, row;
+  ASSERT_TRUE(std::getline(in, header));
+  ASSERT_TRUE(std::getline(in, row));
+  EXPECT_EQ(header, debrisCsvHeader());
+  std::vector<std::string> cells;
+  std::stringstream ss(row);
+  for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
+  ASSERT_EQ(cells.size(), 10u) << row;
+  const double L = 2, n = 4, h0 = 0.05, k = 1e4, g = 9.81, m = L;
+  const double K = (n + 1) * k, v0 = std::sqrt(2 * g * h0);
+  const double pen = m * g / K + std::sqrt(std::pow(m * g / K, 2) + m * v0 * v0 / K);
+  EXPECT_NEAR(std::stod(cells[8]), K * pen, 5e-3 * K * pen);
+  EXPECT_EQ(cells[5], "none");
+  EXPECT_NEAR(std::stod(cells[3]), m, 1e-12);  // total mass rho A L
+  // The peak comes a quarter contact period after the impact at sqrt(2 h0/g).
+  const double omega = std::sqrt(K / m);
+  EXPECT_NEAR(std::stod(cells[9]), std::sqrt(2 * h0 / g) + 0.5 * 3.14159265 / omega, 3e-3);
+}
+
+// A run whose debris leaves the site says so in its summary line and in the
+// batch table; a deck without ground contact has no debris figures.
+TEST(Debris, OutsideTheSiteInSummaryAndBatchTable) {
+  testing::DeckTempDir dir;
+  BatchOptions o;
+  o.deck.outDir = dir.path();
+  const SolutionCommands commands;
+  std::ostringstream out;
+  const std::string decks = std::string(C2D_SOURCE_DIR) + "/decks/";
+  const auto results = runBatch(
+      {decks + "output/debris_site.inp", decks + "loads/floor_load_beam.inp"}, o, commands, out);
+  ASSERT_EQ(results.size(), 2u);
+  EXPECT_TRUE(results[0].ok()) << results[0].output;
+  EXPECT_EQ(results[0].debrisRuns, 1);
+  EXPECT_EQ(results[0].outsideRuns, 1);
+  EXPECT_NE(results[0].output.find("debris OUTSIDE the site"), std::string::npos)
+      << results[0].output;
+  EXPECT_EQ(results[1].debrisRuns, 0);
+  std::ostringstream table;
+  printBatchTable(table, results);
+  const std::string t = table.str();
+  EXPECT_NE(t.find("debris"), std::string::npos) << t;
+  EXPECT_NE(t.find("OUTSIDE"), std::string::npos) << t;
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "debris_site_debris.csv"));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "debris_site_debris.svg"));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "floor_load_beam_debris.csv"));
+}
+
+}  // namespace
+}  // namespace c2d

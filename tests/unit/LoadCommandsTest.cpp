@@ -1,0 +1,96 @@
+// QLOAd, MASS and SITE (macro/LoadCommands): what they put in the model, and
+// their deck errors at file:line:col.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "elements/ModelCheckpoint.h"
+#include "macro/DeckParser.h"
+#include "macro/MeshBinder.h"
+#include "tests/unit/DeckTestSupport.h"
+
+namespace c2d {
+namespace {
+
+// Lines 3-14: three elements along x (nodes 1-4), then the tested commands from line 15.
+const std::string kBeam =
+    "COOR\n 1 1 0 0\n 4 0 3 0\n\n"
+    "MATErial,1\n FRAMe\n RESUltant STIFfness 1e7 1e7 1e4\n\n"
+    "ELEM\n 1 1 1 1 2\n 3 0 1 3 4\n\n";
+
+Model build(const std::string& mesh, std::ostream* echo = nullptr) {
+  const Deck d = parseDeckText("FEAP * * test\n0 0 0 2 3 2\n" + mesh + "END\nSTOP\n", "mesh.inp");
+  const Problem& pr = std::get<Problem>(d.items.at(0));
+  Parameters params;
+  Model model;
+  MeshBinder binder(model, params, echo);
+  binder.setControl(pr.control);
+  binder.apply(pr.mesh);
+  binder.finish(pr.meshEnd.loc, pr.meshEnd.lineText());
+  return model;
+}
+
+void expectError(const std::string& mesh, int line, int col, const std::string& msg) {
+  testing::expectDeckError([&] { build(mesh); }, "mesh.inp", line, col, msg);
+}
+
+TEST(LoadCommands, QloadMassAndSiteEnterTheModel) {
+  std::ostringstream echo;
+  const Model m = build(kBeam +
+                            "GRAV,,0,-10\n"
+                            "QLOAd\n 1 3 2 0 -5\n 2 0 0 1 -20 mass\n\n"
+                            "MASS\n 1 2 2 2 0.1\n 3 0 4 4 0\n\n"
+                            "SITE,,-2,8\n",
+                        &echo);
+  ASSERT_EQ(m.elementLoads().size(), 3u);
+  EXPECT_EQ(m.elementLoads()[0].element, 0);
+  EXPECT_EQ(m.elementLoads()[1].element, 2);  // 1..3 step 2
+  EXPECT_EQ(m.elementLoads()[1].q.y(), -5);
+  EXPECT_FALSE(m.elementLoads()[1].asMass);
+  EXPECT_EQ(m.elementLoads()[2].element, 1);  // n2 = 0: n1 only
+  EXPECT_TRUE(m.elementLoads()[2].asMass);
+  EXPECT_EQ(m.elementLoads()[2].q.x(), 1);
+  // MASS generation 1 -> 3 with increment 2 interpolates nothing between (no node 2 step);
+  // node 2 keeps zero, 1 and 3 get their values.
+  EXPECT_EQ(m.nodalMass(0)[0], 2);
+  EXPECT_EQ(m.nodalMass(0)[2], 0.1);
+  EXPECT_EQ(m.nodalMass(2)[1], 4);
+  ASSERT_TRUE(m.site().has_value());
+  EXPECT_EQ(m.site()->xmin, -2);
+  EXPECT_EQ(m.site()->xmax, 8);
+  EXPECT_NE(echo.str().find("N o d a l   M a s s e s"), std::string::npos);
+  EXPECT_NE(echo.str().find("S i t e"), std::string::npos);
+
+  const Model g = build(kBeam + "MASS\n 1 1 1 1 0\n 4 0 4 4 0\n\n");
+  for (int n = 0; n < 4; ++n) EXPECT_DOUBLE_EQ(g.nodalMass(n)[1], n + 1.0);  // linear generation
+}
+
+// A restart file keeps the floor loads, the nodal masses and the site.
+TEST(LoadCommands, RestartKeepsThem) {
+  const Model m =
+      build(kBeam + "GRAV,,0,-10\nQLOAd\n 2 0 0 0.5 -5 MASS\n\nMASS\n 4 0 1 2 3\n\nSITE,,-1,4\n");
+  std::stringstream bytes(std::ios::in | std::ios::out | std::ios::binary);
+  writeModel(bytes, m);
+  const Model r = readModel(bytes, 0);
+  ASSERT_EQ(r.elementLoads().size(), 1u);
+  EXPECT_EQ(r.elementLoads()[0].element, 1);
+  EXPECT_EQ(r.elementLoads()[0].q, Vec2(0.5, -5));
+  EXPECT_TRUE(r.elementLoads()[0].asMass);
+  EXPECT_EQ(r.nodalMass(3)[2], 3);
+  ASSERT_TRUE(r.site().has_value());
+  EXPECT_EQ(r.site()->xmax, 4);
+}
+
+TEST(LoadCommands, Errors) {
+  expectError(kBeam + "QLOAd\n 1 3 1 0 -5 WEIGHT\n\n", 16, 13, "unknown option 'WEIGHT'");
+  expectError(kBeam + "QLOAd\n 2 5 1 0 -5\n\n", 16, 4, "QLOAd: element 4 is not defined");
+  expectError(kBeam + "QLOAd\n 3 1 1 0 -5\n\n", 16, 4, "the last element 1 comes before the first");
+  expectError(kBeam + "QLOAd\n 1 3 1 0 -5 MASS\n\n", 16, 13, "QLOAd with MASS needs GRAVity");
+  expectError(kBeam + "MASS\n 2 0 1 -1 0\n\n", 16, 8, "a mass must not be negative");
+  expectError(kBeam + "SITE,,5,1\n", 15, 9, "xmax must be greater than xmin");
+  expectError(kBeam + "SITE,,5\n", 15, 8, "SITE needs xmin and xmax");
+  expectError(kBeam + "SITE,1,5\n", 15, 6, "SITE takes two text fields");
+}
+
+}  // namespace
+}  // namespace c2d
