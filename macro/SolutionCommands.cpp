@@ -226,10 +226,7 @@ class TolCommand final : public SolutionCommand {
     SolutionCommand::bind(m, ctx);
     if (!m.option.empty() && m.option.rfind("ener", 0) != 0)
       fail(m, 1, "unknown option '" + m.optionText + "' (TOL,,etol,rtol or TOL,ENER,value)");
-  }
-  void bind(Macro& m, BindContext& ctx) const override {
-    SolutionCommand::bind(m, ctx);
-    checkPositive(m, 0, ctx.params(), "the tolerance");
+    if (m.option.empty()) checkPositive(m, 0, ctx.params(), "the tolerance");
   }
   Flow run(const Macro& m, ProblemRun& r) const override {
     auto value = [&](std::size_t i, double def) {
