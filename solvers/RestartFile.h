@@ -21,7 +21,7 @@
 
 namespace c2d {
 
-inline constexpr unsigned kRestartVersion = 2;
+inline constexpr unsigned kRestartVersion = 3;
 
 // Writes the committed state: call Analysis::commit() first. `extra` is the
 // caller's own section (opaque here). Throws std::runtime_error on I/O failure.
