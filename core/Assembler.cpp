@@ -122,8 +122,13 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
     contactForces_.push_back({p, slot, f, k});
   }
   if (!missing || !wantTangent) return;
+  // The pattern gets the candidates within a quarter of the search margin of
+  // contact: the pairs about to touch, not every pair of the search (whose
+  // couplings would only add fill to the factors).
   patternPairs_.clear();
-  for (const ContactPair& p : candidates) patternPairs_.push_back(p.key());
+  const double reserve = 0.25 * members_->margin();
+  for (const ContactPair& p : candidates)
+    if (members_->near(p, model_, s, reserve)) patternPairs_.push_back(p.key());
   buildPattern();
   for (PairForce& pf : contactForces_) pf.slot = slotOf(pf.pair);
 }

@@ -303,7 +303,7 @@ const std::vector<ContactPair>& MemberContact::candidates(const Model& model,
 }
 
 bool MemberContact::positions(const ContactPair& pair, const Model& model, const State& s,
-                              PairPositions& q0, PairPositions& q1) const {
+                              PairPositions& q0, PairPositions& q1, double extra) const {
   auto at = [&](const Eigen::VectorXd& u, int n) {
     return Vec2(model.coord(n).x() + u[3 * n], model.coord(n).y() + u[3 * n + 1]);
   };
@@ -314,7 +314,7 @@ bool MemberContact::positions(const ContactPair& pair, const Model& model, const
   seg.add(q0.b.x(), q0.b.y());
   seg.add(q1.a.x(), q1.a.y());
   seg.add(q1.b.x(), q1.b.y());
-  return node.inflated(pair.h).overlaps(seg);
+  return node.inflated(pair.h + extra).overlaps(seg);
 }
 
 bool MemberContact::evaluate(const ContactPair& pair, const Model& model, const State& s,

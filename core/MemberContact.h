@@ -100,6 +100,12 @@ class MemberContact {
   double energy(const Model& model, const State& s) const;
   double dissipation(const Model& model, const State& s, const StepRule& rule) const;
 
+  // The pair's swept boxes are within contact distance plus `extra` at s.
+  bool near(const ContactPair& pair, const Model& model, const State& s, double extra) const {
+    PairPositions q0, q1;
+    return positions(pair, model, s, q0, q1, extra);
+  }
+
   double margin() const { return margin_; }
   double radius(int element) const { return elementRadius_[element]; }
 
@@ -107,9 +113,9 @@ class MemberContact {
   void search(const Model& model, const State& s) const;
   bool valid(const Model& model, const State& s) const;
   // The pair's positions at t_n and t_n+1, and whether its swept boxes are
-  // within contact distance.
+  // within contact distance (plus extra).
   bool positions(const ContactPair& pair, const Model& model, const State& s, PairPositions& q0,
-                 PairPositions& q1) const;
+                 PairPositions& q1, double extra = 0) const;
   double alpha(const StepRule& rule) const { return data_.alpha >= 0 ? data_.alpha : rule.alpha; }
   bool excluded(int node, int element, const Model& model) const;
 

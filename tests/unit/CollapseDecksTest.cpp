@@ -147,6 +147,50 @@ TEST(CollapseDecks, SlidingBeam) {
               mu * g * (x - c["disp_1_1"].front()), 1e-3 * mu * g * x);
 }
 
+TEST(CollapseDecks, SixStoryCollapseWithMemberContactLeavesNoCrossingMembers) {
+  // The 84-element six-story workflow (decks/paper/six_story_collapse_short.inp)
+  // run on to t = 200 s, when the frame lies on the ground, with member contact
+  // beside the ground contact. Without it, five pairs of members end up
+  // crossing each other (the run's log says so); with it, none.
+  namespace fs = std::filesystem;
+  const fs::path src = fs::path(C2D_SOURCE_DIR) / "decks" / "paper";
+  const fs::path dir = fs::temp_directory_path() / "c2d_collapse_six_story_members";
+  fs::create_directories(dir);
+  auto read = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  };
+  auto replaced = [](std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+  };
+  for (const auto& entry : fs::directory_iterator(src))
+    if (entry.path().extension() == ".inc")
+      fs::copy_file(entry.path(), dir / entry.path().filename(),
+                    fs::copy_options::overwrite_existing);
+  std::ofstream(dir / "six_story_workflow.inc")
+      << replaced(read(src / "six_story_workflow.inc"), "  GROUnd,,0,1e5\n",
+                  "  GROUnd,,0,1e5\n  MEMBers,,1e5\n");
+  std::ofstream(dir / "members.inp")
+      << replaced(read(src / "six_story_collapse_short.inp"), "tend = 30 ", "tend = 200 ");
+  DeckOptions opt;
+  opt.outDir = dir;
+  opt.quiet = true;
+  SolutionCommands commands;
+  std::ostringstream out;
+  const DeckOutcome o = runDeck((dir / "members.inp").string(), opt, commands, out);
+  ASSERT_EQ(o.exitCode, 0) << o.message;
+  const std::string log = read(dir / "members.out");
+  EXPECT_NE(log.find("M e m b e r   C o n t a c t"), std::string::npos);
+  EXPECT_NE(log.find("debris:"), std::string::npos);
+  EXPECT_EQ(log.find("warning: members"), std::string::npos) << log.substr(log.find("debris:"));
+  fs::remove_all(dir);
+}
+
 TEST(CollapseDecks, SchemeComparison) {
   // Two runs of the jointed double pendulum: Newmark, then the conserving scheme.
   Columns newmark = runAndRead("collapse/double_pendulum.inp", "double_pendulum_1");
