@@ -109,8 +109,9 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
   const std::vector<ContactPair>& candidates = members_->candidates(model_, s);
   auto slotOf = [&](const ContactPair& p) {
     const auto it = std::lower_bound(patternPairs_.begin(), patternPairs_.end(), p.key());
-    return it != patternPairs_.end() && *it == p.key() ? static_cast<int>(it - patternPairs_.begin())
-                                                        : -1;
+    return it != patternPairs_.end() && *it == p.key()
+               ? static_cast<int>(it - patternPairs_.begin())
+               : -1;
   };
   bool missing = false;
   PairVec f;

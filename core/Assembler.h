@@ -99,8 +99,8 @@ class Assembler {
   double forceScale_ = 0;
 
   std::unique_ptr<MemberContact> members_;
-  std::vector<std::uint64_t> patternPairs_;           // sorted keys of the pairs in the pattern
-  std::vector<std::array<int, 36>> pairPos_;           // per pattern pair: index into K_ values
+  std::vector<std::uint64_t> patternPairs_;   // sorted keys of the pairs in the pattern
+  std::vector<std::array<int, 36>> pairPos_;  // per pattern pair: index into K_ values
   struct PairForce {
     ContactPair pair;
     int slot = -1;  // index into patternPairs_

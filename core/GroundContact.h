@@ -28,8 +28,8 @@
 namespace c2d {
 
 struct ContactForce {
-  double force = 0;    // upward force on the node (>= 0 unless dissipation pulls)
-  double tangent = 0;  // d(force)/d(penetration at t_n+1): the stiffness on the node's v dof
+  double force = 0;          // upward force on the node (>= 0 unless dissipation pulls)
+  double tangent = 0;        // d(force)/d(penetration at t_n+1): the stiffness on the node's v dof
   double normal = 0;         // the penalty part of force (no dissipation): >= 0, friction's N
   double normalTangent = 0;  // d(normal)/d(penetration at t_n+1)
 };
