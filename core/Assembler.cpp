@@ -16,6 +16,12 @@ bool Assembler::refresh() {
     return false;
   dofs_ = DofMap(model_);
   shortest_ = model_.characteristicLength();
+  nodeMass_.assign(model_.numNodes(), 0.0);
+  for (int e = 0; e < model_.numElements(); ++e) {
+    const ElemMat me = model_.element(e).mass();
+    const auto nodes = model_.element(e).nodes();
+    for (int a = 0; a < 2; ++a) nodeMass_[nodes[a]] += me(3 * a, 0) + me(3 * a, 3);
+  }
   members_ = model_.memberContact() ? std::make_unique<MemberContact>(model_, dofs_) : nullptr;
   patternPairs_.clear();
   buildPattern();
@@ -141,8 +147,13 @@ void Assembler::restartContactSearch() {
   buildPattern();
 }
 
-double Assembler::frictionEps(const State& s) const {
-  return frictionRegularisation(*model_.ground(), model_.gravity(), s.dt, shortest_);
+double Assembler::frictionEps(int n, const State& s) const {
+  const Ground& g = *model_.ground();
+  const double m = nodeMass_[n];
+  const double yn = model_.coord(n).y() + s.un[static_cast<Eigen::Index>(n) * kNodeDofs + 1];
+  const double pn = penetration(g, yn);
+  const double nRef = std::max(m * model_.gravity().norm(), pn > 0 ? g.k * pn : 0.0);
+  return frictionRegularisation(g, m, nRef, s.dt, shortest_);
 }
 
 void Assembler::gather(const Element& e, const State& s, ElementKinematics& kin) const {
@@ -189,7 +200,6 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
   }
 
   if (const auto& ground = model_.ground()) {
-    const double eps = ground->mu > 0 ? frictionEps(s) : 0.0;
     for (int n = 0; n < model_.numNodes(); ++n) {
       // A shared joint's slave moves with its master: its contact is the master's.
       if (!dofs_.used(n) || dofs_.aliased(n)) continue;
@@ -202,7 +212,7 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
       if (wantTangent && eq >= 0) K_.valuePtr()[diagPos_[eq]] += c.tangent;
       if (ground->mu <= 0) continue;
       const Eigen::Index iu = iv - 1;
-      const FrictionForce fr = groundFriction(*ground, c, s.u[iu] - s.un[iu], eps);
+      const FrictionForce fr = groundFriction(*ground, c, s.u[iu] - s.un[iu], frictionEps(n, s));
       r_[iu] -= fr.force;
       const int equ = dofs_.eq(n, 0);
       if (wantTangent && equ >= 0) {
@@ -255,9 +265,9 @@ double Assembler::contactDissipation(const State& s, const StepRule& rule) const
   double d = members_ ? members_->dissipation(model_, s, rule) : 0.0;
   const auto& ground = model_.ground();
   if (!ground) return d;
-  const double eps = ground->mu > 0 ? frictionEps(s) : 0.0;
   for (int n = 0; n < model_.numNodes(); ++n) {
     if (!dofs_.used(n) || dofs_.aliased(n)) continue;
+    const double eps = ground->mu > 0 ? frictionEps(n, s) : 0.0;
     const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs;
     const Vec2& X = model_.coord(n);
     d += groundDissipation(*ground, X.x() + s.un[i], X.y() + s.un[i + 1], X.x() + s.u[i],

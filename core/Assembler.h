@@ -84,15 +84,17 @@ class Assembler {
   // Member contact forces at s into contactForces_; rebuilds the pattern when
   // a pair with a force has no place in it.
   void evaluateMemberContact(const State& s, const StepRule& rule, bool wantTangent);
-  double frictionEps(const State& s) const;
+  // The friction regularisation of node n (core/GroundContact.h).
+  double frictionEps(int n, const State& s) const;
 
   Model& model_;
   DofMap dofs_;
   SparseMatrix K_;
   std::vector<std::array<int, kElemDofs * kElemDofs>> elemPos_;  // index into K_ values, -1: none
   std::vector<int> diagPos_;                                     // per equation
-  std::vector<int> uvPos_;  // per node: K(eq u, eq v) for the ground friction, -1: none
-  double shortest_ = 1;     // shortest element
+  std::vector<int> uvPos_;        // per node: K(eq u, eq v) for the ground friction, -1: none
+  double shortest_ = 1;           // shortest element
+  std::vector<double> nodeMass_;  // per node: translational mass (row sums of the element masses)
   Eigen::VectorXd r_, fRef_, fGrav_;
   int patternVersion_ = -1;
   int structureVersion_ = 0;

@@ -54,8 +54,10 @@ ContactForce groundContact(const Ground& g, double yn, double y, const StepRule&
   return out;
 }
 
-double frictionRegularisation(const Ground& g, const Vec2& gravity, double dt, double shortest) {
-  return std::max(0.5 * g.mu * gravity.norm() * dt * dt, 1e-9 * shortest);
+double frictionRegularisation(const Ground& g, double mass, double nRef, double dt,
+                              double shortest) {
+  const double eps = mass > 0 ? 0.5 * g.mu * nRef * dt * dt / mass : 0.0;
+  return std::max(eps, 1e-9 * shortest);
 }
 
 FrictionForce groundFriction(const Ground& g, const ContactForce& c, double dx, double eps) {

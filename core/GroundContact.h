@@ -13,15 +13,16 @@
 // branch), on the node's horizontal increment dx = x_n+1 - x_n over the step:
 //   f_t = -mu N dx / sqrt(dx^2 + eps^2).
 // Its work -mu N dx^2 / sqrt(dx^2 + eps^2) is never positive. The regularisation
-// eps is the increment at the creep speed v_eps = mu |g| dt / 2 (half the speed
-// change friction alone causes in one step, which the step cannot resolve
-// anyway): eps = mu |g| dt^2 / 2, at least 1e-9 of the shortest element. Then
-// the friction stiffness mu N / eps of a node carrying its own weight equals the
+// is eps = mu N_ref dt^2 / (2 m) for a node of mass m, N_ref the larger of its
+// weight m |g| and its normal force at t_n (at least 1e-9 of the shortest
+// element): the increment friction alone would cause in one step, which the
+// step cannot resolve anyway. Then the friction stiffness mu N / eps equals the
 // inertia stiffness 2 m / dt^2 of the mid-point scheme, so that Newton's method
-// converges where the node sticks (a much smaller eps makes it cycle between
-// the two directions of sliding). A node at rest under a tangential load T
-// creeps by dx = eps T / sqrt((mu N)^2 - T^2) per step: by less than eps while
-// T < mu N / sqrt(2).
+// converges where the node sticks (with a much smaller eps, or an eps from the
+// weight alone under a rocking body whose few nodes in contact carry it all,
+// Newton's method cycles between the two directions of sliding). A node at rest
+// under a tangential load T creeps by dx = eps T / sqrt((mu N)^2 - T^2) per
+// step: by less than eps while T < mu N / sqrt(2).
 #include "core/Model.h"
 #include "core/StepRule.h"
 
@@ -53,9 +54,11 @@ inline double contactEnergy(const Ground& g, double y) {
 // under the step rule; the ground's alpha, or the rule's when the ground gives none.
 ContactForce groundContact(const Ground& g, double yn, double y, const StepRule& rule);
 
-// The friction regularisation eps (see above) for gravity g and time step dt;
-// `shortest` is the shortest element (the floor's scale).
-double frictionRegularisation(const Ground& g, const Vec2& gravity, double dt, double shortest);
+// The friction regularisation eps (see above) of a node of mass m with the
+// reference normal force nRef, time step dt; `shortest` is the shortest element
+// (the floor's scale).
+double frictionRegularisation(const Ground& g, double mass, double nRef, double dt,
+                              double shortest);
 
 // Friction on a node whose normal force is c (groundContact at the same yn, y),
 // horizontal increment dx over the step.
