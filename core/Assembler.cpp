@@ -5,15 +5,26 @@
 
 #include "core/FloorLoad.h"
 #include "core/GroundContact.h"
+#include "core/MemberContact.h"
 
 namespace c2d {
 
 Assembler::Assembler(Model& model) : model_(model) {}
 
 bool Assembler::refresh() {
-  if (patternVersion_ == model_.topologyVersion() && dofs_.numNodes() == model_.numNodes())
+  if (patternVersion_ == model_.topologyVersion() && dofs_.numNodes() == model_.numNodes() &&
+      (members_ != nullptr) == model_.memberContact().has_value())
     return false;
   dofs_ = DofMap(model_);
+  shortest_ = model_.characteristicLength();
+  nodeMass_.assign(model_.numNodes(), 0.0);
+  for (int e = 0; e < model_.numElements(); ++e) {
+    const ElemMat me = model_.element(e).mass();
+    const auto nodes = model_.element(e).nodes();
+    for (int a = 0; a < 2; ++a) nodeMass_[nodes[a]] += me(3 * a, 0) + me(3 * a, 3);
+  }
+  members_ = model_.memberContact() ? std::make_unique<MemberContact>(model_, dofs_) : nullptr;
+  patternPairs_.clear();
   buildPattern();
   const Eigen::Index nd = static_cast<Eigen::Index>(model_.numNodes()) * kNodeDofs;
   r_.setZero(nd);
@@ -51,6 +62,23 @@ void Assembler::buildPattern() {
         for (int j : eq)
           if (j >= 0) trip.emplace_back(i, j, 0.0);
   }
+  // Member contact pairs: the translations of the node and of the segment's ends.
+  auto pairEqs = [&](std::uint64_t key) {
+    const int node = static_cast<int>(key >> 32), element = static_cast<int>(key & 0xffffffffu);
+    const auto ends = model_.element(element).nodes();
+    const int nodes[3] = {node, ends[0], ends[1]};
+    std::array<int, 6> eq;
+    for (int a = 0; a < 3; ++a)
+      for (int d = 0; d < 2; ++d) eq[2 * a + d] = dofs_.eq(nodes[a], d);
+    return eq;
+  };
+  for (std::uint64_t key : patternPairs_) {
+    const auto eq = pairEqs(key);
+    for (int i : eq)
+      if (i >= 0)
+        for (int j : eq)
+          if (j >= 0) trip.emplace_back(i, j, 0.0);
+  }
   K_.resize(neq, neq);
   K_.setFromTriplets(trip.begin(), trip.end());
   K_.makeCompressed();
@@ -71,6 +99,66 @@ void Assembler::buildPattern() {
   }
   diagPos_.resize(neq);
   for (int i = 0; i < neq; ++i) diagPos_[i] = position(i, i);
+  uvPos_.assign(model_.numNodes(), -1);
+  for (int n = 0; n < model_.numNodes(); ++n) {
+    const int eu = dofs_.eq(n, 0), ev = dofs_.eq(n, 1);
+    if (dofs_.used(n) && eu >= 0 && ev >= 0) uvPos_[n] = position(eu, ev);
+  }
+  pairPos_.resize(patternPairs_.size());
+  for (std::size_t p = 0; p < patternPairs_.size(); ++p) {
+    const auto eq = pairEqs(patternPairs_[p]);
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b)
+        pairPos_[p][a * 6 + b] = (eq[a] >= 0 && eq[b] >= 0) ? position(eq[a], eq[b]) : -1;
+  }
+  ++structureVersion_;
+}
+
+void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool wantTangent) {
+  contactForces_.clear();
+  if (!members_) return;
+  const std::vector<ContactPair>& candidates = members_->candidates(model_, s);
+  auto slotOf = [&](const ContactPair& p) {
+    const auto it = std::lower_bound(patternPairs_.begin(), patternPairs_.end(), p.key());
+    return it != patternPairs_.end() && *it == p.key()
+               ? static_cast<int>(it - patternPairs_.begin())
+               : -1;
+  };
+  bool missing = false;
+  PairVec f;
+  PairMat k;
+  for (const ContactPair& p : candidates) {
+    if (!members_->evaluate(p, model_, s, rule, wantTangent, f, k)) continue;
+    const int slot = slotOf(p);
+    missing = missing || slot < 0;
+    contactForces_.push_back({p, slot, f, k});
+  }
+  if (!missing || !wantTangent) return;
+  // The pattern gets the candidates within a quarter of the search margin of
+  // contact: the pairs about to touch, not every pair of the search (whose
+  // couplings would only add fill to the factors).
+  patternPairs_.clear();
+  const double reserve = 0.25 * members_->margin();
+  for (const ContactPair& p : candidates)
+    if (members_->near(p, model_, s, reserve)) patternPairs_.push_back(p.key());
+  buildPattern();
+  for (PairForce& pf : contactForces_) pf.slot = slotOf(pf.pair);
+}
+
+void Assembler::restartContactSearch() {
+  if (!members_) return;
+  members_ = std::make_unique<MemberContact>(model_, dofs_);
+  patternPairs_.clear();
+  buildPattern();
+}
+
+double Assembler::frictionEps(int n, const State& s) const {
+  const Ground& g = *model_.ground();
+  const double m = nodeMass_[n];
+  const double yn = model_.coord(n).y() + s.un[static_cast<Eigen::Index>(n) * kNodeDofs + 1];
+  const double pn = penetration(g, yn);
+  const double nRef = std::max(m * model_.gravity().norm(), pn > 0 ? g.k * pn : 0.0);
+  return frictionRegularisation(g, m, nRef, s.dt, shortest_);
 }
 
 void Assembler::gather(const Element& e, const State& s, ElementKinematics& kin) const {
@@ -87,6 +175,7 @@ void Assembler::gather(const Element& e, const State& s, ElementKinematics& kin)
 Status Assembler::assemble(const State& s, const StepRule& rule,
                            const Eigen::VectorXd& loadFactors, bool wantTangent) {
   refresh();
+  evaluateMemberContact(s, rule, wantTangent);
   r_ = -loadFactors.cwiseProduct(fRef_) - fGrav_;
   forceScale_ = r_.size() ? r_.cwiseAbs().maxCoeff() : 0.0;
   if (wantTangent) std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
@@ -138,7 +227,30 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
       fContact_[iv] = c.force;
       const int eq = dofs_.eq(n, 1);
       if (wantTangent && eq >= 0) K_.valuePtr()[diagPos_[eq]] += c.tangent;
+      if (ground->mu <= 0) continue;
+      const Eigen::Index iu = iv - 1;
+      const FrictionForce fr = groundFriction(*ground, c, s.u[iu] - s.un[iu], frictionEps(n, s));
+      r_[iu] -= fr.force;
+      fContact_[iu] = fr.force;
+      const int equ = dofs_.eq(n, 0);
+      if (wantTangent && equ >= 0) {
+        K_.valuePtr()[diagPos_[equ]] -= fr.dx;
+        if (uvPos_[n] >= 0) K_.valuePtr()[uvPos_[n]] -= fr.dy;
+      }
     }
+  }
+
+  for (const PairForce& pf : contactForces_) {
+    const int nodes[3] = {pf.pair.node, pf.pair.a, pf.pair.b};
+    for (int a = 0; a < 3; ++a)
+      r_.segment<2>(static_cast<Eigen::Index>(nodes[a]) * kNodeDofs) += pf.force.segment<2>(2 * a);
+    forceScale_ = std::max(forceScale_, pf.force.cwiseAbs().maxCoeff());
+    if (!wantTangent || pf.slot < 0) continue;
+    const auto& pos = pairPos_[pf.slot];
+    double* values = K_.valuePtr();
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b)
+        if (pos[a * 6 + b] >= 0) values[pos[a * 6 + b]] += pf.tangent(a, b);
   }
   return Status::success();
 }
@@ -158,13 +270,28 @@ double Assembler::strainEnergy() const {
 }
 
 double Assembler::contactEnergy(const State& s) const {
+  double w = members_ ? members_->energy(model_, s) : 0.0;
   const auto& ground = model_.ground();
-  if (!ground) return 0;
-  double w = 0;
+  if (!ground) return w;
   for (int n = 0; n < model_.numNodes(); ++n)
     if (dofs_.used(n) && !dofs_.aliased(n))
       w += c2d::contactEnergy(*ground, model_.coord(n).y() + s.u[n * kNodeDofs + 1]);
   return w;
+}
+
+double Assembler::contactDissipation(const State& s, const StepRule& rule) const {
+  double d = members_ ? members_->dissipation(model_, s, rule) : 0.0;
+  const auto& ground = model_.ground();
+  if (!ground) return d;
+  for (int n = 0; n < model_.numNodes(); ++n) {
+    if (!dofs_.used(n) || dofs_.aliased(n)) continue;
+    const double eps = ground->mu > 0 ? frictionEps(n, s) : 0.0;
+    const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs;
+    const Vec2& X = model_.coord(n);
+    d += groundDissipation(*ground, X.x() + s.un[i], X.y() + s.un[i + 1], X.x() + s.u[i],
+                           X.y() + s.u[i + 1], rule, eps);
+  }
+  return d;
 }
 
 double Assembler::kineticEnergy(const State& s) const {

@@ -10,10 +10,21 @@
 //
 // The sparsity pattern and the scatter positions of every element are computed
 // once per topology version; assemble() allocates nothing.
+//
+// Member contact couples a node with the ends of an element segment: its pairs
+// are in the pattern too. The pattern holds the candidate pairs of the contact
+// search (core/MemberContact.h) that are within a quarter of the search margin
+// of contact (so the pairs that come into contact over the next steps are
+// mostly there already) and is rebuilt, with the current candidates, only when
+// a pair carrying a force is not in it; structureVersion() then changes and the
+// solver analyses the new pattern.
 #include <array>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/DofMap.h"
+#include "core/MemberContact.h"
 #include "core/Model.h"
 #include "core/State.h"
 #include "solvers/LinearSolver.h"
@@ -29,6 +40,10 @@ class Assembler {
   bool refresh();
   const DofMap& dofs() const { return dofs_; }
   int patternVersion() const { return patternVersion_; }
+  // Changes whenever the sparsity pattern does (topology or member contact pairs).
+  int structureVersion() const { return structureVersion_; }
+  // False when the tangent is unsymmetric in every scheme (ground friction).
+  bool symmetricTangent() const { return !(model_.ground() && model_.ground()->mu > 0); }
 
   // Evaluates every element and the ground contact. loadFactors (per node dof)
   // multiply FORCe.
@@ -43,8 +58,9 @@ class Assembler {
   const Eigen::VectorXd& referenceLoad() const { return fRef_; }
   // Constant loads: self-weight, element loads (QLOAd), weight of nodal masses.
   const Eigen::VectorXd& gravityLoad() const { return fGrav_; }
-  // Contact forces on the nodes at the last assembly (per node dof; included in
-  // the residual with a minus sign).
+  // Ground contact forces on the nodes at the last assembly, normal and
+  // friction (per node dof; included in the residual with a minus sign).
+  // Member contact forces are pairs inside the residual, like element forces.
   const Eigen::VectorXd& contactForces() const { return fContact_; }
   // Lumped nodal masses per node dof (MASS, QLOAd carried as mass).
   const Eigen::VectorXd& nodalMass() const { return mNodal_; }
@@ -54,21 +70,54 @@ class Assembler {
 
   // Energies at the last assembled state.
   double strainEnergy() const;
-  double contactEnergy(const State& s) const;
+  double contactEnergy(const State& s) const;  // ground and member contact penalty energy
   double kineticEnergy(const State& s) const;
+  // Energy the contact laws took over the step from the committed state to the
+  // trial state s, >= 0: the dissipative terms of the ground and member contact
+  // (mid-point scheme) and the ground friction. Under the static and Newmark
+  // rules the penalty forces are plain gradients at t_n+1; what that loses or
+  // gains is the integrator's, not counted here.
+  double contactDissipation(const State& s, const StepRule& rule) const;
+
+  // Starts the member contact search and its pattern afresh, as a new
+  // assembler would (a continuation from a restart file is then bit for bit).
+  void restartContactSearch();
+
+  // The member contact (null without a MEMBers record).
+  const MemberContact* memberContact() const { return members_.get(); }
 
  private:
   void buildPattern();
   void gather(const Element& e, const State& s, ElementKinematics& kin) const;
+  // Member contact forces at s into contactForces_; rebuilds the pattern when
+  // a pair with a force has no place in it.
+  void evaluateMemberContact(const State& s, const StepRule& rule, bool wantTangent);
+  // The friction regularisation of node n (core/GroundContact.h).
+  double frictionEps(int n, const State& s) const;
 
   Model& model_;
   DofMap dofs_;
   SparseMatrix K_;
   std::vector<std::array<int, kElemDofs * kElemDofs>> elemPos_;  // index into K_ values, -1: none
   std::vector<int> diagPos_;                                     // per equation
+  std::vector<int> uvPos_;        // per node: K(eq u, eq v) for the ground friction, -1: none
+  double shortest_ = 1;           // shortest element
+  std::vector<double> nodeMass_;  // per node: translational mass (row sums of the element masses)
   Eigen::VectorXd r_, fRef_, fGrav_, fContact_, mNodal_;
   int patternVersion_ = -1;
+  int structureVersion_ = 0;
   double forceScale_ = 0;
+
+  std::unique_ptr<MemberContact> members_;
+  std::vector<std::uint64_t> patternPairs_;   // sorted keys of the pairs in the pattern
+  std::vector<std::array<int, 36>> pairPos_;  // per pattern pair: index into K_ values
+  struct PairForce {
+    ContactPair pair;
+    int slot = -1;  // index into patternPairs_
+    PairVec force;
+    PairMat tangent;
+  };
+  std::vector<PairForce> contactForces_;  // of the last assembly
 };
 
 }  // namespace c2d

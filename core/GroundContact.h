@@ -7,14 +7,40 @@
 // and t_n+1, so an impact conserves energy exactly (alpha = 0), plus the
 // dissipative term alpha*k*(<g_n+1> - <g_n>) (eq 75; <.> the positive part, so
 // that the force is continuous when a node enters or leaves contact).
+//
+// Friction (mu > 0): regularised Coulomb friction on every node with a normal
+// force N > 0 (the penalty force without the dissipative term, >= 0 on every
+// branch), on the node's horizontal increment dx = x_n+1 - x_n over the step:
+//   f_t = -mu N dx / sqrt(dx^2 + eps^2).
+// Its work -mu N dx^2 / sqrt(dx^2 + eps^2) is never positive. The regularisation
+// is eps = mu N_ref dt^2 / (2 m) for a node of mass m, N_ref the larger of its
+// weight m |g| and its normal force at t_n (at least 1e-9 of the shortest
+// element): the increment friction alone would cause in one step, which the
+// step cannot resolve anyway. Then the friction stiffness mu N / eps equals the
+// inertia stiffness 2 m / dt^2 of the mid-point scheme, so that Newton's method
+// converges where the node sticks (with a much smaller eps, or an eps from the
+// weight alone under a rocking body whose few nodes in contact carry it all,
+// Newton's method cycles between the two directions of sliding). A node at rest
+// under a tangential load T creeps by dx = eps T / sqrt((mu N)^2 - T^2) per
+// step: by less than eps while T < mu N / sqrt(2).
 #include "core/Model.h"
 #include "core/StepRule.h"
 
 namespace c2d {
 
 struct ContactForce {
-  double force = 0;    // upward force on the node (>= 0 unless dissipation pulls)
-  double tangent = 0;  // d(force)/d(penetration at t_n+1): the stiffness on the node's v dof
+  double force = 0;          // upward force on the node (>= 0 unless dissipation pulls)
+  double tangent = 0;        // d(force)/d(penetration at t_n+1): the stiffness on the node's v dof
+  double normal = 0;         // the penalty part of force (no dissipation): >= 0, friction's N
+  double normalTangent = 0;  // d(normal)/d(penetration at t_n+1)
+};
+
+// Horizontal force on a node and its derivatives with respect to the node's
+// position at t_n+1.
+struct FrictionForce {
+  double force = 0;  // f_t
+  double dx = 0;     // d f_t / d x_n+1
+  double dy = 0;     // d f_t / d y_n+1 (through N)
 };
 
 // Penetration of a node at vertical position y.
@@ -27,5 +53,23 @@ inline double contactEnergy(const Ground& g, double y) {
 // Force and its stiffness for the node's vertical position yn (t_n) and y (t_n+1)
 // under the step rule; the ground's alpha, or the rule's when the ground gives none.
 ContactForce groundContact(const Ground& g, double yn, double y, const StepRule& rule);
+
+// The friction regularisation eps (see above) of a node of mass m with the
+// reference normal force nRef, time step dt; `shortest` is the shortest element
+// (the floor's scale).
+double frictionRegularisation(const Ground& g, double mass, double nRef, double dt,
+                              double shortest);
+
+// Friction on a node whose normal force is c (groundContact at the same yn, y),
+// horizontal increment dx over the step.
+FrictionForce groundFriction(const Ground& g, const ContactForce& c, double dx, double eps);
+
+// Energy the ground's contact law takes from a node over the step from (xn, yn)
+// to (x, y), >= 0: the dissipative term alpha k (<p_n+1> - <p_n>) (p_n+1 - p_n)
+// under the mid-point scheme and the friction's mu N dx^2 / sqrt(dx^2 + eps^2).
+// Under the static and Newmark rules the penalty force is the plain gradient at
+// t_n+1; what that integration loses or gains is the scheme's, not counted here.
+double groundDissipation(const Ground& g, double xn, double yn, double x, double y,
+                         const StepRule& rule, double eps);
 
 }  // namespace c2d

@@ -25,10 +25,18 @@ struct Joint {
   JointForm form = JointForm::Condensed;
 };
 
-// Frictionless rigid ground y = y0 with penalty stiffness k; alpha is the
-// dissipation of the mid-point contact force (negative: the integrator's alpha).
+// Rigid ground y = y0 with penalty stiffness k; alpha is the dissipation of the
+// mid-point contact force (negative: the integrator's alpha); mu the coefficient
+// of the regularised Coulomb friction (0: frictionless).
 struct Ground {
-  double y0 = 0, k = 0, alpha = -1;
+  double y0 = 0, k = 0, alpha = -1, mu = 0;
+};
+
+// Frictionless penalty contact between members (core/MemberContact.h): stiffness
+// k, dissipation alpha as for the ground, and the contact radius of members whose
+// material gives no section (negative: 1e-3 of the shortest element).
+struct MemberContactData {
+  double k = 0, alpha = -1, radius = -1;
 };
 
 // Uniform load per unit reference length on an element, global components
@@ -89,6 +97,8 @@ class Model {
   const std::vector<Joint>& joints() const { return joints_; }
   std::optional<Ground>& ground() { return ground_; }
   const std::optional<Ground>& ground() const { return ground_; }
+  std::optional<MemberContactData>& memberContact() { return memberContact_; }
+  const std::optional<MemberContactData>& memberContact() const { return memberContact_; }
   Vec2& gravity() { return gravity_; }
   const Vec2& gravity() const { return gravity_; }
   std::vector<ElementLoad>& elementLoads() { return elementLoads_; }
@@ -113,6 +123,7 @@ class Model {
   std::vector<std::unique_ptr<Element>> elements_;
   std::vector<Joint> joints_;
   std::optional<Ground> ground_;
+  std::optional<MemberContactData> memberContact_;
   Vec2 gravity_ = Vec2::Zero();
   std::vector<ElementLoad> elementLoads_;
   std::optional<Site> site_;

@@ -140,7 +140,14 @@ void writeModel(std::ostream& out, const Model& model) {
   putTag(out, "GRND");
   putBool(out, model.ground().has_value());
   if (model.ground())
-    for (double x : {model.ground()->y0, model.ground()->k, model.ground()->alpha}) put(out, x);
+    for (double x : {model.ground()->y0, model.ground()->k, model.ground()->alpha,
+                     model.ground()->mu})
+      put(out, x);
+  putBool(out, model.memberContact().has_value());
+  if (model.memberContact())
+    for (double x :
+         {model.memberContact()->k, model.memberContact()->alpha, model.memberContact()->radius})
+      put(out, x);
   putFixed(out, model.gravity());
   // Floor loads, nodal masses, the site.
   putTag(out, "LOAD");
@@ -222,8 +229,13 @@ Model readModel(std::istream& in, int minTopologyVersion) {
   expectTag(in, "GRND");
   if (getBool(in)) {
     Ground g;
-    for (double* x : {&g.y0, &g.k, &g.alpha}) *x = get<double>(in);
+    for (double* x : {&g.y0, &g.k, &g.alpha, &g.mu}) *x = get<double>(in);
     model.ground() = g;
+  }
+  if (getBool(in)) {
+    MemberContactData c;
+    for (double* x : {&c.k, &c.alpha, &c.radius}) *x = get<double>(in);
+    model.memberContact() = c;
   }
   getFixed(in, model.gravity());
   expectTag(in, "LOAD");

@@ -799,18 +799,59 @@ void applyJoints(MeshContext& ctx, const MeshCommand& cmd) {
 
 void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
   const Record* previous = nullptr;
+  const Record* previousMembers = nullptr;
+  // An optional non-negative number at field i (absent or empty: dflt).
+  auto optional = [&](const Record& r, std::size_t i, double dflt, const char* what,
+                      const char* hint) {
+    if (r.size() <= i || r[i].text.empty()) return dflt;
+    const double v = ctx.number(r, i);
+    if (v < 0) failAt(r, i, std::string(what) + " must not be negative", hint);
+    return v;
+  };
   for (const Record& r : cmd.data) {
+    if (r.is("MEMBers")) {
+      if (previousMembers)
+        failAt(r, 0,
+               "a second MEMBers record (the first is on line " +
+                   std::to_string(previousMembers->loc.line) + ")");
+      ctx.maxFields(r, 5, "MEMBers,,k[,alpha[,r]]");
+      if (looksNumeric(r.text(1)))
+        failAt(r, 1, "MEMBers takes two text fields, then numbers", "write MEMBers,,k[,alpha[,r]]");
+      MemberContactData c;
+      c.k = ctx.number(r, 2);
+      if (c.k <= 0) failAt(r, 2, "penalty stiffness k must be positive");
+      c.alpha = optional(r, 3, -1.0, "alpha", "leave it out for the integrator's");
+      c.radius = optional(r, 4, -1.0, "the contact radius r", "leave it out for the default");
+      ctx.model.memberContact() = c;
+      ctx.topologyChanged = true;  // contact pairs enter the sparsity pattern
+      previousMembers = &r;
+      if (auto* os = ctx.out()) {
+        title(*os, "M e m b e r   C o n t a c t");
+        *os << "      k ";
+        num(*os, c.k) << "   alpha ";
+        if (c.alpha < 0)
+          *os << "(integrator's)";
+        else
+          num(*os, c.alpha);
+        *os << "   r ";
+        if (c.radius < 0)
+          *os << "(sections; 1e-3 of the shortest element without)\n";
+        else
+          num(*os, c.radius) << "\n";
+      }
+      continue;
+    }
     if (!r.is("GROUnd")) {
-      std::string hint = "the record is 'GROUnd,,y0,k[,alpha]'";
+      std::string hint = "the records are 'GROUnd,,y0,k[,alpha[,mu]]' and 'MEMBers,,k[,alpha[,r]]'";
       failAt(r, 0, "unknown contact type '" + r.text(0) + "'", hint);
     }
     if (previous)
       failAt(r, 0,
              "a second GROUnd record (the first is on line " + std::to_string(previous->loc.line) +
                  ")");
-    ctx.maxFields(r, 5, "GROUnd,,y0,k[,alpha]");
+    ctx.maxFields(r, 6, "GROUnd,,y0,k[,alpha[,mu]]");
     if (looksNumeric(r.text(1)))
-      failAt(r, 1, "GROUnd takes two text fields, then numbers", "write GROUnd,,y0,k[,alpha]");
+      failAt(r, 1, "GROUnd takes two text fields, then numbers", "write GROUnd,,y0,k[,alpha[,mu]]");
     Ground g;
     g.y0 = ctx.number(r, 2);
     g.k = ctx.number(r, 3);
@@ -818,6 +859,7 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
     g.alpha = r.size() > 4 && !r[4].text.empty() ? ctx.number(r, 4) : -1.0;
     if (r.size() > 4 && !r[4].text.empty() && g.alpha < 0)
       failAt(r, 4, "alpha must not be negative (leave it out for the integrator's)");
+    g.mu = optional(r, 5, 0.0, "the friction coefficient mu", "0 or absent: frictionless");
     ctx.model.ground() = g;
     ctx.groundOrigin = r;
     previous = &r;
@@ -827,12 +869,15 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
       num(*os, g.y0) << "   k ";
       num(*os, g.k) << "   alpha ";
       if (g.alpha < 0)
-        *os << "(integrator's)\n";
+        *os << "(integrator's)";
       else
-        num(*os, g.alpha) << "\n";
+        num(*os, g.alpha);
+      if (g.mu > 0) num(*os << "   mu ", g.mu);
+      *os << "\n";
     }
   }
-  if (!previous) failAt(cmd.head, 0, "CONTact has no GROUnd record", "write GROUnd,,y0,k");
+  if (!previous && !previousMembers)
+    failAt(cmd.head, 0, "CONTact has no GROUnd or MEMBers record", "write GROUnd,,y0,k");
 }
 
 void applyGravity(MeshContext& ctx, const MeshCommand& cmd) {
@@ -1078,11 +1123,23 @@ std::vector<MeshCommandEntry> meshCommandTable() {
                applyJoints});
   t.push_back(
       {meshSpec("CONTact",
-                "Frictionless rigid ground y = y0 for every node, penalty stiffness k; "
-                "alpha: dissipation of the contact force (absent: the integrator's).",
-                {}, "GROUnd,,y0,k[,alpha]",
-                {text("GROUnd", "contact type"), text("", "empty"), expr("y0", "ground level"),
-                 expr("k", "penalty stiffness"), expr("alpha", "dissipation", "integrator's")}),
+                "Penalty contact. GROUnd: rigid ground y = y0 for every node, penalty stiffness "
+                "k; alpha: dissipation of the contact force (absent: the integrator's); mu: "
+                "regularised Coulomb friction (f = -mu N dx/sqrt(dx^2 + eps^2) on the node's "
+                "horizontal step dx, eps = mu N dt^2/(2 m) with N the larger of the node's weight "
+                "and its normal force at the last step: a node at rest under a load below "
+                "mu N/sqrt(2) creeps by less than eps per step). MEMBers,,k[,alpha[,r]]: "
+                "frictionless contact of every node with every element it is not part of "
+                "(nor tied to by a joint), at the distance r_node + r_element with "
+                "r = sqrt(3 I/A), half the section depth (r: the radius of members whose "
+                "material has no A and I, default 1e-3 of the shortest element); pairs already "
+                "that close in the reference configuration never contact.",
+                {}, "GROUnd,,y0,k[,alpha[,mu]] and/or MEMBers,,k[,alpha[,r]]",
+                {text("GROUnd", "contact type (or MEMBers)"), text("", "empty"),
+                 expr("y0", "ground level (MEMBers: k)"),
+                 expr("k", "penalty stiffness (MEMBers: alpha)"),
+                 expr("alpha", "dissipation (MEMBers: r)", "integrator's"),
+                 expr("mu", "friction coefficient", "0")}),
        applyContact});
   t.push_back({meshSpec("GRAVity",
                         "Self-weight of every element with a density: acceleration (gx, gy), "

@@ -14,6 +14,7 @@
 #include "core/AtomicFile.h"
 #include "core/Checkpoint.h"
 #include "core/SvgDebris.h"
+#include "core/MemberCrossing.h"
 #include "elements/HingeToJoint.h"
 #include "elements/Joints.h"
 #include "macro/DeckParser.h"
@@ -133,7 +134,20 @@ void ProblemRun::run() {
   }
   outputs_->finish(history_.get());
   if (model_.ground()) reportDebris();
+  reportCrossings();
   progress(true);
+}
+
+void ProblemRun::reportCrossings() {
+  // Members that passed through each other (core/MemberCrossing.h).
+  const std::vector<MemberCrossing> crossings = findCrossings(model_, analysis_->state());
+  const std::size_t shown = std::min<std::size_t>(crossings.size(), 20);
+  for (std::size_t i = 0; i < shown; ++i)
+    log_ << (i == 0 ? "\n" : "") << "  warning: members " << crossings[i].first + 1 << " and "
+         << crossings[i].second + 1 << " cross at t = " << fmt("%.6e", analysis_->state().t)
+         << "\n";
+  if (crossings.size() > shown)
+    log_ << "  warning: " << crossings.size() - shown << " more pairs of members cross\n";
 }
 
 void ProblemRun::reportDebris() {
@@ -769,6 +783,7 @@ void ProblemRun::saveRestart(const Macro& m) {
   // file (a new analysis: CHOLMOD first again, KLU's pivot order chosen anew), so
   // that the two runs stay identical to the last bit.
   analysis_->setLinearSolver(analysis_->linearSolverName());
+  analysis_->assembler().restartContactSearch();
   const State& s = analysis_->state();
   log_ << "  SAVE   " << file.string() << ": step " << s.step << ", t = " << fmt("%.6e", s.t)
        << "\n";

@@ -113,6 +113,7 @@ class ProblemRun {
   std::vector<int> selection(const Macro& m, int count) const;
   void onCommit();
   void reportDebris();
+  void reportCrossings();
   void progress(bool final);
   std::filesystem::path restartPath(const Macro& m) const;
   // This class's own part of a restart file: hinge steps, step cutting, energy check.

@@ -177,12 +177,14 @@ Status Analysis::assemble() {
 Status Analysis::factor(bool symmetric) {
   // The mid-point scheme's algorithmic internal force has an unsymmetric tangent:
   // TANG then gets an unsymmetric factorization, as UTAN would.
-  symmetric = symmetric && integrator_.kind != TimeIntegrator::Kind::MidPoint;
+  // Ground friction makes it unsymmetric in every scheme.
+  symmetric = symmetric && integrator_.kind != TimeIntegrator::Kind::MidPoint &&
+              assembler_.symmetricTangent();
   Status st;
-  if (analyzedVersion_ != assembler_.patternVersion() || analyzedSymmetric_ != symmetric) {
+  if (analyzedVersion_ != assembler_.structureVersion() || analyzedSymmetric_ != symmetric) {
     st = solver_->analyze(assembler_.tangent(), symmetric);
     if (!st) return st;
-    analyzedVersion_ = assembler_.patternVersion();
+    analyzedVersion_ = assembler_.structureVersion();
     analyzedSymmetric_ = symmetric;
   }
   st = solver_->factorize(assembler_.tangent());
@@ -298,7 +300,7 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
   // convergence test, the step ends without a new factorization.
   bool reused = false;
   if (st && !predictor && !path_ && !history_.empty() &&
-      analyzedVersion_ == assembler_.patternVersion() &&
+      analyzedVersion_ == assembler_.structureVersion() &&
       info.residual <= 1e-6 * history_.front().residual)
     reused = solveWithEarlierFactors() && convergedAt(std::abs(du_.dot(R_)), info.iteration);
   if (st && !reused) st = factor(symmetric);
@@ -490,7 +492,7 @@ Status Analysis::solveOnly(IterationInfo& info) {
   info = IterationInfo{};
   info.iteration = static_cast<int>(history_.size()) + 1;
   info.residual = R_.norm();
-  if (analyzedVersion_ != assembler_.patternVersion())
+  if (analyzedVersion_ != assembler_.structureVersion())
     return Status::failure("SOLV without a factored tangent (use TANG first)");
   Status st = solver_->solve(R_, du_);
   if (!st) return st;

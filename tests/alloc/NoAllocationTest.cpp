@@ -6,12 +6,14 @@
 
 #include <atomic>
 #include <memory>
+#include <cmath>
 #include <cstdlib>
 #include <new>
 
 #include "core/Model.h"
 #include "elements/ElementFactory.h"
 #include "solvers/Analysis.h"
+#include "solvers/TimeIntegrator.h"
 
 namespace {
 std::atomic<long> gAllocations{0};
@@ -91,6 +93,54 @@ TEST(NoAllocation, DynamicMidPointNewtonLoop) {
   a.setDt(0.01);
   countedSteps(a, 1);
   EXPECT_EQ(countedSteps(a, 5), 0);
+}
+
+TEST(NoAllocation, MemberContactAndGroundFriction) {
+  // A bar of 4 elements resting across a fixed beam of 8 (member contact) and
+  // the beam's neighbour, a bar sliding on the ground with friction: after the
+  // first step the contact pairs are in the pattern and the search's arrays
+  // have their size.
+  Model m;
+  MaterialSet mat;
+  mat.number = 1;
+  mat.elementType = "FRAMe";
+  mat.resEA = 1e7;
+  mat.resGA = 1e7;
+  mat.resEI = 1e4;
+  mat.kinematics = Kinematics::Finite;
+  mat.density = 1.0;
+  mat.A = 1.0;
+  mat.I = 1e-3;  // contact radius sqrt(3e-3)
+  m.materials()[1] = mat;
+  const double h = 2 * std::sqrt(3e-3);
+  auto line = [&](Vec2 a, Vec2 b, int n) {
+    const int first = m.numNodes();
+    m.resizeNodes(first + n + 1);
+    for (int i = 0; i <= n; ++i) m.setCoord(first + i, a + (b - a) * (double(i) / n));
+    for (int e = 0; e < n; ++e)
+      m.setElement(m.numElements(), makeElement(mat, {first + e, first + e + 1},
+                                                m.coord(first + e), m.coord(first + e + 1)));
+    return first;
+  };
+  const int beam = line(Vec2(0, 1), Vec2(4, 1), 8);
+  for (int n = beam; n <= beam + 8; ++n) m.bound(n) = {1, 1, 1};
+  const int bar = line(Vec2(0.55, 1.5), Vec2(1.45, 1.5), 4);
+  line(Vec2(5, 0), Vec2(6, 0), 2);
+  m.gravity() = Vec2(1.0, -9.81);
+  m.ground() = Ground{0.0, 1e5, -1, 0.3};
+  m.memberContact() = MemberContactData{1e5, -1, -1};
+  Analysis a(m);
+  a.setIntegrator(TimeIntegrator::midPoint(0.1, 0.1));
+  a.setDt(0.01);
+  // The bar starts inside the contact distance (it lies 0.5 higher in the
+  // reference configuration).
+  State& s = a.state();
+  s.resize(m.numNodes());
+  for (int n = bar; n <= bar + 4; ++n) s.u(3 * n + 1) = s.un(3 * n + 1) = h - 0.5 - 1e-4;
+  countedSteps(a, 1);
+  EXPECT_GT(a.energy().contact, 0.0);
+  EXPECT_EQ(countedSteps(a, 5), 0);
+  EXPECT_GT(a.energy().contact, 0.0);
 }
 
 }  // namespace

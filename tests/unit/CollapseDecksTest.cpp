@@ -101,6 +101,96 @@ TEST(CollapseDecks, BarDrop) {
   EXPECT_LT(relativeDrift(c["total"], m * g * h0), 1e-10);
 }
 
+TEST(CollapseDecks, BarOnBeam) {
+  // Member contact: two node-to-segment pairs of stiffness k (see the deck).
+  Columns c = runAndRead("collapse/bar_on_beam.inp", "bar_on_beam");
+  ASSERT_FALSE(c["time"].empty());
+  const double k = 2e4, h0 = 0.05, g = 9.81, m = 1, dt = 1e-3;
+  const double K = 2 * k, om = std::sqrt(K / m), v0 = std::sqrt(2 * g * h0);
+  const double pen = m * g / K + std::sqrt(std::pow(m * g / K, 2) + m * v0 * v0 / K);
+  const double tc = (std::acos(-1.0) + 2 * std::atan(g / (om * v0))) / om;
+  const auto& t = c["time"];
+  std::vector<double> y;  // height of the bar's first node above the contact distance
+  for (double d : c["disp_4_2"]) y.push_back(h0 + d);
+  EXPECT_NEAR(*std::min_element(y.begin(), y.end()), -pen, 0.01 * pen);
+  double first = -1, last = -1;
+  for (size_t i = 0; i < y.size(); ++i)
+    if (y[i] < 0) {
+      if (first < 0) first = t[i];
+      last = t[i];
+    }
+  ASSERT_GT(first, 0);
+  EXPECT_NEAR(last - first, tc, 2 * dt);
+  double rebound = -1;
+  for (size_t i = 0; i < y.size(); ++i)
+    if (t[i] > last) rebound = std::max(rebound, y[i]);
+  EXPECT_NEAR(rebound, h0, 1e-3 * h0);
+  EXPECT_LT(relativeDrift(c["total"], m * g * h0), 1e-10);
+}
+
+TEST(CollapseDecks, SlidingBeam) {
+  // Ground friction mu = 0.2 under gravity (0.3 g, -g): x = 0.05 g t^2, plus
+  // less than mu g dt t from the regularisation (see the deck).
+  Columns c = runAndRead("collapse/sliding_beam.inp", "sliding_beam");
+  ASSERT_EQ(c["time"].size(), 20u);
+  const double g = 9.81, mu = 0.2, dt = 1e-3;
+  for (size_t i = 0; i < c["time"].size(); ++i) {
+    const double t = c["time"][i], x = c["disp_1_1"][i];
+    EXPECT_GT(x, 0.05 * g * t * t) << "t = " << t;
+    EXPECT_LT(x - 0.05 * g * t * t, mu * g * dt * t) << "t = " << t;
+    EXPECT_EQ(c["disp_2_1"][i], x);
+    EXPECT_NEAR(c["disp_1_2"][i], 0.0, 1e-15);  // resting vertically at its static penetration
+  }
+  // Energy falls by what friction takes, mu m g x (to the regularisation's share).
+  const double x = c["disp_1_1"].back();
+  EXPECT_NEAR(c["total"].front() - c["total"].back(),
+              mu * g * (x - c["disp_1_1"].front()), 1e-3 * mu * g * x);
+}
+
+TEST(CollapseDecks, SixStoryCollapseWithMemberContactLeavesNoCrossingMembers) {
+  // The 84-element six-story workflow (decks/paper/six_story_collapse_short.inp)
+  // run on to t = 200 s, when the frame lies on the ground, with member contact
+  // beside the ground contact. Without it, five pairs of members end up
+  // crossing each other (the run's log says so); with it, none.
+  namespace fs = std::filesystem;
+  const fs::path src = fs::path(C2D_SOURCE_DIR) / "decks" / "paper";
+  const fs::path dir = fs::temp_directory_path() / "c2d_collapse_six_story_members";
+  fs::create_directories(dir);
+  auto read = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  };
+  auto replaced = [](std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+  };
+  for (const auto& entry : fs::directory_iterator(src))
+    if (entry.path().extension() == ".inc")
+      fs::copy_file(entry.path(), dir / entry.path().filename(),
+                    fs::copy_options::overwrite_existing);
+  std::ofstream(dir / "six_story_workflow.inc")
+      << replaced(read(src / "six_story_workflow.inc"), "  GROUnd,,0,1e5\n",
+                  "  GROUnd,,0,1e5\n  MEMBers,,1e5\n");
+  std::ofstream(dir / "members.inp")
+      << replaced(read(src / "six_story_collapse_short.inp"), "tend = 30 ", "tend = 200 ");
+  DeckOptions opt;
+  opt.outDir = dir;
+  opt.quiet = true;
+  SolutionCommands commands;
+  std::ostringstream out;
+  const DeckOutcome o = runDeck((dir / "members.inp").string(), opt, commands, out);
+  ASSERT_EQ(o.exitCode, 0) << o.message;
+  const std::string log = read(dir / "members.out");
+  EXPECT_NE(log.find("M e m b e r   C o n t a c t"), std::string::npos);
+  EXPECT_NE(log.find("debris:"), std::string::npos);
+  EXPECT_EQ(log.find("warning: members"), std::string::npos) << log.substr(log.find("debris:"));
+  fs::remove_all(dir);
+}
+
 TEST(CollapseDecks, SchemeComparison) {
   // Two runs of the jointed double pendulum: Newmark, then the conserving scheme.
   Columns newmark = runAndRead("collapse/double_pendulum.inp", "double_pendulum_1");

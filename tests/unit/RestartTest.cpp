@@ -245,6 +245,83 @@ TEST(Restart, AcrossHingeToJointIntoTheCollapsePhase) {
   }
 }
 
+// A bar dropped across a fixed beam (member contact) beside a beam sliding on
+// the ground with friction: saved in the middle of the impact.
+const char* kContact = R"(PARAmeter
+  h = sqrt(3*1e-3/1.25) + sqrt(3*1e-3/0.5)
+
+FEAP * * member contact and friction
+  0 0 0 2 3 2
+
+COORdinates
+  1 1 0   0
+  3 0 4   0
+  4 0 0.6 h+0.05
+  5 0 1.4 h+0.05
+  6 0 6   -9.81/2e5
+  7 0 7   -9.81/2e5
+
+ELEMents
+  1 1 2 1 2
+  2 0 2 2 3
+  3 0 1 4 5
+  4 0 1 6 7
+
+MATErial,1
+  FRAMe
+    RESUltant STIFfness 1e7 1e7 1e5
+    CROSs section 1.25 1e-3
+    DENSity,,1
+    FINIte
+
+MATErial,2
+  FRAMe
+    RESUltant STIFfness 1e6 1e6 1e3
+    CROSs section 0.5 1e-3
+    DENSity,,1
+    FINIte
+
+BOUNdary
+  1 0 1 1 1
+  2 0 1 1 1
+  3 0 1 1 1
+
+CONTact
+  GROUnd,,0,1e5,,0.2
+  MEMBers,,2e4
+
+GRAVity,,2.943,-9.81
+
+END
+BATCh
+  DYNAmic,ENERgy,0,0
+  TOL,,1e-20
+  DT,,1e-3
+  TPLOt
+)";
+
+TEST(Restart, MemberContactAndFrictionContinueBitForBit) {
+  DeckTempDir dir;
+  const std::string data = "disp,4,2\ndisp,6,1\nener\n\nSTOP\n";
+  const DeckResult whole = runDeckText(
+      dir, "whole.inp", kContact + newtonLoop("TIME", 140) + "  SAVE,whole_end\nEND\n" + data);
+  expectRan(whole);
+  const DeckResult first =
+      runDeckText(dir, "first.inp", kContact + newtonLoop("TIME", 106) + "  SAVE,mid\nEND\n" + data);
+  expectRan(first);
+  const DeckResult rest = runDeckText(
+      dir, "rest.inp",
+      std::string(kContact).substr(0, std::string(kContact).find("  DYNA")) + "  REST,mid\n  TPLOt\n" +
+          newtonLoop("TIME", 34) + "  SAVE,rest_end\nEND\n" + data);
+  expectRan(rest);
+  // The save falls inside the impact: the bar is in contact with the beam.
+  const Loaded mid(first.out / "mid.rst");
+  EXPECT_GT(mid.analysis->energy().contact, 1e-3);
+  expectSameTail(readText(whole.out / "whole_tplot.csv"), readText(first.out / "first_tplot.csv"),
+                 readText(rest.out / "rest_tplot.csv"));
+  expectSameState(whole.out / "whole_end.rst", rest.out / "rest_end.rst");
+}
+
 TEST(Restart, BadFilesAreClearErrors) {
   DeckTempDir dir;
   const std::string data = std::string(kLoads) + kTplot;

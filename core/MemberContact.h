@@ -1,0 +1,140 @@
+#pragma once
+// Frictionless penalty contact between members (CONTact record MEMBers): every
+// node against every element segment it does not belong to.
+//
+// Geometry of a pair: node x, segment a-b (translations only), contact distance
+// h = r_node + r_segment, with an element's contact radius r = sqrt(3 I / A)
+// (half the depth of the rectangle with the section's A and I), or the record's
+// radius when the material gives no section; a node's radius is the largest of
+// its elements'. The penetration is
+//   p = h - s d     where the node projects inside the segment, d the signed
+//                   distance from the line a->b (positive to the left) and s the
+//                   side the node was on at t_n (two-sided segments: a node
+//                   pushed through the centre line is pushed back to its side),
+//   p = h - |x - a| (or |x - b|) beyond the ends (rounded ends),
+// and the stored energy U = k <p>^2 / 2. p is continuous and its gradient too,
+// except where a node that went through the centre line leaves the segment's
+// span. At a vertex of a polyline the rounded end of one segment and the side of
+// its neighbour both push a node within sqrt(2 h p) of the vertex: there the
+// contact is up to twice as stiff.
+//
+// Excluded pairs: the elements at the node, the elements at the nodes tied to
+// it by joints (a joint's master and slave are one node for contact), and pairs
+// already within contact distance in the reference configuration (members
+// meeting at a frame joint: parts of one piece of structure).
+//
+// Forces: under the static and Newmark rules the gradient of U at t_n+1; under
+// the mid-point scheme a discrete gradient, so that an impact conserves energy
+// exactly: with z = (x - a, b - a) (translation invariant: the forces sum to
+// zero and linear momentum is conserved),
+//   f_z = phi'(p_n, p_n+1) D,   D = grad p(z_m) + (p_n+1 - p_n - grad p(z_m).dz) dz / |dz|^2,
+// phi' the closed-form discrete derivative of k <p>^2 / 2 (as the ground's), so
+// that f_z.dz = U_n+1 - U_n, plus the dissipative alpha k (<p_n+1> - <p_n>) D
+// (work alpha k (<p_n+1> - <p_n>)(p_n+1 - p_n) >= 0 taken per step).
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "core/ContactGrid.h"
+#include "core/DofMap.h"
+#include "core/Model.h"
+#include "core/State.h"
+#include "core/StepRule.h"
+
+namespace c2d {
+
+using PairVec = Eigen::Matrix<double, 6, 1>;  // node x, segment ends a, b: (x, y) each
+using PairMat = Eigen::Matrix<double, 6, 6>;
+
+// Positions of the node and the segment ends at one instant.
+struct PairPositions {
+  Vec2 x, a, b;
+};
+
+// The side of the node relative to the line a->b: +1 left (or on it), -1 right.
+int pairSide(const PairPositions& q);
+// Penetration of the pair for the side s and contact distance h (see above).
+double pairPenetration(const PairPositions& q, int side, double h);
+
+// The pair's contact force (added to the residual as an internal force: the
+// gradient of the energy) and its derivative with respect to the positions at
+// t_n+1, for the positions at t_n (q0) and t_n+1 (q1). False, with nothing
+// written, when the pair carries no force.
+bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, double h, double k,
+                 double alpha, const StepRule& rule, bool wantTangent, PairVec& force,
+                 PairMat& tangent);
+
+// One node-segment pair of the model.
+struct ContactPair {
+  int node = -1, element = -1;
+  int a = -1, b = -1;  // the element's nodes
+  double h = 0;        // contact distance
+  std::uint64_t key() const {
+    return (static_cast<std::uint64_t>(node) << 32) | static_cast<std::uint32_t>(element);
+  }
+};
+
+// For every node: the representative of the nodes tied to it by joints.
+std::vector<int> jointGroups(const Model& model);
+
+class MemberContact {
+ public:
+  // Per topology version: contact nodes (used, not aliased), radii, joint
+  // groups, the pairs excluded by the reference configuration.
+  MemberContact(const Model& model, const DofMap& dofs);
+
+  // Every pair that may carry a force at the state s (swept boxes from t_n to
+  // t_n+1, inflated by the contact distance, overlap), and more: the list is
+  // found with boxes inflated by a margin and kept while no node has moved
+  // beyond its box of that search by more than the margin. Sorted by key.
+  // Changes only when candidatesVersion() does.
+  const std::vector<ContactPair>& candidates(const Model& model, const State& s) const;
+  int candidatesVersion() const { return candidatesVersion_; }
+
+  // Force and tangent of a candidate pair at s (false: no force).
+  bool evaluate(const ContactPair& pair, const Model& model, const State& s, const StepRule& rule,
+                bool wantTangent, PairVec& force, PairMat& tangent) const;
+
+  // Stored energy at the trial state s (sides from its committed state), and
+  // the energy the dissipative term took over the step from t_n to t_n+1.
+  double energy(const Model& model, const State& s) const;
+  double dissipation(const Model& model, const State& s, const StepRule& rule) const;
+
+  // The pair's swept boxes are within contact distance plus `extra` at s.
+  bool near(const ContactPair& pair, const Model& model, const State& s, double extra) const {
+    PairPositions q0, q1;
+    return positions(pair, model, s, q0, q1, extra);
+  }
+
+  double margin() const { return margin_; }
+  double radius(int element) const { return elementRadius_[element]; }
+
+ private:
+  void search(const Model& model, const State& s) const;
+  bool valid(const Model& model, const State& s) const;
+  // The pair's positions at t_n and t_n+1, and whether its swept boxes are
+  // within contact distance (plus extra).
+  bool positions(const ContactPair& pair, const Model& model, const State& s, PairPositions& q0,
+                 PairPositions& q1, double extra = 0) const;
+  double alpha(const StepRule& rule) const { return data_.alpha >= 0 ? data_.alpha : rule.alpha; }
+  bool excluded(int node, int element, const Model& model) const;
+
+  MemberContactData data_;
+  std::vector<int> contactNodes_;                 // used and not aliased
+  std::vector<char> usedNode_;                    // nodes whose motion matters (in some element)
+  std::vector<double> elementRadius_;             // per element
+  std::vector<double> nodeRadius_;                // per node
+  std::vector<int> group_;                        // joint groups
+  std::vector<std::uint64_t> referenceExcluded_;  // sorted pair keys
+  double margin_ = 0;
+
+  // The search and its cache (a function of the state; rebuilt on demand).
+  mutable ContactGrid grid_;
+  mutable std::vector<Box> boxes_;
+  mutable std::vector<Box> anchor_;  // per node: its swept box at the last search
+  mutable std::vector<ContactPair> candidates_;
+  mutable int candidatesVersion_ = 0;
+  mutable bool searched_ = false;
+};
+
+}  // namespace c2d

@@ -1,0 +1,25 @@
+#pragma once
+// Members passing through each other: the pairs of elements whose centre lines
+// cross at a state. Elements that share a node, or nodes tied by a joint, meet
+// by construction and are not checked. A proper crossing only: segments that
+// touch or overlap along a line are not reported.
+//
+// The check is linear in the number of elements (core/ContactGrid.h). A run
+// calls it at its end and reports every crossing in its log: penalty contact
+// too soft for the impact speed, or a step too long, lets a node tunnel through
+// a member.
+#include <vector>
+
+#include "core/Model.h"
+#include "core/State.h"
+
+namespace c2d {
+
+struct MemberCrossing {
+  int first = -1, second = -1;  // element indices (0-based), first < second
+};
+
+// Pairs ordered by (first, second), positions from the trial displacements s.u.
+std::vector<MemberCrossing> findCrossings(const Model& model, const State& s);
+
+}  // namespace c2d

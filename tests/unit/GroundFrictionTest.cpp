@@ -1,0 +1,212 @@
+// Ground friction (core/GroundContact): the regularised Coulomb law, its exact
+// (unsymmetric) tangent, and a beam lying on the ground under gravity tilted by
+// gx = 0.3 g: it sticks for mu = 0.5 (creeping by less than the regularisation
+// per step) and slides with acceleration (0.3 - mu) g for mu = 0.2, while
+// total energy plus what friction took stays constant.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ContactTestSupport.h"
+#include "core/GroundContact.h"
+#include "elements/Joints.h"
+#include "solvers/TimeIntegrator.h"
+
+namespace c2d {
+namespace {
+
+using test::addRod;
+using test::kGravity;
+using test::newRod;
+using test::position;
+using test::rod;
+using test::solveStep;
+
+TEST(GroundFriction, ForceOpposesTheIncrementAndIsBoundedByMuN) {
+  const Ground g{0.0, 1e4, -1, 0.4};
+  const StepRule rule = TimeIntegrator::midPoint(0, 0).rule(0.01);
+  const double eps = 1e-5;
+  const ContactForce c = groundContact(g, -1e-3, -1.2e-3, rule);
+  ASSERT_GT(c.normal, 0);
+  for (double dx : {-0.3, -1e-4, -1e-6, 0.0, 2e-7, 3e-5, 0.2}) {
+    const FrictionForce f = groundFriction(g, c, dx, eps);
+    EXPECT_LE(f.force * dx, 0.0);
+    EXPECT_LE(std::abs(f.force), g.mu * c.normal * (1 + 1e-15));
+    // Dissipation = -f dx, and groundDissipation says so (no alpha: integrator's 0).
+    EXPECT_NEAR(groundDissipation(g, 1.0, -1e-3, 1.0 + dx, -1.2e-3, rule, eps), -f.force * dx,
+                1e-15 * g.k);
+  }
+  // Far from zero it is mu N.
+  EXPECT_NEAR(groundFriction(g, c, 1.0, eps).force, -g.mu * c.normal, 1e-9 * c.normal);
+  // No friction without a normal force.
+  const ContactForce free = groundContact(g, 0.1, 0.05, rule);
+  EXPECT_EQ(groundFriction(g, free, 0.1, eps).force, 0.0);
+}
+
+TEST(GroundFriction, AssembledTangentMatchesFiniteDifferences) {
+  // A jointed two-link frame partly pressed into the ground, sliding on it.
+  Model m;
+  m.materials()[1] = rod(1, 2e3, 1e3, 30.0, 1.0, 0.01);
+  const int b = addRod(m, m.addNode(Vec2(0, 0.02)), Vec2(1.0, -0.03), 2);
+  const int c = m.addNode(m.coord(b));
+  addRod(m, c, Vec2(1.8, 0.4), 2);
+  m.joints().push_back({b, c, JointForm::Condensed});
+  installJoints(m);
+  m.ground() = Ground{0.0, 4.0e3, -1, 0.4};
+  m.gravity() = Vec2(0.2 * kGravity, -kGravity);
+  for (const TimeIntegrator& ti :
+       {TimeIntegrator::statics(), TimeIntegrator::newmark(0.25, 0.5),
+        TimeIntegrator::midPoint(0.1, 0.05), TimeIntegrator::midPoint(0, 0)}) {
+    State s;
+    s.resize(m.numNodes());
+    s.dt = 0.05;
+    for (int i = 0; i < s.u.size(); ++i) {
+      s.un(i) = 0.01 * std::sin(1.3 * i);
+      s.u(i) = s.un(i) + 0.006 * std::cos(0.7 * i);
+      s.vn(i) = 0.3 * std::sin(2.1 * i);
+      s.an(i) = std::cos(0.4 * i);
+    }
+    // The horizontal increments are of the order of the regularisation (the
+    // law's curved part) and nodes are in contact.
+    const double eps = frictionRegularisation(*m.ground(), 1.0, kGravity, s.dt, 0.5);
+    EXPECT_GT(eps, 1e-3);
+    int inContact = 0;
+    for (int n = 0; n < m.numNodes(); ++n)
+      inContact += n != c && m.coord(n).y() + s.u(3 * n + 1) < 0;
+    EXPECT_GE(inContact, 2);
+    EXPECT_LT(test::tangentError(m, s, ti.rule(s.dt)), 1e-6) << ti.describe();
+  }
+}
+
+// A stiff beam of mass 1 and length 1 (one element: equal nodal weights)
+// lying on the ground y = 0, its nodes at their static penetration, gravity
+// (0.3 g, -g).
+struct Slide {
+  double x = 0;             // displacement of the first node at the end
+  double acceleration = 0;  // from its velocities at T/2 and T
+  double largestStep = 0;   // largest |dx| of a step
+  double eps = 0;           // the friction regularisation
+  double worstBalance = 0;  // |E + dissipated - E0| over the run
+  double dissipated = 0;
+  bool converged = true;
+};
+
+Slide slide(double mu, double dt, int steps) {
+  const int n = 1;
+  const double k = 1e5;
+  Model m;
+  m.materials()[1] = rod(1, 1e8, 1e8, 1e5, 1.0, 1e-4);
+  newRod(m, Vec2(0, 0), Vec2(1, 0), n);
+  m.ground() = Ground{0.0, k, -1, mu};
+  m.gravity() = Vec2(0.3 * kGravity, -kGravity);
+  Analysis an(m);
+  an.setIntegrator(TimeIntegrator::midPoint(0, 0));
+  an.setTolerance(1e-24);
+  an.setDt(dt);
+  State& s = an.state();
+  s.resize(m.numNodes());
+  for (int i = 0; i <= n; ++i) {
+    const double weight = kGravity / n * (i == 0 || i == n ? 0.5 : 1.0);
+    s.u(3 * i + 1) = s.un(3 * i + 1) = -weight / k;
+  }
+  Slide out;
+  // Each node carries its weight: eps = mu g dt^2 / 2.
+  out.eps = frictionRegularisation(*m.ground(), 1.0, kGravity, dt, m.characteristicLength());
+  double norm = 0;
+  EXPECT_TRUE(an.formResidual(norm).ok);  // the elements' energy at the start
+  const double e0 = an.energy().total();
+  double vHalf = 0;
+  for (int i = 0; i < steps; ++i) {
+    if (!solveStep(an)) {
+      out.converged = false;
+      return out;
+    }
+    const double d = an.assembler().contactDissipation(s, an.integrator().rule(dt));
+    EXPECT_GE(d, 0.0);
+    out.dissipated += d;
+    for (int node = 0; node <= n; ++node)
+      out.largestStep = std::max(out.largestStep, std::abs(s.u(3 * node) - s.un(3 * node)));
+    an.commit();
+    out.worstBalance =
+        std::max(out.worstBalance, std::abs(an.energy().total() + out.dissipated - e0));
+    if (i + 1 == steps / 2) vHalf = s.v(0);
+  }
+  out.x = s.u(0);
+  out.acceleration = (s.v(0) - vHalf) / (dt * (steps - steps / 2));
+  return out;
+}
+
+TEST(GroundFriction, BeamOnTheGroundStaysForMuAboveTheTilt) {
+  // 0.3 g against mu g = 0.5 g: the tangential load is 0.6 mu N, below
+  // mu N / sqrt(2): the beam creeps by less than the regularisation per step.
+  const double dt = 1e-3;
+  const Slide r = slide(0.5, dt, 500);
+  ASSERT_TRUE(r.converged);
+  EXPECT_LT(r.largestStep, r.eps);
+  // The steady creep eps T / sqrt((mu N)^2 - T^2) = 0.75 eps per step (eps
+  // from the normal force at t_n, which oscillates a little about the weight).
+  EXPECT_LT(std::abs(r.x), 0.8 * r.eps * 500);
+  EXPECT_LT(r.worstBalance, 1e-9 * kGravity);
+}
+
+TEST(GroundFriction, BeamOnTheGroundSlidesWithTheTiltMinusMu) {
+  // On a horizontal ground with gravity (0.3 g, -g) and friction mu = 0.2 the
+  // beam slides with acceleration (0.3 - mu) g, x = 0.05 g t^2. The
+  // regularisation lowers the friction while dx is not far above eps (the
+  // first steps): x exceeds the closed form by less than mu g dt t.
+  const double dt = 1e-3, t = 0.5;
+  const Slide r = slide(0.2, dt, static_cast<int>(t / dt + 0.5));
+  ASSERT_TRUE(r.converged);
+  EXPECT_NEAR(r.acceleration, 0.1 * kGravity, 1e-5 * kGravity);
+  EXPECT_GT(r.x, 0.05 * kGravity * t * t);
+  EXPECT_LT(r.x - 0.05 * kGravity * t * t, 0.2 * kGravity * dt * t);
+  // Friction took mu W x; the balance closes with it.
+  EXPECT_NEAR(r.dissipated, 0.2 * kGravity * r.x, 1e-3 * r.dissipated);
+  EXPECT_LT(r.worstBalance, 1e-9 * kGravity);
+}
+
+TEST(GroundFriction, ImpactWithDissipationAndFrictionClosesTheEnergyBalance) {
+  // A tilted beam thrown down and sideways onto the ground: the ground's
+  // dissipative term (alpha = 0.2) and friction (mu = 0.3) both take energy;
+  // total energy plus contactDissipation stays constant.
+  Model m;
+  m.materials()[1] = rod(1, 1e6, 1e6, 1e3, 1.0, 1e-4);
+  const int first = newRod(m, Vec2(0, 0.05), Vec2(1, 0.15), 4);
+  m.ground() = Ground{0.0, 2e4, 0.2, 0.3};
+  m.gravity() = Vec2(0, -kGravity);
+  Analysis an(m);
+  an.setIntegrator(TimeIntegrator::midPoint(0, 0));
+  an.setTolerance(1e-24);
+  const double dt = 2e-3;
+  an.setDt(dt);
+  State& s = an.state();
+  s.resize(m.numNodes());
+  for (int n = first; n < first + 5; ++n) s.v.segment<2>(3 * n) = Vec2(1.5, -1.0);
+  s.vn = s.v;
+  const double e0 = an.energy().total();
+  double dissipated = 0, worst = 0, friction = 0;
+  for (int i = 0; i < 300; ++i) {
+    ASSERT_TRUE(solveStep(an)) << "step " << i;
+    const StepRule rule = an.integrator().rule(dt);
+    const double d = an.assembler().contactDissipation(s, rule);
+    EXPECT_GE(d, 0.0);
+    // The ground's alpha term; the rest is friction's.
+    double alphaPart = 0;
+    for (int n = first; n < first + 5; ++n) {
+      const double p0 = -(m.coord(n).y() + s.un(3 * n + 1)),
+                   p1 = -(m.coord(n).y() + s.u(3 * n + 1));
+      alphaPart += 0.2 * 2e4 * (std::max(p1, 0.0) - std::max(p0, 0.0)) * (p1 - p0);
+    }
+    friction += d - alphaPart;
+    dissipated += d;
+    an.commit();
+    worst = std::max(worst, std::abs(an.energy().total() + dissipated - e0));
+  }
+  const double scale = 0.5 * 3.25 + kGravity * 0.1;  // kinetic and potential at the start
+  EXPECT_GT(friction, 0.05 * scale);
+  EXPECT_GT(dissipated - friction, 1e-3 * scale);
+  EXPECT_LT(worst, 1e-9 * scale);
+}
+
+}  // namespace
+}  // namespace c2d

@@ -1,0 +1,472 @@
+// Member-to-member contact (core/MemberContact, core/ContactGrid,
+// core/MemberCrossing): the pair law and its tangent, the discrete gradient
+// under the mid-point scheme, the broad phase against brute force, excluded
+// pairs, and whole analyses: bars colliding end-on and crosswise (energy and
+// momentum), a bar dropped on a fixed beam (penetration, rebound, dissipation).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "ContactTestSupport.h"
+#include "core/ContactGrid.h"
+#include "core/MemberContact.h"
+#include "core/MemberCrossing.h"
+#include "elements/Joints.h"
+#include "solvers/TimeIntegrator.h"
+
+namespace c2d {
+namespace {
+
+using test::addRod;
+using test::kGravity;
+using test::newRod;
+using test::position;
+using test::rod;
+using test::solveStep;
+
+// --- the pair law -----------------------------------------------------------
+
+PairPositions shifted(const PairPositions& q, int i, double h) {
+  PairPositions r = q;
+  Vec2* p[3] = {&r.x, &r.a, &r.b};
+  (*p[i / 2])(i % 2) += h;
+  return r;
+}
+
+double pairEnergy(const PairPositions& q, int side, double h, double k) {
+  const double p = pairPenetration(q, side, h);
+  return p > 0 ? 0.5 * k * p * p : 0.0;
+}
+
+// Configurations at t_n and t_n+1 in every region: inside the span from
+// either side, pushed through the centre line, beyond either end, entering and
+// leaving contact.
+std::vector<std::pair<PairPositions, PairPositions>> pairCases() {
+  const Vec2 a(0.1, -0.05), b(1.2, 0.15);
+  std::vector<std::pair<PairPositions, PairPositions>> cases;
+  auto add = [&](Vec2 x0, Vec2 x1, Vec2 da = Vec2::Zero(), Vec2 db = Vec2::Zero()) {
+    cases.push_back({{x0, a, b}, {x1, a + da, b + db}});
+  };
+  add({0.6, 0.12}, {0.62, 0.06}, {0.01, -0.02}, {-0.02, 0.015});  // above, in contact
+  add({0.5, -0.2}, {0.55, 0.0}, {0.0, 0.01}, {0.01, 0.0});        // below, pushed across
+  add({0.7, 0.3}, {0.68, 0.09}, {0.02, 0.0}, {0.0, -0.01});       // entering
+  add({0.4, 0.07}, {0.45, 0.25}, {0.0, 0.0}, {0.01, 0.02});       // leaving
+  add({0.02, -0.1}, {0.04, -0.07}, {0.01, 0.0}, {0.0, 0.0});      // beyond a
+  add({1.3, 0.2}, {1.26, 0.18}, {0.0, 0.01}, {-0.015, 0.0});      // beyond b
+  add({1.19, 0.26}, {1.22, 0.21}, {0.005, 0.0}, {0.0, 0.01});     // from inside to beyond b
+  return cases;
+}
+
+TEST(MemberContactPair, TangentMatchesFiniteDifferencesUnderEveryRule) {
+  const double k = 3e3, hc = 0.12;
+  for (const TimeIntegrator& ti :
+       {TimeIntegrator::statics(), TimeIntegrator::newmark(0.25, 0.5),
+        TimeIntegrator::midPoint(0, 0), TimeIntegrator::midPoint(0.2, 0)})
+    for (const auto& [q0, q1] : pairCases()) {
+      const StepRule rule = ti.rule(0.01);
+      const int side = pairSide(q0);
+      PairVec f, fp, fm;
+      PairMat K, unused;
+      if (!pairContact(q0, q1, side, hc, k, ti.alpha, rule, true, f, K)) continue;
+      PairMat fd;
+      const double h = 1e-7;
+      for (int i = 0; i < 6; ++i) {
+        ASSERT_TRUE(
+            pairContact(q0, shifted(q1, i, h), side, hc, k, ti.alpha, rule, false, fp, unused));
+        ASSERT_TRUE(
+            pairContact(q0, shifted(q1, i, -h), side, hc, k, ti.alpha, rule, false, fm, unused));
+        fd.col(i) = (fp - fm) / (2 * h);
+      }
+      EXPECT_LT((fd - K).cwiseAbs().maxCoeff(), 1e-6 * K.cwiseAbs().maxCoeff())
+          << ti.describe() << " x0 " << q0.x.transpose() << " x1 " << q1.x.transpose() << "\nK\n"
+          << K << "\nFD\n"
+          << fd;
+      // Translation invariance: the forces on node and segment balance.
+      EXPECT_LT((f.segment<2>(0) + f.segment<2>(2) + f.segment<2>(4)).norm(), 1e-12 * f.norm());
+      if (rule.scheme != Scheme::MidPoint) {
+        // The plain gradient of the energy.
+        PairVec g;
+        for (int i = 0; i < 6; ++i)
+          g(i) = (pairEnergy(shifted(q1, i, h), side, hc, k) -
+                  pairEnergy(shifted(q1, i, -h), side, hc, k)) /
+                 (2 * h);
+        EXPECT_LT((g - f).norm(), 1e-6 * f.norm());
+      }
+    }
+}
+
+TEST(MemberContactPair, MidPointForceIsADiscreteGradient) {
+  // f . (q1 - q0) = U1 - U0 exactly; with alpha the work exceeds it by the
+  // dissipation alpha k (<p1> - <p0>)(p1 - p0) >= 0.
+  const double k = 3e3, hc = 0.12;
+  int checked = 0;
+  for (double alpha : {0.0, 0.3})
+    for (const auto& [q0, q1] : pairCases()) {
+      const StepRule rule = TimeIntegrator::midPoint(alpha, 0).rule(0.01);
+      const int side = pairSide(q0);
+      PairVec f;
+      PairMat K;
+      if (!pairContact(q0, q1, side, hc, k, alpha, rule, false, f, K)) continue;
+      PairVec dq;
+      dq << q1.x - q0.x, q1.a - q0.a, q1.b - q0.b;
+      const double u0 = pairEnergy(q0, side, hc, k), u1 = pairEnergy(q1, side, hc, k);
+      const double p0 = pairPenetration(q0, side, hc), p1 = pairPenetration(q1, side, hc);
+      const double dissipation = alpha * k * (std::max(p1, 0.0) - std::max(p0, 0.0)) * (p1 - p0);
+      EXPECT_GE(dissipation, 0.0);
+      EXPECT_NEAR(f.dot(dq), u1 - u0 + dissipation, 1e-12 * k * hc * hc);
+      ++checked;
+    }
+  EXPECT_GE(checked, 12);
+}
+
+TEST(MemberContactPair, PenetrationFromTheSideAtTheLastCommittedState) {
+  const Vec2 a(0, 0), b(1, 0);
+  const double h = 0.1;
+  // Above the segment at t_n: 0.05 above is 0.05 deep, 0.05 below is 0.15 deep.
+  const PairPositions above{Vec2(0.5, 0.05), a, b}, below{Vec2(0.5, -0.05), a, b};
+  const int side = pairSide(above);
+  EXPECT_EQ(side, 1);
+  EXPECT_NEAR(pairPenetration(above, side, h), 0.05, 1e-15);
+  EXPECT_NEAR(pairPenetration(below, side, h), 0.15, 1e-15);
+  EXPECT_NEAR(pairPenetration(below, pairSide(below), h), 0.05, 1e-15);
+  // Rounded ends.
+  EXPECT_NEAR(pairPenetration({Vec2(-0.06, 0.08), a, b}, side, h), 0.0, 1e-15);
+  EXPECT_NEAR(pairPenetration({Vec2(1.03, -0.04), a, b}, side, h), 0.05, 1e-15);
+}
+
+// --- broad phase --------------------------------------------------------------
+
+TEST(ContactGrid, QueryFindsExactlyTheOverlappingBoxes) {
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> pos(-50, 50), size(0, 2), big(0, 60);
+  std::vector<Box> boxes;
+  for (int i = 0; i < 400; ++i) {
+    const double x = pos(gen), y = pos(gen);
+    const double w = i % 50 == 0 ? big(gen) : size(gen), hgt = size(gen);
+    boxes.push_back({x, y, x + w, y + hgt});
+  }
+  ContactGrid grid;
+  for (int round = 0; round < 2; ++round) {
+    grid.build(boxes, 1e-3);
+    for (int q = 0; q < 300; ++q) {
+      const double x = pos(gen), y = pos(gen);
+      const Box b{x, y, x + size(gen) * 3, y + size(gen)};
+      std::vector<int> found, expected;
+      grid.query(b, [&](int i) { found.push_back(i); });
+      for (int i = 0; i < static_cast<int>(boxes.size()); ++i)
+        if (boxes[i].overlaps(b)) expected.push_back(i);
+      std::sort(found.begin(), found.end());
+      EXPECT_EQ(found, expected);
+    }
+    for (Box& b : boxes) b = b.inflated(0.5);
+  }
+}
+
+// --- pairs of a model ---------------------------------------------------------
+
+TEST(MemberContactModel, JointsAndTheReferenceConfigurationExcludePairs) {
+  // Two links meeting at a joint at a right angle (radius 0.05 each, contact
+  // distance 0.1), elements 0.08 long: the node next to the joint on either
+  // link is within 0.1 of the other link's first element in the reference
+  // configuration; the joint's master and slave are one node for contact.
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 10, 1.0, 2.5e-3 / 3);  // r = sqrt(3 I/A) = 0.05
+  const int a = newRod(m, Vec2(0, 0.4), Vec2(0, 0), 5);
+  const int b = m.numNodes() - 1;
+  const int c = m.addNode(Vec2(0, 0));
+  addRod(m, c, Vec2(0.4, 0), 5);
+  m.joints().push_back({b, c, JointForm::Shared});
+  installJoints(m);
+  m.memberContact() = MemberContactData{1e3, -1, -1};
+  Assembler as(m);
+  as.refresh();
+  ASSERT_NE(as.memberContact(), nullptr);
+  EXPECT_NEAR(as.memberContact()->radius(0), 0.05, 1e-12);
+  State s;
+  s.resize(m.numNodes());
+  const auto& pairs = as.memberContact()->candidates(m, s);
+  auto has = [&](int node, int element) {
+    return std::any_of(pairs.begin(), pairs.end(), [&](const ContactPair& p) {
+      return p.node == node && p.element == element;
+    });
+  };
+  const int firstOfLink2 = 5, lastOfLink1 = 4;
+  EXPECT_FALSE(has(b, firstOfLink2));      // the joint's own node
+  EXPECT_FALSE(has(b - 1, firstOfLink2));  // 0.08 from it in the reference configuration
+  EXPECT_FALSE(has(c + 1, lastOfLink1));
+  // Further along, the pairs are candidates (within the search margin).
+  EXPECT_TRUE(has(b - 2, firstOfLink2));
+  EXPECT_TRUE(has(c + 2, lastOfLink1));
+  (void)a;
+  // No pair of a node with its own elements.
+  for (const ContactPair& p : pairs) {
+    const auto nodes = m.element(p.element).nodes();
+    EXPECT_NE(p.node, nodes[0]);
+    EXPECT_NE(p.node, nodes[1]);
+  }
+}
+
+TEST(MemberContactModel, AssembledTangentMatchesFiniteDifferences) {
+  // A jointed two-link frame pressed onto a free bar, crossing it at an angle:
+  // nodes of either pressed into segments of the other, on the static, Newmark
+  // and mid-point rules.
+  Model m;
+  m.materials()[1] = rod(1, 2e3, 1e3, 30.0, 1.0, 1e-3);    // r = 0.055
+  m.materials()[2] = rod(2, 4e3, 2e3, 50.0, 2.0, 1.5e-3);  // r = 0.047
+  const int first = newRod(m, Vec2(-0.2, 0.09), Vec2(0.5, 0.02), 3);
+  const int bend = m.numNodes() - 1;
+  const int slave = m.addNode(m.coord(bend));
+  addRod(m, slave, Vec2(1.2, 0.3), 2);
+  m.joints().push_back({bend, slave, JointForm::Condensed});
+  installJoints(m);
+  // The bar lies 0.5 lower in the reference configuration (pairs within
+  // contact distance there never contact) and is displaced into the frame.
+  const int bar = newRod(m, Vec2(-0.3, -0.51), Vec2(1.1, -0.5), 4, 2);
+  m.memberContact() = MemberContactData{5e3, -1, -1};
+  (void)first;
+  for (const TimeIntegrator& ti :
+       {TimeIntegrator::statics(), TimeIntegrator::newmark(0.25, 0.5),
+        TimeIntegrator::midPoint(0.1, 0.05), TimeIntegrator::midPoint(0, 0)}) {
+    State s;
+    s.resize(m.numNodes());
+    for (int i = 0; i < s.u.size(); ++i) {
+      s.un(i) = 0.004 * std::sin(1.3 * i);
+      s.u(i) = s.un(i) + 0.006 * std::cos(0.7 * i);
+      s.vn(i) = 0.3 * std::sin(2.1 * i);
+      s.an(i) = std::cos(0.4 * i);
+    }
+    for (int n = bar; n < bar + 5; ++n) {
+      s.un(3 * n + 1) += 0.5;
+      s.u(3 * n + 1) += 0.5;
+    }
+    Assembler as(m);
+    as.refresh();
+    int active = 0;
+    PairVec f;
+    PairMat k;
+    for (const ContactPair& p : as.memberContact()->candidates(m, s))
+      active += as.memberContact()->evaluate(p, m, s, ti.rule(0.05), false, f, k);
+    EXPECT_GE(active, 4) << ti.describe();
+    EXPECT_LT(test::tangentError(m, s, ti.rule(0.05)), 1e-6) << ti.describe();
+  }
+}
+
+// --- collisions ---------------------------------------------------------------
+
+struct Collision {
+  double worstEnergy = 0;    // largest |E - E0| / E0 over the steps
+  double worstMomentum = 0;  // largest |p - p0| / |p0|
+  double peakContact = 0;    // largest contact energy / E0: the impact happened
+  bool converged = true;
+};
+
+Collision collide(Model& m, Analysis& an, int steps) {
+  State& s = an.state();
+  const double e0 = an.energy().total();
+  const Vec2 p0 = test::linearMomentum(m, s);
+  Collision out;
+  for (int i = 0; i < steps; ++i) {
+    if (!solveStep(an)) {
+      out.converged = false;
+      break;
+    }
+    an.commit();
+    const Energy e = an.energy();
+    out.worstEnergy = std::max(out.worstEnergy, std::abs(e.total() - e0) / e0);
+    out.worstMomentum =
+        std::max(out.worstMomentum, (test::linearMomentum(m, s) - p0).norm() / p0.norm());
+    out.peakContact = std::max(out.peakContact, e.contact / e0);
+  }
+  return out;
+}
+
+void setVelocity(const Model& m, State& s, int firstNode, int lastNode, const Vec2& v) {
+  s.resize(m.numNodes());
+  for (int n = firstNode; n <= lastNode; ++n) s.v.segment<2>(3 * n) = v;
+  s.vn = s.v;
+}
+
+TEST(MemberContactCollision, BarsEndOnConserveEnergyAndMomentum) {
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 50.0, 1.0, 1e-4);  // r = 0.0173
+  newRod(m, Vec2(-1.05, 0), Vec2(-0.05, 0), 4);
+  const int second = newRod(m, Vec2(0.05, 0), Vec2(1.05, 0), 4);
+  m.memberContact() = MemberContactData{2e3, -1, -1};
+  Analysis an(m);
+  an.setIntegrator(TimeIntegrator::midPoint(0, 0));
+  an.setTolerance(1e-24);
+  an.setDt(2e-3);
+  setVelocity(m, an.state(), 0, second - 1, Vec2(1.0, 0));
+  const Collision c = collide(m, an, 250);
+  ASSERT_TRUE(c.converged);
+  EXPECT_GT(c.peakContact, 0.1);
+  EXPECT_LT(c.worstEnergy, 1e-10);
+  EXPECT_LT(c.worstMomentum, 1e-11);
+  // After the impact the second bar moves on, faster than the first.
+  const State& s = an.state();
+  EXPECT_GT(s.v(3 * (second + 2)), 0.5);
+  EXPECT_LT(s.v(3 * 2), 0.5);
+  EXPECT_TRUE(findCrossings(m, s).empty());
+}
+
+TEST(MemberContactCollision, BarsCrosswiseConserveEnergyAndMomentum) {
+  // A vertical bar falls (no gravity: thrown) on the interior of a free
+  // horizontal one, off its centre: both turn after the impact.
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 50.0, 1.0, 1e-4);
+  const int lying = newRod(m, Vec2(-0.5, 0), Vec2(0.5, 0), 4);
+  const int standing = newRod(m, Vec2(0.13, 0.08), Vec2(0.13, 1.08), 4);
+  m.memberContact() = MemberContactData{2e3, -1, -1};
+  Analysis an(m);
+  an.setIntegrator(TimeIntegrator::midPoint(0, 0));
+  an.setTolerance(1e-24);
+  an.setDt(2e-3);
+  setVelocity(m, an.state(), standing, standing + 4, Vec2(0, -1.0));
+  const Collision c = collide(m, an, 200);
+  ASSERT_TRUE(c.converged);
+  EXPECT_GT(c.peakContact, 0.1);
+  EXPECT_LT(c.worstEnergy, 1e-10);
+  EXPECT_LT(c.worstMomentum, 1e-11);
+  const State& s = an.state();
+  double lyingVy = 0;
+  for (int n = lying; n < lying + 5; ++n) lyingVy += s.v(3 * n + 1) / 5;
+  EXPECT_LT(lyingVy, -0.1);                // the lying bar was pushed down
+  EXPECT_GT(s.v(3 * standing + 1), -0.9);  // and slowed the standing one
+  EXPECT_TRUE(findCrossings(m, s).empty());
+}
+
+// --- a bar on a fixed beam ----------------------------------------------------
+
+// A fixed beam (0, 0)-(4, 0) of two elements and a stiff bar of one element
+// and mass 1 from x = 0.6 to 1.4 at height y0: the bar's two nodes meet the
+// interior of the beam's first element (the beam's nodes are beyond the bar's
+// ends): two pairs, each with stiffness k.
+struct BarOnBeam {
+  Model m;
+  int bar = -1;
+  double h = 0;  // contact distance
+};
+
+BarOnBeam barOnBeam(double y0, double k, double alpha) {
+  BarOnBeam b;
+  b.m.materials()[1] = rod(1, 1e7, 1e7, 1e5, 1.25, 1e-3);  // bar: mass 1.25 * 0.8 = 1, r = 0.049
+  b.m.materials()[2] = rod(2, 1e6, 1e6, 1e3, 0.5, 1e-3);   // beam: r = 0.077
+  const int beam = newRod(b.m, Vec2(0, 0), Vec2(4, 0), 2, 2);
+  for (int n = beam; n < beam + 3; ++n) b.m.bound(n) = {1, 1, 1};
+  b.bar = newRod(b.m, Vec2(0.6, y0), Vec2(1.4, y0), 1, 1);
+  b.m.gravity() = Vec2(0, -kGravity);
+  b.m.memberContact() = MemberContactData{k, alpha, -1};
+  b.h = std::sqrt(3e-3 / 1.25) + std::sqrt(3e-3 / 0.5);
+  return b;
+}
+
+TEST(MemberContactBarOnBeam, StaticPenetrationIsWeightOverPairsTimesK) {
+  const double k = 4e4, weight = kGravity;
+  // Above the contact distance in the reference configuration (pairs closer
+  // than that never contact), started inside it so that the first tangent has
+  // contact stiffness.
+  BarOnBeam b = barOnBeam(0.2, k, -1);
+  b.m.bound(b.bar)[0] = 1;  // frictionless: hold the bar's horizontal rigid motion
+  Analysis an(b.m);
+  State& s = an.state();
+  s.resize(b.m.numNodes());
+  for (int n : {b.bar, b.bar + 1}) s.u(3 * n + 1) = s.un(3 * n + 1) = b.h - 0.2 - 1e-4;
+  an.setDt(1.0);
+  ASSERT_TRUE(solveStep(an));
+  an.commit();
+  for (int n : {b.bar, b.bar + 1}) {
+    const double penetration = b.h - position(b.m, s, n).y();
+    EXPECT_NEAR(penetration, weight / (2 * k), 1e-9 * weight / k);
+  }
+  EXPECT_NEAR(an.energy().contact, 2 * 0.5 * k * std::pow(weight / (2 * k), 2),
+              1e-9 * weight * weight / k);
+}
+
+struct Drop {
+  double rebound = 0;     // highest point of the bar's first node after the impact
+  double dissipated = 0;  // sum of contactDissipation over the steps
+  double worstBalance = 0;
+  double energyScale = 0;
+  bool converged = true;
+};
+
+Drop dropBar(double alpha, double dt, int steps) {
+  // Dropped from 0.05 above contact.
+  const double k = 2e4;
+  BarOnBeam b = barOnBeam(0, k, alpha);
+  for (int n = 0; n < b.m.numNodes(); ++n)
+    if (n >= b.bar) b.m.setCoord(n, b.m.coord(n) + Vec2(0, b.h + 0.05));
+  Analysis an(b.m);
+  an.setIntegrator(TimeIntegrator::midPoint(0, 0));
+  an.setTolerance(1e-24);
+  an.setDt(dt);
+  State& s = an.state();
+  Drop out;
+  out.energyScale = kGravity * 0.05;
+  double e0 = an.energy().total();
+  bool touched = false;
+  for (int i = 0; i < steps; ++i) {
+    if (!solveStep(an)) {
+      out.converged = false;
+      break;
+    }
+    const double d = an.assembler().contactDissipation(s, an.integrator().rule(dt));
+    EXPECT_GE(d, 0.0);
+    an.commit();
+    out.dissipated += d;
+    const Energy e = an.energy();
+    out.worstBalance = std::max(out.worstBalance, std::abs(e.total() + out.dissipated - e0));
+    if (e.contact > 0) touched = true;
+    if (touched && e.contact == 0)
+      out.rebound = std::max(out.rebound, position(b.m, s, b.bar).y() - b.h);
+  }
+  EXPECT_TRUE(touched);
+  return out;
+}
+
+TEST(MemberContactBarOnBeam, ConservingDropReboundsToTheDropHeight) {
+  const Drop d = dropBar(0, 1e-3, 260);
+  ASSERT_TRUE(d.converged);
+  EXPECT_EQ(d.dissipated, 0.0);
+  EXPECT_LT(d.worstBalance, 1e-10 * d.energyScale);
+  // Free flight is exact for the mid-point rule: the highest sample lies within
+  // g dt^2 of the apex.
+  EXPECT_NEAR(d.rebound, 0.05, kGravity * 1e-6 + 1e-9);
+}
+
+TEST(MemberContactBarOnBeam, DissipationLowersTheReboundAndClosesTheBalance) {
+  const Drop d = dropBar(0.3, 1e-3, 260);
+  ASSERT_TRUE(d.converged);
+  EXPECT_GT(d.dissipated, 0.01 * d.energyScale);
+  EXPECT_LT(d.worstBalance, 1e-10 * d.energyScale);
+  EXPECT_LT(d.rebound, 0.05 - d.dissipated / kGravity + kGravity * 1e-6);
+}
+
+// --- crossings ---------------------------------------------------------------
+
+TEST(MemberCrossing, ReportsCrossingMembersOnly) {
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 50.0, 1.0, 1e-4);
+  newRod(m, Vec2(0, 0), Vec2(2, 0), 2);           // elements 0, 1
+  newRod(m, Vec2(1.5, -0.5), Vec2(1.5, 0.5), 1);  // element 2 crosses element 1
+  newRod(m, Vec2(0.2, 0.1), Vec2(0.8, 0.1), 1);   // element 3: parallel, above element 0
+  newRod(m, Vec2(2, 0), Vec2(2.5, 0.0), 1);       // element 4 touches element 1's end
+  State s;
+  s.resize(m.numNodes());
+  auto crossings = findCrossings(m, s);
+  ASSERT_EQ(crossings.size(), 1u);
+  EXPECT_EQ(crossings[0].first, 1);
+  EXPECT_EQ(crossings[0].second, 2);
+  // Move element 3 down through element 0: now it crosses too.
+  s.u(3 * 5 + 1) = -0.2;
+  crossings = findCrossings(m, s);
+  ASSERT_EQ(crossings.size(), 2u);
+  EXPECT_EQ(crossings[0].first, 0);
+  EXPECT_EQ(crossings[0].second, 3);
+}
+
+}  // namespace
+}  // namespace c2d
