@@ -148,8 +148,10 @@ void MeshBinder::checkInitialMesh() {
   };
 
   if (const auto& g = model.ground(); g && !ctx_.groundOrigin.blank()) {
-    // Nodes below y0 at t = 0 would be thrown out of the ground by the penalty force.
-    const double tol = 1e-9 * model.characteristicLength();
+    // Nodes below y0 at t = 0 would be thrown out of the ground by the penalty
+    // force; a node resting on the ground at its penalty penetration (W/k, far
+    // below 1e-3 of the mesh size) is a deck that starts at rest.
+    const double tol = 1e-3 * model.characteristicLength();
     std::vector<int> below;
     int deepest = -1;
     for (int n = 0; n < model.numNodes(); ++n) {
@@ -181,6 +183,10 @@ void MeshBinder::checkInitialMesh() {
       else
         without.insert(m->number);
     }
+    // Masses given otherwise are weighed too: QLOAd carried as mass, MASS.
+    for (const ElementLoad& q : model.elementLoads()) someMass = someMass || q.asMass;
+    for (int n = 0; n < model.numNodes() && !someMass; ++n)
+      for (double m : model.nodalMass(n)) someMass = someMass || m > 0;
     const Record& r = ctx_.gravityOrigin;
     if (!someMass)
       throw DeckError(r.fieldLoc(0), "GRAVity, but no material set has a density: no self-weight",

@@ -136,7 +136,7 @@ MaterialSet v2(double ei = kEI) {
   m.resGA = 1.2e6;
   m.resEI = ei;
   m.hardening = HardeningData{kMc, kMy, kKh1, kKh2};
-  m.softening = SofteningData{kMu, kKs};
+  m.softening = SofteningData{kMu, kKs, std::nullopt};
   return m;
 }
 
