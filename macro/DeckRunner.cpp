@@ -6,7 +6,9 @@
 #include <sstream>
 
 #include "macro/CurveOverlay.h"
+#include "core/AtomicFile.h"
 #include "macro/DeckParser.h"
+#include "macro/Interrupt.h"
 #include "macro/Sweep.h"
 
 namespace c2d {
@@ -80,19 +82,35 @@ std::vector<RunPlan> planRuns(const std::vector<RunInfo>& runs, const std::strin
   return plans;
 }
 
-std::string summaryText(const RunSummary& s) {
+}  // namespace
+
+std::string runSummaryText(const RunSummary& s) {
   char buf[256];
   std::snprintf(buf, sizeof buf, "%d step%s, %d iteration%s, %d cut%s, %d hinge%s", s.steps,
                 s.steps == 1 ? "" : "s", s.iterations, s.iterations == 1 ? "" : "s", s.cuts,
                 s.cuts == 1 ? "" : "s", s.hinges, s.hinges == 1 ? "" : "s");
   std::string out = buf;
   if (s.dynamic) {
-    std::snprintf(buf, sizeof buf, ", energy error %.2e", s.energyError);
+    std::snprintf(buf, sizeof buf, ", energy change %.2e of the peak energy%s", s.energyError,
+                  s.conserving ? "" : " (not conserved by the scheme)");
     out += buf;
   }
   std::snprintf(buf, sizeof buf, ", %.2f s", s.seconds);
   return out + buf;
 }
+
+std::string energyWarning(const RunSummary& s) {
+  if (!s.conserving || !(s.energyError > kConservedEnergyTolerance)) return {};
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "warning: the total energy changed by %.2e of its peak under the energy "
+                "conserving scheme (more than %.0e): contact, a loose tolerance or too large "
+                "a step",
+                s.energyError, kConservedEnergyTolerance);
+  return buf;
+}
+
+namespace {
 
 // Walks the top-level items: PARAmeter blocks, problems, loops, sweeps. In the
 // check pass every problem is bound only (and what names its run is noted); in
@@ -136,6 +154,8 @@ class Walker {
   int runs() const { return runs_; }
   const RunSummary& total() const { return total_; }
   const CurveOverlay& overlay() const { return overlay_; }
+  // The outputs a failed or interrupted run kept (tagged names).
+  const std::vector<std::filesystem::path>& kept() const { return kept_; }
 
  private:
   void runProblem(const Problem& p, Parameters& params) {
@@ -158,9 +178,18 @@ class Walker {
     log_ << "\n  collapse2d  " << p.title << "\n";
     log_ << "  run " << runs_ << " of " << plans_.size() << ", outputs " << ro.stem
          << (plan.label.empty() ? "" : " (" + plan.label + ")") << "\n\n";
+    ro.safePoint = options_.safePoint;
     ProblemRun run(p, params, commands_, ro, log_);
     run.bind(true);
-    run.run();
+    try {
+      run.run();
+    } catch (const Interrupted&) {
+      kept_ = run.keepOutputs("interrupted");
+      throw;
+    } catch (...) {
+      kept_ = run.keepOutputs("failed");
+      throw;
+    }
     const RunSummary s = run.summary();
     total_.steps += s.steps;
     total_.iterations += s.iterations;
@@ -169,10 +198,14 @@ class Walker {
     total_.hinges += s.hinges;
     total_.energyError = std::max(total_.energyError, s.energyError);
     total_.seconds += s.seconds;
+    if (s.dynamic) total_.conserving = total_.dynamic ? total_.conserving && s.conserving : s.conserving;
     total_.dynamic = total_.dynamic || s.dynamic;
-    log_ << "\n  summary: " << summaryText(s) << "\n";
+    log_ << "\n  summary: " << runSummaryText(s) << "\n";
+    const std::string warning = energyWarning(s);
+    if (!warning.empty()) log_ << "  " << warning << "\n";
     if (console_ && !options_.quiet && plans_.size() > 1)
-      *console_ << "  " << ro.stem << ": " << summaryText(s) << "\n" << std::flush;
+      *console_ << "  " << ro.stem << ": " << runSummaryText(s) << "\n" << std::flush;
+    if (console_ && !warning.empty()) *console_ << ro.stem << ": " << warning << "\n" << std::flush;
     overlay_.add(plan.label, p.title, run.outputs().curves(run.history()));
   }
 
@@ -187,7 +220,19 @@ class Walker {
   int runs_ = 0;
   RunSummary total_;
   CurveOverlay overlay_;
+  std::vector<std::filesystem::path> kept_;
 };
+
+}  // namespace
+
+namespace {
+
+// "out/a.failed.out, out/a_tplot.failed.csv"
+std::string fileList(const std::vector<std::filesystem::path>& files) {
+  std::string s;
+  for (const auto& f : files) s += (s.empty() ? "" : ", ") + f.string();
+  return s;
+}
 
 }  // namespace
 
@@ -195,6 +240,23 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
                     const SolutionCommands& commands, std::ostream& out) {
   DeckOutcome outcome;
   const std::string stem = std::filesystem::path(path).stem().string();
+  // The log is written under <log>.part and becomes <log> when the whole deck
+  // has run; a failed or interrupted deck keeps it as <stem>.failed.out or
+  // <stem>.interrupted.out, with the reason as its last lines.
+  std::unique_ptr<AtomicFile> log;
+  std::vector<std::filesystem::path> kept;
+  auto keepLog = [&](std::string_view tag, const std::string& why) {
+    if (!log) return;
+    try {
+      log->stream() << "\n  *** run " << tag << "\n" << why << "\n";
+      kept.insert(kept.begin(), log->keep(tag));
+    } catch (...) {
+      // The log cannot be written (the reason is the message already).
+    }
+  };
+  auto keptText = [&] {
+    return kept.empty() ? std::string() : "\n  computed results kept: " + fileList(kept);
+  };
   try {
     const Deck deck = parseDeck(path);
     // Check pass: bind everything with a scratch parameter table, log discarded.
@@ -203,40 +265,62 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     Walker check(commands, options, discard, nullptr, {});
     check.walk(deck.items, checkParams);
     const std::vector<RunPlan> plans = planRuns(check.infos(), stem);
+    throwIfInterrupted("the start");
 
     const std::filesystem::path dir =
         options.outDir.empty() ? std::filesystem::path(".") : options.outDir;
-    std::filesystem::create_directories(dir);
-    const std::filesystem::path logPath =
-        dir / (options.logName.empty() ? stem + ".out" : options.logName);
-    std::ofstream log(logPath);
-    if (!log) throw std::runtime_error("cannot write the log " + logPath.string());
-    log << "  collapse2d  " << path << "\n";
+    log = std::make_unique<AtomicFile>(dir / (options.logName.empty() ? stem + ".out" : options.logName));
+    log->stream() << "  collapse2d  " << path << "\n";
+    DeckOptions runOptions = options;
+    runOptions.safePoint = [&log] { log->check(); };
     Parameters params;
-    Walker runner(commands, options, log, &out, plans);
+    Walker runner(commands, runOptions, log->stream(), &out, plans);
     try {
       if (!plans.empty()) runner.walk(deck.items, params);
       for (const auto& f : runner.overlay().write(dir, stem))
-        log << "\n  overlay of the runs: " << f.filename().string() << "\n";
-    } catch (const std::exception& e) {
-      log << "\n  *** run failed\n" << e.what() << "\n";
+        log->stream() << "\n  overlay of the runs: " << f.filename().string() << "\n";
+    } catch (...) {
+      kept = runner.kept();
       throw;
     }
-    log << "\n  run complete\n";
+    log->stream() << "\n  run complete\n";
+    log->commit();
     outcome.total = runner.total();
     outcome.runs = runner.runs();
     if (!options.quiet)
       out << path << ": " << (outcome.runs == 1 ? "" : std::to_string(outcome.runs) + " runs, ")
-          << summaryText(outcome.total) << "\n";
+          << runSummaryText(outcome.total) << "\n";
   } catch (const DeckError& e) {
     outcome.exitCode = kExitDeckError;
     outcome.message = e.what();
+    keepLog("failed", e.what());
+    outcome.message += keptText();
   } catch (const AnalysisError& e) {
     outcome.exitCode = kExitAnalysisFailed;
-    outcome.message = e.what();
+    keepLog("failed", e.what());
+    outcome.message = e.what() + keptText();
+  } catch (const Interrupted& e) {
+    outcome.exitCode = interruptExitCode(e.signal());
+    outcome.interrupted = e.signal();
+    const std::string msg = path + ": " + e.what();
+    keepLog("interrupted", msg);
+    outcome.message = msg + keptText();
+  } catch (const IoError& e) {
+    outcome.exitCode = kExitInternal;
+    const std::string msg = path + ": I/O error: " + e.what();
+    keepLog("failed", msg);
+    outcome.message = msg + keptText();
+  } catch (const std::filesystem::filesystem_error& e) {
+    outcome.exitCode = kExitInternal;
+    std::string msg = path + ": I/O error: " + e.code().message();
+    if (!e.path1().empty()) msg += ": '" + e.path1().string() + "'";
+    keepLog("failed", msg);
+    outcome.message = msg + keptText();
   } catch (const std::exception& e) {
     outcome.exitCode = kExitInternal;
-    outcome.message = std::string(path) + ": internal error: " + e.what();
+    const std::string msg = std::string(path) + ": internal error: " + e.what();
+    keepLog("failed", msg);
+    outcome.message = msg + keptText();
   }
   return outcome;
 }

@@ -14,6 +14,7 @@
 #include "elements/Joints.h"
 #include "macro/DeckParser.h"
 #include "macro/DeckReader.h"
+#include "macro/Interrupt.h"
 #include "macro/MeshBinder.h"
 #include "macro/MeshCommands.h"
 #include "macro/OutputCommands.h"
@@ -76,7 +77,7 @@ void ProblemRun::run() {
     history_->record(*analysis_, true);
     history_->finish();
   }
-  outputs_->finish(history_.get());
+  outputs_->finish(model_, analysis_->state(), history_.get());
   if (model_.ground()) reportDebris();
   progress(true);
 }
@@ -117,13 +118,38 @@ RunSummary ProblemRun::summary() const {
   s.energyError = energyError_;
   s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   s.dynamic = energyStarted_;
+  s.conserving = energyStarted_ && conserving_;
   return s;
+}
+
+std::vector<std::filesystem::path> ProblemRun::keepOutputs(std::string_view tag) noexcept {
+  std::vector<std::filesystem::path> kept;
+  try {
+    if (history_) kept.push_back(history_->keep(tag));
+  } catch (...) {
+    // The history cannot be written either (a full disk): nothing to keep.
+  }
+  try {
+    for (const auto& f : outputs_->keep(tag)) kept.push_back(f);
+  } catch (...) {
+  }
+  return kept;
 }
 
 // ------------------------------------------------------------------ control flow
 
+void ProblemRun::safePoint() {
+  if (options_.safePoint) options_.safePoint();
+  if (history_) history_->check();
+  if (pendingInterrupt() != 0) {
+    const State& s = analysis_->state();
+    throwIfInterrupted("step " + std::to_string(s.step) + " (t = " + fmt("%.6e", s.t) + ")");
+  }
+}
+
 Flow ProblemRun::execList(const std::vector<Macro>& list, bool topLevel) {
   for (const Macro& m : list) {
+    safePoint();
     const Flow f = m.command->run(m, *this);
     // Outside any loop a converged iteration or a reached tmax has no loop to leave.
     if (f == Flow::Stop || (f == Flow::ExitLoop && !topLevel)) return f;
@@ -548,6 +574,8 @@ void ProblemRun::saveRestart(const Macro& m) {
   const std::filesystem::path file = restartPath(m);
   try {
     c2d::saveRestart(file, model_, *analysis_, runState());
+  } catch (const IoError&) {
+    throw;
   } catch (const std::exception& e) {
     fail(m, e.what());
   }
@@ -592,6 +620,9 @@ void ProblemRun::onCommit() {
   }
   if (history_) history_->record(*analysis_);
   if (analysis_->integrator().dynamic()) {
+    const TimeIntegrator& ti = analysis_->integrator();
+    if (ti.kind != TimeIntegrator::Kind::MidPoint || ti.alpha != 0 || ti.betaV != 0)
+      conserving_ = false;
     const Energy en = analysis_->energy();
     const double scale =
         std::abs(en.kinetic) + std::abs(en.strain) + std::abs(en.contact) + std::abs(en.external);

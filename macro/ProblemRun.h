@@ -4,6 +4,7 @@
 // error found before computing), then executed against an Analysis.
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -25,6 +26,9 @@ struct RunOptions {
   std::string label;         // what tells this run apart (sweep values) in titles and legends
   bool progress = false;     // a single updating progress line on stderr
   std::string solver = "auto";
+  // Called at every safe point of the run (between two solution commands), e.g.
+  // to check that the log is still being written.
+  std::function<void()> safePoint;
 };
 
 struct RunSummary {
@@ -32,6 +36,9 @@ struct RunSummary {
   double energyError = 0;  // max |total energy - initial| / max energy scale (dynamic runs)
   double seconds = 0;
   bool dynamic = false;  // some step was dynamic (the energy error means something)
+  // Every dynamic step used the energy conserving scheme (mid-point, alpha = beta = 0):
+  // the energy error should then be small.
+  bool conserving = false;
 };
 
 class ProblemRun {
@@ -45,6 +52,10 @@ class ProblemRun {
   // Execute the bound BATCh blocks; throws AnalysisError when the analysis fails.
   void run();
   RunSummary summary() const;
+  // The run failed or was interrupted: its time history and ParaView collection
+  // kept under names tagged `tag` ("failed", "interrupted"). Never throws;
+  // returns the files kept.
+  std::vector<std::filesystem::path> keepOutputs(std::string_view tag) noexcept;
 
   // --- used by the solution commands ---
   Model& model() { return model_; }
@@ -79,6 +90,7 @@ class ProblemRun {
 
  private:
   Flow execList(const std::vector<Macro>& list, bool topLevel = false);
+  void safePoint();
   Flow retryWithCut(const Macro& loop, const std::string& why);
   [[noreturn]] void fail(const Macro& m, const std::string& what) const;
   std::string historyText() const;
@@ -115,6 +127,7 @@ class ProblemRun {
   int hingeCount_ = 0;
   double energy0_ = 0, energyScale_ = 0, energyError_ = 0;
   bool energyStarted_ = false;
+  bool conserving_ = true;  // no dynamic step with a dissipative integrator so far
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point lastProgress_;
   bool progressShown_ = false;

@@ -438,7 +438,8 @@ class TplotCommand final : public SolutionCommand {
     return solution("TPLOt",
                     "Time histories written every inc steps to <stem>_tplot.csv; records after "
                     "END up to a blank: disp,n,d  velo,n,d  acce,n,d  reac,n,d  stre,e,c "
-                    "(c = 1 N, 2 V, 3 M)  ener  arcl.",
+                    "(c = 1 N, 2 V, 3 M)  ener  arcl. A run that fails or is interrupted "
+                    "keeps its rows as <stem>_tplot.failed.csv or <stem>_tplot.interrupted.csv.",
                     {word("-", ""), num("inc", "output every inc steps", "1")}, "kind,n,d");
   }
   void bind(Macro& m, BindContext& ctx) const override {
