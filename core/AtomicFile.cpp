@@ -19,17 +19,27 @@ std::filesystem::path partPathOf(const std::filesystem::path& path) {
 [[noreturn]] void fail(const std::filesystem::path& path, const std::string& what, int err) {
   std::string msg = "cannot " + what + " '" + path.string() + "'";
   if (err != 0) msg += ": " + std::string(std::strerror(err));
-  throw std::runtime_error(msg);
+  throw IoError(msg);
 }
 
 }  // namespace
 
+std::filesystem::path AtomicFile::tagged(const std::filesystem::path& path, std::string_view tag) {
+  std::filesystem::path name = path.stem();
+  name += ".";
+  name += std::string(tag);
+  name += path.extension();
+  return path.parent_path() / name;
+}
+
 AtomicFile::AtomicFile(std::filesystem::path path)
-    : path_(std::move(path)), part_(partPathOf(path_)) {
+    : path_(std::move(path)),
+      part_(partPathOf(path_)),
+      lastFlush_(std::chrono::steady_clock::now()) {
   if (path_.has_parent_path()) {
     std::error_code ec;
     std::filesystem::create_directories(path_.parent_path(), ec);
-    if (ec) fail(path_.parent_path(), "create directory", ec.value());
+    if (ec) fail(path_.parent_path(), "create the directory", ec.value());
   }
   errno = 0;
   out_.open(part_, std::ios::out | std::ios::trunc | std::ios::binary);
@@ -43,24 +53,64 @@ AtomicFile::~AtomicFile() {
   std::filesystem::remove(part_, ec);
 }
 
-void AtomicFile::commit() {
-  if (committed_) throw std::logic_error("AtomicFile::commit called twice for '" + path_.string() + "'");
+void AtomicFile::check(std::chrono::milliseconds flushInterval) {
+  if (committed_) return;
+  if (out_) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - lastFlush_ < flushInterval) return;
+    lastFlush_ = now;
+    errno = 0;
+    out_.flush();
+    if (out_) return;
+    fail(part_, "write", errno);
+  }
+  // A buffered write failed earlier: flushing again gives the system's reason.
+  out_.clear();
   errno = 0;
   out_.flush();
-  const bool wrote = static_cast<bool>(out_);
   const int err = errno;
+  out_.setstate(std::ios::badbit);
+  fail(part_, "write", err);
+}
+
+void AtomicFile::commit() { commitTo(path_); }
+
+std::filesystem::path AtomicFile::keep(std::string_view tag) {
+  const std::filesystem::path target = tagged(path_, tag);
+  commitTo(target);
+  return target;
+}
+
+void AtomicFile::commitTo(const std::filesystem::path& target) {
+  if (committed_)
+    throw std::logic_error("AtomicFile::commit called twice for '" + path_.string() + "'");
+  errno = 0;
+  const bool before = static_cast<bool>(out_);
+  out_.flush();
+  const bool wrote = before && static_cast<bool>(out_);
+  int err = errno;
+  if (!before) {  // a buffered write failed earlier: the reason comes with a new try
+    out_.clear();
+    errno = 0;
+    out_.flush();
+    err = errno;
+  }
+  errno = 0;
   out_.close();
+  if (err == 0) err = errno;
   if (!wrote || out_.fail()) {
     std::error_code ec;
     std::filesystem::remove(part_, ec);
+    committed_ = true;  // nothing left to commit; the destructor has nothing to remove
     fail(part_, "write", err);
   }
   std::error_code ec;
-  std::filesystem::rename(part_, path_, ec);
+  std::filesystem::rename(part_, target, ec);
   if (ec) {
     std::error_code ignored;
     std::filesystem::remove(part_, ignored);
-    fail(path_, "rename '" + part_.filename().string() + "' to", ec.value());
+    committed_ = true;
+    fail(target, "rename '" + part_.filename().string() + "' to", ec.value());
   }
   committed_ = true;
 }
@@ -71,8 +121,8 @@ void AtomicFile::write(const std::filesystem::path& path, std::string_view conte
   file.commit();
 }
 
-AtomicAppendFile::AtomicAppendFile(std::filesystem::path path, std::string header, std::string footer,
-                                   std::chrono::milliseconds minSyncInterval)
+AtomicAppendFile::AtomicAppendFile(std::filesystem::path path, std::string header,
+                                   std::string footer, std::chrono::milliseconds minSyncInterval)
     : path_(std::move(path)),
       header_(std::move(header)),
       footer_(std::move(footer)),
@@ -81,11 +131,13 @@ AtomicAppendFile::AtomicAppendFile(std::filesystem::path path, std::string heade
 AtomicAppendFile::~AtomicAppendFile() {
   if (closed_ || (written_ && pendingBytes() == 0)) return;
   try {
-    rewrite();
+    rewrite(partPath());
   } catch (...) {
     // Unwinding from another failure: the last synced document stays on disk.
   }
 }
+
+std::filesystem::path AtomicAppendFile::partPath() const { return partPathOf(path_); }
 
 void AtomicAppendFile::append(std::string_view record) {
   if (closed_) throw std::logic_error("append to closed file '" + path_.string() + "'");
@@ -98,17 +150,29 @@ void AtomicAppendFile::sync() {
   if (written_ && minInterval_.count() > 0 &&
       std::chrono::steady_clock::now() - lastWrite_ < minInterval_)
     return;
-  rewrite();
+  rewrite(partPath());
 }
 
 void AtomicAppendFile::close() {
   if (closed_) return;
-  rewrite();
-  closed_ = true;
+  finalize(path_);
 }
 
-void AtomicAppendFile::rewrite() {
-  AtomicFile file(path_);
+std::filesystem::path AtomicAppendFile::keep(std::string_view tag) {
+  const std::filesystem::path target = AtomicFile::tagged(path_, tag);
+  if (!closed_) finalize(target);
+  return target;
+}
+
+void AtomicAppendFile::finalize(const std::filesystem::path& target) {
+  closed_ = true;
+  rewrite(target);
+  std::error_code ec;
+  std::filesystem::remove(partPath(), ec);
+}
+
+void AtomicAppendFile::rewrite(const std::filesystem::path& target) {
+  AtomicFile file(target);
   std::ostream& out = file.stream();
   out.write(header_.data(), static_cast<std::streamsize>(header_.size()));
   out.write(body_.data(), static_cast<std::streamsize>(body_.size()));

@@ -6,25 +6,31 @@
 // commit(), it removes the .part file. So <path> either holds a previous run's
 // file or the complete new one, never a truncated one; a run killed outright
 // (no destructors) leaves at most a "<path>.part", whose name says it is partial.
+// A run that fails or is interrupted keeps what it wrote under a name that says
+// so: keep("failed") renames the .part to "<stem>.failed<ext>" (tagged()).
 // There is no fsync: the guarantee covers an interrupted or failed run, not a
 // crash of the operating system, which keeps an output step cheap.
 //
-// AtomicAppendFile: a document that grows during a run (a CSV time history, the
-// .pvd collection): header, records appended one at a time, footer. Every sync()
-// rewrites "<path>.part" with header + all records so far + footer and renames it
-// over <path>, so the file on disk is at every moment a complete, well-formed
-// document holding a prefix of the records (all of them after close()). A run
-// that ends by an exception still leaves the records of its committed steps: the
-// destructor syncs. A sync costs a rewrite of the whole file; minSyncInterval
-// bounds that cost for long histories (sync() then skips rewrites closer together
-// than the interval; close() always writes).
+// AtomicAppendFile: a document that grows during a run (the .pvd collection):
+// header, records appended one at a time, footer. Every sync() rewrites
+// "<path>.part" with header + all records so far + footer, so that the .part is
+// at every moment a well-formed document holding a prefix of the records (one
+// can watch a run with it). Only close() writes <path>; keep(tag) writes the
+// tagged name instead (a failed or interrupted run), and a destructor without
+// either brings the .part up to date and leaves it. A sync costs a rewrite of the whole
+// file; minSyncInterval bounds that cost for long histories (sync() then skips
+// rewrites closer together than the interval; close() and keep() always write).
 //
-// I/O failures throw std::runtime_error naming the file and the system's reason.
+// Every write is checked (the stream after writing, flush, close, rename): a
+// failure throws IoError naming the file and the system's reason, and leaves no
+// file under the final name.
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <string_view>
+
+#include "core/Error.h"
 
 namespace c2d {
 
@@ -37,41 +43,58 @@ class AtomicFile {
 
   std::ostream& stream() { return out_; }
   void commit();  // close, check every write succeeded, rename over path(); once only
+  // Commit under tagged(path(), tag) instead (the partial result of a failed or
+  // interrupted run); returns that path.
+  std::filesystem::path keep(std::string_view tag);
+  // Throws IoError when a write to the stream has failed so far (cheap; a file
+  // that stays open for a whole run calls it at safe points). Flushes the stream
+  // at most every flushInterval, so that the .part can be watched.
+  void check(std::chrono::milliseconds flushInterval = std::chrono::milliseconds(1000));
   bool committed() const { return committed_; }
   const std::filesystem::path& path() const { return path_; }
   const std::filesystem::path& partPath() const { return part_; }
 
   // The whole content in one call: write + commit.
   static void write(const std::filesystem::path& path, std::string_view content);
+  // "<dir>/<stem>.<tag><ext>": name_tplot.csv -> name_tplot.failed.csv.
+  static std::filesystem::path tagged(const std::filesystem::path& path, std::string_view tag);
 
  private:
+  void commitTo(const std::filesystem::path& target);
+
   std::filesystem::path path_, part_;
   std::ofstream out_;
   bool committed_ = false;
+  std::chrono::steady_clock::time_point lastFlush_;
 };
 
 class AtomicAppendFile {
  public:
   AtomicAppendFile(std::filesystem::path path, std::string header, std::string footer = {},
                    std::chrono::milliseconds minSyncInterval = std::chrono::milliseconds(0));
-  ~AtomicAppendFile();  // syncs unless closed; never throws
+  ~AtomicAppendFile();  // brings the .part up to date (unless closed or kept); never throws
   AtomicAppendFile(const AtomicAppendFile&) = delete;
   AtomicAppendFile& operator=(const AtomicAppendFile&) = delete;
 
   void append(std::string_view record);  // kept in memory until the next sync
-  void sync();                            // make <path> the complete document so far
-  void close();                           // final sync; later appends are an error
+  void sync();                           // make "<path>.part" the complete document so far
+  void close();  // write <path>, remove the .part; later appends are an error
+  // The document so far under AtomicFile::tagged(path(), tag) (a failed or
+  // interrupted run), the .part removed; closes the file. Returns that path.
+  std::filesystem::path keep(std::string_view tag);
   bool closed() const { return closed_; }
   const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path partPath() const;
   std::size_t pendingBytes() const { return body_.size() - syncedBody_; }
 
  private:
-  void rewrite();
+  void rewrite(const std::filesystem::path& target);
+  void finalize(const std::filesystem::path& target);
 
   std::filesystem::path path_;
   std::string header_, footer_, body_;
-  std::size_t syncedBody_ = 0;  // body bytes already on disk
-  bool written_ = false;        // the file exists (header + footer at least)
+  std::size_t syncedBody_ = 0;  // body bytes already in the .part
+  bool written_ = false;        // the .part exists (header + footer at least)
   bool closed_ = false;
   std::chrono::milliseconds minInterval_;
   std::chrono::steady_clock::time_point lastWrite_;

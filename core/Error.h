@@ -1,7 +1,8 @@
 #pragma once
 // The three error channels: DeckError (bad input, with a source location),
 // Status (numerical failure, returned so that step cutting can react), and
-// assertions for broken invariants. AnalysisError ends a run that cannot go on.
+// assertions for broken invariants. AnalysisError ends a run that cannot go on;
+// IoError one whose files cannot be written.
 #include <stdexcept>
 #include <string>
 
@@ -32,6 +33,14 @@ class DeckError : public std::runtime_error {
 // A failed analysis (non-convergence without step cutting, singular tangent, NaN):
 // the message says which step and which command.
 class AnalysisError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// An output or input file that could not be written or read (missing or
+// read-only directory, full disk, failed rename): the message names the path and
+// gives the system's reason.
+class IoError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };

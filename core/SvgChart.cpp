@@ -119,6 +119,20 @@ struct Rect {
 
 }  // namespace
 
+std::string svgTitle(std::string_view title, double cx, double y, double fontSize, double maxWidth) {
+  const double natural = textWidth(title, fontSize);
+  double font = fontSize;
+  bool squeeze = false;
+  if (maxWidth > 0 && natural > maxWidth) {
+    font = std::max(0.6 * fontSize, fontSize * maxWidth / natural);
+    squeeze = textWidth(title, font) > maxWidth * (1 + 1e-9);
+  }
+  std::string o = "<text class=\"title\" x=\"" + px(cx) + "\" y=\"" + px(y) + "\" font-size=\"" + px(font) +
+                  "\" text-anchor=\"middle\"";
+  if (squeeze) o += " textLength=\"" + px(maxWidth) + "\" lengthAdjust=\"spacingAndGlyphs\"";
+  return o + ">" + xmlEscape(title) + "</text>\n";
+}
+
 std::string xmlEscape(std::string_view text) {
   std::string out;
   out.reserve(text.size());
@@ -232,8 +246,9 @@ std::pair<double, double> SvgChart::xRange() const { return xFixed_ ? *xFixed_ :
 std::pair<double, double> SvgChart::yRange() const { return yFixed_ ? *yFixed_ : autoRange(false); }
 
 std::string SvgChart::svg() const {
-  const auto [xlo, xhi] = xRange();
-  const auto [ylo, yhi] = yRange();
+  // Plain variables, not structured bindings: lambdas below capture them.
+  const std::pair<double, double> xr = xRange(), yr = yRange();
+  const double xlo = xr.first, xhi = xr.second, ylo = yr.first, yhi = yr.second;
   const int n = numSeries();
 
   struct Layout {
@@ -434,9 +449,10 @@ std::string SvgChart::svg() const {
       << "\" text-anchor=\"middle\" transform=\"rotate(-90 " << px(x) << ' ' << px(y) << ")\">"
       << xmlEscape(yLabel_) << "</text>\n";
   }
+  // Centred over the plot, within the picture less a margin on either side.
   if (!title_.empty())
-    o << "<text class=\"title\" x=\"" << px(0.5 * (L + R)) << "\" y=\"" << px(T - 18) << "\" font-size=\""
-      << px(kFontTitle) << "\" text-anchor=\"middle\">" << xmlEscape(title_) << "</text>\n";
+    o << svgTitle(title_, 0.5 * (L + R), T - 18, kFontTitle,
+                  2 * std::min(0.5 * (L + R), width_ - 0.5 * (L + R)) - 16);
 
   if (showLegend) {
     o << "<g class=\"legend\">\n<rect x=\"" << px(box.x0) << "\" y=\"" << px(box.y0) << "\" width=\"" << px(boxW)

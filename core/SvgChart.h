@@ -22,6 +22,12 @@ namespace c2d {
 // Text for SVG/XML content and attribute values: & < > " ' escaped.
 std::string xmlEscape(std::string_view text);
 
+// The <text class="title"> element of a picture, centred at (cx, baseline y),
+// never wider than maxWidth: a long title is set in a smaller font (down to
+// 60 % of fontSize) and, if it still does not fit, squeezed to maxWidth
+// (textLength), so that neither edge of the picture clips it.
+std::string svgTitle(std::string_view title, double cx, double y, double fontSize, double maxWidth);
+
 struct SeriesStyle {
   std::string color;     // any SVG color; empty: from the palette by series index
   std::string dash;      // stroke-dasharray ("6,3"), "none" for solid; empty: from the cycle

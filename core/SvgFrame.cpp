@@ -418,9 +418,7 @@ std::string SvgFrame::svg(const Model& model, const State& state) const {
     }
     o << "</g>\n";
   }
-  if (!title_.empty())
-    o << "<text class=\"title\" x=\"" << px(0.5 * width) << "\" y=\"26\" font-size=\"" << px(kFontTitle)
-      << "\" text-anchor=\"middle\">" << xmlEscape(title_) << "</text>\n";
+  if (!title_.empty()) o << svgTitle(title_, 0.5 * width, 26, kFontTitle, width - 16);
   o << "</svg>\n";
   return o.str();
 }

@@ -60,11 +60,17 @@ std::filesystem::path VtkWriter::write(const Model& model, const State& state, d
   const std::filesystem::path path = stepPath(count_);
   AtomicFile::write(path, unstructuredGrid(model, state));
   // The .pvd sits beside the .vtu files: it names them without a directory.
-  pvd_.append("    <DataSet timestep=\"" + num(time) + "\" group=\"\" part=\"0\" file=\"" +
+  pvd_.append("    <DataSet timestep=\"" + timeText(time) + "\" group=\"\" part=\"0\" file=\"" +
               xmlEscape(fileName(stem_, count_)) + "\"/>\n");
   pvd_.sync();
   ++count_;
   return path;
+}
+
+std::string VtkWriter::timeText(double t) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.12g", t == 0 ? 0.0 : t);
+  return buf;
 }
 
 std::string VtkWriter::unstructuredGrid(const Model& model, const State& state) {

@@ -13,8 +13,13 @@
 // committed one after a converged step; the slaves of condensed joints, which
 // are not in the global system, must have been filled in for output.
 //
-// Every file is written atomically (core/AtomicFile.h); the .pvd is rewritten
-// after each .vtu is complete, so it only ever lists complete steps.
+// Every file is written atomically (core/AtomicFile.h). The collection is
+// rewritten as "<stem>.pvd.part" after each .vtu is complete (it only ever lists
+// complete steps and can be opened while the run goes on) and becomes
+// "<stem>.pvd" only when the run completes (finish()); a failed or interrupted
+// run keeps it as "<stem>.failed.pvd" or "<stem>.interrupted.pvd" (keep()).
+// Times are printed with 12 significant digits: a time reached by adding steps
+// reads as the deck's numbers (0.3, not 0.30000000000000004).
 #include <filesystem>
 #include <string>
 
@@ -31,12 +36,18 @@ class VtkWriter {
 
   // Writes the next step and updates the collection; returns the .vtu path.
   std::filesystem::path write(const Model& model, const State& state, double time);
+  // The run completed: the collection becomes "<stem>.pvd".
+  void finish() { pvd_.close(); }
+  // The run failed or was interrupted: the collection under its tagged name.
+  std::filesystem::path keep(std::string_view tag) { return pvd_.keep(tag); }
   int numWritten() const { return count_; }
   std::filesystem::path collectionPath() const;
   std::filesystem::path stepPath(int step) const;
 
   // The text of one .vtu file.
   static std::string unstructuredGrid(const Model& model, const State& state);
+  // A time as the collection prints it.
+  static std::string timeText(double t);
 
  private:
   std::filesystem::path stem_;

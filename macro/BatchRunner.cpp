@@ -2,6 +2,14 @@
 
 #include <sys/wait.h>
 #include <unistd.h>
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
+
+#include <csignal>
+#include <cstring>
+#include <ctime>
+#include <optional>
 
 #include <algorithm>
 #include <cerrno>
@@ -11,6 +19,8 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+
+#include "macro/Interrupt.h"
 
 namespace c2d {
 
@@ -25,16 +35,32 @@ std::string slurp(std::FILE* f) {
   return s;
 }
 
+using Clock = std::chrono::steady_clock;
+
 struct Child {
   std::size_t index = 0;
   pid_t pid = -1;
   std::FILE* output = nullptr;  // the child's stdout and stderr
   std::FILE* result = nullptr;  // "exit runs steps iterations"
-  std::chrono::steady_clock::time_point start;
+  Clock::time_point start;
+  std::optional<Clock::time_point> termSent;  // the timeout's SIGTERM
+  int forwarded = 0;                          // the batch's signal passed on
 };
+
+double secondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 [[noreturn]] void runChild(const std::string& deck, const BatchOptions& options,
                            const SolutionCommands& commands, const Child& c) {
+  // A group of its own: a terminal's Ctrl-C reaches the batch alone, which passes
+  // it on once. The child ends with the batch, even one killed outright.
+  ::setpgid(0, 0);
+#ifdef __linux__
+  ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (::getppid() == 1) ::_exit(kExitInternal);  // the batch is already gone
+#endif
+  installInterruptHandlers();
   ::dup2(fileno(c.output), STDOUT_FILENO);
   ::dup2(fileno(c.output), STDERR_FILENO);
   DeckOptions o = options.deck;
@@ -77,6 +103,9 @@ void clearLine(bool show) {
 }  // namespace
 
 std::string BatchResult::status() const {
+  if (!started) return "not run";
+  if (timedOut) return "timed out";
+  if (interruptedBy) return "interrupted (" + signalName(interruptedBy) + ")";
   if (signal) return "crashed (signal " + std::to_string(signal) + ")";
   switch (exitCode) {
     case kExitOk: return "ok";
@@ -105,11 +134,20 @@ std::vector<BatchResult> runBatch(const std::vector<std::string>& decks, const B
   const std::size_t jobs = options.jobs < 1 ? 1 : static_cast<std::size_t>(options.jobs);
   std::map<pid_t, Child> running;
   std::size_t next = 0, done = 0, failed = 0;
+  for (std::size_t i = 0; i < decks.size(); ++i) results[i].deck = decks[i];
   while (next < decks.size() || !running.empty()) {
-    while (next < decks.size() && running.size() < jobs) {
+    // A signal to the batch: passed on to every running deck once; no new deck starts.
+    const int sig = pendingInterrupt();
+    if (sig != 0)
+      for (auto& [pid, c] : running)
+        if (!c.forwarded) {
+          ::kill(pid, sig);
+          c.forwarded = sig;
+        }
+    while (sig == 0 && next < decks.size() && running.size() < jobs) {
       Child c;
       c.index = next;
-      results[next].deck = decks[next];
+      results[next].started = true;
       c.output = std::tmpfile();
       c.result = std::tmpfile();
       if (!c.output || !c.result) throw std::runtime_error("cannot create a temporary file for a batch run");
@@ -125,19 +163,36 @@ std::vector<BatchResult> runBatch(const std::vector<std::string>& decks, const B
       running.emplace(c.pid, c);
       ++next;
     }
+    if (running.empty()) break;  // interrupted before the remaining decks
     statusLine(options.progress, done, decks.size(), failed, running, decks);
     int status = 0;
-    const pid_t pid = ::waitpid(-1, &status, 0);
+    const pid_t pid = ::waitpid(-1, &status, WNOHANG);
     if (pid < 0) {
       if (errno == EINTR) continue;
-      throw std::runtime_error("waitpid failed in a batch run");
+      throw std::runtime_error(std::string("waitpid failed in a batch run: ") + std::strerror(errno));
+    }
+    if (pid == 0) {
+      // Nothing ended: the timeouts, then a short sleep (a signal cuts it short).
+      for (auto& [p, c] : running) {
+        if (options.timeout > 0 && !c.termSent && secondsSince(c.start) > options.timeout) {
+          ::kill(p, SIGTERM);
+          c.termSent = Clock::now();
+        } else if (c.termSent && secondsSince(*c.termSent) > kGraceSeconds) {
+          ::kill(p, SIGKILL);
+        }
+      }
+      const timespec pause{0, 20'000'000};
+      ::nanosleep(&pause, nullptr);
+      continue;
     }
     const auto it = running.find(pid);
     if (it == running.end()) continue;  // not one of ours
     Child c = it->second;
     running.erase(it);
     BatchResult& r = results[c.index];
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - c.start).count();
+    r.seconds = secondsSince(c.start);
+    r.timedOut = c.termSent.has_value();
+    r.interruptedBy = r.timedOut ? 0 : c.forwarded;
     r.output = slurp(c.output);
     std::istringstream figures(slurp(c.result));
     std::fclose(c.output);
@@ -153,11 +208,16 @@ std::vector<BatchResult> runBatch(const std::vector<std::string>& decks, const B
           r.exitCode == 0)
         r.exitCode = kExitInternal;
     }
+    if (r.timedOut) r.exitCode = kExitTimedOut;
     ++done;
     if (!r.ok()) ++failed;
     clearLine(options.progress);
     out << r.output;
-    if (r.signal) out << r.deck << ": crashed (signal " << r.signal << ")\n";
+    if (r.timedOut)
+      out << r.deck << ": timed out after " << options.timeout << " s"
+          << (r.signal ? " (killed: it did not stop at " + signalName(SIGTERM) + ")" : std::string()) << "\n";
+    else if (r.signal)
+      out << r.deck << ": crashed (" << signalName(r.signal) << ")\n";
     out.flush();
   }
   clearLine(options.progress);
@@ -168,7 +228,7 @@ void printBatchTable(std::ostream& os, const std::vector<BatchResult>& results) 
   std::size_t w = 4;
   for (const BatchResult& r : results) w = std::max(w, r.deck.size());
   char buf[512];
-  std::snprintf(buf, sizeof buf, "%-*s  %-20s %5s %7s %11s %10s  %s\n", static_cast<int>(w), "deck",
+  std::snprintf(buf, sizeof buf, "%-*s  %-22s %5s %7s %11s %10s  %s\n", static_cast<int>(w), "deck",
                 "status", "runs", "steps", "iterations", "wall (s)", "debris");
   os << "\n" << buf;
   int failed = 0;
@@ -182,21 +242,35 @@ void printBatchTable(std::ostream& os, const std::vector<BatchResult>& results) 
                                                                          " of " + std::to_string(r.debrisRuns) + ")"
                                                                    : std::string());
     if (r.ok())
-      std::snprintf(buf, sizeof buf, "%-*s  %-20s %5d %7d %11d %10.2f  %s\n", static_cast<int>(w),
+      std::snprintf(buf, sizeof buf, "%-*s  %-22s %5d %7d %11d %10.2f  %s\n", static_cast<int>(w),
                     r.deck.c_str(), r.status().c_str(), r.runs, r.steps, r.iterations, r.seconds,
                     debris.c_str());
-    else
-      std::snprintf(buf, sizeof buf, "%-*s  %-20s %5s %7s %11s %10.2f  %s\n", static_cast<int>(w),
+    else if (r.started)
+      std::snprintf(buf, sizeof buf, "%-*s  %-22s %5s %7s %11s %10.2f  %s\n", static_cast<int>(w),
                     r.deck.c_str(), r.status().c_str(), "-", "-", "-", r.seconds, debris.c_str());
+    else
+      std::snprintf(buf, sizeof buf, "%-*s  %-22s %5s %7s %11s %10s  %s\n", static_cast<int>(w),
+                    r.deck.c_str(), r.status().c_str(), "-", "-", "-", "-", "-");
     os << buf;
   }
+  int timedOut = 0, interrupted = 0, notRun = 0;
+  for (const BatchResult& r : results) {
+    timedOut += r.timedOut;
+    interrupted += r.interruptedBy != 0;
+    notRun += !r.started;
+  }
   os << results.size() << " deck" << (results.size() == 1 ? "" : "s") << ": "
-     << results.size() - static_cast<std::size_t>(failed) << " ok, " << failed << " failed\n";
+     << results.size() - static_cast<std::size_t>(failed) << " ok, " << failed << " failed";
+  if (timedOut) os << " (" << timedOut << " timed out)";
+  if (interrupted || notRun) os << "; interrupted: " << interrupted << " stopped, " << notRun << " not run";
+  os << "\n";
 }
 
 int batchExitCode(const std::vector<BatchResult>& results) {
   for (const BatchResult& r : results)
-    if (!r.ok()) return r.exitCode != 0 ? r.exitCode : kExitInternal;
+    if (r.started && !r.ok()) return r.exitCode != 0 ? r.exitCode : kExitInternal;
+  for (const BatchResult& r : results)
+    if (!r.started) return kExitInternal;  // the caller reports the signal that stopped the batch
   return 0;
 }
 

@@ -8,9 +8,11 @@
 #include <sstream>
 
 #include "macro/CurveOverlay.h"
+#include "core/AtomicFile.h"
 #include "macro/DeckParser.h"
 #include "macro/Limits.h"
 #include "macro/PlanTable.h"
+#include "macro/Interrupt.h"
 #include "macro/Sweep.h"
 
 namespace c2d {
@@ -85,7 +87,9 @@ std::vector<RunPlan> planRuns(const std::vector<RunInfo>& runs, const std::strin
   return plans;
 }
 
-std::string summaryText(const RunSummary& s) {
+}  // namespace
+
+std::string runSummaryText(const RunSummary& s) {
   char buf[256];
   std::snprintf(buf, sizeof buf, "%d step%s, %d iteration%s, %d cut%s, %d hinge%s", s.steps,
                 s.steps == 1 ? "" : "s", s.iterations, s.iterations == 1 ? "" : "s", s.cuts,
@@ -130,6 +134,21 @@ std::vector<std::string> sweptNames(const std::vector<RunInfo>& runs) {
       if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
   return names;
 }
+
+}  // namespace
+
+std::string energyWarning(const RunSummary& s) {
+  if (!(s.energyError > kEnergyBalanceTolerance)) return {};
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "warning: the energy balance changed by %.2e of the peak energy (more than "
+                "%.0e): a force does work the model does not account for, or the tolerance "
+                "is loose",
+                s.energyError, kEnergyBalanceTolerance);
+  return buf;
+}
+
+namespace {
 
 // Walks the top-level items: PARAmeter blocks, problems, loops, sweeps. In the
 // check pass every problem is bound only (and what names its run is noted); in
@@ -190,6 +209,8 @@ class Walker {
   // The study's table: set before walking when the deck has a SWEEp.
   void setPlanTable(PlanTable table) { planTable_ = std::move(table); }
   const std::optional<PlanTable>& planTable() const { return planTable_; }
+  // The outputs a failed or interrupted run kept (tagged names).
+  const std::vector<std::filesystem::path>& kept() const { return kept_; }
 
  private:
   void runProblem(const Problem& p, Parameters& params) {
@@ -222,13 +243,22 @@ class Walker {
     log_ << "\n  collapse2d  " << p.title << "\n";
     log_ << "  run " << runs_ << " of " << plans_.size() << ", outputs " << ro.stem
          << (plan.label.empty() ? "" : " (" + plan.label + ")") << "\n\n";
+    ro.safePoint = options_.safePoint;
     ProblemRun run(p, params, commands_, ro, log_);
     // A run of a study (SWEEp) that fails is reported and the study goes on;
     // elsewhere a failure ends the deck.
     PlanRow row{runs_, ro.stem, sweep_, true, {}, {}};
     try {
       run.bind(true);
-      run.run();
+      try {
+        run.run();
+      } catch (const Interrupted&) {
+        kept_ = run.keepOutputs("interrupted");
+        throw;
+      } catch (...) {
+        kept_ = run.keepOutputs("failed");
+        throw;
+      }
     } catch (const std::runtime_error& e) {
       const bool expected = dynamic_cast<const AnalysisError*>(&e) || dynamic_cast<const DeckError*>(&e);
       if (sweep_.empty() || !planTable_ || !expected) throw;
@@ -256,9 +286,12 @@ class Walker {
     total_.debrisRuns += s.debrisRuns;
     total_.outsideRuns += s.outsideRuns;
     if (!row.ok) return;
-    log_ << "\n  summary: " << summaryText(s) << "\n";
+    log_ << "\n  summary: " << runSummaryText(s) << "\n";
+    const std::string warning = energyWarning(s);
+    if (!warning.empty()) log_ << "  " << warning << "\n";
     if (console_ && !options_.quiet && plans_.size() > 1)
-      *console_ << "  " << ro.stem << ": " << summaryText(s) << "\n" << std::flush;
+      *console_ << "  " << ro.stem << ": " << runSummaryText(s) << "\n" << std::flush;
+    if (console_ && !warning.empty()) *console_ << ro.stem << ": " << warning << "\n" << std::flush;
     overlay_.add(plan.label, p.title, run.outputs().curves(run.history()));
   }
 
@@ -280,6 +313,7 @@ class Walker {
 
  public:
   int failed() const { return failed_; }
+  std::vector<std::filesystem::path> kept_;
 };
 
 }  // namespace
@@ -288,6 +322,17 @@ std::string shardStem(const std::string& stem, const DeckOptions& options) {
   if (options.shards <= 1) return stem;
   return stem + "_part" + std::to_string(options.shard) + "of" + std::to_string(options.shards);
 }
+
+namespace {
+
+// "out/a.failed.out, out/a_tplot.failed.csv"
+std::string fileList(const std::vector<std::filesystem::path>& files) {
+  std::string s;
+  for (const auto& f : files) s += (s.empty() ? "" : ", ") + f.string();
+  return s;
+}
+
+}  // namespace
 
 DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
                     const SolutionCommands& commands, std::ostream& out) {
@@ -301,6 +346,23 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     for (const DeckWarning& w : warnings.list()) std::cerr << w.str() << "\n";
     outcome.warnings = warnings.list();
   };
+  // The log is written under <log>.part and becomes <log> when the whole deck
+  // has run; a failed or interrupted deck keeps it as <stem>.failed.out or
+  // <stem>.interrupted.out, with the reason as its last lines.
+  std::unique_ptr<AtomicFile> log;
+  std::vector<std::filesystem::path> kept;
+  auto keepLog = [&](std::string_view tag, const std::string& why) {
+    if (!log) return;
+    try {
+      log->stream() << "\n  *** run " << tag << "\n" << why << "\n";
+      kept.insert(kept.begin(), log->keep(tag));
+    } catch (...) {
+      // The log cannot be written (the reason is the message already).
+    }
+  };
+  auto keptText = [&] {
+    return kept.empty() ? std::string() : "\n  computed results kept: " + fileList(kept);
+  };
   try {
     const Deck deck = parseDeck(path);
     // Check pass: bind everything with a scratch parameter table, log discarded.
@@ -310,33 +372,34 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     check.walk(deck.items, checkParams);
     const std::vector<RunPlan> plans = planRuns(check.infos(), stem);
     printWarnings();
+    throwIfInterrupted("the start");
 
     const std::filesystem::path dir =
         options.outDir.empty() ? std::filesystem::path(".") : options.outDir;
     std::filesystem::create_directories(dir);
     const std::string partStem = shardStem(stem, options);
-    const std::filesystem::path logPath =
-        dir / (options.logName.empty() ? partStem + ".out" : options.logName);
-    std::ofstream log(logPath);
-    if (!log) throw std::runtime_error("cannot write the log " + logPath.string());
-    log << "  collapse2d  " << path << "\n";
-    for (const DeckWarning& w : warnings.list()) log << w.str() << "\n";
+    log = std::make_unique<AtomicFile>(dir /
+                                       (options.logName.empty() ? partStem + ".out" : options.logName));
+    log->stream() << "  collapse2d  " << path << "\n";
+    for (const DeckWarning& w : warnings.list()) log->stream() << w.str() << "\n";
+    DeckOptions runOptions = options;
+    runOptions.safePoint = [&log] { log->check(); };
     Parameters params;
-    Walker runner(commands, options, log, &out, plans, stem);
+    Walker runner(commands, runOptions, log->stream(), &out, plans, stem);
     const std::vector<std::string> swept = sweptNames(check.infos());
     if (!swept.empty()) runner.setPlanTable(PlanTable(swept));
     try {
       if (!plans.empty()) runner.walk(deck.items, params);
       for (const auto& f : runner.overlay().write(dir, partStem))
-        log << "\n  overlay of the runs: " << f.filename().string() << "\n";
+        log->stream() << "\n  overlay of the runs: " << f.filename().string() << "\n";
       if (const auto& table = runner.planTable()) {
         const std::filesystem::path file = dir / (partStem + "_plans.csv");
         table->write(file);
-        log << "\n  plans: " << file.filename().string() << " (" << table->rows().size()
-            << " runs, " << table->failed() << " failed)\n";
+        log->stream() << "\n  plans: " << file.filename().string() << " (" << table->rows().size()
+                      << " runs, " << table->failed() << " failed)\n";
       }
-    } catch (const std::exception& e) {
-      log << "\n  *** run failed\n" << e.what() << "\n";
+    } catch (...) {
+      kept = runner.kept();
       throw;
     }
     outcome.total = runner.total();
@@ -348,28 +411,52 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
       outcome.runs = executed;
     }
     if (outcome.failedRuns > 0) {
-      log << "\n  run complete: " << outcome.failedRuns << " of " << executed << " runs failed\n";
+      log->stream() << "\n  run complete: " << outcome.failedRuns << " of " << executed
+                    << " runs failed\n";
       outcome.exitCode = kExitAnalysisFailed;
       outcome.message = path + ": " + std::to_string(outcome.failedRuns) + " of " +
                         std::to_string(executed) + " runs of the study failed (see " +
                         partStem + "_plans.csv and the log)";
     } else {
-      log << "\n  run complete\n";
+      log->stream() << "\n  run complete\n";
     }
+    log->commit();
     if (!options.quiet)
       out << path << ": " << (executed == 1 ? "" : std::to_string(executed) + " runs, ")
           << (outcome.failedRuns ? std::to_string(outcome.failedRuns) + " failed, " : "")
-          << summaryText(outcome.total) << "\n";
+          << runSummaryText(outcome.total) << "\n";
   } catch (const DeckError& e) {
     printWarnings();
     outcome.exitCode = kExitDeckError;
     outcome.message = e.what();
+    keepLog("failed", e.what());
+    outcome.message += keptText();
   } catch (const AnalysisError& e) {
     outcome.exitCode = kExitAnalysisFailed;
-    outcome.message = e.what();
+    keepLog("failed", e.what());
+    outcome.message = e.what() + keptText();
+  } catch (const Interrupted& e) {
+    outcome.exitCode = interruptExitCode(e.signal());
+    outcome.interrupted = e.signal();
+    const std::string msg = path + ": " + e.what();
+    keepLog("interrupted", msg);
+    outcome.message = msg + keptText();
+  } catch (const IoError& e) {
+    outcome.exitCode = kExitInternal;
+    const std::string msg = path + ": I/O error: " + e.what();
+    keepLog("failed", msg);
+    outcome.message = msg + keptText();
+  } catch (const std::filesystem::filesystem_error& e) {
+    outcome.exitCode = kExitInternal;
+    std::string msg = path + ": I/O error: " + e.code().message();
+    if (!e.path1().empty()) msg += ": '" + e.path1().string() + "'";
+    keepLog("failed", msg);
+    outcome.message = msg + keptText();
   } catch (const std::exception& e) {
     outcome.exitCode = kExitInternal;
-    outcome.message = std::string(path) + ": internal error: " + e.what();
+    const std::string msg = std::string(path) + ": internal error: " + e.what();
+    keepLog("failed", msg);
+    outcome.message = msg + keptText();
   }
   return outcome;
 }

@@ -2,6 +2,7 @@
 // Runs a whole deck: parse it (lex, parse), bind every problem of every pass of
 // the top-level loops (all deck errors reported before computing), then run.
 #include <filesystem>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -21,10 +22,20 @@ struct DeckOptions {
   // --shard i/n: only the runs k (0-based over the deck) with k mod n == i - 1;
   // the deck's own outputs (log, plans table, overlays) are named <stem>_part<i>of<n>.
   int shard = 1, shards = 1;
+  // Called at every safe point of a run (the log's write check; tests).
+  std::function<void()> safePoint;
 };
 
-// Exit status of a run.
-enum ExitCode : int { kExitOk = 0, kExitDeckError = 1, kExitAnalysisFailed = 2, kExitInternal = 3 };
+// Exit status of a run: 0 ok, 1 deck error, 2 failed analysis, 3 internal or
+// I/O error (unwritable output), 64 usage error (command line), 128 + N stopped
+// by signal N (130 SIGINT, 143 SIGTERM).
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitDeckError = 1,
+  kExitAnalysisFailed = 2,
+  kExitInternal = 3,
+  kExitUsage = 64
+};
 
 struct DeckOutcome {
   int exitCode = kExitOk;
@@ -33,10 +44,24 @@ struct DeckOutcome {
   int runs = 0;
   std::vector<DeckWarning> warnings;  // printed on stderr and in the log
   int failedRuns = 0;   // runs of a study (SWEEp) that failed; the others ran
+  int interrupted = 0;  // the signal that stopped the deck, 0 when none
 };
 
 // "<stem>_part<i>of<n>" for a shard, "<stem>" otherwise.
 std::string shardStem(const std::string& stem, const DeckOptions& options);
+
+// The summary of a run: steps, iterations, cuts, hinges, joints formed and
+// ruptured, debris outside the site, the largest |M|/Mu, the energy error (the
+// largest change of the energy balance kinetic + strain + contact - external +
+// dissipated over the largest energy of the run, solvers/EnergyAccount.h),
+// wall time.
+std::string runSummaryText(const RunSummary& s);
+// Above this energy error a run is warned about: the balance closes to the
+// Newton tolerance in every analysis, static or dynamic.
+constexpr double kEnergyBalanceTolerance = 1e-6;
+// The warning for a run whose energy balance changed by more than
+// kEnergyBalanceTolerance, else "".
+std::string energyWarning(const RunSummary& s);
 
 DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
                     const SolutionCommands& commands, std::ostream& out);

@@ -168,8 +168,10 @@ class ParaViewCommand final : public SolutionCommand {
         "ParaView output (VTK XML): PVIEw writes the current state as the next file "
         "<stem>_NNNN.vtu of the collection <stem>.pvd (deformed nodes; displacement, rotation, "
         "velocity, joint; per element N, V, M, material, hinge state, jump and position). "
-        "PVIEw,,inc also writes every inc committed steps from then on, so that a collapse "
-        "plays as an animation; PVIEw,OFF stops that.";
+        "PVIEw,,inc also writes every inc committed steps from then on, and the final state, "
+        "so that a collapse plays as an animation; PVIEw,OFF stops that. The collection is "
+        "<stem>.pvd.part until the run completes (<stem>.failed.pvd or <stem>.interrupted.pvd "
+        "if it does not).";
     s.fields = {word("option", "OFF: stop the automatic output"),
                 num("inc", "write every inc committed steps (0: now only)", "0")};
     s.section = CommandSection::Solution;

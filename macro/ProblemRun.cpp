@@ -19,6 +19,7 @@
 #include "elements/Joints.h"
 #include "macro/DeckParser.h"
 #include "macro/DeckReader.h"
+#include "macro/Interrupt.h"
 #include "macro/MeshBinder.h"
 #include "macro/MeshCommands.h"
 #include "macro/OutputCommands.h"
@@ -132,7 +133,7 @@ void ProblemRun::run() {
     history_->record(*analysis_, true);
     history_->finish();
   }
-  outputs_->finish(history_.get());
+  outputs_->finish(model_, analysis_->state(), history_.get());
   if (model_.ground()) reportDebris();
   reportCrossings();
   progress(true);
@@ -199,10 +200,34 @@ RunSummary ProblemRun::summary() const {
   return s;
 }
 
+std::vector<std::filesystem::path> ProblemRun::keepOutputs(std::string_view tag) noexcept {
+  std::vector<std::filesystem::path> kept;
+  try {
+    if (history_) kept.push_back(history_->keep(tag));
+  } catch (...) {
+    // The history cannot be written either (a full disk): nothing to keep.
+  }
+  try {
+    for (const auto& f : outputs_->keep(tag)) kept.push_back(f);
+  } catch (...) {
+  }
+  return kept;
+}
+
 // ------------------------------------------------------------------ control flow
+
+void ProblemRun::safePoint() {
+  if (options_.safePoint) options_.safePoint();
+  if (history_) history_->check();
+  if (pendingInterrupt() != 0) {
+    const State& s = analysis_->state();
+    throwIfInterrupted("step " + std::to_string(s.step) + " (t = " + fmt("%.6e", s.t) + ")");
+  }
+}
 
 Flow ProblemRun::execList(const std::vector<Macro>& list, bool topLevel) {
   for (const Macro& m : list) {
+    safePoint();
     const Flow f = m.command->run(m, *this);
     // Outside any loop a converged iteration or a reached tmax has no loop to leave.
     if (f == Flow::Stop || (f == Flow::ExitLoop && !topLevel)) return f;
@@ -776,6 +801,8 @@ void ProblemRun::saveRestart(const Macro& m) {
   const std::filesystem::path file = restartPath(m);
   try {
     c2d::saveRestart(file, model_, *analysis_, runState(), input_);
+  } catch (const IoError&) {
+    throw;
   } catch (const std::exception& e) {
     fail(m, e.what());
   }

@@ -4,6 +4,7 @@
 // error found before computing), then executed against an Analysis.
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -30,6 +31,9 @@ struct RunOptions {
   bool progress = false;     // a single updating progress line on stderr
   std::string solver = "auto";
   Warnings* warnings = nullptr;  // where bind() puts deck warnings (null: dropped)
+  // Called at every safe point of the run (between two solution commands), e.g.
+  // to check that the log is still being written.
+  std::function<void()> safePoint;
 };
 
 struct RunSummary {
@@ -61,6 +65,10 @@ class ProblemRun {
   // Execute the bound BATCh blocks; throws AnalysisError when the analysis fails.
   void run();
   RunSummary summary() const;
+  // The run failed or was interrupted: its time history and ParaView collection
+  // kept under names tagged `tag` ("failed", "interrupted"). Never throws;
+  // returns the files kept.
+  std::vector<std::filesystem::path> keepOutputs(std::string_view tag) noexcept;
 
   // --- used by the solution commands ---
   Model& model() { return model_; }
@@ -104,6 +112,7 @@ class ProblemRun {
 
  private:
   Flow execList(const std::vector<Macro>& list, bool topLevel = false);
+  void safePoint();
   Flow retryWithCut(const Macro& loop, const std::string& why);
   [[noreturn]] void fail(const Macro& m, const std::string& what) const;
   std::string historyText() const;

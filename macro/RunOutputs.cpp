@@ -152,9 +152,17 @@ void RunOutputs::onCommit(const Model& model, State& state) {
   if (viewEvery_ > 0 && state.step % viewEvery_ == 0) writeView(model, state);
 }
 
-void RunOutputs::finish(const TimeHistory* history) {
+void RunOutputs::finish(const Model& model, State& state, const TimeHistory* history) {
+  if (viewEvery_ > 0) writeView(model, state);
+  if (vtk_) vtk_->finish();
   if (!history) return;
   for (const CurveSpec& c : curves_) plotCurve(c, history);
+}
+
+std::vector<std::filesystem::path> RunOutputs::keep(std::string_view tag) {
+  std::vector<std::filesystem::path> kept;
+  if (vtk_ && vtk_->numWritten() > 0) kept.push_back(vtk_->keep(tag));
+  return kept;
 }
 
 }  // namespace c2d

@@ -71,8 +71,13 @@ class RunOutputs {
 
   // After each committed step (automatic PVIEw output).
   void onCommit(const Model& model, State& state);
-  // End of a run that completed: every curve written again from the whole history.
-  void finish(const TimeHistory* history);
+  // End of a run that completed: every curve written again from the whole
+  // history; with automatic PVIEw output on, the final state is the last .vtu
+  // (whatever the interval); the collection becomes <stem>.pvd.
+  void finish(const Model& model, State& state, const TimeHistory* history);
+  // A run that failed or was interrupted: the collection so far kept under its
+  // tagged name (<stem>.failed.pvd). Returns the files kept.
+  std::vector<std::filesystem::path> keep(std::string_view tag);
 
   // The curves of this run as last written (for the overlays of a parameter study).
   std::vector<CurveData> curves(const TimeHistory* history) const;

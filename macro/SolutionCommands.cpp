@@ -596,7 +596,9 @@ class TplotCommand final : public SolutionCommand {
                     "total = kinetic + strain + contact - external, dissipated (plastic work, the "
                     "mid-point scheme's algorithmic and contact dissipation since the start) and "
                     "balance = total + dissipated, constant to the solver tolerance. A later TPLOt of the "
-                    "same run completes that file and starts <stem>_tplot_2.csv, and so on.",
+                    "same run completes that file and starts <stem>_tplot_2.csv, and so on. A run that "
+                    "fails or is interrupted keeps its rows as <stem>_tplot.failed.csv or "
+                    "<stem>_tplot.interrupted.csv.",
                     {word("-", ""), num("inc", "output every inc steps", "1")}, "kind,n,d");
   }
   void bind(Macro& m, BindContext& ctx) const override {

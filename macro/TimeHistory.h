@@ -6,7 +6,8 @@
 // (disp_n_d, velo_n_d, acce_n_d, reac_n_d, stre_e_c; ener gives kinetic,
 // strain, contact, external, total; arcl gives the arc-length load factor).
 // The file is written under "<name>.part" and renamed when the run completes,
-// so an interrupted run leaves nothing that looks complete.
+// so an interrupted run leaves nothing that looks complete; a run that fails or
+// is interrupted keeps its rows as <stem>_tplot.failed.csv (keep()).
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -32,6 +33,10 @@ class TimeHistory {
   // the residual the commit assembled).
   void record(Analysis& analysis, bool force = false);
   void finish();  // rename into place
+  // The rows so far under AtomicFile::tagged(path(), tag); returns that path.
+  std::filesystem::path keep(std::string_view tag) { return file_.keep(tag); }
+  // Throws IoError when a row could not be written (a safe point of the run).
+  void check() { file_.check(); }
   const std::filesystem::path& path() const { return file_.path(); }
   const std::vector<Column>& columns() const { return columns_; }
   // The values of the last row written (for plots and summaries).

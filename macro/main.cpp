@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
@@ -13,6 +14,7 @@
 #include "macro/DeckRunner.h"
 #include "macro/Help.h"
 #include "macro/Shard.h"
+#include "macro/Interrupt.h"
 #include "solvers/LinearSolver.h"
 
 namespace {
@@ -32,12 +34,19 @@ void usage(std::ostream& os) {
         "  -o DIR          write the outputs in DIR (default: the current directory)\n"
         "  -q, --quiet     no progress line and no summary\n"
         "  -j N            (run) decks run at the same time (default 1)\n"
+        "  --timeout S     (run) stop a deck that runs longer than S seconds (SIGTERM,\n"
+        "                  then SIGKILL 5 s later); the table says \"timed out\"\n"
         "  --solver NAME   linear solver: ";
   const auto names = c2d::linearSolverNames();
   for (std::size_t i = 0; i < names.size(); ++i) os << (i ? ", " : "") << names[i];
   os << " (default auto)\n"
-        "exit status: 0 success, 1 deck error, 2 analysis failed, 3 internal error\n"
-        "  (run: 0 when every deck succeeded, else the status of the first that failed)\n"
+        "exit status: 0 success, 1 deck error, 2 analysis failed, 3 internal or I/O error\n"
+        "  (an output that cannot be written), 64 usage error (unknown option or solver),\n"
+        "  128+N stopped by signal N: SIGINT (130) or SIGTERM (143) stop a run at the next\n"
+        "  step, keep its outputs as <stem>.interrupted.out, <stem>_tplot.interrupted.csv,\n"
+        "  <stem>.interrupted.pvd (a failed run: <stem>.failed.*); a second signal ends it\n"
+        "  at once (run: 0 when every deck succeeded, else the status of the first that\n"
+        "  failed; a signal to the batch is passed on to every running deck)\n"
         "parameter studies: a SWEEp block before a problem runs it once per value set,\n"
         "  SWEEp\n"
         "    ks = -393 -500 -700      ! name = values; several names are zipped\n"
@@ -88,39 +97,54 @@ int batchMain(int argc, char** argv, const c2d::SolutionCommands& commands) {
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (const int known = deckOption(argc, argv, i, options.deck); known != 0) {
-      if (known < 0) return 64;
+      if (known < 0) return c2d::kExitUsage;
     } else if (a == "--shard" && i + 1 < argc) {
       if (!c2d::parseShard(argv[++i], shard)) {
         std::cerr << "collapse2d run: --shard needs i/n with 1 <= i <= n\n";
-        return 64;
+        return c2d::kExitUsage;
       }
     } else if ((a == "-j" || a == "--jobs") && i + 1 < argc) {
       options.jobs = std::atoi(argv[++i]);
       if (options.jobs < 1) {
         std::cerr << "collapse2d run: -j needs a positive number\n";
-        return 64;
+        return c2d::kExitUsage;
+      }
+    } else if (a == "--timeout" && i + 1 < argc) {
+      char* end = nullptr;
+      options.timeout = std::strtod(argv[++i], &end);
+      if (end == argv[i] || *end != '\0' || !(options.timeout > 0)) {
+        std::cerr << "collapse2d run: --timeout needs a positive number of seconds\n";
+        return c2d::kExitUsage;
       }
     } else if (a.rfind("-j", 0) == 0 && a.size() > 2 &&
                std::isdigit(static_cast<unsigned char>(a[2]))) {
       options.jobs = std::max(1, std::atoi(a.c_str() + 2));
     } else if (!deckArgument(a, "collapse2d run", decks)) {
-      return 64;
+      return c2d::kExitUsage;
     }
   }
   if (decks.empty()) {
     usage(std::cerr);
-    return 64;
+    return c2d::kExitUsage;
   }
   if (const std::string clash = c2d::batchStemClash(decks); !clash.empty()) {
     std::cerr << "collapse2d run: " << clash << "\n";
-    return 64;
+    return c2d::kExitUsage;
   }
   decks = c2d::shardDecks(decks, shard, options.deck);
   options.progress = !options.deck.quiet && isatty(STDERR_FILENO);
+  c2d::installInterruptHandlers();
   const auto results = c2d::runBatch(decks, options, commands, std::cout);
   if (!options.deck.quiet) c2d::printBatchTable(std::cout, results);
+  std::cout.flush();
+  if (!std::cout) {
+    std::cerr << "collapse2d run: I/O error: cannot write the standard output: "
+              << std::strerror(errno) << "\n";
+    return c2d::kExitInternal;
+  }
   if (shard.active())
     c2d::writeBatchPart(options.deck.outDir.empty() ? "." : options.deck.outDir, shard, results);
+  if (const int sig = c2d::pendingInterrupt(); sig != 0) return c2d::interruptExitCode(sig);
   return c2d::batchExitCode(results);
 }
 
@@ -143,7 +167,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (const int known = deckOption(argc, argv, i, options); known != 0) {
-      if (known < 0) return 64;
+      if (known < 0) return c2d::kExitUsage;
     } else if (a.rfind("-i", 0) == 0 && a.size() > 2) {
       // FEAP: -iIname reads Iname and writes the log Oname.
       const std::string in = a.substr(2);
@@ -152,14 +176,15 @@ int main(int argc, char** argv) {
       if (!base.empty() && (base[0] == 'I' || base[0] == 'i'))
         options.logName = 'O' + base.substr(1);
     } else if (!deckArgument(a, "collapse2d", decks)) {
-      return 64;
+      return c2d::kExitUsage;
     }
   }
   if (decks.empty()) {
     usage(std::cerr);
-    return 64;
+    return c2d::kExitUsage;
   }
   options.progress = !options.quiet && isatty(STDERR_FILENO);
+  c2d::installInterruptHandlers();
   int status = 0;
   for (const std::string& deck : decks) {
     const c2d::DeckOutcome o = c2d::runDeck(deck, options, commands, std::cout);
@@ -167,6 +192,13 @@ int main(int argc, char** argv) {
       std::cerr << o.message << "\n";
       if (status == 0) status = o.exitCode;
     }
+    if (o.interrupted != 0) return o.exitCode;  // the decks after it are not run
+  }
+  std::cout.flush();
+  if (!std::cout) {
+    std::cerr << "collapse2d: I/O error: cannot write the standard output: " << std::strerror(errno)
+              << "\n";
+    return c2d::kExitInternal;
   }
   return status;
 }

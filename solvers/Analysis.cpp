@@ -132,6 +132,9 @@ void Analysis::updateRates() {
 Status Analysis::advance() {
   Status st = commit();
   if (!st) return st;
+  // A commit with nothing to do skips its refresh; the topology may still have
+  // changed since (HINGE2JOINT right after a converged step).
+  if (assembler_.patternVersion() != model_.topologyVersion()) topologyChanged();
   beginStep(state_.tn + state_.dt, 1.0, true);
   return Status::success();
 }

@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
@@ -80,26 +82,104 @@ TEST(AtomicFile, UnwritablePlaceThrowsWithTheFileName) {
   }
 }
 
-TEST(AtomicAppendFile, EverySyncLeavesACompleteDocument) {
+TEST(AtomicFile, TaggedNameKeepsTheExtension) {
+  EXPECT_EQ(AtomicFile::tagged("out/a_tplot.csv", "failed"), fs::path("out/a_tplot.failed.csv"));
+  EXPECT_EQ(AtomicFile::tagged("a.pvd", "interrupted"), fs::path("a.interrupted.pvd"));
+  EXPECT_EQ(AtomicFile::tagged("Oname", "failed"), fs::path("Oname.failed"));
+}
+
+TEST(AtomicFile, KeepCommitsUnderTheTaggedName) {
+  TempDir dir;
+  AtomicFile file(dir / "h.csv");
+  file.stream() << "t\n0\n";
+  EXPECT_EQ(file.keep("failed"), dir / "h.failed.csv");
+  EXPECT_EQ(readFile(dir / "h.failed.csv"), "t\n0\n");
+  EXPECT_FALSE(fs::exists(dir / "h.csv"));
+  EXPECT_FALSE(fs::exists(dir / "h.csv.part"));
+}
+
+// A full disk, as /dev/full gives it (every write fails with ENOSPC): the
+// ".part" is made a link to it, so that the file's own code path writes there.
+bool linkPartToDevFull(const fs::path& path) {
+  if (!fs::exists("/dev/full")) return false;
+  fs::path part = path;
+  part += ".part";
+  fs::create_symlink("/dev/full", part);
+  return true;
+}
+
+TEST(AtomicFile, FullDiskIsAnIoErrorWithTheReasonAndLeavesNothing) {
+  TempDir dir;
+  const fs::path path = dir / "result.txt";
+  if (!linkPartToDevFull(path)) GTEST_SKIP() << "no /dev/full";
+  try {
+    AtomicFile::write(path, "a result that does not fit\n");
+    FAIL() << "no exception";
+  } catch (const IoError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("result.txt.part"), std::string::npos) << what;
+    EXPECT_NE(what.find(std::strerror(ENOSPC)), std::string::npos) << what;
+  }
+  EXPECT_FALSE(fs::exists(path));
+}
+
+TEST(AtomicFile, CheckReportsAFailedWriteDuringTheRun) {
+  TempDir dir;
+  const fs::path path = dir / "run.out";
+  if (!linkPartToDevFull(path)) GTEST_SKIP() << "no /dev/full";
+  AtomicFile file(path);
+  file.check();  // nothing written yet
+  const std::string line(1000, 'x');
+  // More than a stream buffer: the stream writes (and fails) on its own.
+  for (int i = 0; i < 100; ++i) file.stream() << line << '\n';
+  try {
+    file.check(std::chrono::milliseconds(0));
+    FAIL() << "no exception";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find(std::strerror(ENOSPC)), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(file.commit(), IoError);
+  EXPECT_FALSE(fs::exists(path));
+}
+
+TEST(AtomicFile, MissingDirectoryUnderAFileIsAnIoErrorWithTheReason) {
+  TempDir dir;
+  AtomicFile::write(dir / "plain", "x");
+  try {
+    AtomicFile file(dir / "plain" / "sub" / "r.txt");
+    FAIL() << "no exception";
+  } catch (const IoError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("plain/sub"), std::string::npos) << what;
+    EXPECT_NE(what.find(std::strerror(ENOTDIR)), std::string::npos) << what;
+  }
+}
+
+TEST(AtomicAppendFile, EverySyncLeavesACompleteDocumentUnderPart) {
   TempDir dir;
   const fs::path path = dir / "list.xml";
+  const fs::path part = dir / "list.xml.part";
   AtomicAppendFile file(path, "<list>\n", "</list>\n");
+  EXPECT_EQ(file.partPath(), part);
   file.append("  <item n=\"1\"/>\n");
-  EXPECT_FALSE(fs::exists(path));  // nothing synced yet
+  EXPECT_FALSE(fs::exists(part));  // nothing synced yet
   file.sync();
-  EXPECT_EQ(readFile(path), "<list>\n  <item n=\"1\"/>\n</list>\n");
+  EXPECT_EQ(readFile(part), "<list>\n  <item n=\"1\"/>\n</list>\n");
   file.append("  <item n=\"2\"/>\n");
   EXPECT_EQ(file.pendingBytes(), 16u);
-  EXPECT_EQ(readFile(path), "<list>\n  <item n=\"1\"/>\n</list>\n");  // unchanged until the next sync
+  EXPECT_EQ(readFile(part), "<list>\n  <item n=\"1\"/>\n</list>\n");  // unchanged until the next sync
   file.sync();
   EXPECT_EQ(file.pendingBytes(), 0u);
-  EXPECT_EQ(readFile(path), "<list>\n  <item n=\"1\"/>\n  <item n=\"2\"/>\n</list>\n");
-  EXPECT_FALSE(fs::exists(dir / "list.xml.part"));
+  EXPECT_EQ(readFile(part), "<list>\n  <item n=\"1\"/>\n  <item n=\"2\"/>\n</list>\n");
+  // Only a completed document gets the final name.
+  EXPECT_FALSE(fs::exists(path));
   file.close();
+  EXPECT_EQ(readFile(path), "<list>\n  <item n=\"1\"/>\n  <item n=\"2\"/>\n</list>\n");
+  EXPECT_FALSE(fs::exists(part));
   EXPECT_THROW(file.append("late"), std::logic_error);
 }
 
-TEST(AtomicAppendFile, DestructorKeepsTheRecordsOfAnInterruptedRun) {
+TEST(AtomicAppendFile, DestructorLeavesThePartOfAnInterruptedRun) {
   TempDir dir;
   const fs::path path = dir / "history.csv";
   try {
@@ -110,20 +190,33 @@ TEST(AtomicAppendFile, DestructorKeepsTheRecordsOfAnInterruptedRun) {
     throw std::runtime_error("analysis failed");
   } catch (const std::runtime_error&) {
   }
-  EXPECT_EQ(readFile(path), "time,u\n0,0\n0.1,0.5\n");
-  EXPECT_FALSE(fs::exists(dir / "history.csv.part"));
+  EXPECT_EQ(readFile(dir / "history.csv.part"), "time,u\n0,0\n0.1,0.5\n");
+  EXPECT_FALSE(fs::exists(path));
+}
+
+TEST(AtomicAppendFile, KeepWritesTheTaggedNameAndRemovesThePart) {
+  TempDir dir;
+  AtomicAppendFile file(dir / "c.pvd", "<a>\n", "</a>\n");
+  file.append("  <b/>\n");
+  file.sync();
+  EXPECT_EQ(file.keep("failed"), dir / "c.failed.pvd");
+  EXPECT_EQ(readFile(dir / "c.failed.pvd"), "<a>\n  <b/>\n</a>\n");
+  EXPECT_FALSE(fs::exists(dir / "c.pvd.part"));
+  EXPECT_FALSE(fs::exists(dir / "c.pvd"));
+  EXPECT_TRUE(file.closed());
 }
 
 TEST(AtomicAppendFile, MinimumIntervalThrottlesButCloseWritesAll) {
   TempDir dir;
   const fs::path path = dir / "history.csv";
+  const fs::path part = dir / "history.csv.part";
   AtomicAppendFile file(path, "t\n", "", std::chrono::hours(1));
   file.append("1\n");
   file.sync();  // the first sync always writes
-  EXPECT_EQ(readFile(path), "t\n1\n");
+  EXPECT_EQ(readFile(part), "t\n1\n");
   file.append("2\n");
   file.sync();  // within the interval: skipped
-  EXPECT_EQ(readFile(path), "t\n1\n");
+  EXPECT_EQ(readFile(part), "t\n1\n");
   EXPECT_GT(file.pendingBytes(), 0u);
   file.close();
   EXPECT_EQ(readFile(path), "t\n1\n2\n");
@@ -133,7 +226,10 @@ TEST(AtomicAppendFile, MinimumIntervalThrottlesButCloseWritesAll) {
 TEST(AtomicAppendFile, EmptyDocumentIsStillComplete) {
   TempDir dir;
   const fs::path path = dir / "c.pvd";
-  { AtomicAppendFile file(path, "<a>\n", "</a>\n"); }
+  {
+    AtomicAppendFile file(path, "<a>\n", "</a>\n");
+    file.close();
+  }
   EXPECT_EQ(readFile(path), "<a>\n</a>\n");
 }
 

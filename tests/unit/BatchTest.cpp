@@ -4,9 +4,17 @@
 // first failure's; decks whose outputs would collide are refused.
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "macro/BatchRunner.h"
+#include "macro/Interrupt.h"
 #include "tests/unit/RunDeckSupport.h"
 
 namespace c2d {
@@ -75,6 +83,99 @@ TEST(Batch, AllGoodIsExitZeroAndAnalysisFailureIsTwo) {
   EXPECT_TRUE(r[0].ok());
   EXPECT_EQ(r[1].exitCode, kExitAnalysisFailed) << r[1].output;
   EXPECT_EQ(batchExitCode(r), kExitAnalysisFailed);
+}
+
+// A loading in a hundred million steps: it runs until it is stopped.
+std::string endlessDeck() {
+  return kParams + testing::cantileverProblem(testing::rampBatch(100000000, "", ""), testing::rampData());
+}
+
+TEST(Batch, TimeoutStopsAHangingDeckAndTheTableSaysSo) {
+  DeckTempDir dir;
+  const std::string endless = dir.write("endless.inp", endlessDeck());
+  const std::string good =
+      dir.write("g.inp", kParams + testing::cantileverProblem(testing::rampBatch(1, "", ""), testing::rampData()));
+  BatchOptions o;
+  o.deck.outDir = dir.path() / "out";
+  o.deck.quiet = true;
+  o.jobs = 2;
+  o.timeout = 1.0;
+  const SolutionCommands commands;
+  std::ostringstream out;
+  const auto r = runBatch({endless, good}, o, commands, out);
+  EXPECT_TRUE(r[0].timedOut);
+  EXPECT_EQ(r[0].status(), "timed out");
+  EXPECT_EQ(r[0].exitCode, kExitTimedOut);
+  EXPECT_GE(r[0].seconds, 1.0);
+  EXPECT_LT(r[0].seconds, 1.0 + kGraceSeconds);  // it stopped at SIGTERM, not SIGKILL
+  EXPECT_TRUE(r[1].ok()) << r[1].output;
+  EXPECT_EQ(batchExitCode(r), kExitTimedOut);
+  EXPECT_NE(out.str().find("endless.inp: timed out after 1 s"), std::string::npos) << out.str();
+  // The stopped deck kept what it computed.
+  EXPECT_TRUE(std::filesystem::exists(o.deck.outDir / "endless.interrupted.out"));
+  EXPECT_TRUE(std::filesystem::exists(o.deck.outDir / "endless_tplot.interrupted.csv"));
+  std::ostringstream table;
+  printBatchTable(table, r);
+  EXPECT_NE(table.str().find("timed out"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("(1 timed out)"), std::string::npos) << table.str();
+}
+
+TEST(Batch, SignalToTheBatchStopsEveryRunningDeck) {
+  // The batch in a process of its own (it installs the handlers, as main does);
+  // SIGTERM to it reaches both running decks, the third is not started, and the
+  // table says which were interrupted.
+  DeckTempDir dir;
+  const std::string e1 = dir.write("e1.inp", endlessDeck());
+  const std::string e2 = dir.write("e2.inp", endlessDeck());
+  const std::string g = dir.write("g.inp", kParams + testing::cantileverProblem(testing::rampBatch(1, "", ""),
+                                                                              testing::rampData()));
+  const std::filesystem::path outDir = dir.path() / "out";
+  const std::filesystem::path tableFile = dir.path() / "table.txt";
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    installInterruptHandlers();
+    BatchOptions o;
+    o.deck.outDir = outDir;
+    o.deck.quiet = true;
+    o.jobs = 2;
+    const SolutionCommands commands;
+    std::ostringstream out;
+    const auto r = runBatch({e1, e2, g}, o, commands, out);
+    std::ostringstream table;
+    printBatchTable(table, r);
+    std::ofstream(tableFile) << table.str() << out.str();
+    ::_exit(pendingInterrupt() ? interruptExitCode(pendingInterrupt()) : batchExitCode(r));
+  }
+  // Both decks have started their logs.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!(std::filesystem::exists(outDir / "e1.out.part") && std::filesystem::exists(outDir / "e2.out.part")) &&
+         std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  ::kill(pid, SIGTERM);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM);
+  std::ifstream in(tableFile);
+  const std::string table((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The table's row of a deck.
+  auto row = [&](const std::string& deck) {
+    const auto b = table.find(deck + " ");
+    return b == std::string::npos ? std::string() : table.substr(b, table.find('\n', b) - b);
+  };
+  EXPECT_NE(row(e1).find("interrupted (SIGTERM)"), std::string::npos) << table;
+  EXPECT_NE(row(e2).find("interrupted (SIGTERM)"), std::string::npos) << table;
+  EXPECT_NE(row(g).find("not run"), std::string::npos) << table;
+  EXPECT_NE(table.find("interrupted: 2 stopped, 1 not run"), std::string::npos) << table;
+  // Each deck stopped at a step of its own and kept its outputs: the children
+  // ended (the batch waited for them) and left nothing half-written.
+  for (const char* stem : {"e1", "e2"}) {
+    EXPECT_TRUE(std::filesystem::exists(outDir / (std::string(stem) + ".interrupted.out"))) << stem;
+    EXPECT_FALSE(std::filesystem::exists(outDir / (std::string(stem) + ".out.part"))) << stem;
+  }
 }
 
 TEST(Batch, CollidingOutputsAreRefused) {

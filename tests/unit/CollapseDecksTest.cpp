@@ -2,6 +2,7 @@
 // the energy balance of the conserving mid-point scheme, through the whole deck
 // path (GRAVity, CONTact, DYNA,ENERgy, TPLOt ener).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -20,7 +21,9 @@ using Columns = std::map<std::string, std::vector<double>>;
 
 // Runs a deck into a scratch directory and reads the TPLOt file <stem>_tplot.csv.
 Columns runAndRead(const std::string& deck, const std::string& stem) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("c2d_collapse_" + stem);
+  // One directory per process: tests run in parallel (and other builds' tests) read their own files.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("c2d_collapse_" + stem + "_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   DeckOptions opt;
   opt.outDir = dir;

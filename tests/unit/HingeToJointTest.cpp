@@ -138,6 +138,21 @@ double chordAngle(const Model& m, const State& s, int a, int b) {
   return std::atan2(d.y(), d.x());
 }
 
+TEST(HingeToJoint, TheNextStepNumbersTheNewNodes) {
+  // The step after HINGE2JOINT begins with advance() on a committed state: the
+  // dof map must cover the slave node the joint added before the step starts.
+  Model m = softeningCantilever();
+  Analysis an(m);
+  an.setLoadFunction(1, ProportionalLoad::ramp());
+  an.setDt(1e-3);
+  for (int s = 0; s < 30; ++s) ASSERT_TRUE(solveStep(an)) << "step " << s;
+  ASSERT_TRUE(an.commit().ok);
+  ASSERT_EQ(hingeToJoint(m, an.state()).size(), 1u);
+  ASSERT_TRUE(an.advance());
+  EXPECT_EQ(an.assembler().dofs().numNodes(), m.numNodes());
+  EXPECT_EQ(an.state().u.size(), 3 * m.numNodes());
+}
+
 TEST(HingeToJoint, SoftenedCantileverBecomesAPendulumWithContinuousSectionForces) {
   Model m = softeningCantilever();
   Analysis an(m);

@@ -40,11 +40,14 @@ struct XmlNode {
     if (pred(*this)) out.push_back(this);
     for (const XmlNode& c : children) c.collect(pred, out);
   }
-  std::vector<const XmlNode*> all(const std::string& tag, const std::string& cls = {}) const {
+  // Pointers into this node: not on a temporary, whose pointers would dangle
+  // as soon as the statement ends.
+  std::vector<const XmlNode*> all(const std::string& tag, const std::string& cls = {}) const& {
     std::vector<const XmlNode*> out;
     collect([&](const XmlNode& n) { return n.name == tag && (cls.empty() || n.attr("class") == cls); }, out);
     return out;
   }
+  std::vector<const XmlNode*> all(const std::string& tag, const std::string& cls = {}) const&& = delete;
 };
 
 class XmlReader {

@@ -56,6 +56,25 @@ TEST(PView, CollectionEveryIncSteps) {
   EXPECT_FALSE(std::filesystem::exists(r.out / "pv_0003.vtu"));
 }
 
+TEST(PView, FinalStateEndsTheCollection) {
+  // Five steps, output every second: the initial state, steps 2 and 4, and the
+  // final step 5 although 5 is not a multiple of 2. Times as the deck gives them.
+  DeckTempDir dir;
+  const auto r = testing::runDeckText(
+      dir, "fin.inp",
+      kParams + testing::cantileverProblem(testing::rampBatch(5, "  PVIEw,,2\n", ""), testing::rampData()));
+  ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
+  const XmlNode pvd = XmlReader::parse(readFile(r.out / "fin.pvd"));
+  const auto sets = pvd.all("DataSet");
+  ASSERT_EQ(sets.size(), 4u);
+  const char* times[] = {"0", "0.4", "0.8", "1"};
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(sets[i]->attr("timestep"), times[i]);
+  const XmlNode last = XmlReader::parse(readFile(r.out / "fin_0003.vtu"));
+  const auto u = numbers(dataArray(last, "displacement")->text);
+  ASSERT_EQ(u.size(), 9u);
+  EXPECT_NEAR(u[7], testing::cantileverTip(10, 3, 2), 1e-15);
+}
+
 TEST(PView, OffStopsTheAutomaticOutput) {
   DeckTempDir dir;
   // Every step from the start; off after two loaded steps. TIME commits the
@@ -69,7 +88,8 @@ TEST(PView, OffStopsTheAutomaticOutput) {
       "  PVIEw\n";
   const auto r = testing::runDeckText(dir, "off.inp", kParams + testing::cantileverProblem(batch, testing::rampData()));
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
-  const auto sets = XmlReader::parse(readFile(r.out / "off.pvd")).all("DataSet");
+  const XmlNode pvd = XmlReader::parse(readFile(r.out / "off.pvd"));
+  const auto sets = pvd.all("DataSet");
   ASSERT_EQ(sets.size(), 3u);
   EXPECT_DOUBLE_EQ(std::stod(sets[0]->attr("timestep")), 0);
   EXPECT_DOUBLE_EQ(std::stod(sets[1]->attr("timestep")), 0.25);

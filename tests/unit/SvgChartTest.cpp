@@ -247,5 +247,45 @@ TEST(SvgChart, SpansAndSaveAgree) {
   EXPECT_EQ(testing::readFile(dir / "chart.svg"), c.svg());
 }
 
+// The drawn width of a title: its textLength, or the estimate of the font
+// (0.56 font size per character, as the writer estimates it).
+double titleWidth(const XmlNode& t) {
+  if (t.has("textLength")) return std::stod(t.attr("textLength"));
+  return 0.56 * std::stod(t.attr("font-size")) * static_cast<double>(t.text.size());
+}
+
+TEST(SvgChart, LongTitleFitsInThePicture) {
+  const std::string title(200, 'W');
+  SvgChart chart;
+  chart.setTitle(title).addSeries("a", {{0, 0}, {1, 1}});
+  const XmlNode root = XmlReader::parse(chart.svg());
+  const auto t = root.all("text", "title");
+  ASSERT_EQ(t.size(), 1u);
+  EXPECT_EQ(t[0]->text, title);
+  const double x = std::stod(t[0]->attr("x")), w = titleWidth(*t[0]);
+  const double width = std::stod(root.attr("width"));
+  EXPECT_GE(x - 0.5 * w, 0.0);
+  EXPECT_LE(x + 0.5 * w, width);
+  // A short title keeps its font.
+  SvgChart small;
+  small.setTitle("short").addSeries("a", {{0, 0}, {1, 1}});
+  const XmlNode r2 = XmlReader::parse(small.svg());
+  EXPECT_EQ(r2.all("text", "title")[0]->attr("font-size"), "15");
+  EXPECT_FALSE(r2.all("text", "title")[0]->has("textLength"));
+}
+
+TEST(SvgTitle, ShrinksThenSqueezes) {
+  // 40 characters at 15 px: 336 px. In 300 px: a smaller font, no squeezing.
+  const XmlNode a = XmlReader::parse(svgTitle(std::string(40, 'x'), 150, 20, 15, 300));
+  EXPECT_LT(std::stod(a.attr("font-size")), 15);
+  EXPECT_FALSE(a.has("textLength"));
+  EXPECT_LE(titleWidth(a), 300 + 1e-9);
+  // 200 characters in 300 px: the smallest font (9 px) and squeezed to 300 px.
+  const XmlNode b = XmlReader::parse(svgTitle(std::string(200, 'x'), 150, 20, 15, 300));
+  EXPECT_EQ(b.attr("font-size"), "9");
+  EXPECT_EQ(b.attr("textLength"), "300");
+  EXPECT_EQ(b.attr("lengthAdjust"), "spacingAndGlyphs");
+}
+
 }  // namespace
 }  // namespace c2d

@@ -90,6 +90,23 @@ TEST(SvgFrame, WellFormedWithOnePathPerElement) {
   EXPECT_TRUE(root.all("g", "ground").empty());
 }
 
+TEST(SvgFrame, LongTitleFitsInThePicture) {
+  Model m = portal();
+  State st;
+  st.resize(m.numNodes());
+  const std::string title =
+      "six-story two-bay frame, 288 elements: collapse with the energy decaying scheme (alpha = 0.1, "
+      "beta = 0.1), gravity and ground contact (ks = -393, Mu = 120): step 4267, t = 158.25";
+  const XmlNode root = XmlReader::parse(SvgFrame().setTitle(title).svg(m, st));
+  const auto t = root.all("text", "title");
+  ASSERT_EQ(t.size(), 1u);
+  const double w = t[0]->has("textLength") ? std::stod(t[0]->attr("textLength"))
+                                           : 0.56 * std::stod(t[0]->attr("font-size")) * title.size();
+  const double x = std::stod(t[0]->attr("x")), width = std::stod(root.attr("width"));
+  EXPECT_GE(x - 0.5 * w, 0.0);
+  EXPECT_LE(x + 0.5 * w, width);
+}
+
 TEST(SvgFrame, EqualScalingOfBothAxes) {
   Model m = portal();
   State st;

@@ -154,8 +154,10 @@ TEST(VtkWriter, SeriesFilesAndCollectionValidAfterEveryStep) {
     const fs::path vtu = writer.write(f.model, f.state, times[k]);
     EXPECT_EQ(vtu.filename().string(), "collapse_000" + std::to_string(k) + ".vtu");
     EXPECT_EQ(testing::readFile(vtu), VtkWriter::unstructuredGrid(f.model, f.state));
-    // The collection lists exactly the steps written so far.
-    const XmlNode pvd = XmlReader::parse(testing::readFile(dir / "collapse.pvd"));
+    // The collection so far (under .part: the run is not complete) lists
+    // exactly the steps written so far.
+    EXPECT_FALSE(fs::exists(dir / "collapse.pvd"));
+    const XmlNode pvd = XmlReader::parse(testing::readFile(dir / "collapse.pvd.part"));
     EXPECT_EQ(pvd.attr("type"), "Collection");
     const auto sets = pvd.all("DataSet");
     ASSERT_EQ(sets.size(), k + 1);
@@ -167,8 +169,35 @@ TEST(VtkWriter, SeriesFilesAndCollectionValidAfterEveryStep) {
   }
   EXPECT_EQ(writer.numWritten(), 3);
   EXPECT_EQ(writer.collectionPath(), dir / "collapse.pvd");
+  writer.finish();
+  const XmlNode done = XmlReader::parse(testing::readFile(dir / "collapse.pvd"));
+  EXPECT_EQ(done.all("DataSet").size(), 3u);
   for (const auto& entry : fs::directory_iterator(dir.path()))
     EXPECT_NE(entry.path().extension(), ".part") << entry.path();
+}
+
+TEST(VtkWriter, KeptCollectionOfAFailedRun) {
+  testing::TempDir dir;
+  Fixture f = sample();
+  VtkWriter writer(dir / "c");
+  writer.write(f.model, f.state, 0);
+  writer.write(f.model, f.state, 0.5);
+  EXPECT_EQ(writer.keep("failed"), dir / "c.failed.pvd");
+  const XmlNode pvd = XmlReader::parse(testing::readFile(dir / "c.failed.pvd"));
+  EXPECT_EQ(pvd.all("DataSet").size(), 2u);
+  EXPECT_FALSE(fs::exists(dir / "c.pvd"));
+  EXPECT_FALSE(fs::exists(dir / "c.pvd.part"));
+}
+
+TEST(VtkWriter, TimesWithoutRoundingNoise) {
+  // Times reached by adding steps: printed as the deck's numbers.
+  EXPECT_EQ(VtkWriter::timeText(0.1 + 0.2), "0.3");
+  double t = 0;
+  for (int i = 0; i < 1000; ++i) t += 0.01;
+  EXPECT_EQ(VtkWriter::timeText(t), "10");
+  EXPECT_EQ(VtkWriter::timeText(158.25), "158.25");
+  EXPECT_EQ(VtkWriter::timeText(1e-9), "1e-09");
+  EXPECT_EQ(VtkWriter::timeText(-0.0), "0");
 }
 
 }  // namespace
