@@ -114,6 +114,8 @@ std::string runSummaryText(const RunSummary& s) {
   return out + buf;
 }
 
+namespace {
+
 // A failure as the plans table gives it: its first line, the deck named
 // without its directory ("deck.inp:41:5: error: ...").
 std::string failureReason(const std::string& what) {

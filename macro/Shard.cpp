@@ -118,6 +118,8 @@ std::vector<BatchResult> readBatchCsv(const std::string& text) {
     if (c.size() != 10) throw std::runtime_error("a batch table row without 10 cells: " + line);
     BatchResult r;
     r.deck = c[0];
+    r.started = c[1] != "not run";
+    r.timedOut = c[1] == "timed out";
     r.exitCode = std::stoi(c[2]);
     r.signal = std::stoi(c[3]);
     r.runs = std::stoi(c[4]);

@@ -549,7 +549,14 @@ Status Analysis::commit() {
   }
   state_.commit();
   dirty_ = false;
-  if (topology_.afterCommit(model_, state_)) topologyChanged();
+  if (topology_.afterCommit(model_, state_)) {
+    // The new elements at the committed state, so that the reactions and
+    // section forces reported for this step are current (statics: a dynamic
+    // evaluation at t_n would move the joints' relative rates).
+    topologyChanged();
+    if (!integrator_.dynamic())
+      if (Status ev = evaluateState(); !ev) return ev;
+  }
   if (onCommit) onCommit();
   return Status::success();
 }

@@ -41,6 +41,7 @@ TEST(Shard, ParseAndSelect) {
 
 TEST(Shard, BatchCsvRoundTrip) {
   BatchResult a;
+  a.started = true;
   a.deck = "dir,with comma/a.inp";
   a.runs = 3;
   a.steps = 10;
@@ -49,6 +50,7 @@ TEST(Shard, BatchCsvRoundTrip) {
   a.debrisRuns = 3;
   a.outsideRuns = 1;
   BatchResult b;
+  b.started = true;
   b.deck = "b.inp";
   b.exitCode = kExitAnalysisFailed;
   const auto back = readBatchCsv(batchCsv({a, b}));
