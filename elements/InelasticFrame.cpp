@@ -125,24 +125,9 @@ SectionForces InelasticFrame::sectionForces() const { return trial_.forces; }
 
 double InelasticFrame::hingeDemand() const { return law_.demand(trial_.section); }
 
-void InelasticFrame::activateHinge() {
-  if (!law_.canActivate(trial_.section)) return;
-  trial_.section.hingeActive = true;
-  trial_.section.hingeSign = trial_.forces.M >= 0 ? 1.0 : -1.0;
-}
+void InelasticFrame::activateHinge() { law_.open(trial_.section); }
 
-HingeInfo InelasticFrame::hinge() const {
-  const HingedBendingState& s = trial_.section;
-  HingeInfo h;
-  h.active = s.hingeActive;
-  h.failed = s.hingeFailed;
-  h.position = 0.5;
-  h.jump = s.jump.alpha;
-  h.moment = trial_.forces.M;
-  h.softening = s.jump.xi;
-  if (law_.softening()) h.ultimate = law_.softening()->Mu();
-  return h;
-}
+HingeInfo InelasticFrame::hinge() const { return law_.info(trial_.section); }
 
 // ------------------------------------------------------------ restart files
 

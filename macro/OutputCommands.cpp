@@ -49,8 +49,9 @@ const char* kColumnHint =
 // its columns the way its TPLOt records do.
 std::string resolveColumn(const Record& rec, std::size_t i, const Parameters& params) {
   const std::string c = toLower(rec.text(i));
-  for (const char* w : {"time", "prop", "kinetic", "strain", "contact", "external", "total",
-                        "dissipated", "balance", "arcl"})
+  for (const char* w : {"time", "prop", "arcl"})
+    if (c == w) return c;
+  for (const char* w : kEnergyColumns)
     if (c == w) return c;
   const auto first = c.find('_'), last = c.rfind('_');
   if (first != 4 || last <= first + 1 || last + 2 != c.size() || c.back() < '1' || c.back() > '3') return {};
@@ -222,9 +223,7 @@ std::vector<std::string> timeHistoryColumns(const Macro& tplot, const Parameters
   for (const Record& rec : tplot.data) {
     const std::string k = commandKey(rec.text(0));
     if (k == "ener") {
-      for (const char* e :
-           {"kinetic", "strain", "contact", "external", "total", "dissipated", "balance"})
-        cols.push_back(e);
+      for (const char* e : kEnergyColumns) cols.push_back(e);
     } else if (k == "arcl") {
       cols.push_back("arcl");
     } else if (rec.size() >= 3) {

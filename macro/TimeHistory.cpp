@@ -23,9 +23,7 @@ TimeHistory::TimeHistory(std::filesystem::path path, std::vector<Column> columns
       case Kind::Stre: header_.push_back("stre_" + n + "_" + d); break;
       case Kind::Arcl: header_.push_back("arcl"); break;
       case Kind::Ener:
-        for (const char* e : {"kinetic", "strain", "contact", "external", "total", "dissipated",
-                              "balance"})
-          header_.push_back(e);
+        for (const char* e : kEnergyColumns) header_.push_back(e);
         break;
     }
   }

@@ -8,6 +8,7 @@
 // The file is written under "<name>.part" and renamed when the run completes,
 // so an interrupted run leaves nothing that looks complete; a run that fails or
 // is interrupted keeps its rows as <stem>_tplot.failed.csv (keep()).
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -17,6 +18,10 @@
 #include "solvers/Analysis.h"
 
 namespace c2d {
+
+// The columns of a TPLOt `ener` record, in order (solvers/EnergyAccount.h).
+inline constexpr std::array<const char*, 7> kEnergyColumns = {
+    "kinetic", "strain", "contact", "external", "total", "dissipated", "balance"};
 
 class TimeHistory {
  public:

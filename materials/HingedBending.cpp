@@ -70,6 +70,24 @@ Status HingedBending::respond(double kappaD, double l, const HingedBendingState&
              : Status::failure("bending section: non-finite moment");
 }
 
+HingeInfo HingedBending::info(const HingedBendingState& s) const {
+  HingeInfo h;
+  h.active = s.hingeActive;
+  h.failed = s.hingeFailed;
+  h.position = 0.5;
+  h.jump = s.jump.alpha;
+  h.moment = s.M;
+  h.softening = s.jump.xi;
+  if (softening_) h.ultimate = softening_->Mu();
+  return h;
+}
+
+void HingedBending::open(HingedBendingState& s) const {
+  if (!canActivate(s)) return;
+  s.hingeActive = true;
+  s.hingeSign = s.M >= 0 ? 1.0 : -1.0;
+}
+
 double HingedBending::demand(const HingedBendingState& s) const {
   if (!canActivate(s)) return 0;
   return std::abs(s.M) / softening_->Mu();

@@ -30,6 +30,7 @@
 #include <ostream>
 
 #include "core/Error.h"
+#include "core/Hinge.h"
 #include "core/MaterialSet.h"
 #include "materials/BilinearHardening.h"
 #include "materials/LinearSoftening.h"
@@ -80,6 +81,11 @@ class HingedBending {
   bool canActivate(const HingedBendingState& s) const {
     return softening_ && !s.hingeActive;
   }
+  // The hinge of a section state, at the element's midpoint (core/Hinge.h).
+  HingeInfo info(const HingedBendingState& s) const;
+  // Opens the hinge of a trial state with the sign of its moment (the solver's
+  // decision, core/Hinge.h): the next evaluation takes it from there.
+  void open(HingedBendingState& s) const;
   // Elastic stored energy per unit length, M^2/(2 EI).
   double energyDensity(const HingedBendingState& s) const { return 0.5 * s.M * s.M / EI(); }
 
