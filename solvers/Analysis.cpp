@@ -556,6 +556,7 @@ Status Analysis::commit() {
     topologyChanged();
     if (!integrator_.dynamic())
       if (Status ev = evaluateState(); !ev) return ev;
+    account_.restartFrom(energy());
   }
   if (onCommit) onCommit();
   return Status::success();

@@ -49,6 +49,11 @@ class EnergyAccount {
   Energy energy(const Assembler& a, const State& s) const;
   // Node count changed (nodes appended): keeps the values of the existing nodes.
   void resize(int numNodes);
+  // After a topology change at a committed state (a joint formed or ruptured):
+  // the stored energy the next step starts from is the one of the new model,
+  // so that a jump the change made shows in the balance instead of being
+  // taken back as dissipation in the next step.
+  void restartFrom(const Energy& now) { storedN_ = now.kinetic + now.strain + now.contact; }
 
   void write(std::ostream& out) const;
   void read(std::istream& in);
