@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/SvgNumber.h"
 #include "core/AtomicFile.h"
 
 namespace c2d {
@@ -27,19 +28,6 @@ constexpr double kMarkerSpacing = 30;  // px along the curve between markers
 constexpr double kMarkerSize = 3.5;
 
 // Pixel numbers with two decimals, trailing zeros dropped: compact and exact enough.
-std::string px(double v) {
-  if (!std::isfinite(v)) v = 0;
-  v = std::clamp(v, -1e7, 1e7);
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  std::string s(buf);
-  if (s.find('.') != std::string::npos) {
-    while (s.back() == '0') s.pop_back();
-    if (s.back() == '.') s.pop_back();
-  }
-  if (s == "-0") s = "0";
-  return s;
-}
 
 // Code points of UTF-8 text: the width estimate counts characters, not bytes.
 int textLength(std::string_view s) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/SvgNumber.h"
 #include "core/AtomicFile.h"
 
 namespace c2d {
@@ -14,17 +15,6 @@ namespace {
 constexpr double kWidth = 720, kFrameHeight = 300, kHistHeight = 130;
 constexpr double kLeft = 60, kRight = 20, kTop = 56, kGap = 34, kBottom = 40;
 
-std::string px(double v) {
-  if (!std::isfinite(v)) v = 0;
-  v = std::clamp(v, -1e7, 1e7);
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  std::string s(buf);
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  if (s == "-0") s = "0";
-  return s;
-}
 
 std::string shortNum(double v) {
   char buf[32];

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/SvgNumber.h"
 #include "core/AtomicFile.h"
 #include "core/Hinge.h"
 #include "core/SvgChart.h"
@@ -23,17 +24,6 @@ constexpr double kGlyph = 12;       // px, half-width of a support symbol
 constexpr double kHingeRadius = 4;  // px
 constexpr const char* kHingeColor = "#D62728";
 
-std::string px(double v) {
-  if (!std::isfinite(v)) v = 0;
-  v = std::clamp(v, -1e7, 1e7);
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  std::string s(buf);
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  if (s == "-0") s = "0";
-  return s;
-}
 
 double textWidth(std::string_view s, double fontSize) {
   int n = 0;

@@ -7,8 +7,11 @@
 #include <set>
 
 #include "macro/Expression.h"
+#include "macro/MeshCommands.h"
 
 namespace c2d {
+
+using namespace meshspec;
 
 namespace {
 
@@ -130,26 +133,6 @@ void applySite(MeshContext& ctx, const MeshCommand& cmd) {
     num(*os, s.xmin) << "   xmax ";
     num(*os, s.xmax) << "\n";
   }
-}
-
-FieldSpec expr(std::string name, std::string doc, std::string dflt = {}) {
-  return {std::move(name), FieldKind::Expression, std::move(dflt), std::move(doc)};
-}
-FieldSpec text(std::string name, std::string doc, std::string dflt = {}) {
-  return {std::move(name), FieldKind::Text, std::move(dflt), std::move(doc)};
-}
-
-CommandSpec meshSpec(std::string name, std::string doc, std::vector<FieldSpec> fields,
-                     std::string dataSyntax = {}, std::vector<FieldSpec> dataFields = {}) {
-  CommandSpec s;
-  s.name = std::move(name);
-  s.doc = std::move(doc);
-  s.fields = std::move(fields);
-  s.section = CommandSection::Mesh;
-  s.data = dataSyntax.empty() ? DataForm::None : DataForm::Records;
-  s.dataSyntax = std::move(dataSyntax);
-  s.dataFields = std::move(dataFields);
-  return s;
 }
 
 }  // namespace

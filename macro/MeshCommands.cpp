@@ -17,6 +17,8 @@
 
 namespace c2d {
 
+using namespace meshspec;
+
 // ---------------------------------------------------------------------------
 // MeshContext helpers
 
@@ -977,26 +979,6 @@ void applyNoPrint(MeshContext& ctx, const MeshCommand&) { ctx.print = false; }
 // ---------------------------------------------------------------------------
 // specs
 
-FieldSpec expr(std::string name, std::string doc, std::string dflt = {}) {
-  return {std::move(name), FieldKind::Expression, std::move(dflt), std::move(doc)};
-}
-FieldSpec text(std::string name, std::string doc, std::string dflt = {}) {
-  return {std::move(name), FieldKind::Text, std::move(dflt), std::move(doc)};
-}
-
-CommandSpec meshSpec(std::string name, std::string doc, std::vector<FieldSpec> fields,
-                     std::string dataSyntax = {}, std::vector<FieldSpec> dataFields = {}) {
-  CommandSpec s;
-  s.name = std::move(name);
-  s.doc = std::move(doc);
-  s.fields = std::move(fields);
-  s.section = CommandSection::Mesh;
-  s.data = dataSyntax.empty() ? DataForm::None : DataForm::Records;
-  s.dataSyntax = std::move(dataSyntax);
-  s.dataFields = std::move(dataFields);
-  return s;
-}
-
 std::vector<FieldSpec> nodeValueFields(const std::string& what) {
   return {expr("node", "node number"), expr("ng", "generation increment to the next record", "0"),
           expr(what + "1", "x direction"), expr(what + "2", "y direction"),
@@ -1349,4 +1331,27 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
   ctx.topologyChanged = false;
 }
 
+namespace meshspec {
+
+FieldSpec expr(std::string name, std::string doc, std::string dflt) {
+  return {std::move(name), FieldKind::Expression, std::move(dflt), std::move(doc)};
+}
+FieldSpec text(std::string name, std::string doc, std::string dflt) {
+  return {std::move(name), FieldKind::Text, std::move(dflt), std::move(doc)};
+}
+
+CommandSpec meshSpec(std::string name, std::string doc, std::vector<FieldSpec> fields,
+                     std::string dataSyntax, std::vector<FieldSpec> dataFields) {
+  CommandSpec s;
+  s.name = std::move(name);
+  s.doc = std::move(doc);
+  s.fields = std::move(fields);
+  s.section = CommandSection::Mesh;
+  s.data = dataSyntax.empty() ? DataForm::None : DataForm::Records;
+  s.dataSyntax = std::move(dataSyntax);
+  s.dataFields = std::move(dataFields);
+  return s;
+}
+
+}  // namespace meshspec
 }  // namespace c2d

@@ -19,6 +19,14 @@
 
 namespace c2d {
 
+// Building blocks of the mesh commands' specs (MeshCommands, LoadCommands).
+namespace meshspec {
+FieldSpec expr(std::string name, std::string doc, std::string dflt = {});
+FieldSpec text(std::string name, std::string doc, std::string dflt = {});
+CommandSpec meshSpec(std::string name, std::string doc, std::vector<FieldSpec> fields,
+                     std::string dataSyntax = {}, std::vector<FieldSpec> dataFields = {});
+}  // namespace meshspec
+
 // State of one mesh input, shared by the appliers. Values are evaluated when
 // their record is applied (a later PARAmeter block cannot change them), even
 // for the parts FEAP applies at the end of the mesh input (elements, edge and
