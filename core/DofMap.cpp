@@ -13,7 +13,8 @@ DofMap::DofMap(const Model& model) : version_(model.topologyVersion()) {
   aliased_.assign(nn, 0);
   restrained_.assign(static_cast<size_t>(nn) * kNodeDofs, 0);
   for (int e = 0; e < model.numElements(); ++e)
-    for (int n : model.element(e).nodes()) used_[n] = 1;
+    if (model.hasElement(e))
+      for (int n : model.element(e).nodes()) used_[n] = 1;
   // The slave of a shared joint is attached to its own elements; its translations
   // follow the master's equations.
   std::vector<int> aliasOf(nn, -1);
@@ -49,6 +50,7 @@ void DofMap::orderForFill(const Model& model) {
   if (numEq_ < 3) return;
   std::vector<std::vector<int>> adj(numEq_);
   for (int e = 0; e < model.numElements(); ++e) {
+    if (!model.hasElement(e)) continue;
     const auto eqs = elementEqs(model.element(e));
     for (int i : eqs)
       if (i >= 0)

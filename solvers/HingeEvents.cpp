@@ -23,7 +23,9 @@ const std::vector<std::pair<int, HingeCarrier*>>& HingeEvents::carriers() {
   if (carriersVersion_ == model.topologyVersion()) return carriers_;
   carriers_.clear();
   for (int e = 0; e < model.numElements(); ++e)
-    if (auto* h = dynamic_cast<HingeCarrier*>(&innermost(model.element(e))))
+    if (!model.hasElement(e))
+      continue;
+    else if (auto* h = dynamic_cast<HingeCarrier*>(&innermost(model.element(e))))
       carriers_.emplace_back(e, h);
   carriersVersion_ = model.topologyVersion();
   return carriers_;

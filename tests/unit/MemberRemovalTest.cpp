@@ -1,0 +1,186 @@
+// Members removed during a run (solvers/MemberRemoval, BLASt and REMOve): the
+// GSA column removal of a two-bay frame against the closed form of the released
+// single-degree-of-freedom system (td = 0 and td > 0, a blast time off the step
+// grid), the static removal against the frame without the column, the energy
+// balance through every removal, nodes leaving the model, and the deck errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "tests/unit/RunDeckSupport.h"
+
+namespace c2d {
+namespace {
+
+using testing::DeckTempDir;
+using testing::readCsv;
+using testing::runDeckText;
+
+// A two-bay frame (bays L = 4, storey H = 3, clamped bases 1-3), columns 1
+// (node 1-4) and 2 (3-12), beams 3-10 (nodes 4..12 along the top, node 8 above
+// the middle base), massless; the middle column, when present, is element 11
+// (2-8). Node 8 carries the weight W and the lumped mass m: the released
+// system is one degree of freedom, the vertical motion of node 8 (the other
+// dofs are massless, and by symmetry node 8 does not rotate or sway).
+std::string frame(const std::string& extra, const std::string& batch, const std::string& tplot) {
+  return "PARAmeter\n  L = 4\n  H = 3\n  m = 10\n  W = 100\n\n"
+         "FEAP * * two-bay frame\n  0 0 0 2 3 2\n\n"
+         "COORdinates\n  1 0 0 0\n  2 0 L 0\n  3 0 2*L 0\n  4 1 0 H\n  12 0 2*L H\n\n"
+         "ELEMents\n  1 0 1 1 4\n  2 0 1 3 12\n  3 1 1 4 5\n  10 0 1 11 12\n\n"
+         "MATErial,1\n  FRAMe\n    RESUltant STIFfness 1e7 1e7 1e4\n\n"
+         "BOUNdary\n  1 0 1 1 1\n  2 0 1 1 1\n  3 0 1 1 1\n\n"
+         "FORCe\n  8 0 0 -W 0\n\n"
+         "MASS\n  8 0 m m 0\n\n" +
+         extra + "END\nBATCh\n" + batch + "END\n" + tplot + "\nSTOP\n";
+}
+
+const std::string kColumn = "ELEMents\n  11 0 1 2 8\n\n";
+
+// Static solution: the vertical stiffness k of node 8 without the column, and
+// the column's force N and node 8's deflection v0 with it.
+struct Statics {
+  double k = 0, N = 0, v0 = 0;
+};
+
+Statics statics(const DeckTempDir& dir) {
+  Statics s;
+  const std::string batch = "  TPLOt\n  DT,,1\n  TIME\n  LOOP,,3\n    TANG,,1\n  NEXT\n";
+  // Without the column node 2 is used by no element (a warning).
+  auto r = runDeckText(dir, "open.inp", frame("", batch, "disp,8,2\n"));
+  EXPECT_EQ(r.outcome.exitCode, 0) << r.console;
+  s.k = 100 / -readCsv(r.out / "open_tplot.csv").column("disp_8_2").back();
+  r = runDeckText(dir, "closed.inp", frame(kColumn, batch, "disp,8,2\nreac,2,2\n"));
+  EXPECT_EQ(r.outcome.exitCode, 0) << r.console;
+  const auto csv = readCsv(r.out / "closed_tplot.csv");
+  s.v0 = csv.column("disp_8_2").back();
+  s.N = std::abs(csv.column("reac_2_2").back());
+  return s;
+}
+
+// Displacement of the released SDOF m u'' + k u = N g(t), g rising from 0 to 1
+// linearly over td (a step for td = 0), from rest at t = 0.
+double released(double N, double k, double omega, double td, double t) {
+  if (t <= 0) return 0;
+  if (td <= 0) return N / k * (1 - std::cos(omega * t));
+  const double a = omega * td;
+  if (t <= td) return N / k * (t / td - std::sin(omega * t) / a);
+  return N / k * (1 - (std::sin(omega * t) - std::sin(omega * (t - td))) / a);
+}
+
+struct Removal {
+  std::string scheme;  // DYNAmic option
+  double tb = 0, td = 0, h = 0;
+  int steps = 0;
+};
+
+void expectReleasedSdof(const Removal& c, const std::string& name) {
+  DeckTempDir dir;
+  const Statics s = statics(dir);
+  ASSERT_GT(s.k, 0);
+  ASSERT_GT(s.N, 0.5 * 100);  // the stiff column carries most of the weight
+  const double m = 10;
+  // The trapezoidal rule (the mid-point scheme and average-acceleration
+  // Newmark on a linear system) runs at the frequency tan(w_h h/2) = w h/2.
+  const double omega = std::sqrt(s.k / m);
+  const double omegaH = 2 / c.h * std::atan(omega * c.h / 2);
+  const std::string blast = "BLASt\n  " + std::to_string(c.tb) + " 11 0 0 " + std::to_string(c.td) + "\n\n";
+  const std::string batch = "  DT,," + std::to_string(c.h) +
+                            "\n  TIME\n  LOOP,,3\n    TANG,,1\n  NEXT\n"
+                            "  DYNAmic," + c.scheme + "\n  TPLOt\n  LOOP,," + std::to_string(c.steps) +
+                            "\n    TIME\n    LOOP,,10\n      TANG,,1\n    NEXT\n  NEXT\n";
+  const auto r = runDeckText(dir, name + ".inp", frame(kColumn + blast, batch, "disp,8,2\nener\n"));
+  ASSERT_EQ(r.outcome.exitCode, 0) << r.console;
+  EXPECT_NE(r.log.find("blast  at t = "), std::string::npos) << r.log;
+  EXPECT_NE(r.log.find("element 11 removed"), std::string::npos) << r.log;
+  EXPECT_NE(r.log.find("node 2 leaves the model"), std::string::npos) << r.log;
+  const auto csv = readCsv(r.out / (name + "_tplot.csv"));
+  const auto t = csv.column("time"), v = csv.column("disp_8_2"), balance = csv.column("balance");
+  const auto kinetic = csv.column("kinetic");
+  ASSERT_GT(t.size(), 100u);
+  // A step ends exactly at the blast time (the sub-step's row is in the plot).
+  bool landed = false;
+  double peak = 0, worst = 0, peakEnergy = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    landed = landed || std::abs(t[i] - c.tb) < 1e-12;
+    const double expected = s.v0 - released(s.N, s.k, omegaH, c.td, t[i] - c.tb);
+    peak = std::max(peak, std::abs(expected - s.v0));
+    worst = std::max(worst, std::abs(v[i] - expected));
+    peakEnergy = std::max(peakEnergy, kinetic[i]);
+  }
+  EXPECT_TRUE(landed) << "no step ends at the blast time " << c.tb;
+  // The dynamic amplification: 2 for a sudden removal, less over td.
+  EXPECT_NEAR(peak, (c.td > 0 ? 1.0 : 2.0) * s.N / s.k, (c.td > 0 ? 1.0 : 1e-3) * s.N / s.k);
+  EXPECT_LT(worst, 2e-3 * peak) << "largest difference from the released SDOF";
+  // The energy balance stays closed through the removal and the release.
+  for (double b : balance) EXPECT_NEAR(b, balance.front(), 1e-9 * peakEnergy);
+}
+
+TEST(MemberRemoval, SuddenColumnLossIsTheReleasedSdof) {
+  // tb off the step grid: the step is split there.
+  expectReleasedSdof({"ENERgy,0,0", 0.0035, 0, 0.001, 800}, "sudden");
+}
+
+TEST(MemberRemoval, ColumnForcesReleasedOverTdAreTheRampedSdof) {
+  // td = a fifth of the period T = 0.31 s, Newmark (average acceleration).
+  expectReleasedSdof({"NEWMark,0.25,0.5", 0.002, 0.0625, 0.001, 800}, "ramped");
+}
+
+TEST(MemberRemoval, StaticRemovalGivesTheFrameWithoutTheColumn) {
+  DeckTempDir dir;
+  const Statics s = statics(dir);
+  // REMOve in statics: the next static step is the frame without the column
+  // under the same load, v = W / k; STRE reports the element as removed.
+  const std::string batch =
+      "  TPLOt\n  DT,,1\n  TIME\n  LOOP,,3\n    TANG,,1\n  NEXT\n"
+      "  REMOve,ELEMents,11\n  STRE,,11\n  TIME\n  LOOP,,3\n    TANG,,1\n  NEXT\n";
+  const auto r = runDeckText(dir, "removed.inp", frame(kColumn, batch, "disp,8,2\nener\n"));
+  ASSERT_EQ(r.outcome.exitCode, 0) << r.console;
+  EXPECT_NE(r.log.find("remove at t = 1.000000e+00: element 11 removed, at once"),
+            std::string::npos)
+      << r.log;
+  EXPECT_NE(r.log.find("     11  removed"), std::string::npos) << r.log;
+  const auto csv = readCsv(r.out / "removed_tplot.csv");
+  const auto v = csv.column("disp_8_2");
+  ASSERT_GE(v.size(), 2u);
+  EXPECT_NEAR(v.front(), s.v0, 1e-12);
+  EXPECT_NEAR(v.back(), -100 / s.k, 1e-9 * 100 / s.k);
+  EXPECT_NE(r.log.find(", 1 removed,"), std::string::npos) << r.log;
+}
+
+TEST(MemberRemoval, RemovedTwiceIsAnAnalysisError) {
+  DeckTempDir dir;
+  const std::string batch =
+      "  DT,,1\n  TIME\n  LOOP,,3\n    TANG,,1\n  NEXT\n  REMOve,ELEMents,11\n  REMOve,ELEMents,11\n";
+  const auto r = runDeckText(dir, "twice.inp", frame(kColumn, batch, ""));
+  EXPECT_EQ(r.outcome.exitCode, 2);
+  EXPECT_NE(r.outcome.message.find("element 11 is not in the model (removed before)"),
+            std::string::npos)
+      << r.outcome.message;
+}
+
+TEST(MemberRemoval, BlastDeckErrorsAreLocated) {
+  DeckTempDir dir;
+  const std::string batch = "  DT,,1\n  TIME\n  TANG,,1\n";
+  auto r = runDeckText(dir, "undefined.inp", frame(kColumn + "BLASt\n  1 12\n\n", batch, ""));
+  EXPECT_EQ(r.outcome.exitCode, 1);
+  EXPECT_NE(r.outcome.message.find("undefined.inp:42:5: error: BLASt: element 12 is not defined"),
+            std::string::npos)
+      << r.outcome.message;
+  r = runDeckText(dir, "twice.inp", frame(kColumn + "BLASt\n  1 11\n  2 11\n\n", batch, ""));
+  EXPECT_EQ(r.outcome.exitCode, 1);
+  EXPECT_NE(r.outcome.message.find("element 11 is already removed by an earlier record"),
+            std::string::npos)
+      << r.outcome.message;
+  r = runDeckText(dir, "negative.inp", frame(kColumn + "BLASt\n  1 11 0 0 -1\n\n", batch, ""));
+  EXPECT_EQ(r.outcome.exitCode, 1);
+  EXPECT_NE(r.outcome.message.find("the release time td must be zero or positive"), std::string::npos)
+      << r.outcome.message;
+  r = runDeckText(dir, "option.inp", frame(kColumn, batch + "  REMOve,NODEs,1\n", ""));
+  EXPECT_EQ(r.outcome.exitCode, 1);
+  EXPECT_NE(r.outcome.message.find("unknown option 'NODEs' (ELEMents)"), std::string::npos)
+      << r.outcome.message;
+}
+
+}  // namespace
+}  // namespace c2d
