@@ -148,6 +148,46 @@ TEST(MemberRemoval, StaticRemovalGivesTheFrameWithoutTheColumn) {
   EXPECT_NE(r.log.find(", 1 removed,"), std::string::npos) << r.log;
 }
 
+TEST(MemberRemoval, AfterHingeToJointTheLooseJointIsDissolvedAndThePiecesFall) {
+  // A cantilever (4 elements, lumped mass 0.075 t per element end) turned at
+  // its tip past Mu under self-weight: a hinge opens in element 4, HINGe2joint
+  // makes it a joint at node 4 (slave node 6). Removing elements 1 and 3 leaves
+  // element 2 free and element 4 held only by the tip's rotation restraint:
+  // the joint is dissolved (element 4 takes node 6 as its own), nodes 1 and 4
+  // leave the model, and the two pieces fall: the conserving scheme keeps
+  // their vertical momentum exactly -M g (t - 1), M = 0.3 t.
+  DeckTempDir dir;
+  const std::string deck =
+      "FEAP * * cantilever: hinge, joint, removal\n  0 0 0 2 3 2\n\n"
+      "BLOCk\n  CARTesian 4 0 1 1 1\n  1 0 0\n  2 2 0\n\n"
+      "MATErial,1\n  FRAMe\n    RESUltant STIFfness 3.6e6 1.25e6 77650\n"
+      "    CROSs section 0.12 1.6e-3\n    DENSity,,2.5\n    MASS LUMPed\n"
+      "    HARDening BILInear 37.9 268 29400 272\n    SOFTening LINEar 274 -18000\n\n"
+      "BOUNdary\n  1 0 1 1 1\n  5 0 0 0 1\n\n"
+      "DISPlacement\n  5 0 0 0 0.08\n\n"
+      "GRAVity,,0,-9.81\n\n"
+      "END\nBATCh\n  PROP,,1\n  DT,,0.1\n  LOOP,,10\n    TIME\n    LOOP,,20\n      TANG,,1\n"
+      "    NEXT\n  NEXT\n  HINGe2joint\n  REMOve,ELEMents,1,3,2\n  DYNAmic,ENERgy,0,0\n"
+      "  DT,,0.01\n  TPLOt\n  LOOP,,50\n    TIME\n    LOOP,,20\n      TANG,,1\n    NEXT\n"
+      "  NEXT\nEND\n\nvelo,2,2\nvelo,3,2\nvelo,6,2\nvelo,5,2\nener\n\nSTOP\n";
+  const auto r = runDeckText(dir, "pieces.inp", deck);
+  ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
+  EXPECT_NE(r.log.find("element 4: joint master 4 slave 6"), std::string::npos) << r.log;
+  EXPECT_NE(r.log.find("elements 1, 3 removed, at once; nodes 1, 4 leave the model; 1 joint "
+                       "dissolved"),
+            std::string::npos)
+      << r.log;
+  const auto csv = readCsv(r.out / "pieces_tplot.csv");
+  const auto t = csv.column("time"), balance = csv.column("balance");
+  ASSERT_EQ(t.size(), 50u);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    double p = 0;
+    for (int n : {2, 3, 6, 5}) p += 0.075 * csv.column("velo_" + std::to_string(n) + "_2")[i];
+    EXPECT_NEAR(p, -0.3 * 9.81 * (t[i] - 1), 1e-9) << "t = " << t[i];
+    EXPECT_NEAR(balance[i], balance.front(), 1e-10);
+  }
+}
+
 TEST(MemberRemoval, RemovedTwiceIsAnAnalysisError) {
   DeckTempDir dir;
   const std::string batch =
