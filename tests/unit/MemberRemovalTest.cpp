@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <string>
+#include <vector>
 
 #include "tests/unit/RunDeckSupport.h"
 
@@ -186,6 +188,37 @@ TEST(MemberRemoval, AfterHingeToJointTheLooseJointIsDissolvedAndThePiecesFall) {
     EXPECT_NEAR(p, -0.3 * 9.81 * (t[i] - 1), 1e-9) << "t = " << t[i];
     EXPECT_NEAR(balance[i], balance.front(), 1e-10);
   }
+}
+
+TEST(MemberRemoval, RestartDuringAReleaseContinuesBitForBit) {
+  // Saved while the column's forces are being released (td = 0.05 s from
+  // t = 0.002 s, saved at t = 0.03 s): the released forces, the blast plan and
+  // the empty element slot are in the restart file; the continued run's rows
+  // equal the uninterrupted run's, as text.
+  DeckTempDir dir;
+  const std::string blast = kColumn + "BLASt\n  0.002 11 0 0 0.05\n\n";
+  const std::string start = "  DT,,0.002\n  TIME\n  LOOP,,3\n    TANG,,1\n  NEXT\n"
+                            "  DYNAmic,NEWMark,0.25,0.5\n  TPLOt\n";
+  auto steps = [](int n) {
+    return "  LOOP,," + std::to_string(n) + "\n    TIME\n    LOOP,,10\n      TANG,,1\n    NEXT\n  NEXT\n";
+  };
+  const std::string tplot = "disp,8,2\nener\n";
+  const auto whole = runDeckText(dir, "whole.inp", frame(blast, start + steps(50), tplot));
+  ASSERT_EQ(whole.outcome.exitCode, 0) << whole.outcome.message;
+  const auto first = runDeckText(dir, "first.inp", frame(blast, start + steps(14) + "  SAVE,mid\n", tplot));
+  ASSERT_EQ(first.outcome.exitCode, 0) << first.outcome.message;
+  const auto rest = runDeckText(dir, "rest.inp", frame(blast, "  REST,mid\n  TPLOt\n" + steps(36), tplot));
+  ASSERT_EQ(rest.outcome.exitCode, 0) << rest.outcome.message;
+  auto rows = [](const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::vector<std::string> out;
+    for (std::string l; std::getline(in, l);) out.push_back(l);
+    return out;
+  };
+  const auto w = rows(whole.out / "whole_tplot.csv"), r = rows(rest.out / "rest_tplot.csv");
+  ASSERT_EQ(r.size(), 37u);
+  ASSERT_EQ(w.size(), 51u);
+  for (std::size_t i = 1; i < r.size(); ++i) EXPECT_EQ(r[i], w[w.size() - r.size() + i]) << "row " << i;
 }
 
 TEST(MemberRemoval, RemovedTwiceIsAnAnalysisError) {
