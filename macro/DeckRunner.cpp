@@ -140,15 +140,25 @@ std::vector<std::string> sweptNames(const std::vector<RunInfo>& runs) {
 
 }  // namespace
 
-std::string energyWarning(const RunSummary& s) {
-  if (!(s.energyError > kEnergyBalanceTolerance)) return {};
+std::vector<std::string> runWarnings(const RunSummary& s) {
+  std::vector<std::string> out;
   char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "warning: the energy balance changed by %.2e of the peak energy (more than "
-                "%.0e): a force does work the model does not account for, or the tolerance "
-                "is loose",
-                s.energyError, kEnergyBalanceTolerance);
-  return buf;
+  if (s.energyError > kEnergyBalanceTolerance) {
+    std::snprintf(buf, sizeof buf,
+                  "warning: the energy balance changed by %.2e of the peak energy (more than "
+                  "%.0e): a force does work the model does not account for, or the tolerance "
+                  "is loose",
+                  s.energyError, kEnergyBalanceTolerance);
+    out.push_back(buf);
+  }
+  if (s.crossings > 0) {
+    std::snprintf(buf, sizeof buf,
+                  "warning: %d pair%s of members cross each other at the end (listed in the "
+                  "log): they passed through each other; CONTact MEMBers,,k keeps them apart",
+                  s.crossings, s.crossings == 1 ? "" : "s");
+    out.push_back(buf);
+  }
+  return out;
 }
 
 namespace {
@@ -287,15 +297,17 @@ class Walker {
     total_.jointsFormed += s.jointsFormed;
     total_.jointsRuptured += s.jointsRuptured;
     total_.removed += s.removed;
+    total_.crossings += s.crossings;
     total_.debrisRuns += s.debrisRuns;
     total_.outsideRuns += s.outsideRuns;
     if (!row.ok) return;
     log_ << "\n  summary: " << runSummaryText(s) << "\n";
-    const std::string warning = energyWarning(s);
-    if (!warning.empty()) log_ << "  " << warning << "\n";
+    const std::vector<std::string> warnings = runWarnings(s);
+    for (const std::string& w : warnings) log_ << "  " << w << "\n";
     if (console_ && !options_.quiet && plans_.size() > 1)
       *console_ << "  " << ro.stem << ": " << runSummaryText(s) << "\n" << std::flush;
-    if (console_ && !warning.empty()) *console_ << ro.stem << ": " << warning << "\n" << std::flush;
+    if (console_)
+      for (const std::string& w : warnings) *console_ << ro.stem << ": " << w << "\n" << std::flush;
     overlay_.add(plan.label, p.title, run.outputs().curves(run.history()));
   }
 

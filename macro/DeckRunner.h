@@ -59,9 +59,9 @@ std::string runSummaryText(const RunSummary& s);
 // Above this energy error a run is warned about: the balance closes to the
 // Newton tolerance in every analysis, static or dynamic.
 constexpr double kEnergyBalanceTolerance = 1e-6;
-// The warning for a run whose energy balance changed by more than
-// kEnergyBalanceTolerance, else "".
-std::string energyWarning(const RunSummary& s);
+// The warnings a run's summary gives, one line each: an energy balance that
+// changed by more than kEnergyBalanceTolerance, members crossing at the end.
+std::vector<std::string> runWarnings(const RunSummary& s);
 
 DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
                     const SolutionCommands& commands, std::ostream& out);

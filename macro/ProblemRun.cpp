@@ -173,6 +173,7 @@ void ProblemRun::run() {
 void ProblemRun::reportCrossings() {
   // Members that passed through each other (core/MemberCrossing.h).
   const std::vector<MemberCrossing> crossings = findCrossings(model_, analysis_->state());
+  crossings_ = static_cast<int>(crossings.size());
   const std::size_t shown = std::min<std::size_t>(crossings.size(), 20);
   for (std::size_t i = 0; i < shown; ++i)
     log_ << (i == 0 ? "\n" : "") << "  warning: members " << crossings[i].first + 1 << " and "
@@ -227,6 +228,7 @@ RunSummary ProblemRun::summary() const {
   s.jointsFormed = jointsFormed_;
   s.jointsRuptured = jointsRuptured_;
   s.removed = removed_;
+  s.crossings = crossings_;
   s.debrisRuns = debris_ ? 1 : 0;
   s.outsideRuns = debris_ && debris_->outside() ? 1 : 0;
   return s;

@@ -47,6 +47,7 @@ struct RunSummary {
   double maxMomentRatio = 0;    // largest |M|/Mu of an element with a softening law, any time
   int jointsFormed = 0, jointsRuptured = 0;  // during the run (fully softened hinges, ruptures)
   int removed = 0;                            // elements removed (BLASt, REMOve)
+  int crossings = 0;  // pairs of members crossing each other at the end
   // Runs that ended with ground contact (debris figures), and those of them whose
   // debris left the site (SITE).
   int debrisRuns = 0, outsideRuns = 0;
@@ -163,6 +164,7 @@ class ProblemRun {
   int hingeCount_ = 0;
   int jointsFormed_ = 0, jointsRuptured_ = 0;
   int removed_ = 0;
+  int crossings_ = 0;
   double maxMomentRatio_ = 0;
   double energy0_ = 0, energyScale_ = 0, energyError_ = 0;
   bool energyStarted_ = false;

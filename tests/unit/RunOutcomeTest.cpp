@@ -229,10 +229,16 @@ TEST(RunOutcome, SummaryWordsTheEnergyErrorAndWarnsWhenTheBalanceDoesNotClose) {
   RunSummary s;
   s.energyError = 2.5e-12;
   EXPECT_TRUE(contains(runSummaryText(s), "energy error 2.50e-12")) << runSummaryText(s);
-  EXPECT_EQ(energyWarning(s), "");
+  EXPECT_TRUE(runWarnings(s).empty());
   s.energyError = 0.93;
-  EXPECT_TRUE(contains(energyWarning(s), "warning: the energy balance changed by 9.30e-01"))
-      << energyWarning(s);
+  ASSERT_EQ(runWarnings(s).size(), 1u);
+  EXPECT_TRUE(contains(runWarnings(s)[0], "warning: the energy balance changed by 9.30e-01"))
+      << runWarnings(s)[0];
+  // Members crossing at the end: a second warning.
+  s.crossings = 3;
+  ASSERT_EQ(runWarnings(s).size(), 2u);
+  EXPECT_TRUE(contains(runWarnings(s)[1], "warning: 3 pairs of members cross each other at the end"))
+      << runWarnings(s)[1];
 }
 
 }  // namespace
