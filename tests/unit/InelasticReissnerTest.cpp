@@ -356,5 +356,36 @@ TEST(InelasticReissnerImpact, RodStrikesTheGroundWithTheBalanceClosed) {
   EXPECT_GT(lowest, -10 * 9.81 / 1e5);  // the whole weight on one node: W/k
 }
 
+
+// A joint past its rupture rotation whose node presses on the ground waits
+// until the node leaves it: separating there would give the new node a penalty
+// force of its own at the master's penetration (k p^2 / 2 out of nothing).
+TEST(InelasticReissnerRupture, AJointOnTheGroundRupturesWhenItsNodeLeavesIt) {
+  FlyingRod rod(0.1);
+  Model& m = rod.m;
+  m.bound(0) = {0, 0, 0};
+  m.ground() = Ground{0.0, 1e5, 0.1};
+  // Element 2 (nodes 2-3) on a slave of node 2.
+  const int slave = m.addNode(m.coord(2));
+  m.element(2).setNodes({slave, 3});
+  m.joints().push_back(Joint{2, slave, JointForm::Condensed});
+  ASSERT_EQ(installJoints(m), 1);
+  jointedElements(m).front()->setRelativeState(0.3);
+  State s;
+  s.resize(m.numNodes());
+  for (int i = 0; i < m.numNodes(); ++i) s.u[3 * i + 1] = -1e-3;  // 1 mm into the ground
+  s.un = s.u;
+  EXPECT_TRUE(ruptureJoints(m, s).empty());
+  EXPECT_EQ(m.joints().size(), 1u);
+  for (int i = 0; i < m.numNodes(); ++i) s.u[3 * i + 1] = 1e-3;  // lifted off
+  s.un = s.u;
+  const auto ruptured = ruptureJoints(m, s);
+  ASSERT_EQ(ruptured.size(), 1u);
+  EXPECT_EQ(ruptured[0].slave, slave);
+  EXPECT_NEAR(ruptured[0].rotation, 0.3, 1e-15);
+  EXPECT_TRUE(m.joints().empty());
+  EXPECT_EQ(m.element(2).nodes()[0], slave);
+}
+
 }  // namespace
 }  // namespace c2d
