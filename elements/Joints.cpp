@@ -135,8 +135,9 @@ std::vector<RupturedJoint> ruptureJoints(Model& model, State& state) {
     // energy out of nothing that throws the pieces apart. The joint ruptures
     // when its node leaves the ground (it turns freely meanwhile).
     if (const auto& g = model.ground();
-        g && penetration(*g, model.coord(joint.master).y() +
-                                 state.un[static_cast<Eigen::Index>(joint.master) * kNodeDofs + 1]) > 0)
+        g &&
+        penetration(*g, model.coord(joint.master).y() +
+                            state.un[static_cast<Eigen::Index>(joint.master) * kNodeDofs + 1]) > 0)
       continue;
     if (!synced) {  // the slave nodes' state from the joints, before any is removed
       syncSlaveNodes(model, state);

@@ -234,11 +234,11 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
       strain = midPointForce(kin.d, kin.dn, rule.alpha, w * m1 + (1 - w) * law_.EI() * kappaN,
                              bend.tangent, wantTangent, residual, tangent);
     } else {  // inelastic: a moment whose work never exceeds the stored energy's change
-      const auto mm = law_.midPointMoment(from, kappaN, bend.state,
-                                          (kin.d(5) - kin.d(2)) / length_ - e0_(2), bend.tangent,
-                                          length_, w);
-      strain = midPointForce(kin.d, kin.dn, rule.alpha, mm.m, mm.tangent / w, wantTangent,
-                             residual, tangent);
+      const auto mm =
+          law_.midPointMoment(from, kappaN, bend.state, (kin.d(5) - kin.d(2)) / length_ - e0_(2),
+                              bend.tangent, length_, w);
+      strain = midPointForce(kin.d, kin.dn, rule.alpha, mm.m, mm.tangent / w, wantTangent, residual,
+                             tangent);
     }
   } else {
     strain = staticForce(kin.d, m1, bend.tangent, wantTangent, residual, tangent);

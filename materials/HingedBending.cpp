@@ -71,10 +71,10 @@ Status HingedBending::respond(double kappaD, double l, const HingedBendingState&
 }
 
 HingedBending::MidPointMoment HingedBending::midPointMoment(const HingedBendingState& from,
-                                                           double kappaD0,
-                                                           const HingedBendingState& to,
-                                                           double kappaD1, double kt1, double l,
-                                                           double w) const {
+                                                            double kappaD0,
+                                                            const HingedBendingState& to,
+                                                            double kappaD1, double kt1, double l,
+                                                            double w) const {
   const double dM = to.M - from.M, dK = kappaD1 - kappaD0;
   const double dKp = (to.bulk.kp - from.bulk.kp) + (to.jump.alpha - from.jump.alpha) / l;
   // A plastic step has dK != 0 (flow needs a trial moment beyond the surface);

@@ -104,8 +104,8 @@ class HingedBending {
     double m = 0, tangent = 0;
   };
   MidPointMoment midPointMoment(const HingedBendingState& from, double kappaD0,
-                                const HingedBendingState& to, double kappaD1, double kt1,
-                                double l, double w) const;
+                                const HingedBendingState& to, double kappaD1, double kt1, double l,
+                                double w) const;
   // Elastic stored energy per unit length, M^2/(2 EI).
   double energyDensity(const HingedBendingState& s) const { return 0.5 * s.M * s.M / EI(); }
 

@@ -9,8 +9,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <cstdio>
+#include <memory>
 #include <numbers>
 
 #include "core/Model.h"
@@ -355,7 +355,6 @@ TEST(InelasticReissnerImpact, RodStrikesTheGroundWithTheBalanceClosed) {
     lowest = std::min(lowest, m.coord(i).y() + an.state().u[3 * i + 1]);
   EXPECT_GT(lowest, -10 * 9.81 / 1e5);  // the whole weight on one node: W/k
 }
-
 
 // A joint past its rupture rotation whose node presses on the ground waits
 // until the node leaves it: separating there would give the new node a penalty
