@@ -243,7 +243,6 @@ TEST(GroundFriction, TheBalanceClosesWhenTheNextStepIsLongerThanTheOneCommitted)
   EXPECT_LT(worst, 1e-9 * scale);
 }
 
-
 TEST(GroundContactImpact, AFreeMemberDroppedFlatReboundsWithNoMoreEnergy) {
   // A free 1.5 m column element of the six-story frame falls flat at 10 m/s
   // onto the k = 1e5 ground: both ends hit in the same step of dt = 0.01 (the
