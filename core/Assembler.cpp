@@ -164,7 +164,12 @@ double Assembler::frictionEps(int n, const State& s) const {
   const double yn = model_.coord(n).y() + s.un[static_cast<Eigen::Index>(n) * kNodeDofs + 1];
   const double pn = penetration(g, yn);
   const double nRef = std::max(m * model_.gravity().norm(), pn > 0 ? g.k * pn : 0.0);
-  return frictionRegularisation(g, m, nRef, s.dt, shortest_);
+  // The length of the step being solved (a cut step, a located event's
+  // sub-step): s.dt may already hold the next step's length when a converged
+  // step is committed, and the friction forces booked then must be the ones
+  // the step was solved with.
+  const double h = s.t > s.tn ? s.t - s.tn : s.dt;
+  return frictionRegularisation(g, m, nRef, h, shortest_);
 }
 
 void Assembler::gather(const Element& e, const State& s, ElementKinematics& kin) const {

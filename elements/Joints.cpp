@@ -3,6 +3,8 @@
 #include <cmath>
 #include <memory>
 
+#include "core/GroundContact.h"
+
 namespace c2d {
 
 namespace {
@@ -179,6 +181,15 @@ std::vector<RupturedJoint> ruptureJoints(Model& model, State& state) {
     if (!mat || !mat->softening || !mat->softening->thetaR) continue;
     const double limit = *mat->softening->thetaR;
     if (!(std::abs(rotation) > limit)) continue;
+    // Not while the joint presses on the ground: the new node would get a
+    // penalty force of its own at the master's penetration p, k p^2 / 2 of
+    // energy out of nothing that throws the pieces apart. The joint ruptures
+    // when its node leaves the ground (it turns freely meanwhile).
+    if (const auto& g = model.ground();
+        g &&
+        penetration(*g, model.coord(joint.master).y() +
+                            state.un[static_cast<Eigen::Index>(joint.master) * kNodeDofs + 1]) > 0)
+      continue;
     if (!synced) {  // the slave nodes' state from the joints, before any is removed
       syncSlaveNodes(model, state);
       synced = true;

@@ -49,7 +49,9 @@ struct RupturedJoint {
 // (SOFTening LINEar Mu Ks thetaR) ruptures: the joint is removed, and the slave
 // node, at the master's position with the slave rotation and their rates,
 // becomes a node of its own, so the pieces separate in translation too. The
-// state is continuous (nothing moves, no velocity changes). Bumps the topology
+// state is continuous (nothing moves, no velocity changes). A joint whose
+// master node penetrates the ground waits until the node leaves it (the new
+// node would bring a penalty force and energy of its own). Bumps the topology
 // version when anything ruptured.
 std::vector<RupturedJoint> ruptureJoints(Model& model, State& state);
 

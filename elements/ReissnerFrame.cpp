@@ -229,10 +229,17 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
     // of the committed and the trial state; an elastic section's moment at t_n
     // is that of the curvature at d_n.
     const double w = 0.5 + rule.alpha;
-    const double mn =
-        law_.isElastic() ? law_.EI() * ((kin.dn(5) - kin.dn(2)) / length_ - e0_(2)) : from.M;
-    strain = midPointForce(kin.d, kin.dn, rule.alpha, w * m1 + (1 - w) * mn, bend.tangent,
-                           wantTangent, residual, tangent);
+    const double kappaN = (kin.dn(5) - kin.dn(2)) / length_ - e0_(2);
+    if (law_.isElastic()) {
+      strain = midPointForce(kin.d, kin.dn, rule.alpha, w * m1 + (1 - w) * law_.EI() * kappaN,
+                             bend.tangent, wantTangent, residual, tangent);
+    } else {  // inelastic: a moment whose work never exceeds the stored energy's change
+      const auto mm =
+          law_.midPointMoment(from, kappaN, bend.state, (kin.d(5) - kin.d(2)) / length_ - e0_(2),
+                              bend.tangent, length_, w);
+      strain = midPointForce(kin.d, kin.dn, rule.alpha, mm.m, mm.tangent / w, wantTangent, residual,
+                             tangent);
+    }
   } else {
     strain = staticForce(kin.d, m1, bend.tangent, wantTangent, residual, tangent);
   }

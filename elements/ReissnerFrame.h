@@ -28,8 +28,10 @@
 // condensed: with one-point integration the jump changes only the curvature,
 // K - alpha/l, so the hinge works at any displacement and rotation). Under the
 // mid-point scheme the bending moment is the weighted moment
-// (1/2 + alpha) M_{n+1} + (1/2 - alpha) M_n; for an elastic section that is the
-// moment of the weighted curvature above. The hinge opens only when the solver
+// (1/2 + alpha) M_{n+1} + (1/2 - alpha) M_n for an elastic section (the moment
+// of the weighted curvature above), and for an inelastic one the moment of
+// HingedBending::midPointMoment, whose work never exceeds the change of the
+// stored energy. The hinge opens only when the solver
 // asks (core/Hinge.h), as in InelasticFrame.
 #include <array>
 #include <string>

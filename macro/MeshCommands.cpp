@@ -1208,7 +1208,8 @@ void registerMaterialSubRecords(CommandRegistry& r) {
       "SOFTening LINEar Mu Ks [thetaR]: softening hinge activated when |M| reaches Mu; hinge "
       "moment Mu + Ks*jump down to zero (Ks < 0). With FINIte kinematics a fully softened "
       "hinge becomes a revolute joint during the run; a joint whose relative rotation "
-      "exceeds thetaR (rad) ruptures and the pieces separate.",
+      "exceeds thetaR (rad) ruptures and the pieces separate (a joint whose node presses on "
+      "the ground ruptures when the node leaves it).",
       {text("LINEar", ""), expr("Mu", "ultimate moment"), expr("Ks", "softening modulus"),
        expr("thetaR", "rupture rotation of the joint (optional)")}));
 }

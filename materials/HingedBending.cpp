@@ -70,6 +70,23 @@ Status HingedBending::respond(double kappaD, double l, const HingedBendingState&
              : Status::failure("bending section: non-finite moment");
 }
 
+HingedBending::MidPointMoment HingedBending::midPointMoment(const HingedBendingState& from,
+                                                            double kappaD0,
+                                                            const HingedBendingState& to,
+                                                            double kappaD1, double kt1, double l,
+                                                            double w) const {
+  const double dM = to.M - from.M, dK = kappaD1 - kappaD0;
+  const double dKp = (to.bulk.kp - from.bulk.kp) + (to.jump.alpha - from.jump.alpha) / l;
+  // A plastic step has dK != 0 (flow needs a trial moment beyond the surface);
+  // r is bounded by max(1, |Ks| / (EI/l + Ks)).
+  const double r = dKp != 0 && dK != 0 ? 1.0 - dKp / dK : 1.0;
+  MidPointMoment out;
+  out.m = to.M - (1.0 - w) * r * dM;
+  // d(r dM)/dK1 = d(dM^2/(EI dK))/dK1 = 2 r kt1 - EI r^2.
+  out.tangent = dKp != 0 && dK != 0 ? kt1 - (1.0 - w) * (2.0 * r * kt1 - EI() * r * r) : w * kt1;
+  return out;
+}
+
 HingeInfo HingedBending::info(const HingedBendingState& s) const {
   HingeInfo h;
   h.active = s.hingeActive;

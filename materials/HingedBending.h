@@ -86,6 +86,26 @@ class HingedBending {
   // Opens the hinge of a trial state with the sign of its moment (the solver's
   // decision, core/Hinge.h): the next evaluation takes it from there.
   void open(HingedBendingState& s) const;
+  // The bending moment of the mid-point scheme (weight w = 1/2 + alpha) for a
+  // step from section state `from` at curvature kappaD0 to `to` at kappaD1
+  // (dM1/dkappaD1 = kt1), and its derivative with respect to kappaD1. With
+  // dK = kappaD1 - kappaD0, dM = M1 - M0 and the plastic part of the step
+  // dKp = dkp + dalpha/l (the bulk stays elastic: M = EI (kappaD - kp - alpha/l)),
+  //   m = M1 - (1 - w) r dM,   r = 1 - dKp/dK = dM/(EI dK),
+  // so that its work on the step is
+  //   m dK l = l (M1^2 - M0^2)/(2 EI) + (w - 1/2) l dM^2/EI r + M1 dKp l,
+  // the change of the stored energy plus the backward-Euler plastic work
+  // M1 dKp >= 0 (the return maps flow along M1): a step never creates energy,
+  // also when the moment reverses past yield within one step (the plain weighted
+  // moment w M1 + (1 - w) M0 then did negative work). For an elastic step
+  // (dKp = 0) m is the weighted moment w M1 + (1 - w) M0 and the scheme's
+  // identity for elastic sections is unchanged.
+  struct MidPointMoment {
+    double m = 0, tangent = 0;
+  };
+  MidPointMoment midPointMoment(const HingedBendingState& from, double kappaD0,
+                                const HingedBendingState& to, double kappaD1, double kt1, double l,
+                                double w) const;
   // Elastic stored energy per unit length, M^2/(2 EI).
   double energyDensity(const HingedBendingState& s) const { return 0.5 * s.M * s.M / EI(); }
 

@@ -126,18 +126,30 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   // Not located within the band: open at the closest point found past Mu.
   if (st && !found) f = sHi;
   if (st && (!found || f == 0)) st = solveFraction(f, tEnd, lineSearch);
-  if (st) st = an_.commit();  // the sub-step up to the hinge's ultimate moment
-  if (st) {
+  if (st && an_.integrator_.dynamic()) {
+    // One commit, with the hinge opened at the located state: at the ultimate
+    // moment the open hinge has no jump yet (to 1e-12), so that state is the
+    // equilibrium. A second commit of zero length would take the step rule of
+    // a full step and move the joints' relative rotations and rates (internal
+    // dofs with inertia), creating kinetic energy at every event.
     maxDemand(element);
     open(element);
     info.hingeActivated = element;
-    // At the ultimate moment the open hinge has no jump yet (to 1e-12): the
-    // committed state is already the equilibrium; evaluate the elements with
-    // the hinge active and commit (the step is of zero length).
-    an_.dirty_ = true;
-    st = an_.evaluateState();
+    st = an_.commit();
+  } else {
+    if (st) st = an_.commit();  // the sub-step up to the hinge's ultimate moment
+    if (st) {
+      maxDemand(element);
+      open(element);
+      info.hingeActivated = element;
+      // At the ultimate moment the open hinge has no jump yet (to 1e-12): the
+      // committed state is already the equilibrium; evaluate the elements with
+      // the hinge active and commit (the step is of zero length).
+      an_.dirty_ = true;
+      st = an_.evaluateState();
+    }
+    if (st) st = an_.commit();
   }
-  if (st) st = an_.commit();
   locating_ = false;
   if (!st) return st;
   // The rest of the step.

@@ -6,7 +6,9 @@
 // the point where the demand is 1 (regula falsi on the step fraction, each
 // trial a Newton solve from the committed state: the load level in statics,
 // the time in dynamics), that state is committed, that one hinge opens, the
-// state is committed again, and the rest of the step is solved. So a uniform
+// state is committed again (in dynamics the hinge opens in that one commit: a
+// commit of zero length would move the joints' relative rotations), and the
+// rest of the step is solved. So a uniform
 // moment opens exactly one hinge, the peak of a load-displacement curve is a
 // computed point, and in a collapse no member carries more than its ultimate
 // moment beyond the location band.

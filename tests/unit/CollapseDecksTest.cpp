@@ -157,7 +157,8 @@ TEST(CollapseDecks, SixStoryCollapseWithMemberContactLeavesNoCrossingMembers) {
   // crossing each other (the run's log says so); with it, none.
   namespace fs = std::filesystem;
   const fs::path src = fs::path(C2D_SOURCE_DIR) / "decks" / "paper";
-  const fs::path dir = fs::temp_directory_path() / "c2d_collapse_six_story_members";
+  const fs::path dir =
+      fs::temp_directory_path() / ("c2d_collapse_six_story_members_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   auto read = [](const fs::path& p) {
     std::ifstream in(p);
