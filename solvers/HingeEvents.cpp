@@ -60,6 +60,9 @@ void HingeEvents::open(int element) {
 Status HingeEvents::afterConvergence(IterationInfo& info, bool lineSearch, bool& handled) {
   handled = false;
   if (locating_ || carriers().empty()) return Status::success();
+  // The end of the bracket: a converged state only.
+  if (!info.converged)
+    return Status::failure("internal: a hinge event after an unconverged iteration");
   // The demand of the converged state.
   if (Status st = an_.evaluateState(); !st) return st;
   int e = -1;
@@ -72,6 +75,7 @@ Status HingeEvents::solveFraction(double fraction, double tEnd, bool lineSearch)
   // Elements keep their trial flags (a hinge just activated); their trial
   // history follows from the committed one at the next evaluation.
   State& s = an_.state_;
+  solved_ = false;
   s.u = s.un;
   s.v = s.vn;
   s.a = s.an;
@@ -84,9 +88,28 @@ Status HingeEvents::solveFraction(double fraction, double tEnd, bool lineSearch)
     if (!st) return st;
     if (it.converged) break;
   }
-  if (!it.converged)
+  if (!it.converged || !an_.converged_)
     return Status::failure("no convergence while locating the point where a hinge opens");
-  return an_.evaluateState();  // element states at the converged displacements
+  const Status st = an_.evaluateState();  // element states at the converged displacements
+  solved_ = st.ok;
+  return st;
+}
+
+void HingeEvents::restoreCommitted() {
+  // A sub-step of zero length: the committed state itself, not a solve (a
+  // dynamic step of length zero has no step rule; the rule of dt would solve
+  // a whole step from t_n and commit it at t_n).
+  for (auto& el : an_.model().elements()) el->revert();
+  an_.state_.revert();
+  an_.dirty_ = false;
+  solved_ = true;
+}
+
+Status HingeEvents::commitSolved() {
+  // Only the converged end of a located sub-step (or the committed state) may
+  // be committed here; this never fails in a correct run.
+  if (!solved_) return Status::failure("internal: committing an unconverged state");
+  return an_.commit();
 }
 
 Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
@@ -123,8 +146,12 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   }
   // Not located within the band: open at the closest point found past Mu.
   if (st && !found) f = sHi;
-  if (st && (!found || f == 0)) st = solveFraction(f, tEnd, lineSearch);
-  if (st) st = an_.commit();  // the sub-step up to the hinge's ultimate moment
+  if (st && f == 0) {
+    restoreCommitted();
+  } else if (st && !found) {
+    st = solveFraction(f, tEnd, lineSearch);
+  }
+  if (st) st = commitSolved();  // the sub-step up to the hinge's ultimate moment
   if (st) {
     maxDemand(element);
     open(element);
@@ -135,7 +162,8 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
     an_.dirty_ = true;
     st = an_.evaluateState();
   }
-  if (st) st = an_.commit();
+  if (st) st = commitSolved();
+  solved_ = false;
   locating_ = false;
   if (!st) return st;
   // The rest of the step.
