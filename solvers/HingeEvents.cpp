@@ -83,10 +83,15 @@ Status HingeEvents::solveFraction(double fraction, double tEnd, bool lineSearch)
   // A dynamic sub-step's rule follows from its length (Analysis::stepRule).
   an_.beginStep(s.tn + fraction * (tEnd - s.tn), fraction, false);
   IterationInfo it;
+  double first = -1;
   for (int k = 0; k < 60; ++k) {
     const Status st = an_.iterate(lineSearch, true, it);
     if (!st) return st;
     if (it.converged) break;
+    // Diverging (the test of the solution commands' Newton loops): stop before
+    // the iterates get so large that a correction falls below their resolution.
+    if (first < 0 || it.iteration == 1) first = it.energy;
+    if (it.iteration > 4 && it.energy > 1e30 * first) break;
   }
   if (!it.converged || !an_.converged_)
     return Status::failure("no convergence while locating the point where a hinge opens");
