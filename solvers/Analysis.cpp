@@ -541,6 +541,10 @@ Status Analysis::commit() {
   if (!st) return st;
   dofFactors(state_.tn, path_ ? state_.arcLambdan : 1.0, lamn_);
   account_.commitStep(assembler_, state_, rule, lam_, lamn_);
+  return commitEvaluated();
+}
+
+Status Analysis::commitEvaluated() {
   for (auto& el : model_.elements()) el->commit();
   hinges_.committed();
   if (path_) {

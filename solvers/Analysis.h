@@ -164,6 +164,9 @@ class Analysis {
   StepRule stepRule() const;
   // Evaluates the elements at the current state (no tangent).
   Status evaluateState();
+  // The part of commit() after the evaluation and the energy booking: the
+  // elements commit their trial states as last evaluated.
+  Status commitEvaluated();
   // Per node dof: the factor of its load table at `time` (times the arc-length factor).
   void dofFactors(double time, double arc, Eigen::VectorXd& out) const;
   // Factors at the step rule's load point (t_n+1, or the mid-point).

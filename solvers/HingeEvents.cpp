@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "elements/JointedElement.h"
 #include "elements/Joints.h"
 #include "solvers/Analysis.h"
 
@@ -100,6 +101,29 @@ Status HingeEvents::solveFraction(double fraction, double tEnd, bool lineSearch)
   return st;
 }
 
+Status HingeEvents::evaluateOpened(int element) {
+  // The innermost element at the committed displacements, its joints' relative
+  // rotations as committed (JointedElement::innerKinematics).
+  const State& s = an_.state_;
+  Element* el = &an_.model().element(element);
+  const auto nodes = el->nodes();
+  ElementKinematics kin;
+  for (int a = 0; a < 2; ++a) {
+    const Eigen::Index base = static_cast<Eigen::Index>(nodes[a]) * kNodeDofs;
+    kin.d.segment<kNodeDofs>(a * kNodeDofs) = s.u.segment<kNodeDofs>(base);
+    kin.dn.segment<kNodeDofs>(a * kNodeDofs) = s.un.segment<kNodeDofs>(base);
+    kin.vn.segment<kNodeDofs>(a * kNodeDofs) = s.vn.segment<kNodeDofs>(base);
+    kin.an.segment<kNodeDofs>(a * kNodeDofs) = s.an.segment<kNodeDofs>(base);
+  }
+  while (auto* je = dynamic_cast<JointedElement*>(el)) {
+    kin = je->innerKinematics(kin, je->relativeRotation());
+    el = &je->inner();
+  }
+  ElemVec r;
+  ElemMat k;
+  return el->evaluate(kin, an_.stepRule(), false, r, k);
+}
+
 void HingeEvents::restoreCommitted() {
   // A sub-step of zero length: the committed state itself, not a solve (a
   // dynamic step of length zero has no step rule; the rule of dt would solve
@@ -162,12 +186,17 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
     open(element);
     info.hingeActivated = element;
     // At the ultimate moment the open hinge has no jump yet (to 1e-12): the
-    // committed state is already the equilibrium; evaluate the elements with
-    // the hinge active and commit (the step is of zero length).
-    an_.dirty_ = true;
-    st = an_.evaluateState();
+    // committed state is already the equilibrium. A step of length zero: only
+    // the opened section is evaluated, and the elements commit in place. (An
+    // evaluation of the whole model would take the rule of dt at t = t_n: a
+    // dynamic step of dt for the internal unknowns, a joint's relative
+    // rotation, with the nodes held, and Newmark's inertia forces in the
+    // energy account.)
+    st = evaluateOpened(element);
   }
-  if (st) st = commitSolved();
+  if (st)
+    st = solved_ ? an_.commitEvaluated()
+                 : Status::failure("internal: committing an unconverged state");
   solved_ = false;
   locating_ = false;
   if (!st) return st;

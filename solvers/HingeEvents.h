@@ -57,6 +57,8 @@ class HingeEvents {
   // The committed state as the end of a sub-step of zero length (the event is
   // at the committed state).
   void restoreCommitted();
+  // Evaluates the element whose hinge was just opened at the committed state.
+  Status evaluateOpened(int element);
   // Commits the end of a located sub-step; an internal error unless that end
   // is a converged solve or the committed state.
   Status commitSolved();
