@@ -19,6 +19,7 @@ bool Assembler::refresh() {
   shortest_ = model_.characteristicLength();
   nodeMass_.assign(model_.numNodes(), 0.0);
   for (int e = 0; e < model_.numElements(); ++e) {
+    if (!model_.hasElement(e)) continue;
     const ElemMat me = model_.element(e).mass();
     const auto nodes = model_.element(e).nodes();
     for (int a = 0; a < 2; ++a) nodeMass_[nodes[a]] += me(3 * a, 0) + me(3 * a, 3);
@@ -28,6 +29,8 @@ bool Assembler::refresh() {
   buildPattern();
   const Eigen::Index nd = static_cast<Eigen::Index>(model_.numNodes()) * kNodeDofs;
   r_.setZero(nd);
+  fRel_.setZero(nd);
+  elemForce_.assign(model_.numElements(), ElemVec::Zero());
   fContact_.setZero(nd);
   fRef_.setZero(nd);
   fGrav_.setZero(nd);
@@ -36,6 +39,7 @@ bool Assembler::refresh() {
       if (!dofs_.restrained(n, d)) fRef_[n * kNodeDofs + d] = model_.force(n)[d];
   if (model_.gravity().squaredNorm() > 0) {
     for (int e = 0; e < model_.numElements(); ++e) {
+      if (!model_.hasElement(e)) continue;
       const Element& el = model_.element(e);
       const ElemVec fe = el.bodyLoad(model_.gravity());
       const auto nodes = el.nodes();
@@ -56,6 +60,7 @@ void Assembler::buildPattern() {
   trip.reserve(static_cast<size_t>(model_.numElements()) * kElemDofs * kElemDofs + neq);
   for (int i = 0; i < neq; ++i) trip.emplace_back(i, i, 0.0);
   for (int e = 0; e < model_.numElements(); ++e) {
+    if (!model_.hasElement(e)) continue;
     const auto eq = dofs_.elementEqs(model_.element(e));
     for (int i : eq)
       if (i >= 0)
@@ -91,6 +96,7 @@ void Assembler::buildPattern() {
   };
   elemPos_.assign(model_.numElements(), {});
   for (int e = 0; e < model_.numElements(); ++e) {
+    if (!model_.hasElement(e)) continue;
     const auto eq = dofs_.elementEqs(model_.element(e));
     auto& pos = elemPos_[e];
     for (int a = 0; a < kElemDofs; ++a)
@@ -177,6 +183,8 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
   refresh();
   evaluateMemberContact(s, rule, wantTangent);
   r_ = -loadFactors.cwiseProduct(fRef_) - fGrav_;
+  releasedLoadAt(s, rule);
+  r_ -= fRel_;
   forceScale_ = r_.size() ? r_.cwiseAbs().maxCoeff() : 0.0;
   if (wantTangent) std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
 
@@ -184,12 +192,14 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
   ElemVec re;
   ElemMat ke;
   for (int e = 0; e < model_.numElements(); ++e) {
+    if (!model_.hasElement(e)) continue;
     Element& el = model_.element(e);
     gather(el, s, kin);
     const Status st = el.evaluate(kin, rule, wantTangent, re, ke);
     if (!st) return Status::failure("element " + std::to_string(e + 1) + ": " + st.why);
     if (!re.allFinite() || (wantTangent && !ke.allFinite()))
       return Status::failure("element " + std::to_string(e + 1) + ": non-finite residual or tangent");
+    elemForce_[e] = re;
     forceScale_ = std::max(forceScale_, re.cwiseAbs().maxCoeff());
     const auto nodes = el.nodes();
     for (int a = 0; a < 2; ++a)
@@ -255,6 +265,19 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
   return Status::success();
 }
 
+void Assembler::releasedLoadAt(const State& s, const StepRule& rule) {
+  fRel_.setZero();
+  const bool midPoint = rule.scheme == Scheme::MidPoint;
+  for (const ReleasedForce& f : model_.releasedForces()) {
+    const double w = midPoint ? 0.5 * (f.factor(s.tn) + f.factor(s.t)) : f.factor(s.t);
+    if (w == 0) continue;
+    for (int a = 0; a < 2; ++a)
+      if (f.nodes[a] >= 0)
+        fRel_.segment<kNodeDofs>(static_cast<Eigen::Index>(f.nodes[a]) * kNodeDofs) +=
+            w * f.force.segment<kNodeDofs>(a * kNodeDofs);
+  }
+}
+
 void Assembler::toEquations(const Eigen::VectorXd& nodal, Eigen::VectorXd& eqs) const {
   eqs.setZero(dofs_.numEquations());
   for (Eigen::Index i = 0; i < nodal.size(); ++i) {
@@ -265,7 +288,8 @@ void Assembler::toEquations(const Eigen::VectorXd& nodal, Eigen::VectorXd& eqs) 
 
 double Assembler::strainEnergy() const {
   double w = 0;
-  for (int e = 0; e < model_.numElements(); ++e) w += model_.element(e).strainEnergy();
+  for (int e = 0; e < model_.numElements(); ++e)
+    if (model_.hasElement(e)) w += model_.element(e).strainEnergy();
   return w;
 }
 
@@ -298,6 +322,7 @@ double Assembler::kineticEnergy(const State& s) const {
   double w = 0;
   ElemVec v;
   for (int e = 0; e < model_.numElements(); ++e) {
+    if (!model_.hasElement(e)) continue;
     const Element& el = model_.element(e);
     const auto nodes = el.nodes();
     for (int a = 0; a < 2; ++a)

@@ -4,7 +4,8 @@
 // The residual per node dof is r = f_int + M a_eff - f_ext - f_contact. At a free
 // dof it must vanish; at a restrained dof it is the reaction. M holds the
 // elements' masses and the lumped nodal ones (core/FloorLoad.h). f_ext is
-// lambda*FORCe plus the constant loads (self-weight, QLOAd, weight of MASS), with lambda per dof the factor of its
+// lambda*FORCe plus the constant loads (self-weight, QLOAd, weight of MASS) and the
+// forces of removed elements being released, with lambda per dof the factor of its
 // proportional load table at the step rule's load point (t_n+1, or the mid-point
 // for the mid-point scheme).
 //
@@ -64,6 +65,11 @@ class Assembler {
   const Eigen::VectorXd& contactForces() const { return fContact_; }
   // Lumped nodal masses per node dof (MASS, QLOAd carried as mass).
   const Eigen::VectorXd& nodalMass() const { return mNodal_; }
+  // Forces of removed elements being released (core/Model.h ReleasedForce) at
+  // the load point of the last assembly, per node dof: a load.
+  const Eigen::VectorXd& releasedLoad() const { return fRel_; }
+  // Element e's residual (internal and inertia forces, global frame) at the last assembly.
+  const ElemVec& elementForce(int e) const { return elemForce_[e]; }
 
   // Scatter a node-dof vector to equations (and back).
   void toEquations(const Eigen::VectorXd& nodal, Eigen::VectorXd& eqs) const;
@@ -92,6 +98,8 @@ class Assembler {
   // Member contact forces at s into contactForces_; rebuilds the pattern when
   // a pair with a force has no place in it.
   void evaluateMemberContact(const State& s, const StepRule& rule, bool wantTangent);
+  // The released forces at the step rule's load point into fRel_.
+  void releasedLoadAt(const State& s, const StepRule& rule);
   // The friction regularisation of node n (core/GroundContact.h).
   double frictionEps(int n, const State& s) const;
 
@@ -103,7 +111,8 @@ class Assembler {
   std::vector<int> uvPos_;        // per node: K(eq u, eq v) for the ground friction, -1: none
   double shortest_ = 1;           // shortest element
   std::vector<double> nodeMass_;  // per node: translational mass (row sums of the element masses)
-  Eigen::VectorXd r_, fRef_, fGrav_, fContact_, mNodal_;
+  Eigen::VectorXd r_, fRef_, fGrav_, fContact_, mNodal_, fRel_;
+  std::vector<ElemVec> elemForce_;  // per element, of the last assembly
   int patternVersion_ = -1;
   int structureVersion_ = 0;
   double forceScale_ = 0;

@@ -50,9 +50,10 @@ std::vector<MassPiece> massPieces(const Model& model, const State& state) {
     const double a = position(model, state, n[0]).x(), b = position(model, state, n[1]).x();
     pieces.push_back({std::min(a, b), std::max(a, b), m});
   }
+  const std::vector<char> held = model.heldNodes();
   for (int n = 0; n < model.numNodes(); ++n) {
     const double m = std::max(model.nodalMass(n)[0], model.nodalMass(n)[1]);
-    if (m <= 0 || !model.hasCoord(n)) continue;
+    if (m <= 0 || !model.hasCoord(n) || !held[n]) continue;
     const double x = position(model, state, n).x();
     pieces.push_back({x, x, m});
   }
@@ -95,21 +96,27 @@ std::vector<double> massHistogram(const std::vector<MassPiece>& pieces, double x
 DebrisFigures debrisFigures(const Model& model, const State& state) {
   DebrisFigures d;
   d.site = model.site();
-  bool any = false;
+  // The footprint from every node of the building; where the debris lies from
+  // the nodes still held by elements (a removed member's nodes are gone).
+  bool footprint = false, any = false;
   for (int n = 0; n < model.numNodes(); ++n) {
     if (!model.hasCoord(n)) continue;
-    const Vec2 x = position(model, state, n);
     const double x0 = model.coord(n).x();
+    d.footprintMin = footprint ? std::min(d.footprintMin, x0) : x0;
+    d.footprintMax = footprint ? std::max(d.footprintMax, x0) : x0;
+    footprint = true;
+  }
+  const std::vector<char> held = model.heldNodes();
+  for (int n = 0; n < model.numNodes(); ++n) {
+    if (!model.hasCoord(n) || !held[n]) continue;
+    const Vec2 x = position(model, state, n);
     if (!any) {
-      d.footprintMin = d.footprintMax = x0;
       d.xmin = d.xmax = x.x();
       d.height = x.y();
       d.leftNode = d.rightNode = n;
       any = true;
       continue;
     }
-    d.footprintMin = std::min(d.footprintMin, x0);
-    d.footprintMax = std::max(d.footprintMax, x0);
     d.height = std::max(d.height, x.y());
     if (x.x() < d.xmin) d.xmin = x.x(), d.leftNode = n;
     if (x.x() > d.xmax) d.xmax = x.x(), d.rightNode = n;

@@ -12,8 +12,19 @@ DofMap::DofMap(const Model& model) : version_(model.topologyVersion()) {
   used_.assign(nn, 0);
   aliased_.assign(nn, 0);
   restrained_.assign(static_cast<size_t>(nn) * kNodeDofs, 0);
+  // A rotation that no element holds (every element at the node is jointed
+  // there: the joints' relative rotations take up the node's) is no equation:
+  // its row and column would be empty. It keeps its value.
+  std::vector<char> rotationHeld(nn, 0);
   for (int e = 0; e < model.numElements(); ++e)
-    for (int n : model.element(e).nodes()) used_[n] = 1;
+    if (model.hasElement(e)) {
+      const Element& el = model.element(e);
+      const auto n = el.nodes();
+      for (int a = 0; a < 2; ++a) {
+        used_[n[a]] = 1;
+        if (el.holdsRotation(a)) rotationHeld[n[a]] = 1;
+      }
+    }
   // The slave of a shared joint is attached to its own elements; its translations
   // follow the master's equations.
   std::vector<int> aliasOf(nn, -1);
@@ -30,6 +41,7 @@ DofMap::DofMap(const Model& model) : version_(model.topologyVersion()) {
       restrained_[nd] = code[d] != 0;
       if (!used_[n] || restrained_[nd]) continue;
       if (aliasOf[n] >= 0 && d < 2) continue;  // numbered from the master below
+      if (d == 2 && !rotationHeld[n]) continue;
       eq_[nd] = numEq_++;
     }
   }
@@ -49,6 +61,7 @@ void DofMap::orderForFill(const Model& model) {
   if (numEq_ < 3) return;
   std::vector<std::vector<int>> adj(numEq_);
   for (int e = 0; e < model.numElements(); ++e) {
+    if (!model.hasElement(e)) continue;
     const auto eqs = elementEqs(model.element(e));
     for (int i : eqs)
       if (i >= 0)

@@ -1,7 +1,8 @@
 #pragma once
 // Equation numbers of the node dofs for one topology version. A dof is an
 // equation when it is free and some element (or joint) uses it; restrained
-// dofs carry prescribed values and give reactions. A shared joint aliases the
+// dofs carry prescribed values and give reactions; a rotation that no element
+// holds (Element::holdsRotation: every element there is jointed) is none. A shared joint aliases the
 // slave's translations to the master's equations.
 #include <array>
 #include <vector>

@@ -35,6 +35,10 @@ class Element {
   virtual ~Element() = default;
 
   virtual std::array<int, 2> nodes() const = 0;  // 0-based node indices
+  // False when the element puts no moment on the rotation of its node at `end`
+  // (a revolute joint there): a node whose rotation no element holds has no
+  // rotation equation (core/DofMap.h).
+  virtual bool holdsRotation(int end) const { return end == 0 || end == 1; }
   virtual void setNodes(const std::array<int, 2>& n) = 0;
   virtual int materialNumber() const = 0;
   virtual std::string typeName() const = 0;  // "frame-timoshenko", "frame-reissner", ...

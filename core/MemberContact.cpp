@@ -186,7 +186,10 @@ std::vector<int> jointGroups(const Model& model) {
 
 MemberContact::MemberContact(const Model& model, const DofMap& dofs)
     : data_(*model.memberContact()) {
-  const int nn = model.numNodes(), ne = model.numElements();
+  const int nn = model.numNodes();
+  for (int e = 0; e < model.numElements(); ++e)
+    if (model.hasElement(e)) live_.push_back(e);
+  const int ne = static_cast<int>(live_.size());
   group_ = jointGroups(model);
   usedNode_.assign(nn, 0);
   for (int n = 0; n < nn; ++n) {
@@ -196,10 +199,10 @@ MemberContact::MemberContact(const Model& model, const DofMap& dofs)
   }
   const double shortest = model.characteristicLength();
   const double fallback = data_.radius >= 0 ? data_.radius : 1e-3 * shortest;
-  elementRadius_.assign(ne, fallback);
+  elementRadius_.assign(model.numElements(), fallback);
   nodeRadius_.assign(nn, 0.0);
   double length = 0;
-  for (int e = 0; e < ne; ++e) {
+  for (int e : live_) {
     const Element& el = model.element(e);
     if (const MaterialSet* m = model.material(el.materialNumber()); m && m->A > 0 && m->I > 0)
       elementRadius_[e] = std::sqrt(3 * m->I / m->A);
@@ -216,17 +219,19 @@ MemberContact::MemberContact(const Model& model, const DofMap& dofs)
 
   // Pairs within contact distance in the reference configuration.
   std::vector<Box> boxes(ne);
-  for (int e = 0; e < ne; ++e) {
+  for (int i = 0; i < ne; ++i) {
+    const int e = live_[i];
     const auto nodes = model.element(e).nodes();
     Box b = Box::point(model.coord(nodes[0]).x(), model.coord(nodes[0]).y());
     b.add(model.coord(nodes[1]).x(), model.coord(nodes[1]).y());
-    boxes[e] = b.inflated(elementRadius_[e]);
+    boxes[i] = b.inflated(elementRadius_[e]);
   }
   ContactGrid grid;
   grid.build(boxes, 1e-6 * shortest);
   for (int n : contactNodes_) {
     const Vec2& x = model.coord(n);
-    grid.query(Box::point(x.x(), x.y()).inflated(nodeRadius_[n]), [&](int e) {
+    grid.query(Box::point(x.x(), x.y()).inflated(nodeRadius_[n]), [&](int i) {
+      const int e = live_[i];
       if (excluded(n, e, model)) return;
       const auto nodes = model.element(e).nodes();
       const PairPositions q{x, model.coord(nodes[0]), model.coord(nodes[1])};
@@ -262,7 +267,7 @@ bool MemberContact::valid(const Model& model, const State& s) const {
 }
 
 void MemberContact::search(const Model& model, const State& s) const {
-  const int ne = model.numElements();
+  const int ne = static_cast<int>(live_.size());
   for (int n = 0; n < model.numNodes(); ++n) {
     if (!usedNode_[n]) continue;
     const Vec2& X = model.coord(n);
@@ -271,17 +276,19 @@ void MemberContact::search(const Model& model, const State& s) const {
     anchor_[n] = b;
   }
   boxes_.resize(ne);
-  for (int e = 0; e < ne; ++e) {
+  for (int i = 0; i < ne; ++i) {
+    const int e = live_[i];
     const auto nodes = model.element(e).nodes();
     Box b = anchor_[nodes[0]];
     b.add(anchor_[nodes[1]].x0, anchor_[nodes[1]].y0);
     b.add(anchor_[nodes[1]].x1, anchor_[nodes[1]].y1);
-    boxes_[e] = b.inflated(elementRadius_[e] + margin_);
+    boxes_[i] = b.inflated(elementRadius_[e] + margin_);
   }
   grid_.build(boxes_, 1e-6 * margin_);
   candidates_.clear();
   for (int n : contactNodes_) {
-    grid_.query(anchor_[n].inflated(nodeRadius_[n] + margin_), [&](int e) {
+    grid_.query(anchor_[n].inflated(nodeRadius_[n] + margin_), [&](int i) {
+      const int e = live_[i];
       if (excluded(n, e, model)) return;
       const ContactPair key{n, e};
       if (std::binary_search(referenceExcluded_.begin(), referenceExcluded_.end(), key.key()))

@@ -130,7 +130,8 @@ class MemberContact {
 
   // The search and its cache (a function of the state; rebuilt on demand).
   mutable ContactGrid grid_;
-  mutable std::vector<Box> boxes_;
+  std::vector<int> live_;  // the elements in the model (removed ones are not)
+  mutable std::vector<Box> boxes_;  // per entry of live_
   mutable std::vector<Box> anchor_;  // per node: its swept box at the last search
   mutable std::vector<ContactPair> candidates_;
   mutable int candidatesVersion_ = 0;

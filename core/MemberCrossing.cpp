@@ -23,25 +23,30 @@ bool properlyCross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
 }  // namespace
 
 std::vector<MemberCrossing> findCrossings(const Model& model, const State& s) {
-  const int ne = model.numElements();
+  std::vector<int> live;
+  for (int e = 0; e < model.numElements(); ++e)
+    if (model.hasElement(e)) live.push_back(e);
+  const int ne = static_cast<int>(live.size());
   const std::vector<int> group = jointGroups(model);
   auto at = [&](int n) {
     return Vec2(model.coord(n).x() + s.u[3 * n], model.coord(n).y() + s.u[3 * n + 1]);
   };
   std::vector<Box> boxes(ne);
-  for (int e = 0; e < ne; ++e) {
-    const auto nodes = model.element(e).nodes();
+  for (int i = 0; i < ne; ++i) {
+    const auto nodes = model.element(live[i]).nodes();
     const Vec2 a = at(nodes[0]), b = at(nodes[1]);
-    boxes[e] = Box::point(a.x(), a.y());
-    boxes[e].add(b.x(), b.y());
+    boxes[i] = Box::point(a.x(), a.y());
+    boxes[i].add(b.x(), b.y());
   }
   ContactGrid grid;
   grid.build(boxes, 1e-9 * model.characteristicLength());
   std::vector<MemberCrossing> out;
-  for (int e = 0; e < ne; ++e) {
+  for (int i = 0; i < ne; ++i) {
+    const int e = live[i];
     const auto ne1 = model.element(e).nodes();
     const Vec2 a = at(ne1[0]), b = at(ne1[1]);
-    grid.query(boxes[e], [&](int f) {
+    grid.query(boxes[i], [&](int j) {
+      const int f = live[j];
       if (f <= e) return;
       const auto ne2 = model.element(f).nodes();
       for (int m : ne1)

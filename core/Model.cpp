@@ -35,6 +35,20 @@ void Model::setElement(int e, std::unique_ptr<Element> el) {
   elements_[e] = std::move(el);
 }
 
+std::unique_ptr<Element> Model::removeElement(int e) {
+  std::unique_ptr<Element> el = std::move(elements_[e]);
+  bumpTopology();
+  return el;
+}
+
+std::vector<char> Model::heldNodes() const {
+  std::vector<char> held(coords_.size(), 0);
+  for (const auto& el : elements_)
+    if (el)
+      for (int n : el->nodes()) held[n] = 1;
+  return held;
+}
+
 double Model::characteristicLength() const {
   double shortest = std::numeric_limits<double>::infinity();
   for (const auto& el : elements_) {

@@ -52,6 +52,31 @@ struct Site {
   double xmin = 0, xmax = 0;
 };
 
+// Elements removed at a given time (BLASt; REMOve removes at once): their
+// stiffness, mass, self-weight, loads and contact leave the model, and the
+// forces they exerted on the rest are released linearly over `release`
+// (0: at once). Element indices 0-based.
+struct Blast {
+  double time = 0;
+  std::vector<int> elements;
+  double release = 0;
+  bool done = false;
+};
+
+// The nodal forces a removed element exerted on the rest of the model
+// (global frame, element dof order), applied as a load that falls linearly
+// from its full value at `start` to zero at start + duration.
+struct ReleasedForce {
+  std::array<int, 2> nodes{-1, -1};
+  ElemVec force = ElemVec::Zero();
+  double start = 0, duration = 0;
+  // The factor of the force at time t: 1 at the start, 0 from its end on.
+  double factor(double t) const {
+    if (t <= start) return 1.0;
+    return t >= start + duration ? 0.0 : 1.0 - (t - start) / duration;
+  }
+};
+
 class Model {
  public:
   // --- nodes ---
@@ -88,7 +113,15 @@ class Model {
   int numElements() const { return static_cast<int>(elements_.size()); }
   Element& element(int e) { return *elements_[e]; }
   const Element& element(int e) const { return *elements_[e]; }
+  // False for an element number the mesh did not define or one removed (BLASt,
+  // REMOve): its slot stays empty so that element numbers never change.
+  bool hasElement(int e) const { return elements_[e] != nullptr; }
   void setElement(int e, std::unique_ptr<Element> el);  // grows the list as needed
+  // Takes element e out of the model (its slot stays empty); bumps the topology.
+  std::unique_ptr<Element> removeElement(int e);
+  // Per node: 1 when an element holds it (a node no element holds is not part
+  // of the structure: not drawn, not debris).
+  std::vector<char> heldNodes() const;
   std::vector<std::unique_ptr<Element>>& elements() { return elements_; }
   const std::vector<std::unique_ptr<Element>>& elements() const { return elements_; }
 
@@ -105,6 +138,10 @@ class Model {
   const std::vector<ElementLoad>& elementLoads() const { return elementLoads_; }
   std::optional<Site>& site() { return site_; }
   const std::optional<Site>& site() const { return site_; }
+  std::vector<Blast>& blasts() { return blasts_; }
+  const std::vector<Blast>& blasts() const { return blasts_; }
+  std::vector<ReleasedForce>& releasedForces() { return released_; }
+  const std::vector<ReleasedForce>& releasedForces() const { return released_; }
 
   // Bumped whenever the dof structure may change (MESH re-entry, HINGE2JOINT):
   // the dof map, sparsity pattern and symbolic factorization are rebuilt.
@@ -127,6 +164,8 @@ class Model {
   Vec2 gravity_ = Vec2::Zero();
   std::vector<ElementLoad> elementLoads_;
   std::optional<Site> site_;
+  std::vector<Blast> blasts_;
+  std::vector<ReleasedForce> released_;
   int topologyVersion_ = 0;
 };
 

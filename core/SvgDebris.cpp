@@ -49,8 +49,9 @@ std::string debrisSvg(const Model& model, const State& state, const DebrisFigure
   // The drawn x range: the nodes now, the footprint and the site.
   double x0 = std::min(d.xmin, d.footprintMin), x1 = std::max(d.xmax, d.footprintMax);
   double y0 = model.ground() ? model.ground()->y0 : 0.0, y1 = y0;
+  const std::vector<char> held = model.heldNodes();
   for (int n = 0; n < model.numNodes(); ++n) {
-    if (!model.hasCoord(n)) continue;
+    if (!model.hasCoord(n) || !held[n]) continue;
     const Vec2 p = position(model, state, n);
     y0 = std::min(y0, p.y());
     y1 = std::max(y1, p.y());
@@ -101,7 +102,8 @@ std::string debrisSvg(const Model& model, const State& state, const DebrisFigure
   o << "\"/>\n";
   // Nodal masses.
   for (int n = 0; n < model.numNodes(); ++n)
-    if (model.hasCoord(n) && std::max(model.nodalMass(n)[0], model.nodalMass(n)[1]) > 0) {
+    if (model.hasCoord(n) && held[n] &&
+        std::max(model.nodalMass(n)[0], model.nodalMass(n)[1]) > 0) {
       const Vec2 p = position(model, state, n);
       o << "<circle class=\"mass\" cx=\"" << px(X(p.x())) << "\" cy=\"" << px(Y(p.y()))
         << "\" r=\"3\" fill=\"#1F77B4\"/>\n";

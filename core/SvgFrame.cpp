@@ -167,7 +167,7 @@ std::string SvgFrame::svg(const Model& model, const State& state) const {
     ymax = std::max(ymax, p.y());
   };
   for (int n = 0; n < numNodes; ++n) {
-    if (!model.hasCoord(n) || !(used[n] || restrained(n))) continue;
+    if (!model.hasCoord(n) || !used[n]) continue;  // nodes no element holds are not drawn
     grow(deformed(n));
     if (undeformed_) grow(model.coord(n));
   }
@@ -271,7 +271,7 @@ std::string SvgFrame::svg(const Model& model, const State& state) const {
     std::ostringstream base, hatch, fill;
     Pen b{base}, h{hatch};
     for (int n = 0; n < numNodes; ++n) {
-      if (!model.hasCoord(n) || !restrained(n)) continue;
+      if (!model.hasCoord(n) || !used[n] || !restrained(n)) continue;
       const auto& code = model.bound(n);
       const bool ru = code[0] != 0, rv = code[1] != 0, rr = code[2] != 0;
       const Vec2 c = P(deformed(n));

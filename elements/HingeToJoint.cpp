@@ -82,6 +82,7 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
   std::vector<ElemVec> endForces(ne, ElemVec::Zero());
   std::map<int, Relative> slaves;  // slave node -> its joint's master and relative state
   for (int e = 0; e < ne; ++e) {
+    if (!model.hasElement(e)) continue;
     Element& el = model.element(e);
     const auto* carrier = dynamic_cast<const HingeCarrier*>(&innermost(el));
     joint[e] = carrier && wantsJoint(el, carrier->hinge());
@@ -107,7 +108,8 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
   std::map<int, int> hingeEnd;  // element -> end that gets the slave
   std::vector<int> attached(model.numNodes(), 0);
   for (int e = 0; e < ne; ++e)
-    for (int node : model.element(e).nodes()) ++attached[node];
+    if (model.hasElement(e))
+      for (int node : model.element(e).nodes()) ++attached[node];
   for (const Joint& j : model.joints()) attached[j.master] = attached[j.slave] = 2;
   for (int e = 0; e < ne; ++e) {
     if (!joint[e]) continue;
@@ -269,7 +271,9 @@ std::vector<CreatedJoint> jointFailedHinges(Model& model, State& state) {
   };
   bool any = false;
   for (int e = 0; e < model.numElements() && !any; ++e)
-    if (auto* c = dynamic_cast<const HingeCarrier*>(&innermost(model.element(e))))
+    if (!model.hasElement(e))
+      continue;
+    else if (auto* c = dynamic_cast<const HingeCarrier*>(&innermost(model.element(e))))
       any = failed(model.element(e), c->hinge());
   if (!any) return {};
   return convert(model, state, MemberLaws::Inelastic, failed,

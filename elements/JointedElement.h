@@ -39,6 +39,10 @@ class JointedElement final : public Element, public Checkpoint, public MaterialC
 
   // Outer nodes: the wrapped element's, with the master at slaveEnd.
   std::array<int, 2> nodes() const override { return nodes_; }
+  // Not at the joint: the relative rotation takes up whatever the master's is.
+  bool holdsRotation(int end) const override {
+    return end != slaveEnd_ && inner_->holdsRotation(end);
+  }
   // Sets the outer nodes (the node at slaveEnd must be the master).
   void setNodes(const std::array<int, 2>& n) override { nodes_ = n; }
   int materialNumber() const override { return inner_->materialNumber(); }

@@ -37,7 +37,7 @@ const Element& innermost(const Element& e) {
 std::vector<JointedElement*> jointedElements(Model& model) {
   std::vector<JointedElement*> out;
   for (int e = 0; e < model.numElements(); ++e)
-    for (auto* j = dynamic_cast<JointedElement*>(&model.element(e)); j;
+    for (auto* j = model.hasElement(e) ? dynamic_cast<JointedElement*>(&model.element(e)) : nullptr; j;
          j = dynamic_cast<JointedElement*>(&j->inner()))
       out.push_back(j);
   return out;
@@ -46,7 +46,9 @@ std::vector<JointedElement*> jointedElements(Model& model) {
 std::vector<const JointedElement*> jointedElements(const Model& model) {
   std::vector<const JointedElement*> out;
   for (int e = 0; e < model.numElements(); ++e)
-    for (auto* j = dynamic_cast<const JointedElement*>(&model.element(e)); j;
+    for (auto* j =
+             model.hasElement(e) ? dynamic_cast<const JointedElement*>(&model.element(e)) : nullptr;
+         j;
          j = dynamic_cast<const JointedElement*>(&j->inner()))
       out.push_back(j);
   return out;
@@ -63,6 +65,7 @@ int installJoints(Model& model) {
 
     int attached = 0, element = -1, end = -1;
     for (int e = 0; e < model.numElements(); ++e) {
+      if (!model.hasElement(e)) continue;
       const auto n = model.element(e).nodes();
       for (int a = 0; a < 2; ++a)
         if (n[a] == joint.slave) {
@@ -97,7 +100,54 @@ std::unique_ptr<Element> withoutJoint(std::unique_ptr<Element> el, int slave) {
   return el;
 }
 
+// The elements at each node (a condensed joint's element counts at its master).
+std::vector<int> elementsAtNodes(const Model& model) {
+  std::vector<int> count(model.numNodes(), 0);
+  for (int e = 0; e < model.numElements(); ++e)
+    if (model.hasElement(e))
+      for (int n : model.element(e).nodes()) ++count[n];
+  return count;
+}
+
 }  // namespace
+
+std::vector<Joint> dissolveLooseJoints(Model& model, State& state) {
+  std::vector<Joint> out;
+  bool synced = false;
+  // One pass per joint removed: dissolving one changes the counts of the others.
+  for (bool again = true; again;) {
+    again = false;
+    const std::vector<int> count = elementsAtNodes(model);
+    for (std::size_t k = 0; k < model.joints().size() && !again; ++k) {
+      const Joint joint = model.joints()[k];
+      int holder = -1;  // the element wrapped at a condensed joint's slave
+      if (joint.form == JointForm::Condensed)
+        for (int e = 0; e < model.numElements() && holder < 0; ++e) {
+          if (!model.hasElement(e)) continue;
+          for (auto* je = dynamic_cast<const JointedElement*>(&model.element(e)); je;
+               je = dynamic_cast<const JointedElement*>(&je->inner()))
+            if (je->slaveNode() == joint.slave) holder = e;
+        }
+      // Condensed: its element is gone, or nothing but it holds the master.
+      // Shared: one side has no element left.
+      const bool loose = joint.form == JointForm::Condensed
+                             ? holder < 0 || count[joint.master] <= 1
+                             : count[joint.master] == 0 || count[joint.slave] == 0;
+      if (!loose) continue;
+      if (!synced) {
+        syncSlaveNodes(model, state);
+        synced = true;
+      }
+      if (holder >= 0)
+        model.elements()[holder] = withoutJoint(std::move(model.elements()[holder]), joint.slave);
+      model.joints().erase(model.joints().begin() + static_cast<std::ptrdiff_t>(k));
+      out.push_back(joint);
+      again = true;
+    }
+  }
+  if (!out.empty()) model.bumpTopology();
+  return out;
+}
 
 std::vector<RupturedJoint> ruptureJoints(Model& model, State& state) {
   std::vector<RupturedJoint> out;
@@ -108,6 +158,7 @@ std::vector<RupturedJoint> ruptureJoints(Model& model, State& state) {
     int element = -1;
     double rotation = 0;
     for (int e = 0; e < model.numElements() && element < 0; ++e) {
+      if (!model.hasElement(e)) continue;
       if (joint.form == JointForm::Condensed) {
         for (auto* je = dynamic_cast<const JointedElement*>(&model.element(e)); je;
              je = dynamic_cast<const JointedElement*>(&je->inner()))

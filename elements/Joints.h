@@ -53,6 +53,14 @@ struct RupturedJoint {
 // version when anything ruptured.
 std::vector<RupturedJoint> ruptureJoints(Model& model, State& state);
 
+// After elements were removed from the model (BLASt, REMOve): every joint left
+// with a side that no element holds any more is dissolved (a condensed joint
+// whose element is gone, or whose master no other element holds: the element
+// takes the slave node as its own, with its state, as at a rupture; a shared
+// joint with a side without elements). State continuous. Bumps the topology
+// version when it dissolved any; returns the joints dissolved.
+std::vector<Joint> dissolveLooseJoints(Model& model, State& state);
+
 // Writes the state of the slave nodes of Condensed joints into the state
 // vectors, for output: translations, velocities and accelerations are the
 // master's, the rotation (and its rates) the master's plus the relative ones;

@@ -121,8 +121,10 @@ void writeModel(std::ostream& out, const Model& model) {
     if (m.hardening)
       for (double x : {m.hardening->Mc, m.hardening->My, m.hardening->Kh1, m.hardening->Kh2}) put(out, x);
     putBool(out, m.softening.has_value());
-    if (m.softening)
+    if (m.softening) {
       for (double x : {m.softening->Mu, m.softening->Ks}) put(out, x);
+      putOptional(out, m.softening->thetaR);
+    }
   }
   putTag(out, "ELEM");
   putCount(out, static_cast<std::size_t>(model.numElements()));
@@ -162,6 +164,22 @@ void writeModel(std::ostream& out, const Model& model) {
   putBool(out, model.site().has_value());
   if (model.site())
     for (double x : {model.site()->xmin, model.site()->xmax}) put(out, x);
+  putTag(out, "BLST");
+  putCount(out, model.blasts().size());
+  for (const Blast& b : model.blasts()) {
+    put(out, b.time);
+    put(out, b.release);
+    putBool(out, b.done);
+    putCount(out, b.elements.size());
+    for (int e : b.elements) put(out, e);
+  }
+  putCount(out, model.releasedForces().size());
+  for (const ReleasedForce& f : model.releasedForces()) {
+    for (int n : f.nodes) put(out, n);
+    for (int i = 0; i < kElemDofs; ++i) put(out, f.force[i]);
+    put(out, f.start);
+    put(out, f.duration);
+  }
   put(out, model.topologyVersion());
 }
 
@@ -204,6 +222,7 @@ Model readModel(std::istream& in, int minTopologyVersion) {
     if (getBool(in)) {
       SofteningData s;
       for (double* x : {&s.Mu, &s.Ks}) *x = get<double>(in);
+      s.thetaR = getOptional(in);
       m.softening = s;
     }
     model.materials()[key] = std::move(m);
@@ -255,6 +274,32 @@ Model readModel(std::istream& in, int minTopologyVersion) {
     Site site;
     for (double* x : {&site.xmin, &site.xmax}) *x = get<double>(in);
     model.site() = site;
+  }
+  expectTag(in, "BLST");
+  const std::size_t blasts = getCount(in);
+  for (std::size_t k = 0; k < blasts; ++k) {
+    Blast b;
+    b.time = get<double>(in);
+    b.release = get<double>(in);
+    b.done = getBool(in);
+    b.elements.resize(getCount(in));
+    for (int& e : b.elements) {
+      e = get<int>(in);
+      if (e < 0 || e >= model.numElements()) throw CheckpointError("blast of an element out of range");
+    }
+    model.blasts().push_back(std::move(b));
+  }
+  const std::size_t released = getCount(in);
+  for (std::size_t k = 0; k < released; ++k) {
+    ReleasedForce f;
+    for (int& n : f.nodes) {
+      n = get<int>(in);
+      if (n < 0 || n >= nodes) throw CheckpointError("released force on a node out of range");
+    }
+    for (int i = 0; i < kElemDofs; ++i) f.force[i] = get<double>(in);
+    f.start = get<double>(in);
+    f.duration = get<double>(in);
+    model.releasedForces().push_back(f);
   }
   const int version = get<int>(in);
   while (model.topologyVersion() < std::max(version, minTopologyVersion)) model.bumpTopology();

@@ -100,6 +100,7 @@ std::string runSummaryText(const RunSummary& s) {
                   s.jointsFormed == 1 ? "" : "s", s.jointsRuptured);
     out += buf;
   }
+  if (s.removed > 0) out += ", " + std::to_string(s.removed) + " removed";
   if (s.outsideRuns > 0)
     out += s.debrisRuns == 1 ? std::string(", debris OUTSIDE the site")
                              : ", debris OUTSIDE the site in " + std::to_string(s.outsideRuns) +
@@ -285,6 +286,7 @@ class Walker {
     total_.maxMomentRatio = std::max(total_.maxMomentRatio, s.maxMomentRatio);
     total_.jointsFormed += s.jointsFormed;
     total_.jointsRuptured += s.jointsRuptured;
+    total_.removed += s.removed;
     total_.debrisRuns += s.debrisRuns;
     total_.outsideRuns += s.outsideRuns;
     if (!row.ok) return;

@@ -13,6 +13,7 @@
 #include "elements/MaterialUpdate.h"
 #include "macro/Expression.h"
 #include "macro/Limits.h"
+#include "macro/BlastCommand.h"
 #include "macro/LoadCommands.h"
 
 namespace c2d {
@@ -1151,6 +1152,7 @@ std::vector<MeshCommandEntry> meshCommandTable() {
                          expr("dy", "y shift after the conversion", "0")}),
                applyPolar});
   for (auto& e : loadCommandTable()) t.push_back(std::move(e));
+  for (auto& e : blastCommandTable()) t.push_back(std::move(e));
   t.push_back({meshSpec("PRINt", "Echo the mesh data in the log (default).", {}), applyPrint});
   t.push_back({meshSpec("NOPRint", "Stop echoing the mesh data in the log.", {}), applyNoPrint});
   CommandSpec para = meshSpec("PARAmeter",

@@ -38,9 +38,11 @@ bool interactiveKind(const std::string& k) {
   return std::any_of(kinds.begin(), kinds.end(), [&](const char* w) { return k == w; });
 }
 
-const char* kColumnHint =
-    "TPLOt columns: time, prop, disp_n_d, velo_n_d, acce_n_d, reac_n_d, stre_e_c, kinetic, "
-    "strain, contact, external, total, arcl";
+std::string columnHint() {
+  std::string hint = "TPLOt columns: time, prop, disp_n_d, velo_n_d, acce_n_d, reac_n_d, stre_e_c";
+  for (const char* w : kEnergyColumns) hint += std::string(", ") + w;
+  return hint + ", arcl";
+}
 
 // The TPLOt column a PLOT,CURVe field names, as TimeHistory writes it
 // ("disp_11_1"), or "" when the field names none. The node or element number
@@ -110,13 +112,13 @@ class PlotCommand final : public SolutionCommand {
                                       : "unknown PLOT kind '" + m.optionText + "' (MESH, DEFOrmed, CURVe, DEBRis)");
     ctx.skipBlank();  // the blank record that ended the previous data set
     const Record& rec = ctx.take(m.record, "PLOT,CURVe record 'xcolumn ycolumn [xlabel ylabel]'");
-    if (rec.size() < 2) failData(rec, rec.size(), "PLOT,CURVe needs 'xcolumn ycolumn [xlabel ylabel]'", kColumnHint);
+    if (rec.size() < 2) failData(rec, rec.size(), "PLOT,CURVe needs 'xcolumn ycolumn [xlabel ylabel]'", columnHint());
     if (rec.size() == 3 || rec.size() > 4)
       failData(rec, rec.size() == 3 ? 2 : 4, "PLOT,CURVe labels come as a pair 'xlabel ylabel'",
                "write blanks inside a label as underscores: u_[m]");
     for (std::size_t i = 0; i < 2; ++i)
       if (resolveColumn(rec, i, ctx.params()).empty())
-        failData(rec, i, "'" + rec.text(i) + "' is not a TPLOt column", kColumnHint);
+        failData(rec, i, "'" + rec.text(i) + "' is not a TPLOt column", columnHint());
     m.data.push_back(rec);
     ctx.skipBlank();
   }

@@ -32,6 +32,20 @@ namespace c2d {
 
 namespace {
 
+// 0-based numbers as the deck's, ranges of consecutive ones joined: "3, 5-7".
+std::string numberList(const std::vector<int>& numbers) {
+  std::string out;
+  for (std::size_t i = 0; i < numbers.size();) {
+    std::size_t j = i;
+    while (j + 1 < numbers.size() && numbers[j + 1] == numbers[j] + 1) ++j;
+    if (!out.empty()) out += ", ";
+    out += std::to_string(numbers[i] + 1);
+    if (j > i) out += (j == i + 1 ? ", " : "-") + std::to_string(numbers[j] + 1);
+    i = j + 1;
+  }
+  return out;
+}
+
 std::string fmt(const char* f, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, f, v);
@@ -125,6 +139,23 @@ void ProblemRun::run() {
            << fmt("%.6e", ev.limit) << "\n";
     }
   };
+  analysis_->removals().onEvent = [this](const RemovalEvent& ev) {
+    removed_ += static_cast<int>(ev.elements.size());
+    log_ << "  " << (ev.scheduled ? "blast " : "remove") << " at t = " << fmt("%.6e", ev.time)
+         << ": element" << (ev.elements.size() == 1 ? " " : "s ") << numberList(ev.elements)
+         << " removed, ";
+    if (ev.release > 0)
+      log_ << "forces released over td = " << fmt("%.4e", ev.release);
+    else
+      log_ << "at once";
+    if (!ev.nodesLeaving.empty())
+      log_ << "; node" << (ev.nodesLeaving.size() == 1 ? " " : "s ") << numberList(ev.nodesLeaving)
+           << " leave" << (ev.nodesLeaving.size() == 1 ? "s" : "") << " the model";
+    if (ev.jointsDissolved > 0)
+      log_ << "; " << ev.jointsDissolved << " joint" << (ev.jointsDissolved == 1 ? "" : "s")
+           << " dissolved";
+    log_ << "; energy removed " << fmt("%.6e", ev.energy) << "\n";
+  };
   for (const auto& batch : batches_)
     if (execList(batch, true) == Flow::Stop) break;
   const Status st = analysis_->commit();
@@ -195,6 +226,7 @@ RunSummary ProblemRun::summary() const {
   s.maxMomentRatio = maxMomentRatio_;
   s.jointsFormed = jointsFormed_;
   s.jointsRuptured = jointsRuptured_;
+  s.removed = removed_;
   s.debrisRuns = debris_ ? 1 : 0;
   s.outsideRuns = debris_ && debris_->outside() ? 1 : 0;
   return s;
@@ -475,6 +507,10 @@ void ProblemRun::setStepCutting(bool on, double dtMin) {
 }
 
 void ProblemRun::setIntegrator(const TimeIntegrator& ti) {
+  // A converged step ends under the rule it was solved with (its energy, the
+  // forces a blast at its time releases), not under the new one.
+  const Status st = analysis_->commit();
+  if (!st) throw AnalysisError("DYNAmic: committing the last step: " + st.why);
   analysis_->setIntegrator(ti);
   log_ << "  DYNA   " << ti.describe() << "\n";
 }
@@ -754,6 +790,17 @@ void ProblemRun::hingesToJoints(const Macro& m, MemberLaws laws) {
          << fmt("%.6e", j.relativeRotation) << "\n";
 }
 
+void ProblemRun::removeMembers(const Macro& m) {
+  std::vector<int> elements;
+  for (int e : selection(m, model_.numElements())) elements.push_back(e);
+  if (elements.empty()) fail(m, "no element in the range");
+  const double td = m.has(3) && !m.record.text(5).empty() ? m.numbers[3].eval(params_) : 0.0;
+  if (!(td >= 0)) fail(m, "the release time td must be zero or positive");
+  const Status st = analysis_->removeElements(elements, td);
+  if (!st) fail(m, st.why);
+  hingeStep_.resize(model_.numElements(), 0);
+}
+
 // ------------------------------------------------------------------ restart
 
 std::filesystem::path ProblemRun::restartPath(const Macro& m) const {
@@ -772,7 +819,7 @@ std::string ProblemRun::runState() const {
   for (double x : {dtMin_, dtNominal_, energy0_, energyScale_, energyError_, maxMomentRatio_,
                    peakGroundForce_, peakGroundTime_})
     put(out, x);
-  for (int x : {stepsSinceCut_, cuts_, jointsFormed_, jointsRuptured_}) put(out, x);
+  for (int x : {stepsSinceCut_, cuts_, jointsFormed_, jointsRuptured_, removed_}) put(out, x);
   putBool(out, energyStarted_);
   putBool(out, dynamicSeen_);
   return out.str();
@@ -790,7 +837,8 @@ void ProblemRun::setRunState(const std::string& bytes) {
   for (double* x : {&dtMin_, &dtNominal_, &energy0_, &energyScale_, &energyError_,
                     &maxMomentRatio_, &peakGroundForce_, &peakGroundTime_})
     *x = get<double>(in);
-  for (int* x : {&stepsSinceCut_, &cuts_, &jointsFormed_, &jointsRuptured_}) *x = get<int>(in);
+  for (int* x : {&stepsSinceCut_, &cuts_, &jointsFormed_, &jointsRuptured_, &removed_})
+    *x = get<int>(in);
   energyStarted_ = getBool(in);
   dynamicSeen_ = getBool(in);
 }

@@ -46,6 +46,7 @@ struct RunSummary {
   bool dynamic = false;         // some step was dynamic
   double maxMomentRatio = 0;    // largest |M|/Mu of an element with a softening law, any time
   int jointsFormed = 0, jointsRuptured = 0;  // during the run (fully softened hinges, ruptures)
+  int removed = 0;                            // elements removed (BLASt, REMOve)
   // Runs that ended with ground contact (debris figures), and those of them whose
   // debris left the site (SITE).
   int debrisRuns = 0, outsideRuns = 0;
@@ -94,6 +95,8 @@ class ProblemRun {
   void setTimeHistory(const Macro& m);
   void reenterMesh(const Macro& m);
   void hingesToJoints(const Macro& m, MemberLaws laws);
+  // REMOve,ELEMents,n1,n2,inc,td.
+  void removeMembers(const Macro& m);
   // SAVE[,name]: commit the converged step and write <outDir>/<name>.rst (default
   // name: the run's stem). REST[,name]: replace the model and the analysis state
   // by the ones saved there; the following commands continue from them.
@@ -159,6 +162,7 @@ class ProblemRun {
   std::vector<int> hingeStep_;  // step at which each element's hinge formed
   int hingeCount_ = 0;
   int jointsFormed_ = 0, jointsRuptured_ = 0;
+  int removed_ = 0;
   double maxMomentRatio_ = 0;
   double energy0_ = 0, energyScale_ = 0, energyError_ = 0;
   bool energyStarted_ = false;

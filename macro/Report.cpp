@@ -87,6 +87,10 @@ void printStressTable(std::ostream& os, Model& model, const State& state, double
   title(os, "E l e m e n t   S e c t i o n   F o r c e s", state, loadFactor);
   line(os, "   Elmt  Matl       N            V            M");
   for (int e : elements) {
+    if (!model.hasElement(e)) {
+      line(os, "%7d  removed", e + 1);
+      continue;
+    }
     const SectionForces f = model.element(e).sectionForces();
     line(os, "%7d %5d %12.5E %12.5E %12.5E", e + 1, model.element(e).materialNumber(), clean(f.N),
          clean(f.V), clean(f.M));
@@ -100,6 +104,7 @@ void printHingeTable(std::ostream& os, Model& model, const State& state, double 
   line(os, "   Elmt  Step      x            y          Jump        Moment     State");
   int count = 0;
   for (int e = 0; e < model.numElements(); ++e) {
+    if (!model.hasElement(e)) continue;
     const auto* h = dynamic_cast<const HingeCarrier*>(&model.element(e));
     if (!h) continue;
     const HingeInfo info = h->hinge();

@@ -585,6 +585,34 @@ class HingeToJointCommand final : public SolutionCommand {
   }
 };
 
+class RemoveCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("REMOve",
+                    "REMOve,ELEMents,n1,n2,inc,td: elements n1 to n2 step inc leave the model now "
+                    "(the converged state is committed first), their forces on the rest released "
+                    "linearly over td (0 or empty: at once), as a BLASt record at the current "
+                    "time does (see BLASt): the GSA alternate-path column removal.",
+                    {word("option", "ELEMents"), num("n1", "first element"),
+                     num("n2", "last element", "n1"), num("inc", "increment", "1"),
+                     num("td", "release time of the forces", "0")});
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    if (!keywordMatches(m.optionText, "ELEMents"))
+      fail(m, 1, m.optionText.empty() ? "REMOve needs ELEMents and the element numbers"
+                                      : "unknown option '" + m.optionText + "' (ELEMents)");
+    if (!written(m, 0)) fail(m, 2, "REMOve,ELEMents needs the first element n1");
+    checkPositive(m, 0, ctx.params(), "the first element");
+    if (written(m, 3) && !(m.numbers[3].eval(ctx.params()) >= 0))
+      fail(m, 5, "the release time td must be zero or positive");
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    r.removeMembers(m);
+    return Flow::Next;
+  }
+};
+
 class TplotCommand final : public SolutionCommand {
  public:
   CommandSpec spec() const override {
@@ -735,6 +763,7 @@ SolutionCommands::SolutionCommands() : registry_("Solution commands (BATCh ... E
   add(makeParaViewCommand());
   add(std::make_unique<MeshCommandMacro>());
   add(std::make_unique<HingeToJointCommand>());
+  add(std::make_unique<RemoveCommand>());
   add(std::make_unique<SaveCommand>());
   add(std::make_unique<RestCommand>());
   add(std::make_unique<ParaCommand>());

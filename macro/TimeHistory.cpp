@@ -52,7 +52,10 @@ void TimeHistory::record(Analysis& analysis, bool force) {
       case Kind::Acce: row.push_back(s.a[nd]); break;
       case Kind::Reac: row.push_back(nd < r.size() ? r[nd] : 0.0); break;
       case Kind::Stre: {
-        const SectionForces f = analysis.model().element(c.index).sectionForces();
+        // A removed element carries nothing.
+        const Model& model = analysis.model();
+        const SectionForces f =
+            model.hasElement(c.index) ? model.element(c.index).sectionForces() : SectionForces{};
         row.push_back(c.component == 0 ? f.N : c.component == 1 ? f.V : f.M);
         break;
       }

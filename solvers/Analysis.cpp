@@ -15,7 +15,8 @@ namespace {
 constexpr double kSingularResidual = 1e-6;
 }  // namespace
 
-Analysis::Analysis(Model& model) : model_(model), assembler_(model), hinges_(*this) {
+Analysis::Analysis(Model& model)
+    : model_(model), assembler_(model), hinges_(*this), removal_(*this) {
   setLinearSolver("auto");
   state_.prop = state_.propn = 1.0;  // FEAP: loads at full value until a PROP table is given
   topologyChanged();
@@ -135,8 +136,31 @@ Status Analysis::advance() {
   // A commit with nothing to do skips its refresh; the topology may still have
   // changed since (HINGE2JOINT right after a converged step).
   if (assembler_.patternVersion() != model_.topologyVersion()) topologyChanged();
-  beginStep(state_.tn + state_.dt, 1.0, true);
+  // A blast due at the committed time that no commit has made (one at the start).
+  st = afterCommitEvents();
+  if (!st) return st;
+  stepEnd_ = state_.tn + state_.dt;
+  const double t = nextStepTime();
+  beginStep(t, state_.dt > 0 ? (t - state_.tn) / state_.dt : 1.0, true);
   return Status::success();
+}
+
+double Analysis::nextStepTime() const {
+  if (path_) return stepEnd_;  // path following: blasts at the first commit past their time
+  const double land = removal_.nextLanding(state_.tn);
+  return land < stepEnd_ - MemberRemoval::tolerance(state_.dt) ? land : stepEnd_;
+}
+
+Status Analysis::removeElements(const std::vector<int>& elements, double release) {
+  if (dirty_ && !converged_ && !history_.empty())
+    return Status::failure("the current step has not converged: remove members after it does");
+  Status st = commit();
+  if (!st) return st;
+  st = removal_.removeNow(elements, release);
+  if (!st) return st;
+  topologyChanged();
+  if (!integrator_.dynamic()) st = evaluateState();
+  return st;
 }
 
 void Analysis::beginStep(double time, double pathScale, bool predict) {
@@ -233,6 +257,7 @@ Status Analysis::addPrescribedIncrement() {
   ElemMat ke;
   Status st;
   for (int e = 0; e < model_.numElements() && st; ++e) {
+    if (!model_.hasElement(e)) continue;
     Element& el = model_.element(e);
     const auto nodes = el.nodes();
     for (int a = 0; a < 2; ++a)
@@ -270,7 +295,8 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
   // The step starts again from the committed state.
   if (predicted_ &&
       (!st || (!info.converged && info.iteration >= 2 && !(info.energy <= energy0_)))) {
-    for (auto& el : model_.elements()) el->revert();
+    for (auto& el : model_.elements())
+      if (el) el->revert();
     state_.u = state_.un;
     beginStep(state_.t, 1.0, false);
     const int iteration = info.iteration;
@@ -367,13 +393,27 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
       return Status::success();
     }
   }
+  // A landing time of the member removal inside the step (a blast, the end
+  // of a release): the step is committed there, the removal made, and the
+  // rest of the step starts a new iteration history.
+  if (info.converged && !hinges_.locating() && !path_ &&
+      state_.t < stepEnd_ - MemberRemoval::tolerance(state_.dt)) {
+    st = commit();
+    if (!st) return st;
+    const double t = nextStepTime();
+    beginStep(t, state_.dt > 0 ? (t - state_.tn) / state_.dt : 1.0, true);
+    info.converged = false;
+    converged_ = false;
+    return Status::success();
+  }
   converged_ = info.converged;
   history_.push_back(info);
   // Plain Newton cycling (on the kinks of a hardening law): the step starts
   // again from the committed state with the line search of TANG,LINE, so that
   // a step TANG,LINE converges converges here too, through the same iterates.
   if (!info.converged && !lineSearch && !globalized_ && !path_ && cycling()) {
-    for (auto& el : model_.elements()) el->revert();
+    for (auto& el : model_.elements())
+      if (el) el->revert();
     state_.u = state_.un;
     beginStep(state_.t, 1.0, false);
     globalized_ = true;
@@ -510,7 +550,8 @@ Status Analysis::solveOnly(IterationInfo& info) {
 }
 
 void Analysis::back() {
-  for (auto& el : model_.elements()) el->revert();
+  for (auto& el : model_.elements())
+    if (el) el->revert();
   state_.revert();
   history_.clear();
   energy0_ = 0;
@@ -545,7 +586,8 @@ Status Analysis::commit() {
 }
 
 Status Analysis::commitEvaluated() {
-  for (auto& el : model_.elements()) el->commit();
+  for (auto& el : model_.elements())
+    if (el) el->commit();
   hinges_.committed();
   if (path_) {
     path_->endStep(stepInc_, stepDlambda_);
@@ -553,16 +595,23 @@ Status Analysis::commitEvaluated() {
   }
   state_.commit();
   dirty_ = false;
-  if (topology_.afterCommit(model_, state_)) {
-    // The new elements at the committed state, so that the reactions and
-    // section forces reported for this step are current (statics: a dynamic
-    // evaluation at t_n would move the joints' relative rates).
-    topologyChanged();
-    if (!integrator_.dynamic())
-      if (Status ev = evaluateState(); !ev) return ev;
-    account_.restartFrom(energy());
-  }
+  if (Status st = afterCommitEvents(); !st) return st;
   if (onCommit) onCommit();
+  return Status::success();
+}
+
+Status Analysis::afterCommitEvents() {
+  const bool removed = removal_.afterCommit();
+  const bool joints = topology_.afterCommit(model_, state_);
+  if (!removed && !joints) return Status::success();
+  // The new elements at the committed state, so that the reactions and
+  // section forces reported for this step are current (statics: a dynamic
+  // evaluation at t_n would move the joints' relative rates).
+  topologyChanged();
+  if (!integrator_.dynamic())
+    if (Status ev = evaluateState(); !ev) return ev;
+  // Joints: a jump the change made shows in the balance (removals book theirs).
+  if (joints) account_.restartFrom(energy());
   return Status::success();
 }
 
@@ -603,7 +652,7 @@ void Analysis::writeState(std::ostream& out) const {
     put(out, x);
   put(out, state_.step);
   putTag(out, "BOOK");
-  for (double x : {hinges_.committedDemand(), stepDlambda_, energy0_}) put(out, x);
+  for (double x : {hinges_.committedDemand(), stepDlambda_, energy0_, stepEnd_}) put(out, x);
   account_.write(out);
   putVector(out, stepInc_);
   putBool(out, converged_);
@@ -655,7 +704,7 @@ void Analysis::readState(std::istream& in) {
   topologyChanged();
   expectTag(in, "BOOK");
   hinges_.setCommittedDemand(get<double>(in));
-  for (double* x : {&stepDlambda_, &energy0_}) *x = get<double>(in);
+  for (double* x : {&stepDlambda_, &energy0_, &stepEnd_}) *x = get<double>(in);
   account_.read(in);
   stepInc_ = getVector(in);
   account_.resize(model_.numNodes());

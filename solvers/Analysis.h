@@ -22,6 +22,7 @@
 #include "solvers/EnergyAccount.h"
 #include "solvers/HingeEvents.h"
 #include "solvers/LinearSolver.h"
+#include "solvers/MemberRemoval.h"
 #include "solvers/PathFollowing.h"
 #include "solvers/ProportionalLoad.h"
 #include "solvers/TimeIntegrator.h"
@@ -43,6 +44,7 @@ struct IterationInfo {
 
 class Analysis {
   friend class HingeEvents;  // locates events inside a step: sub-steps from the committed state
+  friend class MemberRemoval;  // removes elements at a committed state
 
  public:
   explicit Analysis(Model& model);
@@ -117,6 +119,13 @@ class Analysis {
   // Joints formed and ruptured during the run (after a commit; set onEvent to hear of them).
   TopologyEvents& topologyEvents() { return topology_; }
 
+  // Members removed during the run (BLASt at their times; REMOve through
+  // removeElements); set removals().onEvent to hear of them.
+  MemberRemoval& removals() { return removal_; }
+  // REMOve: commits the converged state and removes these elements (0-based)
+  // there, their forces released over `release`.
+  Status removeElements(const std::vector<int>& elements, double release);
+
   // Topology change (MESH re-entry, HINGE2JOINT): carry the state to the new node count.
   void topologyChanged();
 
@@ -164,6 +173,12 @@ class Analysis {
   StepRule stepRule() const;
   // Evaluates the elements at the current state (no tangent).
   Status evaluateState();
+  // After a commit: members removed (blasts due), joints formed and ruptured;
+  // the analysis follows the model's new topology. Idempotent.
+  Status afterCommitEvents();
+  // The end of the next step or sub-step from t_n: stepEnd_, or a landing
+  // time of the member removal before it.
+  double nextStepTime() const;
   // The part of commit() after the evaluation and the energy booking: the
   // elements commit their trial states as last evaluated.
   Status commitEvaluated();
@@ -201,6 +216,8 @@ class Analysis {
   EnergyAccount account_;
   HingeEvents hinges_;
   TopologyEvents topology_;
+  MemberRemoval removal_;
+  double stepEnd_ = 0;  // end of the step TIME began (sub-steps end on landing times before it)
   bool predicted_ = false;      // the current step started from the prediction
   bool globalized_ = false;     // the step's plain Newton cycled: line search from then on
 };

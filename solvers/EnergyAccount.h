@@ -14,6 +14,7 @@
 // (every force of the residual is evaluated at the load point), otherwise the
 // trapezoidal mean of the forces at t_n and t_n+1. With du = u_n+1 - u_n:
 //   external   += du . loads + du . reactions (restrained dofs)
+// (loads: FORCe, self-weight, floor loads, forces of removed members being released)
 //   dissipated += du . f_elements - du . f_contact - change of (kinetic + strain + contact)
 // where f_elements are the elements' internal and inertia forces. The balance
 // then changes by du . R over the free dofs only, R the residual: zero at a
@@ -54,6 +55,16 @@ class EnergyAccount {
   // so that a jump the change made shows in the balance instead of being
   // taken back as dissipation in the next step.
   void restartFrom(const Energy& now) { storedN_ = now.kinetic + now.strain + now.contact; }
+  // Elements left the model at the committed state (solvers/MemberRemoval.h),
+  // per node dof: their forces of the last commit and the constant loads that
+  // left with them (weight, floor loads); `after`: the energies of the model
+  // without them. The stored energy that left is booked as dissipated. Under
+  // the trapezoidal rule the forces at t_n are those the integrator starts the
+  // next step from (Newmark's a_n was in equilibrium with the removed forces):
+  // the difference the removal made is a load at t_n (the removed forces,
+  // released over the next step, or over td through the released forces),
+  // whose work is external.
+  void removed(const Eigen::VectorXd& forces, const Eigen::VectorXd& weight, const Energy& after);
 
   void write(std::ostream& out) const;
   void read(std::istream& in);
@@ -62,6 +73,7 @@ class EnergyAccount {
   double external_ = 0, dissipated_ = 0;
   double storedN_ = 0;            // kinetic + strain + contact at t_n
   Eigen::VectorXd feN_, fcN_, rN_;  // element forces, contact forces, residual at t_n
+  Eigen::VectorXd relN_;            // released forces of removed elements at t_n
 };
 
 }  // namespace c2d

@@ -24,7 +24,9 @@ const std::vector<std::pair<int, HingeCarrier*>>& HingeEvents::carriers() {
   if (carriersVersion_ == model.topologyVersion()) return carriers_;
   carriers_.clear();
   for (int e = 0; e < model.numElements(); ++e)
-    if (auto* h = dynamic_cast<HingeCarrier*>(&innermost(model.element(e))))
+    if (!model.hasElement(e))
+      continue;
+    else if (auto* h = dynamic_cast<HingeCarrier*>(&innermost(model.element(e))))
       carriers_.emplace_back(e, h);
   carriersVersion_ = model.topologyVersion();
   return carriers_;
@@ -128,7 +130,8 @@ void HingeEvents::restoreCommitted() {
   // A sub-step of zero length: the committed state itself, not a solve (a
   // dynamic step of length zero has no step rule; the rule of dt would solve
   // a whole step from t_n and commit it at t_n).
-  for (auto& el : an_.model().elements()) el->revert();
+  for (auto& el : an_.model().elements())
+    if (el) el->revert();
   an_.state_.revert();
   an_.dirty_ = false;
   solved_ = true;

@@ -48,6 +48,10 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
   }
   elements.add(model.numElements());
   for (int e = 0; e < model.numElements(); ++e) {
+    if (!model.hasElement(e)) {
+      elements.add(-1);
+      continue;
+    }
     const Element& el = model.element(e);
     elements.add(el.nodes()[0]).add(el.nodes()[1]).add(el.materialNumber());
   }
@@ -68,6 +72,12 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
   loads.add(model.gravity().x()).add(model.gravity().y()).add(model.ground().has_value());
   if (model.ground())
     loads.add(model.ground()->y0).add(model.ground()->k).add(model.ground()->alpha);
+  // The blast plan: element sets, times, release times.
+  elements.add(model.blasts().size());
+  for (const Blast& b : model.blasts()) {
+    elements.add(b.time).add(b.release).add(b.elements.size());
+    for (int e : b.elements) elements.add(e);
+  }
   return {coords.value(), elements.value(), materials.value(), boundary.value(), loads.value()};
 }
 
@@ -79,7 +89,7 @@ std::string ModelFingerprint::differences(const ModelFingerprint& o) const {
     out += what;
   };
   note(coordinates != o.coordinates, "node coordinates");
-  note(elements != o.elements, "element connectivity or material numbers");
+  note(elements != o.elements, "element connectivity, material numbers or blasts");
   note(materials != o.materials, "material data");
   note(boundary != o.boundary, "boundary codes or joints");
   note(loads != o.loads, "loads (forces, prescribed values, load tables, gravity, contact)");

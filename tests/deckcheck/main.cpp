@@ -7,6 +7,9 @@
 //   # atol 1e-9
 //   # expect-exit 1        expected exit status (default 0)
 //   # expect-error TEXT    text the run must print (decks that must fail)
+//   # allow-crossings WHY  members may end crossing each other (otherwise a log
+//                          of the run reporting crossing members fails the deck:
+//                          after a collapse nothing may have passed through)
 //   == <output file> ==    expected content of an output file of the run (--update
 //                          rewrites the CSV files, the tables and every other
 //                          file the reference already holds)
@@ -39,6 +42,7 @@ struct Reference {
   double rtol = 1e-6, atol = 1e-9;
   int expectExit = 0;
   std::vector<std::string> expectError;
+  bool allowCrossings = false;
   std::vector<std::pair<std::string, std::vector<std::string>>> sections;
 };
 
@@ -81,6 +85,7 @@ Reference readReference(const fs::path& p) {
     if (key == "rtol") is >> ref.rtol;
     if (key == "atol") is >> ref.atol;
     if (key == "expect-exit") is >> ref.expectExit;
+    if (key == "allow-crossings") ref.allowCrossings = true;
     if (key == "expect-error") {
       std::string rest;
       std::getline(is, rest);
@@ -243,6 +248,21 @@ int main(int argc, char** argv) {
       std::cerr << deck.string() << ": expected message not printed: " << e << "\n--- output:\n"
                 << output;
       ++failures;
+    }
+
+  // The final geometry: members that pass through each other are reported in
+  // the logs ("warning: members a and b cross at t = ...").
+  if (!ref.allowCrossings)
+    for (const auto& ent : fs::directory_iterator(dir)) {
+      if (ent.path().extension() != ".out") continue;
+      for (const std::string& l : readLines(ent.path()))
+        if (l.find("warning: members ") != std::string::npos &&
+            l.find(" cross at t = ") != std::string::npos) {
+          std::cerr << deck.string() << ": members cross at the end of the run ("
+                    << ent.path().filename().string() << "):" << l << "\n";
+          ++failures;
+          break;
+        }
     }
 
   auto produced = [&](const std::string& name) -> std::vector<std::string> {

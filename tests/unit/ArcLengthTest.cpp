@@ -11,24 +11,12 @@
 #include <vector>
 
 #include "macro/DeckRunner.h"
+#include "tests/unit/RunDeckSupport.h"
 
 namespace c2d {
 namespace {
 
-std::vector<std::vector<double>> readCsv(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::string line;
-  std::getline(in, line);  // header
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  return rows;
-}
+using testing::readCsv;
 
 TEST(ArcLength, ArchPathOnClosedForm) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "c2d_arclength_test";
@@ -41,7 +29,7 @@ TEST(ArcLength, ArchPathOnClosedForm) {
   const DeckOutcome o =
       runDeck(std::string(C2D_SOURCE_DIR) + "/decks/pathfollowing/arch_arclength.inp", opt, commands, out);
   ASSERT_EQ(o.exitCode, 0) << o.message;
-  const auto rows = readCsv(dir / "arch_arclength_tplot.csv");
+  const auto rows = readCsv(dir / "arch_arclength_tplot.csv").rows;
   ASSERT_GE(rows.size(), 100u);
   const double a = 1, h = 0.1, EA = 1e6, L0 = std::hypot(a, h);
   double wMax = 0, pMax = -1e30, pMin = 1e30;

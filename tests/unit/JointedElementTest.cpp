@@ -12,6 +12,7 @@
 #include <random>
 #include <tuple>
 
+#include "core/DofMap.h"
 #include "core/Model.h"
 #include "elements/JointedElement.h"
 #include "tests/unit/ElementTestSupport.h"
@@ -355,6 +356,34 @@ bool solveStep(Analysis& an, int maxIterations = 40) {
     if (info.converged) return true;
   }
   return false;
+}
+
+TEST(JointedElementSetup, NodeHeldOnlyByJointsHasNoRotationEquation) {
+  // Both elements at node 2 jointed there (element 1 through a second slave,
+  // node 6): nothing puts a moment on node 2's rotation, which is then no
+  // equation, and the static solution exists (the joint is a plain pin).
+  Model m = hingedBeam(JointForm::Condensed);
+  installJoints(m);
+  EXPECT_GE(DofMap(m).eq(2, 2), 0);
+  m.resizeNodes(7);
+  m.setCoord(6, m.coord(2));
+  auto inner = std::make_unique<ReissnerFrame>(m.materials()[1], std::array{1, 6}, m.coord(1),
+                                               m.coord(6));
+  m.setElement(1, std::make_unique<JointedElement>(std::move(inner), 1, 2));
+  m.bumpTopology();
+  const DofMap dofs(m);
+  EXPECT_TRUE(dofs.used(2));
+  EXPECT_GE(dofs.eq(2, 0), 0);
+  EXPECT_EQ(dofs.eq(2, 2), -1);
+  EXPECT_FALSE(dofs.used(6));
+  Analysis an(m);
+  an.setTolerance(1e-20);
+  an.setDt(1);
+  ASSERT_TRUE(an.advance());
+  IterationInfo info;
+  for (int i = 0; i < 30 && !info.converged; ++i) ASSERT_TRUE(an.iterate(false, true, info));
+  EXPECT_TRUE(info.converged);
+  EXPECT_EQ(an.state().u[2 * kNodeDofs + 2], 0.0);  // the rotation kept its value
 }
 
 // Nodal displacements (slave node from the joint) after n steps of dt.

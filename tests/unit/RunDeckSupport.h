@@ -3,8 +3,11 @@
 // written to a temporary directory and run with its outputs in <dir>/out, and a
 // small Timoshenko cantilever whose tip deflection is known in closed form.
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "macro/DeckRunner.h"
 #include "tests/unit/DeckTestSupport.h"
@@ -35,6 +38,35 @@ inline DeckResult runDeckText(const DeckTempDir& dir, const std::string& name, c
   ss << log.rdbuf();
   r.log = ss.str();
   return r;
+}
+
+// A CSV file of numbers with a header row (TPLOt, debris and plan tables).
+struct Csv {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> rows;
+  // The values of column `name` (empty when there is no such column).
+  std::vector<double> column(const std::string& name) const {
+    std::vector<double> out;
+    for (std::size_t c = 0; c < names.size(); ++c)
+      if (names[c] == name)
+        for (const auto& r : rows) out.push_back(c < r.size() ? r[c] : 0.0);
+    return out;
+  }
+};
+
+inline Csv readCsv(const std::filesystem::path& p) {
+  Csv csv;
+  std::ifstream in(p);
+  std::string line;
+  if (std::getline(in, line))
+    for (std::stringstream ss(line); std::getline(ss, line, ',');) csv.names.push_back(line);
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) row.push_back(std::stod(cell));
+    csv.rows.push_back(std::move(row));
+  }
+  return csv;
 }
 
 // A cantilever of n one-point Timoshenko elements along x (length L), clamped at

@@ -1,0 +1,22 @@
+// The ten-storey demolition decks (decks/demolition): the felling by a blast
+// sequence and the implosion, each a whole run (gravity, blasts, fall, debris
+// at rest). Target: under 5 s each on the 2-core test machine.
+// Run: build/tests/benchmarks --benchmark_filter=TenStory
+#include <benchmark/benchmark.h>
+
+#include "tests/bench/DeckBench.h"
+
+namespace {
+
+void BM_TenStoryFelling(benchmark::State& st) {
+  c2d::bench::runDeck(st, c2d::bench::sourceDeck("demolition", "ten_story_felling.inp"));
+}
+
+void BM_TenStoryImplosion(benchmark::State& st) {
+  c2d::bench::runDeck(st, c2d::bench::sourceDeck("demolition", "ten_story_implosion.inp"));
+}
+
+}  // namespace
+
+BENCHMARK(BM_TenStoryFelling)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_TenStoryImplosion)->Unit(benchmark::kMillisecond)->Iterations(1);
