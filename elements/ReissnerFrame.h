@@ -14,7 +14,10 @@
 // Under Scheme::MidPoint the internal force is the energy conserving/decaying
 // one: resultants from C((1/2+alpha) E_{n+1} + (1/2-alpha) E_n) and a strain
 // operator B_alg with B_alg (d_{n+1} - d_n) = E_{n+1} - E_n exactly, so that
-// (d_{n+1} - d_n).f_int = W_{n+1} - W_n + alpha l dE.C.dE.
+// (d_{n+1} - d_n).f_int = W_{n+1} - W_n + alpha l dE.C.dE. The forces balance
+// (linear momentum exact) but leave the moment l (cos x - sinc x)(a_M x n),
+// x = Delta/2: angular momentum drifts at second order, and no energy
+// conserving force can avoid that with additive rotations (docs/design-notes.md).
 //
 // An initial strain E0 = (Sigma0, Gamma0, K0) shifts the constitutive law:
 // resultants C (E - E0), energy W = l/2 (E - E0).C.(E - E0). Under the mid-point

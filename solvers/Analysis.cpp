@@ -582,6 +582,10 @@ Status Analysis::commit() {
   if (!st) return st;
   dofFactors(state_.tn, path_ ? state_.arcLambdan : 1.0, lamn_);
   account_.commitStep(assembler_, state_, rule, lam_, lamn_);
+  return commitEvaluated();
+}
+
+Status Analysis::commitEvaluated() {
   for (auto& el : model_.elements())
     if (el) el->commit();
   hinges_.committed();
@@ -591,8 +595,7 @@ Status Analysis::commit() {
   }
   state_.commit();
   dirty_ = false;
-  st = afterCommitEvents();
-  if (!st) return st;
+  if (Status st = afterCommitEvents(); !st) return st;
   if (onCommit) onCommit();
   return Status::success();
 }

@@ -179,6 +179,9 @@ class Analysis {
   // The end of the next step or sub-step from t_n: stepEnd_, or a landing
   // time of the member removal before it.
   double nextStepTime() const;
+  // The part of commit() after the evaluation and the energy booking: the
+  // elements commit their trial states as last evaluated.
+  Status commitEvaluated();
   // Per node dof: the factor of its load table at `time` (times the arc-length factor).
   void dofFactors(double time, double arc, Eigen::VectorXd& out) const;
   // Factors at the step rule's load point (t_n+1, or the mid-point).

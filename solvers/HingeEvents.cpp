@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "elements/JointedElement.h"
 #include "elements/Joints.h"
 #include "solvers/Analysis.h"
 
@@ -62,6 +63,9 @@ void HingeEvents::open(int element) {
 Status HingeEvents::afterConvergence(IterationInfo& info, bool lineSearch, bool& handled) {
   handled = false;
   if (locating_ || carriers().empty()) return Status::success();
+  // The end of the bracket: a converged state only.
+  if (!info.converged)
+    return Status::failure("internal: a hinge event after an unconverged iteration");
   // The demand of the converged state.
   if (Status st = an_.evaluateState(); !st) return st;
   int e = -1;
@@ -74,6 +78,7 @@ Status HingeEvents::solveFraction(double fraction, double tEnd, bool lineSearch)
   // Elements keep their trial flags (a hinge just activated); their trial
   // history follows from the committed one at the next evaluation.
   State& s = an_.state_;
+  solved_ = false;
   s.u = s.un;
   s.v = s.vn;
   s.a = s.an;
@@ -81,14 +86,62 @@ Status HingeEvents::solveFraction(double fraction, double tEnd, bool lineSearch)
   // A dynamic sub-step's rule follows from its length (Analysis::stepRule).
   an_.beginStep(s.tn + fraction * (tEnd - s.tn), fraction, false);
   IterationInfo it;
+  double first = -1;
   for (int k = 0; k < 60; ++k) {
     const Status st = an_.iterate(lineSearch, true, it);
     if (!st) return st;
     if (it.converged) break;
+    // Diverging (the test of the solution commands' Newton loops): stop before
+    // the iterates get so large that a correction falls below their resolution.
+    if (first < 0 || it.iteration == 1) first = it.energy;
+    if (it.iteration > 4 && it.energy > 1e30 * first) break;
   }
-  if (!it.converged)
+  if (!it.converged || !an_.converged_)
     return Status::failure("no convergence while locating the point where a hinge opens");
-  return an_.evaluateState();  // element states at the converged displacements
+  const Status st = an_.evaluateState();  // element states at the converged displacements
+  solved_ = st.ok;
+  return st;
+}
+
+Status HingeEvents::evaluateOpened(int element) {
+  // The innermost element at the committed displacements, its joints' relative
+  // rotations as committed (JointedElement::innerKinematics).
+  const State& s = an_.state_;
+  Element* el = &an_.model().element(element);
+  const auto nodes = el->nodes();
+  ElementKinematics kin;
+  for (int a = 0; a < 2; ++a) {
+    const Eigen::Index base = static_cast<Eigen::Index>(nodes[a]) * kNodeDofs;
+    kin.d.segment<kNodeDofs>(a * kNodeDofs) = s.u.segment<kNodeDofs>(base);
+    kin.dn.segment<kNodeDofs>(a * kNodeDofs) = s.un.segment<kNodeDofs>(base);
+    kin.vn.segment<kNodeDofs>(a * kNodeDofs) = s.vn.segment<kNodeDofs>(base);
+    kin.an.segment<kNodeDofs>(a * kNodeDofs) = s.an.segment<kNodeDofs>(base);
+  }
+  while (auto* je = dynamic_cast<JointedElement*>(el)) {
+    kin = je->innerKinematics(kin, je->relativeRotation());
+    el = &je->inner();
+  }
+  ElemVec r;
+  ElemMat k;
+  return el->evaluate(kin, an_.stepRule(), false, r, k);
+}
+
+void HingeEvents::restoreCommitted() {
+  // A sub-step of zero length: the committed state itself, not a solve (a
+  // dynamic step of length zero has no step rule; the rule of dt would solve
+  // a whole step from t_n and commit it at t_n).
+  for (auto& el : an_.model().elements())
+    if (el) el->revert();
+  an_.state_.revert();
+  an_.dirty_ = false;
+  solved_ = true;
+}
+
+Status HingeEvents::commitSolved() {
+  // Only the converged end of a located sub-step (or the committed state) may
+  // be committed here; this never fails in a correct run.
+  if (!solved_) return Status::failure("internal: committing an unconverged state");
+  return an_.commit();
 }
 
 Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
@@ -125,31 +178,29 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   }
   // Not located within the band: open at the closest point found past Mu.
   if (st && !found) f = sHi;
-  if (st && (!found || f == 0)) st = solveFraction(f, tEnd, lineSearch);
-  if (st && an_.integrator_.dynamic()) {
-    // One commit, with the hinge opened at the located state: at the ultimate
-    // moment the open hinge has no jump yet (to 1e-12), so that state is the
-    // equilibrium. A second commit of zero length would take the step rule of
-    // a full step and move the joints' relative rotations and rates (internal
-    // dofs with inertia), creating kinetic energy at every event.
+  if (st && f == 0) {
+    restoreCommitted();
+  } else if (st && !found) {
+    st = solveFraction(f, tEnd, lineSearch);
+  }
+  if (st) st = commitSolved();  // the sub-step up to the hinge's ultimate moment
+  if (st) {
     maxDemand(element);
     open(element);
     info.hingeActivated = element;
-    st = an_.commit();
-  } else {
-    if (st) st = an_.commit();  // the sub-step up to the hinge's ultimate moment
-    if (st) {
-      maxDemand(element);
-      open(element);
-      info.hingeActivated = element;
-      // At the ultimate moment the open hinge has no jump yet (to 1e-12): the
-      // committed state is already the equilibrium; evaluate the elements with
-      // the hinge active and commit (the step is of zero length).
-      an_.dirty_ = true;
-      st = an_.evaluateState();
-    }
-    if (st) st = an_.commit();
+    // At the ultimate moment the open hinge has no jump yet (to 1e-12): the
+    // committed state is already the equilibrium. A step of length zero: only
+    // the opened section is evaluated, and the elements commit in place. (An
+    // evaluation of the whole model would take the rule of dt at t = t_n: a
+    // dynamic step of dt for the internal unknowns, a joint's relative
+    // rotation, with the nodes held, and Newmark's inertia forces in the
+    // energy account.)
+    st = evaluateOpened(element);
   }
+  if (st)
+    st = solved_ ? an_.commitEvaluated()
+                 : Status::failure("internal: committing an unconverged state");
+  solved_ = false;
   locating_ = false;
   if (!st) return st;
   // The rest of the step.

@@ -56,12 +56,21 @@ class HingeEvents {
   // Newton from the committed state to the fraction `fraction` of the step ending at tEnd.
   Status solveFraction(double fraction, double tEnd, bool lineSearch);
   void open(int element);
+  // The committed state as the end of a sub-step of zero length (the event is
+  // at the committed state).
+  void restoreCommitted();
+  // Evaluates the element whose hinge was just opened at the committed state.
+  Status evaluateOpened(int element);
+  // Commits the end of a located sub-step; an internal error unless that end
+  // is a converged solve or the committed state.
+  Status commitSolved();
 
   Analysis& an_;
   std::vector<std::pair<int, HingeCarrier*>> carriers_;
   int carriersVersion_ = -1;
   double committedDemand_ = 0;  // max demand at the last commit
   bool locating_ = false;       // inside locate(): no nested events
+  bool solved_ = false;         // the state is the converged end of a sub-step
 };
 
 }  // namespace c2d
