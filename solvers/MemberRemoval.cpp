@@ -104,12 +104,21 @@ RemovalEvent MemberRemoval::remove(const std::vector<int>& elements, double rele
         kin.vn.segment<kNodeDofs>(a * kNodeDofs).setZero();
         kin.an.segment<kNodeDofs>(a * kNodeDofs).setZero();
       }
+      // Evaluated there a moment ago under the step's rule: a failure now
+      // leaves its forces of that evaluation.
       ElemVec f;
       ElemMat k;
-      if (!el.evaluate(kin, statics, false, f, k)) f = r;  // its last forces, if it cannot say
+      if (!el.evaluate(kin, statics, false, f, k)) f = r;
+      // The constant loads it carried: self-weight and floor loads (QLOAd).
+      ElemVec carried = el.bodyLoad(model.gravity());
+      for (const ElementLoad& l : model.elementLoads())
+        if (l.element == e) {
+          const double length = (model.coord(nodes[1]) - model.coord(nodes[0])).norm();
+          for (int a = 0; a < 2; ++a) carried.segment<2>(a * kNodeDofs) += 0.5 * length * l.q;
+        }
       ReleasedForce rf;
       rf.nodes = nodes;
-      rf.force = el.bodyLoad(model.gravity()) - f;
+      rf.force = carried - f;
       rf.start = state.tn;
       rf.duration = release;
       model.releasedForces().push_back(rf);

@@ -11,8 +11,8 @@
 //
 // Release over td > 0 (GSA 2016: at most a tenth of the structure's first
 // vertical period): the internal forces the element exerted on its nodes at
-// the removal (a static evaluation at the committed displacements), with its
-// weight, become a load on the rest that falls linearly to zero over td
+// the removal (a static evaluation at the committed displacements), with the
+// constant loads it carried (weight, QLOAd), become a load on the rest that falls linearly to zero over td
 // (core/Model.h ReleasedForce). td = 0: the element and its forces vanish at once.
 //
 // Timing: steps end exactly on every blast time and on every end of a release

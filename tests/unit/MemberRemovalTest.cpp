@@ -221,6 +221,28 @@ TEST(MemberRemoval, RestartDuringAReleaseContinuesBitForBit) {
   for (std::size_t i = 1; i < r.size(); ++i) EXPECT_EQ(r[i], w[w.size() - r.size() + i]) << "row " << i;
 }
 
+TEST(MemberRemoval, ReleaseStartsFromTheForcesTheElementCarried) {
+  // A beam element with a floor load (QLOAd) removed in statics with a long
+  // release: at the start of the release the rest carries exactly what it
+  // carried before (the element's internal forces and its floor load become
+  // the released load), so the first step after the removal moves node 8 by
+  // one step of the release only, not by the jump of a sudden removal.
+  DeckTempDir dir;
+  const std::string extra = kColumn + "QLOAd\n  5 5 1 0 -40\n\n";
+  auto run = [&](const std::string& name, const std::string& td) {
+    const std::string batch =
+        "  TPLOt\n  DT,,1\n  TIME\n  LOOP,,3\n    TANG,,1\n  NEXT\n"
+        "  REMOve,ELEMents,5,5,1," + td + "\n  DT,,0.001\n  TIME\n  LOOP,,5\n    TANG,,1\n  NEXT\n";
+    const auto r = runDeckText(dir, name + ".inp", frame(extra, batch, "disp,8,2\n"));
+    EXPECT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
+    const auto v = readCsv(r.out / (name + "_tplot.csv")).column("disp_8_2");
+    return v.size() >= 2 ? v.back() - v.front() : 1.0;
+  };
+  const double sudden = run("sudden", "0"), released = run("released", "1");
+  EXPECT_GT(std::abs(sudden), 1e-6);
+  EXPECT_LT(std::abs(released), 2e-3 * std::abs(sudden));
+}
+
 TEST(MemberRemoval, RemovedTwiceIsAnAnalysisError) {
   DeckTempDir dir;
   const std::string batch =
