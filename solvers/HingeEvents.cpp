@@ -147,6 +147,13 @@ Status HingeEvents::commitSolved() {
 Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   // The demand is piecewise smooth in the step fraction: regula falsi
   // (Illinois) for max demand in [1, 1 + kBand], from above (see the header).
+  // It is often kinked at the root (an element reaching another branch of its
+  // law there): flat on one side, steep on the other, where the chord of the
+  // bracket creeps over dozens of solves. So when the last two points of one
+  // side are known, the secant through them (their true demands, not Illinois'
+  // scaled ones) is tried first: on the flat side it lands next to the root.
+  // Every third trial halves the bracket, which a secant creeping along a
+  // flat side would not shrink.
   State& s = an_.state_;
   locating_ = true;
   const double tEnd = s.t;
@@ -156,22 +163,37 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   bool found = dLo >= 1.0;  // the committed state is already at Mu: open there
   Status st;
   int side = 0;
-  for (int k = 0; k < 60 && !found; ++k) {
-    f = sLo + (1.0 + 0.5 * kBand - dLo) * (sHi - sLo) / (dHi - dLo);
-    f = std::clamp(f, sLo + 1e-6 * (sHi - sLo), sHi - 1e-6 * (sHi - sLo));
+  // The points each side had before its last update, and the true demands.
+  double sLoOld = -1, dLoOld = 0, sHiOld = -1, dHiOld = 0, dLoTrue = dLo, dHiTrue = dHi;
+  const double target = 1.0 + 0.5 * kBand;
+  // The bracket at the resolution of the step fraction: the band is below
+  // the round-off of the solves there.
+  for (int k = 0; k < 60 && !found && sHi - sLo > 4e-16; ++k) {
+    f = -1;
+    if (side == -1 && sHiOld >= 0 && dHiTrue != dHiOld)
+      f = sHi - (dHiTrue - target) * (sHi - sHiOld) / (dHiTrue - dHiOld);
+    else if (side == 1 && sLoOld >= 0 && dLoTrue != dLoOld)
+      f = sLo - (dLoTrue - target) * (sLo - sLoOld) / (dLoTrue - dLoOld);
+    if (!(f > sLo && f < sHi)) f = sLo + (target - dLo) * (sHi - sLo) / (dHi - dLo);
+    if (k % 3 == 2) f = 0.5 * (sLo + sHi);
+    f = std::clamp(f, sLo + 1e-9 * (sHi - sLo), sHi - 1e-9 * (sHi - sLo));
     st = solveFraction(f, tEnd, lineSearch);
     if (!st) break;
     const double d = maxDemand(element);
     found = d >= 1.0 && d <= 1.0 + kBand;
     if (found) break;
     if (d > 1.0) {
+      sHiOld = sHi;
+      dHiOld = dHiTrue;
       sHi = f;
-      dHi = d;
+      dHi = dHiTrue = d;
       if (side == -1) dLo = 1.0 - 0.5 * (1.0 - dLo);
       side = -1;
     } else {
+      sLoOld = sLo;
+      dLoOld = dLoTrue;
       sLo = f;
-      dLo = d;
+      dLo = dLoTrue = d;
       if (side == 1) dHi = 1.0 + 0.5 * (dHi - 1.0);
       side = 1;
     }
