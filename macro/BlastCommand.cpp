@@ -3,18 +3,12 @@
 #include <cmath>
 #include <iomanip>
 #include <ostream>
-#include <set>
 
 namespace c2d {
 
 using namespace meshspec;
 
 namespace {
-
-[[noreturn]] void failAt(const Record& r, std::size_t i, const std::string& msg,
-                         const std::string& hint = {}) {
-  throw DeckError(r.fieldLoc(i), msg, r.excerpt(r.fieldLoc(i)), hint);
-}
 
 // BLASt: t n1 n2 inc td. Elements are built when the mesh is complete, so the
 // records are checked and added then (in deck order).

@@ -15,11 +15,6 @@ using namespace meshspec;
 
 namespace {
 
-[[noreturn]] void failAt(const Record& r, std::size_t i, const std::string& msg,
-                         const std::string& hint = {}) {
-  throw DeckError(r.fieldLoc(i), msg, r.excerpt(r.fieldLoc(i)), hint);
-}
-
 std::ostream& num(std::ostream& os, double v) {
   return os << std::setw(13) << std::scientific << std::setprecision(4) << v;
 }

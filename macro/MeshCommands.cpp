@@ -113,11 +113,6 @@ std::string restOfLine(const Record& r, std::size_t field) {
   return p < r.line->size() ? r.line->substr(p) : std::string();
 }
 
-[[noreturn]] void failAt(const Record& r, std::size_t i, const std::string& msg,
-                         const std::string& hint = {}) {
-  throw DeckError(r.fieldLoc(i), msg, r.excerpt(r.fieldLoc(i)), hint);
-}
-
 // Echo tables in FEAP's style: a spaced-out title, then aligned columns.
 void title(std::ostream& os, const std::string& t) { os << "\n   " << t << "\n\n"; }
 
@@ -1335,6 +1330,10 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
 }
 
 namespace meshspec {
+
+void failAt(const Record& r, std::size_t i, const std::string& msg, const std::string& hint) {
+  throw DeckError(r.fieldLoc(i), msg, r.excerpt(r.fieldLoc(i)), hint);
+}
 
 FieldSpec expr(std::string name, std::string doc, std::string dflt) {
   return {std::move(name), FieldKind::Expression, std::move(dflt), std::move(doc)};

@@ -21,6 +21,9 @@ namespace c2d {
 
 // Building blocks of the mesh commands' specs (MeshCommands, LoadCommands).
 namespace meshspec {
+// The DeckError at field i of record r.
+[[noreturn]] void failAt(const Record& r, std::size_t i, const std::string& msg,
+                         const std::string& hint = {});
 FieldSpec expr(std::string name, std::string doc, std::string dflt = {});
 FieldSpec text(std::string name, std::string doc, std::string dflt = {});
 CommandSpec meshSpec(std::string name, std::string doc, std::vector<FieldSpec> fields,

@@ -5,9 +5,8 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
-#include "macro/DeckRunner.h"
+#include "tests/bench/DeckBench.h"
 #include "tests/bench/FrameDeck.h"
 
 namespace {
@@ -20,29 +19,9 @@ void BM_FramePush(benchmark::State& st) {
   const std::filesystem::path deck =
       dir / ("frame_" + std::to_string(S) + "x" + std::to_string(B) + ".inp");
   std::ofstream(deck) << c2d::bench::frameDeck(S, B, N);
-  c2d::SolutionCommands commands;
-  c2d::DeckOptions opt;
-  opt.outDir = dir;
-  opt.quiet = true;
-  int iterations = 0, factorizations = 0, steps = 0;
-  for (auto _ : st) {
-    std::ostringstream out;
-    const c2d::DeckOutcome o = c2d::runDeck(deck.string(), opt, commands, out);
-    if (o.exitCode != 0) {
-      st.SkipWithError(o.message.c_str());
-      return;
-    }
-    iterations = o.total.iterations;
-    factorizations = o.total.factorizations;
-    steps = o.total.steps;
-  }
+  c2d::bench::runDeck(st, deck);
   const int nodes = (S + 1) * (B + 1) + (S * (B + 1) + S * B) * (N - 1);
   st.counters["dofs"] = 3.0 * (nodes - (B + 1));
-  st.counters["steps"] = steps;
-  st.counters["newton_its"] = iterations;
-  st.counters["factorizations"] = factorizations;
-  st.counters["s_per_it"] = benchmark::Counter(
-      iterations, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 }  // namespace
