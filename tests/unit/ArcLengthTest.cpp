@@ -19,8 +19,8 @@ namespace {
 using testing::readCsv;
 
 TEST(ArcLength, ArchPathOnClosedForm) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "c2d_arclength_test";
-  std::filesystem::create_directories(dir);
+  const testing::DeckTempDir scratch;
+  const std::filesystem::path& dir = scratch.path();
   DeckOptions opt;
   opt.outDir = dir;
   opt.quiet = true;
@@ -46,7 +46,6 @@ TEST(ArcLength, ArchPathOnClosedForm) {
   EXPECT_GT(pMax, 370.0);
   EXPECT_LT(pMin, -370.0);
   EXPECT_GT(wMax, 2 * h);
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
