@@ -88,7 +88,7 @@ std::string debrisSvg(const Model& model, const State& state, const DebrisFigure
   // Ground.
   if (model.ground()) {
     const double gy = Y(model.ground()->y0);
-    o << "<path class=\"ground\" stroke=\"#555555\" stroke-width=\"1.5\" d=\"M" << px(kLeft) << ' '
+    o << "<path class=\"ground\" fill=\"none\" stroke=\"#555555\" stroke-width=\"1.5\" d=\"M" << px(kLeft) << ' '
       << px(gy) << "H" << px(kWidth - kRight) << "\"/>\n";
   }
   // Members in their current state.
@@ -112,7 +112,7 @@ std::string debrisSvg(const Model& model, const State& state, const DebrisFigure
   const double width = (x1 - x0) / std::max(bins, 1);
   const auto h = massHistogram(massPieces(model, state), x0, width, bins);
   const double hmax = h.empty() ? 0.0 : *std::max_element(h.begin(), h.end());
-  o << "<path class=\"axis\" stroke=\"black\" stroke-width=\"1\" d=\"M" << px(kLeft) << ' '
+  o << "<path class=\"axis\" fill=\"none\" stroke=\"black\" stroke-width=\"1\" d=\"M" << px(kLeft) << ' '
     << px(histTop) << "V" << px(histBottom) << "H" << px(kWidth - kRight) << "\"/>\n";
   o << "<g class=\"histogram\" fill=\"#8C564B\">\n";
   for (std::size_t k = 0; k < h.size(); ++k) {
@@ -139,7 +139,7 @@ std::string debrisSvg(const Model& model, const State& state, const DebrisFigure
   // Site limits.
   if (d.site) {
     for (double x : {d.site->xmin, d.site->xmax}) {
-      o << "<path class=\"site\" stroke=\"#D62728\" stroke-width=\"1.5\" stroke-dasharray=\"6 4\" "
+      o << "<path class=\"site\" fill=\"none\" stroke=\"#D62728\" stroke-width=\"1.5\" stroke-dasharray=\"6 4\" "
            "d=\"M"
         << px(X(x)) << ' ' << px(kTop) << "V" << px(histBottom) << "\"/>\n";
       tick(x, "#D62728");

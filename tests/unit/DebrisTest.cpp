@@ -93,6 +93,11 @@ TEST(Debris, PictureShowsFootprintSiteAndHistogram) {
   EXPECT_GE(bars, 4u);
   EXPECT_LE(bars, 6u);
   EXPECT_NE(svg.find("OUTSIDE the site"), std::string::npos);
+  // Lines are strokes only: a path without fill="none" is filled black (the
+  // axis drew a black triangle over the histogram).
+  for (std::size_t p = svg.find("<path"); p != std::string::npos; p = svg.find("<path", p + 1))
+    EXPECT_NE(svg.substr(p, svg.find('>', p) - p).find("fill="), std::string::npos)
+        << svg.substr(p, svg.find('>', p) - p);
   m.site().reset();
   const std::string plain = debrisSvg(m, s, debrisFigures(m, s), "two bars", 10);
   EXPECT_EQ(plain.find("class=\"site\""), std::string::npos);
