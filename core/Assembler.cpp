@@ -172,17 +172,6 @@ double Assembler::frictionEps(int n, const State& s) const {
   return frictionRegularisation(g, m, nRef, h, shortest_);
 }
 
-void Assembler::gather(const Element& e, const State& s, ElementKinematics& kin) const {
-  const auto nodes = e.nodes();
-  for (int a = 0; a < 2; ++a) {
-    const Eigen::Index base = static_cast<Eigen::Index>(nodes[a]) * kNodeDofs;
-    kin.d.segment<kNodeDofs>(a * kNodeDofs) = s.u.segment<kNodeDofs>(base);
-    kin.dn.segment<kNodeDofs>(a * kNodeDofs) = s.un.segment<kNodeDofs>(base);
-    kin.vn.segment<kNodeDofs>(a * kNodeDofs) = s.vn.segment<kNodeDofs>(base);
-    kin.an.segment<kNodeDofs>(a * kNodeDofs) = s.an.segment<kNodeDofs>(base);
-  }
-}
-
 Status Assembler::assemble(const State& s, const StepRule& rule,
                            const Eigen::VectorXd& loadFactors, bool wantTangent) {
   refresh();
@@ -199,7 +188,7 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
   for (int e = 0; e < model_.numElements(); ++e) {
     if (!model_.hasElement(e)) continue;
     Element& el = model_.element(e);
-    gather(el, s, kin);
+    kin = s.kinematics(el.nodes());
     const Status st = el.evaluate(kin, rule, wantTangent, re, ke);
     if (!st) return Status::failure("element " + std::to_string(e + 1) + ": " + st.why);
     if (!re.allFinite() || (wantTangent && !ke.allFinite()))

@@ -94,7 +94,6 @@ class Assembler {
 
  private:
   void buildPattern();
-  void gather(const Element& e, const State& s, ElementKinematics& kin) const;
   // Member contact forces at s into contactForces_; rebuilds the pattern when
   // a pair with a force has no place in it.
   void evaluateMemberContact(const State& s, const StepRule& rule, bool wantTangent);

@@ -13,6 +13,18 @@ void State::resize(int numNodes) {
   }
 }
 
+ElementKinematics State::kinematics(const std::array<int, 2>& nodes) const {
+  ElementKinematics kin;
+  for (int k = 0; k < 2; ++k) {
+    const Eigen::Index base = static_cast<Eigen::Index>(nodes[k]) * kNodeDofs;
+    kin.d.segment<kNodeDofs>(k * kNodeDofs) = u.segment<kNodeDofs>(base);
+    kin.dn.segment<kNodeDofs>(k * kNodeDofs) = un.segment<kNodeDofs>(base);
+    kin.vn.segment<kNodeDofs>(k * kNodeDofs) = vn.segment<kNodeDofs>(base);
+    kin.an.segment<kNodeDofs>(k * kNodeDofs) = an.segment<kNodeDofs>(base);
+  }
+  return kin;
+}
+
 void State::commit() {
   un = u;
   vn = v;

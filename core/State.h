@@ -3,6 +3,9 @@
 // trial (t_{n+1}) and committed (t_n). Stored per node dof rather than per
 // equation so that it survives a renumbering when the topology changes.
 #include <Eigen/Core>
+#include <array>
+
+#include "core/Element.h"
 
 namespace c2d {
 
@@ -17,6 +20,8 @@ struct State {
   int step = 0;                // number of committed steps
 
   void resize(int numNodes);   // keeps existing values, zero-fills new nodes
+  // The values of an element with these nodes, in element dof order.
+  ElementKinematics kinematics(const std::array<int, 2>& nodes) const;
   void commit();               // trial -> committed
   void revert();               // committed -> trial
 };

@@ -26,18 +26,6 @@ struct Relative {
   double psi = 0, vel = 0, acc = 0;
 };
 
-ElementKinematics gather(const std::array<int, 2>& nodes, const State& s) {
-  ElementKinematics kin;
-  for (int a = 0; a < 2; ++a) {
-    const Eigen::Index base = static_cast<Eigen::Index>(nodes[a]) * kNodeDofs;
-    kin.d.segment<kNodeDofs>(a * kNodeDofs) = s.u.segment<kNodeDofs>(base);
-    kin.dn.segment<kNodeDofs>(a * kNodeDofs) = s.un.segment<kNodeDofs>(base);
-    kin.vn.segment<kNodeDofs>(a * kNodeDofs) = s.vn.segment<kNodeDofs>(base);
-    kin.an.segment<kNodeDofs>(a * kNodeDofs) = s.an.segment<kNodeDofs>(base);
-  }
-  return kin;
-}
-
 const ReissnerFrame* asReissner(const Element& e) {
   return dynamic_cast<const ReissnerFrame*>(&innermost(e));
 }
@@ -90,7 +78,7 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
     rebuild[e] = 1;
     ElemVec r;
     ElemMat k;
-    if (Status st = el.evaluate(gather(el.nodes(), state), statics, false, r, k); !st)
+    if (Status st = el.evaluate(state.kinematics(el.nodes()), statics, false, r, k); !st)
       fail(e, st.why);
     // The relative rates belong to the dynamics so far: keep them; the static
     // evaluation only solves psi_r at the current displacements.
@@ -237,7 +225,7 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
     Element& el = model.element(e);
     ElemVec r;
     ElemMat k;
-    ElementKinematics kin = gather(el.nodes(), state);
+    ElementKinematics kin = state.kinematics(el.nodes());
     Element* in = &el;
     while (auto* je = dynamic_cast<JointedElement*>(in)) {
       kin = je->innerKinematics(kin, je->relativeRotation());

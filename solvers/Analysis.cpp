@@ -264,13 +264,7 @@ Status Analysis::addPrescribedIncrement() {
       dp.segment<kNodeDofs>(a * kNodeDofs) =
           dPrescribed_.segment<kNodeDofs>(static_cast<Eigen::Index>(nodes[a]) * kNodeDofs);
     if (dp.isZero(0)) continue;
-    for (int a = 0; a < 2; ++a) {
-      const Eigen::Index base = static_cast<Eigen::Index>(nodes[a]) * kNodeDofs;
-      kin.d.segment<kNodeDofs>(a * kNodeDofs) = state_.u.segment<kNodeDofs>(base);
-      kin.dn.segment<kNodeDofs>(a * kNodeDofs) = state_.un.segment<kNodeDofs>(base);
-      kin.vn.segment<kNodeDofs>(a * kNodeDofs) = state_.vn.segment<kNodeDofs>(base);
-      kin.an.segment<kNodeDofs>(a * kNodeDofs) = state_.an.segment<kNodeDofs>(base);
-    }
+    kin = state_.kinematics(nodes);
     // The same evaluation as in the assembly just done: the element's trial state is unchanged.
     st = el.evaluate(kin, rule, true, re, ke);
     if (!st) {

@@ -108,15 +108,7 @@ Status HingeEvents::evaluateOpened(int element) {
   // rotations as committed (JointedElement::innerKinematics).
   const State& s = an_.state_;
   Element* el = &an_.model().element(element);
-  const auto nodes = el->nodes();
-  ElementKinematics kin;
-  for (int a = 0; a < 2; ++a) {
-    const Eigen::Index base = static_cast<Eigen::Index>(nodes[a]) * kNodeDofs;
-    kin.d.segment<kNodeDofs>(a * kNodeDofs) = s.u.segment<kNodeDofs>(base);
-    kin.dn.segment<kNodeDofs>(a * kNodeDofs) = s.un.segment<kNodeDofs>(base);
-    kin.vn.segment<kNodeDofs>(a * kNodeDofs) = s.vn.segment<kNodeDofs>(base);
-    kin.an.segment<kNodeDofs>(a * kNodeDofs) = s.an.segment<kNodeDofs>(base);
-  }
+  ElementKinematics kin = s.kinematics(el->nodes());
   while (auto* je = dynamic_cast<JointedElement*>(el)) {
     kin = je->innerKinematics(kin, je->relativeRotation());
     el = &je->inner();

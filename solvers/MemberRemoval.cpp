@@ -96,14 +96,11 @@ RemovalEvent MemberRemoval::remove(const std::vector<int>& elements, double rele
       forcesN.segment<kNodeDofs>(static_cast<Eigen::Index>(nodes[a]) * kNodeDofs) +=
           r.segment<kNodeDofs>(a * kNodeDofs);
     if (release > 0) {
-      ElementKinematics kin;
-      for (int a = 0; a < 2; ++a) {
-        const Eigen::Index base = static_cast<Eigen::Index>(nodes[a]) * kNodeDofs;
-        kin.d.segment<kNodeDofs>(a * kNodeDofs) = state.un.segment<kNodeDofs>(base);
-        kin.dn.segment<kNodeDofs>(a * kNodeDofs) = state.un.segment<kNodeDofs>(base);
-        kin.vn.segment<kNodeDofs>(a * kNodeDofs).setZero();
-        kin.an.segment<kNodeDofs>(a * kNodeDofs).setZero();
-      }
+      // At rest at the committed displacements.
+      ElementKinematics kin = state.kinematics(nodes);
+      kin.d = kin.dn;
+      kin.vn.setZero();
+      kin.an.setZero();
       // Evaluated there a moment ago under the step's rule: a failure now
       // leaves its forces of that evaluation.
       ElemVec f;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 
+#include "tests/unit/V2Material.h"
 #include "core/Hinge.h"
 #include "core/Model.h"
 #include "elements/InelasticFrame.h"
@@ -17,34 +18,17 @@
 namespace c2d {
 namespace {
 
-constexpr double kEI = 77650, kMc = 37.9, kMy = 268, kKh1 = 29400, kKh2 = 272;
-constexpr double kMu = 274, kKs = -18000, kL = 2.5;
+using namespace test::v2;
+constexpr double kL = 2.5;
 
-double kappaOf(double M) {
-  double k = M / kEI;
-  if (M > kMc) k += (std::min(M, kMy) - kMc) / kKh1;
-  if (M > kMy) k += (M - kMy) / kKh2;
-  return k;
-}
-
-MaterialSet material(int number, double Mu) {
-  MaterialSet m;
-  m.number = number;
-  m.elementType = "FRAMe";
-  m.resEA = 3.6e6;
-  m.resGA = 1.25e6;
-  m.resEI = kEI;
-  m.hardening = HardeningData{kMc, kMy, kKh1, kKh2};
-  m.softening = SofteningData{Mu, kKs, std::nullopt};
-  return m;
-}
+MaterialSet v2Set(int number, double Mu) { return material(number, 1.25e6, Kinematics::Small, Mu); }
 
 // n elements along x, clamped at node 0, tip rotation theta = thetaMax * t;
 // element `weak` (or none: -1) has the ultimate moment muWeak.
 Model cantilever(int n, double thetaMax, int weak = -1, double muWeak = kMu) {
   Model m;
-  m.materials()[1] = material(1, kMu);
-  m.materials()[2] = material(2, muWeak);
+  m.materials()[1] = v2Set(1, kMu);
+  m.materials()[2] = v2Set(2, muWeak);
   m.resizeNodes(n + 1);
   for (int i = 0; i <= n; ++i) m.setCoord(i, Vec2(kL * i / n, 0));
   for (int e = 0; e < n; ++e)

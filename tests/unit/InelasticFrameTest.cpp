@@ -1,6 +1,7 @@
 // Failure-phase frame element: tangents by central differences, history
 // round trips, and the V2 cantilever of verification.md solved with a small
 // Newton loop that activates one hinge at a time.
+#include "tests/unit/V2Material.h"
 #include "elements/InelasticFrame.h"
 #include "tests/unit/ElementTestSupport.h"
 
@@ -19,28 +20,10 @@
 namespace c2d {
 namespace {
 
-constexpr double kEI = 77650, kMc = 37.9, kMy = 268, kKh1 = 29400, kKh2 = 272;
-constexpr double kMu = 274, kKs = -18000, kL = 2.5;
+using namespace test::v2;
+constexpr double kL = 2.5;
 
-MaterialSet v2Material() {
-  MaterialSet m;
-  m.number = 3;
-  m.elementType = "FRAMe";
-  m.resEA = 3.6e6;
-  m.resGA = 1.2e6;
-  m.resEI = kEI;
-  m.hardening = HardeningData{kMc, kMy, kKh1, kKh2};
-  m.softening = SofteningData{kMu, kKs, std::nullopt};
-  return m;
-}
-
-// Monotonic moment-curvature of V2.
-double kappaOf(double M) {
-  double k = M / kEI;
-  if (M > kMc) k += (std::min(M, kMy) - kMc) / kKh1;
-  if (M > kMy) k += (M - kMy) / kKh2;
-  return k;
-}
+MaterialSet v2Material() { return material(3, 1.2e6); }
 
 ElementKinematics staticKin(const ElemVec& d) {
   ElementKinematics k;

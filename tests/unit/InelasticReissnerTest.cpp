@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "tests/unit/V2Material.h"
 #include "core/Model.h"
 #include "elements/JointedElement.h"
 #include "elements/Joints.h"
@@ -28,29 +29,10 @@ namespace c2d {
 namespace {
 
 // verification.md V2.
-constexpr double kL = 2.5, kEI = 77650, kMc = 37.9, kMy = 268, kMu = 274, kKh1 = 29400,
-                 kKh2 = 272, kKs = -18000;
+using namespace test::v2;
+constexpr double kL = 2.5;
 
-MaterialSet v2Material() {
-  MaterialSet m;
-  m.number = 1;
-  m.elementType = "FRAMe";
-  m.kinematics = Kinematics::Finite;
-  m.resEA = 3.6e6;
-  m.resGA = 1.25e6;
-  m.resEI = kEI;
-  m.hardening = HardeningData{kMc, kMy, kKh1, kKh2};
-  m.softening = SofteningData{kMu, kKs, std::nullopt};
-  return m;
-}
-
-// Curvature of the monotonic moment-curvature law at moment M >= 0.
-double kappaOf(double M) {
-  double k = M / kEI;
-  if (M > kMc) k += (std::min(M, kMy) - kMc) / kKh1;
-  if (M > kMy) k += (M - kMy) / kKh2;
-  return k;
-}
+MaterialSet v2Material() { return material(1, 1.25e6, Kinematics::Finite); }
 
 Eigen::Matrix2d rot(double a) {
   return (Eigen::Matrix2d() << std::cos(a), -std::sin(a), std::sin(a), std::cos(a)).finished();

@@ -9,6 +9,7 @@
 #include <random>
 #include <sstream>
 
+#include "tests/unit/V2Material.h"
 #include "core/Hinge.h"
 #include "core/Model.h"
 #include "core/State.h"
@@ -125,20 +126,10 @@ TEST(MaterialChange, LinearFrameRefusesOtherKinematicsAndInelasticLaws) {
 }
 
 // The V2 section of verification.md.
-constexpr double kEI = 77650, kMc = 37.9, kMy = 268, kKh1 = 29400, kKh2 = 272;
-constexpr double kMu = 274, kKs = -18000, kL = 0.5;
+using namespace test::v2;
+constexpr double kL = 0.5;
 
-MaterialSet v2(double ei = kEI) {
-  MaterialSet m;
-  m.number = 2;
-  m.elementType = "FRAMe";
-  m.resEA = 3.6e6;
-  m.resGA = 1.2e6;
-  m.resEI = ei;
-  m.hardening = HardeningData{kMc, kMy, kKh1, kKh2};
-  m.softening = SofteningData{kMu, kKs, std::nullopt};
-  return m;
-}
+MaterialSet v2(double ei = kEI) { return material(2, 1.2e6, Kinematics::Small, kMu, ei); }
 
 // A horizontal element of length kL bent to curvature kappa (theta2 - theta1)/l,
 // with some axial and shear strain.
