@@ -158,6 +158,14 @@ std::vector<std::string> runWarnings(const RunSummary& s) {
                   s.crossings, s.crossings == 1 ? "" : "s");
     out.push_back(buf);
   }
+  if (s.blastsNotMade > 0) {
+    std::snprintf(buf, sizeof buf,
+                  "warning: %d blast%s of the BLASt plan did not happen: the run ended before "
+                  "%s time (listed in the log)",
+                  s.blastsNotMade, s.blastsNotMade == 1 ? "" : "s",
+                  s.blastsNotMade == 1 ? "its" : "their");
+    out.push_back(buf);
+  }
   return out;
 }
 
@@ -298,6 +306,7 @@ class Walker {
     total_.jointsRuptured += s.jointsRuptured;
     total_.removed += s.removed;
     total_.crossings += s.crossings;
+    total_.blastsNotMade += s.blastsNotMade;
     total_.debrisRuns += s.debrisRuns;
     total_.outsideRuns += s.outsideRuns;
     if (!row.ok) return;

@@ -60,7 +60,8 @@ std::string runSummaryText(const RunSummary& s);
 // Newton tolerance in every analysis, static or dynamic.
 constexpr double kEnergyBalanceTolerance = 1e-6;
 // The warnings a run's summary gives, one line each: an energy balance that
-// changed by more than kEnergyBalanceTolerance, members crossing at the end.
+// changed by more than kEnergyBalanceTolerance, members crossing at the end,
+// blasts whose time the run never reached.
 std::vector<std::string> runWarnings(const RunSummary& s);
 
 DeckOutcome runDeck(const std::string& path, const DeckOptions& options,

@@ -167,6 +167,14 @@ void ProblemRun::run() {
   outputs_->finish(model_, analysis_->state(), history_.get());
   if (model_.ground()) reportDebris();
   reportCrossings();
+  // A blast plan the run did not reach is not silently dropped.
+  for (const Blast& b : model_.blasts())
+    if (!b.done) {
+      ++blastsNotMade_;
+      log_ << "  warning: the blast at t = " << fmt("%.6e", b.time)
+           << " did not happen: the run ended at t = " << fmt("%.6e", analysis_->state().t)
+           << "\n";
+    }
   progress(true);
 }
 
@@ -229,6 +237,7 @@ RunSummary ProblemRun::summary() const {
   s.jointsRuptured = jointsRuptured_;
   s.removed = removed_;
   s.crossings = crossings_;
+  s.blastsNotMade = blastsNotMade_;
   s.debrisRuns = debris_ ? 1 : 0;
   s.outsideRuns = debris_ && debris_->outside() ? 1 : 0;
   return s;

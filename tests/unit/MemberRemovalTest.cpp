@@ -243,6 +243,20 @@ TEST(MemberRemoval, ReleaseStartsFromTheForcesTheElementCarried) {
   EXPECT_LT(std::abs(released), 2e-3 * std::abs(sudden));
 }
 
+TEST(MemberRemoval, ABlastTheRunNeverReachesIsWarned) {
+  // The plan says t = 5, the run ends at t = 1: said in the log and the summary.
+  DeckTempDir dir;
+  const std::string batch = "  DT,,1\n  TIME\n  LOOP,,3\n    TANG,,1\n  NEXT\n";
+  const auto r = runDeckText(dir, "late.inp", frame(kColumn + "BLASt\n  5 11\n\n", batch, ""));
+  ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
+  EXPECT_NE(r.log.find("warning: the blast at t = 5.000000e+00 did not happen: the run "
+                       "ended at t = 1.000000e+00"),
+            std::string::npos)
+      << r.log;
+  EXPECT_NE(r.log.find("warning: 1 blast of the BLASt plan did not happen"), std::string::npos)
+      << r.log;
+}
+
 TEST(MemberRemoval, RemovedTwiceIsAnAnalysisError) {
   DeckTempDir dir;
   const std::string batch =
