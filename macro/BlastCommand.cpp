@@ -69,8 +69,9 @@ std::vector<MeshCommandEntry> blastCommandTable() {
                 "a node no element holds any more leaves it too); the forces they exerted on the "
                 "rest are released linearly over td (0 or empty: at once; GSA 2016: td at most a "
                 "tenth of the first vertical period). Steps end exactly on every t and t + td. "
-                "One log line per blast; the energy they carried is booked as dissipated, the "
-                "work of the released forces as external. Under arc length a blast happens at "
+                "One log line per blast (a blast the run never reaches is warned at its end); the "
+                "energy they carried is booked as dissipated, the work of the released forces as "
+                "external. Under arc length a blast happens at "
                 "the first step past its time. REMOve,ELEMents removes at the current time.",
                 {}, "t n1 n2 inc td",
                 {expr("t", "blast time"), expr("n1", "first element"),

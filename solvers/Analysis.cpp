@@ -131,14 +131,18 @@ void Analysis::updateRates() {
 }
 
 Status Analysis::advance() {
+  const bool committing = dirty_;
   Status st = commit();
   if (!st) return st;
   // A commit with nothing to do skips its refresh; the topology may still have
   // changed since (HINGE2JOINT right after a converged step).
   if (assembler_.patternVersion() != model_.topologyVersion()) topologyChanged();
-  // A blast due at the committed time that no commit has made (one at the start).
-  st = afterCommitEvents();
-  if (!st) return st;
+  // Nothing committed: a blast due at the committed time that no commit has
+  // made yet (one at the start of the run).
+  if (!committing) {
+    st = afterCommitEvents();
+    if (!st) return st;
+  }
   stepEnd_ = state_.tn + state_.dt;
   const double t = nextStepTime();
   beginStep(t, state_.dt > 0 ? (t - state_.tn) / state_.dt : 1.0, true);
@@ -595,8 +599,16 @@ Status Analysis::commitEvaluated() {
 }
 
 Status Analysis::afterCommitEvents() {
-  const bool removed = removal_.afterCommit();
-  const bool joints = topology_.afterCommit(model_, state_);
+  // Until nothing changes: a change can make another (a joint formed at a
+  // failed hinge can find its neighbour's hinge failed, or rupture at once).
+  bool removed = false, joints = false;
+  for (int pass = 0; pass < 16; ++pass) {
+    const bool r = removal_.afterCommit();
+    const bool j = topology_.afterCommit(model_, state_);
+    if (!r && !j) break;
+    removed = removed || r;
+    joints = joints || j;
+  }
   if (!removed && !joints) return Status::success();
   // The new elements at the committed state, so that the reactions and
   // section forces reported for this step are current (statics: a dynamic
