@@ -156,7 +156,8 @@ double Analysis::nextStepTime() const {
 }
 
 Status Analysis::removeElements(const std::vector<int>& elements, double release) {
-  if (dirty_ && !converged_ && !history_.empty())
+  // A step begun (TIME) and not solved to convergence has no state to remove at.
+  if (dirty_ && !converged_)
     return Status::failure("the current step has not converged: remove members after it does");
   Status st = commit();
   if (!st) return st;

@@ -257,6 +257,16 @@ TEST(MemberRemoval, ABlastTheRunNeverReachesIsWarned) {
       << r.log;
 }
 
+TEST(MemberRemoval, RemovalInAStepNotSolvedIsAnAnalysisError) {
+  // TIME begins a step; REMOve before its Newton loop converged has no state to act on.
+  DeckTempDir dir;
+  const std::string batch = "  DT,,1\n  TIME\n  REMOve,ELEMents,11\n";
+  const auto r = runDeckText(dir, "unsolved.inp", frame(kColumn, batch, ""));
+  EXPECT_EQ(r.outcome.exitCode, 2);
+  EXPECT_NE(r.outcome.message.find("the current step has not converged"), std::string::npos)
+      << r.outcome.message;
+}
+
 TEST(MemberRemoval, RemovedTwiceIsAnAnalysisError) {
   DeckTempDir dir;
   const std::string batch =
