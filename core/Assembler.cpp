@@ -212,9 +212,14 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
   if (rule.dynamic()) {
     for (Eigen::Index i = 0; i < mNodal_.size(); ++i) {
       if (mNodal_[i] == 0 || !dofs_.used(static_cast<int>(i / kNodeDofs))) continue;
-      r_[i] += mNodal_[i] * rule.acceleration(s.u[i] - s.un[i], s.vn[i], s.an[i]);
+      const double du = s.u[i] - s.un[i];
+      if (i % kNodeDofs == 2 && !rule.rotationInRange(du))
+        return Status::failure("node " + std::to_string(i / kNodeDofs + 1) + ": " +
+                               StepRule::kRotationRangeMessage);
+      r_[i] += mNodal_[i] * rule.acceleration(rule.rate(i, du), s.vn[i], s.an[i]);
       const int eq = dofs_.eq(static_cast<int>(i));
-      if (wantTangent && eq >= 0) K_.valuePtr()[diagPos_[eq]] += mNodal_[i] * rule.ca;
+      if (wantTangent && eq >= 0)
+        K_.valuePtr()[diagPos_[eq]] += mNodal_[i] * rule.ca * rule.rateSlope(i, du);
     }
   }
 

@@ -89,18 +89,17 @@ Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& ru
   const double M = w * f1.M + (1 - w) * committed_.forces.M;
   const ElemVec fLocal = l * (N * b.eps + V * b.gamma + M * b.kappa);
   residual = rotation_.transpose() * fLocal;
-  if (rule.dynamic()) {
-    const ElemVec dd = kin.d - kin.dn;
-    const ElemVec aEff = rule.acceleration(dd, kin.vn, kin.an);
-    residual += mass_ * aEff;
-  }
-
   if (wantTangent) {
     const ElemMat kLocal = l * w *
                            (EA_ * b.eps * b.eps.transpose() + GA_ * b.gamma * b.gamma.transpose() +
                             kt * b.kappa * b.kappa.transpose());
     tangent = rotation_.transpose() * kLocal * rotation_;
-    if (rule.dynamic()) tangent += rule.ca * mass_;
+  }
+  if (rule.dynamic()) {
+    const ElemVec dd = kin.d - kin.dn;
+    if (!rule.rotationsInRange(dd)) return Status::failure(StepRule::kRotationRangeMessage);
+    rule.pairWithRate(dd, residual, wantTangent ? &tangent : nullptr);
+    rule.addInertia(mass_, dd, kin.vn, kin.an, residual, wantTangent ? &tangent : nullptr);
   }
   if (!residual.allFinite() || (wantTangent && !tangent.allFinite()))
     return Status::failure("inelastic frame: non-finite residual or tangent");

@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 namespace c2d {
@@ -14,7 +15,7 @@ namespace {
 // squared update, far below round-off. Stopping without that last evaluation
 // would leave a moment K_rr*step at the joint, always of the same sign, and the
 // energy of a long run would drift.
-constexpr int kMaxLocalIterations = 30;
+constexpr int kMaxLocalIterations = 60;
 constexpr double kSmallStep = 1e-9;
 
 }  // namespace
@@ -45,6 +46,14 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
   ElementKinematics in = innerKinematics(kin, psi);
   ElemMat kin6;
   bool lastPass = false, converged = false;
+  // Under the Cayley rule (core/StepRule.h) the slave section's rotation
+  // increment lies in (-pi, pi), where the rate of its inertia, 2 tan(inc/2),
+  // sweeps every value: the residual goes from -inf to +inf there. Newton's step
+  // is kept inside a bracket of the root and bisects when it would leave it.
+  const bool bounded = rule.rotationsByCayley() && inner_->mass()(k, k) > 0;
+  double lo = -std::numbers::pi, hi = std::numbers::pi;
+  auto increment = [&](double p) { return kin.d(k) + p - in.dn(k); };
+  if (bounded && !(std::abs(increment(psi)) < hi)) psi = in.dn(k) - kin.d(k);
   for (int it = 0; it < kMaxLocalIterations; ++it) {
     in.d(k) = kin.d(k) + psi;
     if (Status st = inner_->evaluate(in, rule, true, residual, kin6); !st) return st;
@@ -61,9 +70,20 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
       converged = true;
       break;
     }
-    const double step = -residual(k) / krr;
+    double step = -residual(k) / krr;
+    const double small = kSmallStep * (1.0 + std::abs(psi));
+    bool bisected = false;
+    if (bounded) {
+      const double inc = increment(psi);
+      (residual(k) > 0 ? hi : lo) = inc;
+      if (std::abs(step) > small && !(inc + step >= lo && inc + step <= hi)) {
+        step = 0.5 * (lo + hi) - inc;
+        bisected = true;
+      }
+    }
     if (!std::isfinite(step)) break;
-    lastPass = std::abs(step) <= kSmallStep * (1.0 + std::abs(psi));
+    // Only a Newton step this small has converged (its error is its square).
+    lastPass = !bisected && std::abs(step) <= small;
     psi += step;
   }
   if (!converged) {
@@ -74,9 +94,11 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
   }
 
   trial_.psi = psi;
-  const double dpsi = psi - committed_.psi;
-  trial_.vel = rule.velocity(dpsi, committed_.vel, committed_.acc);
-  trial_.acc = rule.acceleration(dpsi, committed_.vel, committed_.acc);
+  // The slave's rate measure less the master's (equal to dpsi unless the
+  // rotations advance by the Cayley rule).
+  const double rate = rule.rotationRate(in.d(k) - in.dn(k)) - rule.rotationRate(kin.d(k) - kin.dn(k));
+  trial_.vel = rule.velocity(rate, committed_.vel, committed_.acc);
+  trial_.acc = rule.acceleration(rate, committed_.vel, committed_.acc);
   slaveRotation_ = in.d(k);
 
   if (wantTangent) {

@@ -148,14 +148,12 @@ Status LinearFrame::evaluate(const ElementKinematics& kin, const StepRule& rule,
   } else {
     residual = stiffness_ * (kin.d - d0_);
   }
+  if (wantTangent) tangent = wk * stiffness_;
   if (rule.dynamic()) {
     const ElemVec dd = kin.d - kin.dn;
-    const ElemVec aEff = rule.acceleration(dd, kin.vn, kin.an);
-    residual += mass_ * aEff;
-  }
-  if (wantTangent) {
-    tangent = wk * stiffness_;
-    if (rule.dynamic()) tangent += rule.ca * mass_;
+    if (!rule.rotationsInRange(dd)) return Status::failure(StepRule::kRotationRangeMessage);
+    rule.pairWithRate(dd, residual, wantTangent ? &tangent : nullptr);
+    rule.addInertia(mass_, dd, kin.vn, kin.an, residual, wantTangent ? &tangent : nullptr);
   }
   if (!residual.allFinite()) return Status::failure("frame element: non-finite residual");
 

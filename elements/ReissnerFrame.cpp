@@ -1,5 +1,6 @@
 #include "elements/ReissnerFrame.h"
 
+#include <array>
 #include <cassert>
 #include <cmath>
 
@@ -58,18 +59,21 @@ void strainOperatorForce(double l, const Mat2& p, const Vec2& c, const Vec2& n, 
   }
 }
 
-// k = w l (B^T C B1 + EI bk^T bk), C = diag(EA, GA), B1 = [-P1 c1 P1 c1].
-void materialTangent(double l, double w, const Mat2& p, const Vec2& c, const Mat2& p1,
-                     const Vec2& c1, double ea, double ga, double ei, ElemMat& k) {
+// k = w l (B^T C B1 + g EI bk^T bk), C = diag(EA, GA), B1 = [-P1 c1 P1 c1],
+// B = [-P c_1 P c_2] (the rotation columns of the test operator may differ per
+// node) and g the factor of the test curvature.
+void materialTangent(double l, double w, const Mat2& p, const std::array<Vec2, 2>& c, double g,
+                     const Mat2& p1, const Vec2& c1, double ea, double ga, double ei, ElemMat& k) {
   const double wl = w * l;
   const Mat2 cp1 = Vec2(ea, ga).asDiagonal() * p1;
   const Vec2 cc1(ea * c1.x(), ga * c1.y());
   const Mat2 uu = wl * (p.transpose() * cp1);
   const Vec2 ut = wl * (p.transpose() * cc1);
-  const Vec2 tu = wl * (cp1.transpose() * c);
-  const double tt = wl * c.dot(cc1), kk = w * ei / l;
+  const double kk = w * g * ei / l;
   for (int a = 0; a < 2; ++a) {
     const double sa = nodeSign(a);
+    const Vec2 tu = wl * (cp1.transpose() * c[a]);
+    const double tt = wl * c[a].dot(cc1);
     for (int b = 0; b < 2; ++b) {
       const double sb = nodeSign(b);
       k.block<2, 2>(uDof(a), uDof(b)) = (sa * sb) * uu;
@@ -139,7 +143,7 @@ Vec3 ReissnerFrame::staticForce(const ElemVec& d, double m, double kt, bool want
   strainOperatorForce(l, p, c, n, m, f);
   if (!wantTangent) return e;
 
-  materialTangent(l, 1.0, p, c, p, c, ea_, ga_, kt, k);
+  materialTangent(l, 1.0, p, {c, c}, 1.0, p, c, ea_, ga_, kt, k);
   // Geometric part n . d(b_j)/d(d_k).
   const Vec2 q = lam * kW.transpose() * n;  // q_i = n . (W Lambda^T e_i)
   const double nh = n.dot(h);
@@ -156,13 +160,23 @@ Vec3 ReissnerFrame::staticForce(const ElemVec& d, double m, double kt, bool want
   return e;
 }
 
-// Energy conserving/decaying internal force between dn and d, and its exact
-// derivative with respect to d; returns E(d). With Lambda_{n+1} = Lambda_mid R(Delta/2)
-// and Lambda_n = Lambda_mid R(-Delta/2), R(x) = cos x + sin x W:
-//   E_{n+1} - E_n = cos(Delta/2) Lambda_mid^T (g_{n+1} - g_n)
-//                   - sinc(Delta/2) W Lambda_mid^T g_mid Delta,
-// which defines B_alg (Delta = theta_m,n+1 - theta_m,n, g = phi'). The three
-// rotations come from two sine-cosine pairs: Lambda_mid and R(Delta/2).
+// Energy and momentum conserving/decaying internal force between dn and d, and
+// its exact derivative with respect to d; returns E(d). With
+// Lambda_{n+1} = Lambda_mid R(x), Lambda_n = Lambda_mid R(-x), R(x) = cos x + sin x W,
+// x = Delta/4 (Delta = theta_1 + theta_2 increments, the midpoint rotation's
+// increment twice), and g = phi':
+//   E_{n+1} - E_n = cos x Lambda_mid^T (g_{n+1} - g_n) - 2 sin x W a_M,
+//   a_M = Lambda_mid^T g_mid,  K_{n+1} - K_n = (dtheta_2 - dtheta_1)/l.
+// The nodal rotations pair with their Cayley increments c_a = 2 tan(dtheta_a/2)
+// (core/StepRule.h). The translations carry f_2 = -f_1 = cos x Lambda_mid n; the
+// nodal moments are fixed by two conditions: their work sum_a m_a c_a is the
+// strain work n.(2 sin x (-W a_M)) l + M (dtheta_2 - dtheta_1) (energy), and their
+// sum balances the moment of the end forces about the mid-point configuration,
+// -l g_mid x f_2 = cos x S, S = -l n.(W a_M) (angular momentum). With
+// y = (dtheta_2 - dtheta_1)/4, so that dtheta_a = 2(x -+ y):
+//   m_a = S (cos x -+ sin x tan y)/2 -+ M g,  g = (cos^2 x - sin^2 y) / sinc(2y),
+// in closed form without cancellation (tan(x - y) + tan(x + y) and their
+// difference share the denominator cos^2 x - sin^2 y).
 // m: the algorithmic bending moment, kt: dm/dK_{n+1} / (1/2 + alpha).
 Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double alpha, double m,
                                   double kt, bool wantTangent, ElemVec& f, ElemMat& k) const {
@@ -170,10 +184,11 @@ Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double al
   const Vec2 g1 = (x2_ + d.segment<2>(3) - x1_ - d.segment<2>(0)) / l;
   const Vec2 g0 = (x2_ + dn.segment<2>(3) - x1_ - dn.segment<2>(0)) / l;
   const double th1 = 0.5 * (d(2) + d(5)), th0 = 0.5 * (dn(2) + dn(5));
-  const double x = 0.5 * (th1 - th0);  // Delta/2
+  const double x = 0.5 * (th1 - th0);
+  const double y = 0.25 * ((d(5) - dn(5)) - (d(2) - dn(2)));
   const Mat2 lamM = rot(beta0_ + 0.5 * (th1 + th0));
   const Mat2 rx = rot(x);
-  const double cx = rx(0, 0), sx = rx(1, 0), sc = sinc(x);
+  const double cx = rx(0, 0), sx = rx(1, 0);
   const Vec2 a1 = lamM.transpose() * g1, a0 = lamM.transpose() * g0;
   const Vec2 aM = 0.5 * (a1 + a0);
   const Vec2 h1 = rx.transpose() * a1;  // Lambda_{n+1}^T g1
@@ -184,27 +199,41 @@ Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double al
   const Vec3 eAlg = (0.5 + alpha) * e1 + (0.5 - alpha) * e0 - e0_;
   const Vec2 n(ea_ * eAlg(0), ga_ * eAlg(1));
 
-  const Mat2 p = (cx / l) * lamM.transpose();
-  const Vec2 c = -0.5 * sc * kW * aM;
-  strainOperatorForce(l, p, c, n, m, f);
+  const Vec2 lamN = lamM * n;  // Lambda_mid n
+  const Vec2 wAM = kW * aM;
+  const double S = -l * n.dot(wAM);
+  const double sy = std::sin(y), ty = std::tan(y), sc2 = sinc(2 * y);
+  const double g = (cx * cx - sy * sy) / sc2;
+  const std::array<double, 2> h = {0.5 * (cx + sx * ty), 0.5 * (cx - sx * ty)};
+  for (int a = 0; a < 2; ++a) {
+    f.segment<2>(uDof(a)) = (nodeSign(a) * cx) * lamN;
+    f(thDof(a)) = S * h[a] + nodeSign(a) * m * g;
+  }
   if (!wantTangent) return e1;
 
-  // dE_{n+1}/dd: the consistent operator at d, Lambda_{n+1} = Lambda_mid R(x).
+  // Material part: dE_{n+1}/dd, the consistent operator at d (Lambda_{n+1} = Lambda_mid R(x)),
+  // tested with the rows of the force above.
+  const Mat2 p = (cx / l) * lamM.transpose();
   const Mat2 p1 = (lamM * rx).transpose() / l;
   const Vec2 c1 = -0.5 * kW * h1;
-  materialTangent(l, 0.5 + alpha, p, c, p1, c1, ea_, ga_, kt, k);
+  materialTangent(l, 0.5 + alpha, p, {-h[0] * wAM, -h[1] * wAM}, g, p1, c1, ea_, ga_, kt, k);
 
-  // Geometric part n . d(b_alg,j)/d(d_k); x, psi_mid and g_mid each move with
-  // d: dx/dtheta_a = dpsi_mid/dtheta_a = 1/4, dg_mid/du_a = sign_a/(2l).
+  // Geometric part: x, y, psi_mid and g_mid move with d: dx/dtheta_a = dpsi_mid/dtheta_a = 1/4,
+  // dy/dtheta_a = sign_a/4, dg_mid/du_a = sign_a/(2l); d(Lambda_mid^T)/dpsi = -W Lambda_mid^T.
   const Vec2 q = lamM * kW.transpose() * n;  // q_i = n . (W Lambda_mid^T e_i)
-  const Vec2 pn = lamM * n;                  // p_i = n . (Lambda_mid^T e_i)
-  const double kThTh = -0.125 * l * (sincPrime(x) * n.dot(kW * aM) + sc * n.dot(aM));
+  const double dSdTh = -0.25 * l * n.dot(aM);
+  const double dgdx = -2 * cx * sx / sc2;
+  const double dgdy = -std::sin(2 * y) / sc2 - 2 * g * sincPrime(2 * y) / sc2;
   for (int a = 0; a < 2; ++a) {
-    for (int bn = 0; bn < 2; ++bn) {
-      k(thDof(a), thDof(bn)) += kThTh;
+    const double sa = nodeSign(a);
+    const double dhdx = 0.5 * (-sx - sa * cx * ty), dhdy = -0.5 * sa * sx * (1 + ty * ty);
+    for (int b = 0; b < 2; ++b) {
+      const double sb = nodeSign(b);
+      k(thDof(a), thDof(b)) +=
+          h[a] * dSdTh + 0.25 * (S * (dhdx + sb * dhdy) + sa * m * (dgdx + sb * dgdy));
       for (int i = 0; i < 2; ++i) {
-        k(uDof(a) + i, thDof(bn)) += 0.25 * nodeSign(a) * (-sx * pn(i) - cx * q(i));
-        k(thDof(bn), uDof(a) + i) += -0.25 * nodeSign(a) * sc * q(i);
+        k(uDof(a) + i, thDof(b)) += 0.25 * sa * (-sx * lamN(i) - cx * q(i));
+        k(thDof(a), uDof(b) + i) += -0.5 * sb * h[a] * q(i);
       }
     }
   }
@@ -213,6 +242,7 @@ Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double al
 
 Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rule, bool wantTangent,
                                ElemVec& residual, ElemMat& tangent) {
+  if (!rule.rotationsInRange(kin.d - kin.dn)) return Status::failure(StepRule::kRotationRangeMessage);
   // Bending first: the curvature K = (theta2 - theta1)/l is linear in d.
   const HingedBendingState& from = committed_.section;
   const double openSign =
@@ -243,12 +273,8 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
   } else {
     strain = staticForce(kin.d, m1, bend.tangent, wantTangent, residual, tangent);
   }
-  if (rule.dynamic()) {
-    const ElemVec dd = kin.d - kin.dn;
-    const ElemVec aEff = rule.acceleration(dd, kin.vn, kin.an);
-    residual += mass_ * aEff;
-    if (wantTangent) tangent += rule.ca * mass_;
-  }
+  if (rule.dynamic())
+    rule.addInertia(mass_, kin.d - kin.dn, kin.vn, kin.an, residual, wantTangent ? &tangent : nullptr);
   if (!residual.allFinite() || (wantTangent && !tangent.allFinite()))
     return Status::failure("frame-reissner element: non-finite residual or tangent");
 

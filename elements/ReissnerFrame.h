@@ -11,13 +11,14 @@
 //   stored energy      W = l/2 (EA Sigma^2 + GA Gamma^2 + EI K^2)
 // evaluated at the element midpoint (l is the reference length).
 //
-// Under Scheme::MidPoint the internal force is the energy conserving/decaying
-// one: resultants from C((1/2+alpha) E_{n+1} + (1/2-alpha) E_n) and a strain
-// operator B_alg with B_alg (d_{n+1} - d_n) = E_{n+1} - E_n exactly, so that
-// (d_{n+1} - d_n).f_int = W_{n+1} - W_n + alpha l dE.C.dE. The forces balance
-// (linear momentum exact) but leave the moment l (cos x - sinc x)(a_M x n),
-// x = Delta/2: angular momentum drifts at second order, and no energy
-// conserving force can avoid that with additive rotations (docs/design-notes.md).
+// Under Scheme::MidPoint the internal force is the energy and momentum
+// conserving/decaying one: resultants from C((1/2+alpha) E_{n+1} + (1/2-alpha) E_n),
+// and nodal forces whose work on the increment, the rotations measured by their
+// Cayley increments 2 tan(dtheta/2) as the step rule advances them
+// (core/StepRule.h), is exactly E_{n+1} - E_n tested with the resultants:
+// W_{n+1} - W_n + alpha l dE.C.dE. The forces balance (linear momentum exact) and
+// their moments about the mid-point configuration balance too (angular momentum
+// exact); see midPointForce.
 //
 // An initial strain E0 = (Sigma0, Gamma0, K0) shifts the constitutive law:
 // resultants C (E - E0), energy W = l/2 (E - E0).C.(E - E0). Under the mid-point

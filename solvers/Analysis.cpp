@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <string>
 
@@ -126,8 +127,11 @@ void Analysis::updateRates() {
     state_.a.setZero();
     return;
   }
-  state_.v = rule.cv * (state_.u - state_.un) + rule.vv * state_.vn + rule.va * state_.an;
-  state_.a = rule.ca * (state_.u - state_.un) + rule.av * state_.vn + rule.aa * state_.an;
+  Eigen::VectorXd r = state_.u - state_.un;
+  if (rule.rotationsByCayley())
+    for (Eigen::Index i = 2; i < r.size(); i += kNodeDofs) r[i] = rule.rotationRate(r[i]);
+  state_.v = rule.cv * r + rule.vv * state_.vn + rule.va * state_.an;
+  state_.a = rule.ca * r + rule.av * state_.vn + rule.aa * state_.an;
 }
 
 Status Analysis::advance() {
@@ -234,6 +238,19 @@ void Analysis::applyIncrement(const Eigen::VectorXd& du, double scale) {
   }
   stepInc_ += scale * du;
   updateRates();
+}
+
+double Analysis::rotationStepLimit(const Eigen::VectorXd& du, double s) const {
+  if (!stepRule().rotationsByCayley()) return s;
+  const DofMap& dofs = assembler_.dofs();
+  for (Eigen::Index i = 2; i < state_.u.size(); i += kNodeDofs) {
+    const int eq = dofs.eq(static_cast<int>(i));
+    if (eq < 0) continue;
+    const double inc = state_.u[i] - state_.un[i];
+    if (std::abs(inc + s * du[eq]) < std::numbers::pi) continue;
+    s = std::min(s, 0.5 * (std::copysign(std::numbers::pi, du[eq]) - inc) / du[eq]);
+  }
+  return s;
 }
 
 bool Analysis::holdPrescribed() {
@@ -376,7 +393,7 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
       return s2.ok;
     });
   }
-  applyIncrement(du_, s);
+  applyIncrement(du_, rotationStepLimit(du_, s));
   dirty_ = true;
   ++totalIterations_;
 

@@ -161,6 +161,10 @@ class Analysis {
   // The step's iterations repeat with period one or two (plain Newton cycling).
   bool cycling() const;
   void applyIncrement(const Eigen::VectorXd& du, double scale);
+  // Under the Cayley rule a rotation's increment stays below pi in one step: a
+  // correction scale s that would take one past it is cut to reach halfway
+  // from the increment to pi (a joint's local solve does the same).
+  double rotationStepLimit(const Eigen::VectorXd& du, double s) const;
   // Tangent predictor of a static step with prescribed displacements: moves the
   // restrained dofs back to their committed values (true when any had moved,
   // their increments kept in dPrescribed_), so that the first tangent is the one

@@ -27,7 +27,9 @@ void EnergyAccount::commitStep(const Assembler& a, const State& s, const StepRul
   const bool midPoint = rule.scheme == Scheme::MidPoint;
   double external = 0, elements = 0, contact = 0;
   for (Eigen::Index i = 0; i < nd; ++i) {
-    const double du = s.u[i] - s.un[i];
+    // The increment as the forces work on it: rotations by their rate measure
+    // under the Cayley rule (core/StepRule.h).
+    const double du = rule.rate(i, s.u[i] - s.un[i]);
     // The forces of this evaluation: r = f_elements - loads - f_contact.
     const double load = loadFactors[i] * fRef[i] + fGrav[i] + fRel[i];
     const double fe = r[i] + load + fc[i];

@@ -8,7 +8,9 @@
 // Mid-point energy conserving (alpha = beta = 0) / decaying (alpha, beta in (0, 1/2]),
 //   paper section 3.3 with the corrected eq (61):
 //   (d_n+1 - d_n)/dt = (v_n+1 + v_n)/2 + beta (v_n+1 - v_n),  a_eff = (v_n+1 - v_n)/dt,
-//   and stress resultants from (1/2 + alpha) E_n+1 + (1/2 - alpha) E_n.
+//   and stress resultants from (1/2 + alpha) E_n+1 + (1/2 - alpha) E_n; a
+//   rotation's increment enters as 2 tan(dtheta/2) (the Cayley rule: energy and
+//   angular momentum conserved together, core/StepRule.h).
 #include <string>
 
 #include "core/StepRule.h"

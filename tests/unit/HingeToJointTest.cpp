@@ -57,9 +57,9 @@ TEST(HingeToJointInitialStrain, ShiftsResultantsEnergyAndKeepsTheMidPointIdentit
     const double w0 = 0.5 * l * epsN.dot(c.asDiagonal() * epsN);
     EXPECT_NEAR(shifted.strainEnergy(), w1, 1e-14 * w1);
     EXPECT_NEAR(shifted.energy(d), w1, 1e-14 * w1);
-    // (d - dn).f = W(d) - W(dn) + alpha l dE.C.dE, with the shifted energies.
+    // r(d - dn).f = W(d) - W(dn) + alpha l dE.C.dE, with the shifted energies.
     const Vec3 dE = eps - epsN;
-    EXPECT_NEAR((d - dn).dot(r), w1 - w0 + alpha * l * dE.dot(c.asDiagonal() * dE),
+    EXPECT_NEAR(mid.rate(d - dn).dot(r), w1 - w0 + alpha * l * dE.dot(c.asDiagonal() * dE),
                 1e-11 * std::abs(w1 - w0) + 1e-13);
     // The tangent (its geometric part sees the shifted resultants) is the
     // derivative of the residual.
