@@ -111,8 +111,20 @@ struct StepRule {
   // Inertia of an element's constant mass matrix m: residual m a_eff, tangent ca m diag(r').
   void addInertia(const ElemMat& m, const ElemVec& dd, const ElemVec& vn, const ElemVec& an,
                   ElemVec& residual, ElemMat* tangent) const {
-    residual += m * acceleration(rate(dd), vn, an);
-    if (tangent) *tangent += ca * (m * rateSlope(dd).asDiagonal());
+    ElemVec r = dd;
+    if (!rotationsByCayley()) {
+      residual += m * acceleration(r, vn, an);
+      if (tangent) *tangent += ca * m;
+      return;
+    }
+    ElemVec slope = ElemVec::Ones();
+    for (int i : {2, 2 + kNodeDofs}) {  // one tangent per rotation: c = 2t, c' = 1 + t^2
+      const double t = std::tan(0.5 * dd(i));
+      r(i) = 2 * t;
+      slope(i) = 1 + t * t;
+    }
+    residual += m * acceleration(r, vn, an);
+    if (tangent) *tangent += ca * (m * slope.asDiagonal());
   }
 
   // An element whose internal force f pairs with the additive increment (a

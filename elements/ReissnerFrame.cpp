@@ -202,7 +202,10 @@ Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double al
   const Vec2 lamN = lamM * n;  // Lambda_mid n
   const Vec2 wAM = kW * aM;
   const double S = -l * n.dot(wAM);
-  const double sy = std::sin(y), ty = std::tan(y), sc2 = sinc(2 * y);
+  // One sine-cosine pair for y: tan y, sin 2y, cos 2y and sinc(2y) from it.
+  const double sy = std::sin(y), cy = std::cos(y), ty = sy / cy;
+  const double s2y = 2 * sy * cy, c2y = cy * cy - sy * sy;
+  const double sc2 = std::abs(2 * y) < 0.1 ? sinc(2 * y) : s2y / (2 * y);
   const double g = (cx * cx - sy * sy) / sc2;
   const std::array<double, 2> h = {0.5 * (cx + sx * ty), 0.5 * (cx - sx * ty)};
   for (int a = 0; a < 2; ++a) {
@@ -223,7 +226,9 @@ Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double al
   const Vec2 q = lamM * kW.transpose() * n;  // q_i = n . (W Lambda_mid^T e_i)
   const double dSdTh = -0.25 * l * n.dot(aM);
   const double dgdx = -2 * cx * sx / sc2;
-  const double dgdy = -std::sin(2 * y) / sc2 - 2 * g * sincPrime(2 * y) / sc2;
+  const double sc2Prime =
+      std::abs(2 * y) < 0.1 ? sincPrime(2 * y) : (2 * y * c2y - s2y) / (4 * y * y);
+  const double dgdy = -s2y / sc2 - 2 * g * sc2Prime / sc2;
   for (int a = 0; a < 2; ++a) {
     const double sa = nodeSign(a);
     const double dhdx = 0.5 * (-sx - sa * cx * ty), dhdy = -0.5 * sa * sx * (1 + ty * ty);
