@@ -120,7 +120,8 @@ Status HingeEvents::solveBetween(double fraction, double sLo, double sHi, double
   // state (with a softening hinge the start decides which branch the
   // iterates follow), and path following measures its constraint from there.
   if (!an_.integrator_.dynamic() || an_.path_) return solveFraction(fraction, tEnd, lineSearch);
-  const double w = (fraction - sLo) / (sHi - sLo);
+  // (A bracket at round-off can close: its two ends are then one state.)
+  const double w = sHi > sLo ? (fraction - sLo) / (sHi - sLo) : 1.0;
   start_ = uLo_ + w * (uHi_ - uLo_);
   if (solveFraction(fraction, tEnd, lineSearch, &start_)) return Status::success();
   return solveFraction(fraction, tEnd, lineSearch);
