@@ -26,7 +26,11 @@ bool Assembler::refresh() {
   }
   members_ = model_.memberContact() ? std::make_unique<MemberContact>(model_, dofs_) : nullptr;
   patternPairs_.clear();
-  buildPattern();
+  // With member contact the pattern waits for the first assembly, where the
+  // pairs with a force are known: built here without them, it was built again
+  // at once whenever a pair touched (after every joint formed in a fall).
+  patternPending_ = members_ != nullptr;
+  if (!patternPending_) buildPattern();
   const Eigen::Index nd = static_cast<Eigen::Index>(model_.numNodes()) * kNodeDofs;
   r_.setZero(nd);
   fRel_.setZero(nd);
@@ -118,6 +122,7 @@ void Assembler::buildPattern() {
         pairPos_[p][a * 6 + b] = (eq[a] >= 0 && eq[b] >= 0) ? position(eq[a], eq[b]) : -1;
   }
   ++structureVersion_;
+  patternPending_ = false;
 }
 
 void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool wantTangent) {
@@ -138,6 +143,10 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
     const int slot = slotOf(p);
     missing = missing || slot < 0;
     contactForces_.push_back({p, slot, f, k});
+  }
+  if (patternPending_ && !(missing && wantTangent)) {
+    buildPattern();  // no pairs (they get places when a tangent needs them)
+    return;
   }
   if (!missing || !wantTangent) return;
   // The pattern gets the candidates within a quarter of the search margin of

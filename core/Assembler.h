@@ -118,6 +118,7 @@ class Assembler {
 
   std::unique_ptr<MemberContact> members_;
   std::vector<std::uint64_t> patternPairs_;   // sorted keys of the pairs in the pattern
+  bool patternPending_ = false;  // refreshed with member contact: built at the next assembly
   std::vector<std::array<int, 36>> pairPos_;  // per pattern pair: index into K_ values
   struct PairForce {
     ContactPair pair;

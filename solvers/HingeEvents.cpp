@@ -74,7 +74,8 @@ Status HingeEvents::afterConvergence(IterationInfo& info, bool lineSearch, bool&
   return locate(info, lineSearch);
 }
 
-Status HingeEvents::solveFraction(double fraction, double tEnd, bool lineSearch) {
+Status HingeEvents::solveFraction(double fraction, double tEnd, bool lineSearch,
+                                  const Eigen::VectorXd* start) {
   // Elements keep their trial flags (a hinge just activated); their trial
   // history follows from the committed one at the next evaluation.
   State& s = an_.state_;
@@ -85,6 +86,12 @@ Status HingeEvents::solveFraction(double fraction, double tEnd, bool lineSearch)
   s.arcLambda = s.arcLambdan;
   // A dynamic sub-step's rule follows from its length (Analysis::stepRule).
   an_.beginStep(s.tn + fraction * (tEnd - s.tn), fraction, false);
+  if (start) {
+    const DofMap& dofs = an_.assembler_.dofs();
+    for (Eigen::Index i = 0; i < s.u.size(); ++i)
+      if (dofs.eq(static_cast<int>(i)) >= 0) s.u[i] = (*start)[i];
+    an_.updateRates();
+  }
   IterationInfo it;
   double first = -1;
   for (int k = 0; k < 60; ++k) {
@@ -101,6 +108,23 @@ Status HingeEvents::solveFraction(double fraction, double tEnd, bool lineSearch)
   const Status st = an_.evaluateState();  // element states at the converged displacements
   solved_ = st.ok;
   return st;
+}
+
+Status HingeEvents::solveBetween(double fraction, double sLo, double sHi, double tEnd,
+                                 bool lineSearch) {
+  // Between two converged states the solution is smooth but for the kinks of
+  // the laws: the chord between them is off by the square of the bracket's
+  // width, and Newton's method from there takes a correction or two, where one
+  // from the committed state solves the whole sub-step again.
+  // Dynamic steps only: a static step keeps Newton's path from the committed
+  // state (with a softening hinge the start decides which branch the
+  // iterates follow), and path following measures its constraint from there.
+  if (!an_.integrator_.dynamic() || an_.path_) return solveFraction(fraction, tEnd, lineSearch);
+  // (A bracket at round-off can close: its two ends are then one state.)
+  const double w = sHi > sLo ? (fraction - sLo) / (sHi - sLo) : 1.0;
+  start_ = uLo_ + w * (uHi_ - uLo_);
+  if (solveFraction(fraction, tEnd, lineSearch, &start_)) return Status::success();
+  return solveFraction(fraction, tEnd, lineSearch);
 }
 
 Status HingeEvents::evaluateOpened(int element) {
@@ -155,11 +179,14 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   bool found = dLo >= 1.0;  // the committed state is already at Mu: open there
   Status st;
   int side = 0;
+  uLo_ = s.un;
+  uHi_ = s.u;
   // The points each side had before its last update, and the true demands.
   double sLoOld = -1, dLoOld = 0, sHiOld = -1, dHiOld = 0, dLoTrue = dLo, dHiTrue = dHi;
   const double target = 1.0 + 0.5 * kBand;
   // The bracket at the resolution of the step fraction: the band is below
   // the round-off of the solves there.
+  double width[3] = {1, 1, 1};
   for (int k = 0; k < 60 && !found && sHi - sLo > 4e-16; ++k) {
     f = -1;
     if (side == -1 && sHiOld >= 0 && dHiTrue != dHiOld)
@@ -167,9 +194,11 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
     else if (side == 1 && sLoOld >= 0 && dLoTrue != dLoOld)
       f = sLo - (dLoTrue - target) * (sLo - sLoOld) / (dLoTrue - dLoOld);
     if (!(f > sLo && f < sHi)) f = sLo + (target - dLo) * (sHi - sLo) / (dHi - dLo);
-    if (k % 3 == 2) f = 0.5 * (sLo + sHi);
+    // Bisection when the last two trials did not halve the bracket.
+    if (k >= 2 && sHi - sLo > 0.5 * width[(k - 2) % 3]) f = 0.5 * (sLo + sHi);
+    width[k % 3] = sHi - sLo;
     f = std::clamp(f, sLo + 1e-9 * (sHi - sLo), sHi - 1e-9 * (sHi - sLo));
-    st = solveFraction(f, tEnd, lineSearch);
+    st = solveBetween(f, sLo, sHi, tEnd, lineSearch);
     if (!st) break;
     const double d = maxDemand(element);
     found = d >= 1.0 && d <= 1.0 + kBand;
@@ -179,6 +208,7 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
       dHiOld = dHiTrue;
       sHi = f;
       dHi = dHiTrue = d;
+      uHi_ = s.u;
       if (side == -1) dLo = 1.0 - 0.5 * (1.0 - dLo);
       side = -1;
     } else {
@@ -186,6 +216,7 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
       dLoOld = dLoTrue;
       sLo = f;
       dLo = dLoTrue = d;
+      uLo_ = s.u;
       if (side == 1) dHi = 1.0 + 0.5 * (dHi - 1.0);
       side = 1;
     }
@@ -195,7 +226,7 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   if (st && f == 0) {
     restoreCommitted();
   } else if (st && !found) {
-    st = solveFraction(f, tEnd, lineSearch);
+    st = solveBetween(f, sLo, sHi, tEnd, lineSearch);
   }
   if (st) st = commitSolved();  // the sub-step up to the hinge's ultimate moment
   if (st) {

@@ -19,6 +19,7 @@
 // from a state below Mu would lower the moment by EI/Kh times the gap and leave
 // the hinge rigid), and the others, on their yield surface, take the elastic one.
 #include <utility>
+#include <Eigen/Core>
 #include <vector>
 
 #include "core/Error.h"
@@ -53,8 +54,13 @@ class HingeEvents {
 
  private:
   Status locate(IterationInfo& info, bool lineSearch);
-  // Newton from the committed state to the fraction `fraction` of the step ending at tEnd.
-  Status solveFraction(double fraction, double tEnd, bool lineSearch);
+  // Newton to the fraction `fraction` of the step ending at tEnd, from `start`
+  // (the free dofs; null: the committed state).
+  Status solveFraction(double fraction, double tEnd, bool lineSearch,
+                       const Eigen::VectorXd* start = nullptr);
+  // solveFraction from the interpolation of the bracket's converged ends, and
+  // from the committed state when that fails (dynamic steps).
+  Status solveBetween(double fraction, double sLo, double sHi, double tEnd, bool lineSearch);
   void open(int element);
   // The committed state as the end of a sub-step of zero length (the event is
   // at the committed state).
@@ -71,6 +77,9 @@ class HingeEvents {
   double committedDemand_ = 0;  // max demand at the last commit
   bool locating_ = false;       // inside locate(): no nested events
   bool solved_ = false;         // the state is the converged end of a sub-step
+  // Displacements of the bracket's converged ends (the committed state and the
+  // step's end at first) and the start interpolated between them.
+  Eigen::VectorXd uLo_, uHi_, start_;
 };
 
 }  // namespace c2d

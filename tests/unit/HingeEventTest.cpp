@@ -142,5 +142,47 @@ TEST(HingeEvent, WeakenedElementCarriesTheHinge) {
   }
 }
 
+// A dynamic step (mid-point scheme) in which the weakened element reaches Mu:
+// the event is located in the band and costs few iterations. Each trial of the
+// location starts from the chord between the bracket's converged ends
+// (HingeEvents::solveBetween), a correction or two from the solution; from the
+// committed state every trial took a whole solve.
+TEST(HingeEvent, DynamicEventTrialsStartFromTheBracket) {
+  const int n = 10, weak = 6;
+  const double muW = 270, thetaMax = 0.05;
+  Model m = cantilever(n, thetaMax, weak, muW);
+  for (int e = 0; e < n; ++e) {
+    MaterialSet mat = m.materials()[e == weak ? 2 : 1];
+    mat.density = 2.5;
+    mat.A = 0.12;
+    mat.I = 1.6e-3;
+    m.setElement(
+        e, std::make_unique<InelasticFrame>(mat, std::array{e, e + 1}, m.coord(e), m.coord(e + 1)));
+  }
+  Analysis an(m);
+  an.setLoadFunction(1, ProportionalLoad::ramp());
+  an.setIntegrator(TimeIntegrator::midPoint(0, 0));
+  an.setDt(0.05);
+  double demand = -1;
+  an.onHingeActivated = [&](int, const HingeInfo& h) { demand = std::abs(h.moment) / muW; };
+  int eventIterations = -1;
+  for (int s = 1; s <= 20 && demand < 0; ++s) {
+    const int before = an.totalIterations();
+    ASSERT_TRUE(an.advance());
+    IterationInfo info;
+    for (int i = 0; i < 30 && !info.converged; ++i) ASSERT_TRUE(an.iterate(false, true, info));
+    ASSERT_TRUE(info.converged) << "step " << s;
+    if (demand >= 0) eventIterations = an.totalIterations() - before;
+  }
+  ASSERT_GE(demand, 1.0);
+  EXPECT_LE(demand, 1.0 + 1e-12);
+  const Hinges h = activeHinges(m);
+  ASSERT_EQ(h.count, 1);
+  EXPECT_EQ(h.element, weak);
+  // 45 iterations in the step of the event (73 with every trial from the
+  // committed state).
+  EXPECT_LE(eventIterations, 55);
+}
+
 }  // namespace
 }  // namespace c2d
