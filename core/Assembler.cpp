@@ -326,6 +326,33 @@ double Assembler::contactDissipation(const State& s, const StepRule& rule) const
   return d;
 }
 
+Assembler::Momentum Assembler::momentum(const State& s) const {
+  Momentum out;
+  auto add = [&](int node, const Vec3& p) {
+    const Vec2 x = model_.coord(node) + s.u.segment<2>(static_cast<Eigen::Index>(node) * kNodeDofs);
+    out.linear += p.head<2>();
+    out.angular += x.x() * p.y() - x.y() * p.x() + p.z();
+  };
+  ElemVec v;
+  for (int e = 0; e < model_.numElements(); ++e) {
+    if (!model_.hasElement(e)) continue;
+    const Element& el = model_.element(e);
+    const auto nodes = el.nodes();
+    for (int a = 0; a < 2; ++a)
+      v.segment<kNodeDofs>(a * kNodeDofs) =
+          s.v.segment<kNodeDofs>(static_cast<Eigen::Index>(nodes[a]) * kNodeDofs);
+    const ElemVec p = el.momentum(v);
+    for (int a = 0; a < 2; ++a) add(nodes[a], p.segment<kNodeDofs>(a * kNodeDofs));
+  }
+  for (int n = 0; n < model_.numNodes(); ++n) {
+    const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs;
+    if (i + 2 >= mNodal_.size() || !dofs_.used(n)) continue;
+    const Vec3 m = mNodal_.segment<kNodeDofs>(i);
+    if (!m.isZero(0)) add(n, m.cwiseProduct(Vec3(s.v.segment<kNodeDofs>(i))));
+  }
+  return out;
+}
+
 double Assembler::kineticEnergy(const State& s) const {
   double w = 0;
   ElemVec v;

@@ -78,6 +78,13 @@ class Assembler {
   double strainEnergy() const;
   double contactEnergy(const State& s) const;  // ground and member contact penalty energy
   double kineticEnergy(const State& s) const;
+  // Linear momentum and angular momentum about the origin (counterclockwise)
+  // of the elements and nodal masses at s (positions X + u).
+  struct Momentum {
+    Vec2 linear = Vec2::Zero();
+    double angular = 0;
+  };
+  Momentum momentum(const State& s) const;
   // Energy the contact laws took over the step from the committed state to the
   // trial state s, >= 0: the dissipative terms of the ground and member contact
   // (mid-point scheme) and the ground friction. Under the static and Newmark

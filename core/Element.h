@@ -60,6 +60,9 @@ class Element {
   // the given nodal velocities (elements with internal dofs add theirs).
   virtual double strainEnergy() const = 0;
   virtual double kineticEnergy(const ElemVec& v) const { return 0.5 * v.dot(mass() * v); }
+  // Generalized momentum M v at the nodes (forces' conjugates: translations,
+  // then the sections' angular momentum), for the same nodal velocities.
+  virtual ElemVec momentum(const ElemVec& v) const { return mass() * v; }
 
   // Section forces at the element's reporting point (its integration point),
   // from the last evaluated state.

@@ -131,6 +131,12 @@ double JointedElement::kineticEnergy(const ElemVec& v) const {
   return inner_->kineticEnergy(vin);
 }
 
+ElemVec JointedElement::momentum(const ElemVec& v) const {
+  ElemVec vin = v;
+  vin(dof()) += trial_.vel;
+  return inner_->momentum(vin);
+}
+
 void JointedElement::setRelativeState(double psi, double vel, double acc) {
   trial_ = committed_ = Relative{psi, vel, acc};
 }

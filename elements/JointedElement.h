@@ -65,6 +65,9 @@ class JointedElement final : public Element, public Checkpoint, public MaterialC
   double strainEnergy() const override { return inner_->strainEnergy(); }
   // Kinetic energy with the slave rotation's velocity v_m + psi_r'.
   double kineticEnergy(const ElemVec& v) const override;
+  // Momentum with the slave rotation's velocity v_m + psi_r' (the slave
+  // section's angular momentum at the slave end).
+  ElemVec momentum(const ElemVec& v) const override;
   SectionForces sectionForces() const override { return inner_->sectionForces(); }
 
   // --- joint data ---

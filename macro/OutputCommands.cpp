@@ -226,6 +226,8 @@ std::vector<std::string> timeHistoryColumns(const Macro& tplot, const Parameters
     const std::string k = commandKey(rec.text(0));
     if (k == "ener") {
       for (const char* e : kEnergyColumns) cols.push_back(e);
+    } else if (k == "mome") {
+      for (const char* e : kMomentumColumns) cols.push_back(e);
     } else if (k == "arcl") {
       cols.push_back("arcl");
     } else if (rec.size() >= 3) {

@@ -606,7 +606,8 @@ void ProblemRun::setTimeHistory(const Macro& m) {
     const std::string k = commandKey(rec.text(0));
     TimeHistory::Column c{TimeHistory::Kind::Ener};
     if (k == "arcl") c.kind = TimeHistory::Kind::Arcl;
-    if (k != "ener" && k != "arcl") {
+    if (k == "mome") c.kind = TimeHistory::Kind::Mome;
+    if (k != "ener" && k != "arcl" && k != "mome") {
       c.kind = k == "disp"   ? TimeHistory::Kind::Disp
                : k == "velo" ? TimeHistory::Kind::Velo
                : k == "acce" ? TimeHistory::Kind::Acce

@@ -619,11 +619,14 @@ class TplotCommand final : public SolutionCommand {
     return solution("TPLOt",
                     "Time histories written every inc steps to <stem>_tplot.csv; records after "
                     "END up to a blank: disp,n,d  velo,n,d  acce,n,d  reac,n,d  stre,e,c "
-                    "(c = 1 N, 2 V, 3 M)  ener  arcl. Columns time, prop (load table 1's factor), with "
+                    "(c = 1 N, 2 V, 3 M)  ener  mome  arcl. Columns time, prop (load table 1's factor), with "
                     "several load tables prop_1, prop_2, ... (each table's), then the records'. ener gives kinetic, strain, contact, external, "
                     "total = kinetic + strain + contact - external, dissipated (plastic work, the "
                     "mid-point scheme's algorithmic and contact dissipation since the start) and "
-                    "balance = total + dissipated, constant to the solver tolerance. A later TPLOt of the "
+                    "balance = total + dissipated, constant to the solver tolerance. mome gives momentum_x, "
+                    "momentum_y and angular_momentum (about the origin, counterclockwise): under the "
+                    "energy conserving scheme without loads, supports or contact, constant to the "
+                    "solver tolerance. A later TPLOt of the "
                     "same run completes that file and starts <stem>_tplot_2.csv, and so on. A run that "
                     "fails or is interrupted keeps its rows as <stem>_tplot.failed.csv or "
                     "<stem>_tplot.interrupted.csv.",
@@ -638,11 +641,11 @@ class TplotCommand final : public SolutionCommand {
     m.data = ctx.takeSet(m.record, "TPLOt records");
     for (const Record& rec : m.data) {
       const std::string k = commandKey(rec.text(0));
-      if (k == "ener" || k == "arcl") continue;
+      if (k == "ener" || k == "arcl" || k == "mome") continue;
       if (k != "disp" && k != "velo" && k != "acce" && k != "reac" && k != "stre")
         throw DeckError(
             rec[0].loc,
-            "unknown TPLOt quantity '" + rec.text(0) + "' (disp velo acce reac stre ener arcl)",
+            "unknown TPLOt quantity '" + rec.text(0) + "' (disp velo acce reac stre ener mome arcl)",
             rec.excerpt(rec[0].loc));
       if (rec.size() < 3)
         throw DeckError(rec.fieldLoc(rec.size()), "TPLOt record needs 'kind,number,component'",

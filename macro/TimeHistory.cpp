@@ -25,6 +25,9 @@ TimeHistory::TimeHistory(std::filesystem::path path, std::vector<Column> columns
       case Kind::Ener:
         for (const char* e : kEnergyColumns) header_.push_back(e);
         break;
+      case Kind::Mome:
+        for (const char* e : kMomentumColumns) header_.push_back(e);
+        break;
     }
   }
   for (std::size_t i = 0; i < header_.size(); ++i) file_.stream() << (i ? "," : "") << header_[i];
@@ -67,6 +70,11 @@ void TimeHistory::record(Analysis& analysis, bool force) {
                          en.balance()})
           row.push_back(v);
         break;
+      case Kind::Mome: {
+        const Assembler::Momentum p = analysis.assembler().momentum(s);
+        for (double v : {p.linear.x(), p.linear.y(), p.angular}) row.push_back(v);
+        break;
+      }
     }
   }
   char buf[32];

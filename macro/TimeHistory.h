@@ -4,7 +4,8 @@
 // with several load tables prop_1, prop_2, ... (each table's), then one column
 // per requested quantity
 // (disp_n_d, velo_n_d, acce_n_d, reac_n_d, stre_e_c; ener gives kinetic,
-// strain, contact, external, total; arcl gives the arc-length load factor).
+// strain, contact, external, total, dissipated, balance; mome gives momentum_x,
+// momentum_y, angular_momentum; arcl gives the arc-length load factor).
 // The file is written under "<name>.part" and renamed when the run completes,
 // so an interrupted run leaves nothing that looks complete; a run that fails or
 // is interrupted keeps its rows as <stem>_tplot.failed.csv (keep()).
@@ -22,10 +23,14 @@ namespace c2d {
 // The columns of a TPLOt `ener` record, in order (solvers/EnergyAccount.h).
 inline constexpr std::array<const char*, 7> kEnergyColumns = {
     "kinetic", "strain", "contact", "external", "total", "dissipated", "balance"};
+// The columns of a TPLOt `mome` record: linear momentum (x, y) and angular
+// momentum about the origin (core/Assembler.h).
+inline constexpr std::array<const char*, 3> kMomentumColumns = {"momentum_x", "momentum_y",
+                                                                 "angular_momentum"};
 
 class TimeHistory {
  public:
-  enum class Kind { Disp, Velo, Acce, Reac, Stre, Ener, Arcl };
+  enum class Kind { Disp, Velo, Acce, Reac, Stre, Ener, Arcl, Mome };
   struct Column {
     Kind kind;
     int index = 0;      // 0-based node or element

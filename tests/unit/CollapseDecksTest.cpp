@@ -78,6 +78,33 @@ TEST(CollapseDecks, PendulumPeriod) {
   EXPECT_LT(relativeDrift(c["total"], kmax), 1e-10);
 }
 
+// decks/collapse/free_spin.inp: after the pulse (t >= 0.2 s) the free beam's
+// linear and angular momentum and its energy stay constant to the solver
+// tolerance (rotations by the Cayley rule), while it turns 4.6 times.
+TEST(CollapseDecks, FreeSpinKeepsItsMomentum) {
+  Columns c = runAndRead("collapse/free_spin.inp", "free_spin");
+  ASSERT_FALSE(c["time"].empty());
+  const auto& t = c["time"];
+  std::size_t first = 0;
+  while (first < t.size() && t[first] < 0.2 - 1e-9) ++first;
+  ASSERT_LT(first + 10, t.size());
+  const double j0 = c["angular_momentum"][first], px0 = c["momentum_x"][first];
+  EXPECT_GT(std::abs(j0), 1.0);
+  EXPECT_GT(std::abs(px0), 0.1);
+  double worstJ = 0, worstP = 0, worstE = 0;
+  for (std::size_t i = first; i < t.size(); ++i) {
+    worstJ = std::max(worstJ, std::abs(c["angular_momentum"][i] - j0));
+    worstP = std::max(worstP, std::hypot(c["momentum_x"][i] - px0,
+                                          c["momentum_y"][i] - c["momentum_y"][first]));
+    worstE = std::max(worstE, std::abs(c["total"][i] - c["total"][first]));
+  }
+  EXPECT_LT(worstJ, 1e-9 * std::abs(j0));
+  EXPECT_LT(worstP, 1e-9 * std::abs(px0));
+  EXPECT_LT(worstE, 1e-9 * c["kinetic"][first]);
+  // The end section turned more than four times.
+  EXPECT_GT(std::abs(c["disp_7_3"].back()), 4 * 2 * std::acos(-1.0));
+}
+
 TEST(CollapseDecks, BarDrop) {
   Columns c = runAndRead("collapse/bar_drop.inp", "bar_drop");
   ASSERT_FALSE(c["time"].empty());
