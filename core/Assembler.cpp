@@ -333,15 +333,11 @@ Assembler::Momentum Assembler::momentum(const State& s) const {
     out.linear += p.head<2>();
     out.angular += x.x() * p.y() - x.y() * p.x() + p.z();
   };
-  ElemVec v;
   for (int e = 0; e < model_.numElements(); ++e) {
     if (!model_.hasElement(e)) continue;
     const Element& el = model_.element(e);
     const auto nodes = el.nodes();
-    for (int a = 0; a < 2; ++a)
-      v.segment<kNodeDofs>(a * kNodeDofs) =
-          s.v.segment<kNodeDofs>(static_cast<Eigen::Index>(nodes[a]) * kNodeDofs);
-    const ElemVec p = el.momentum(v);
+    const ElemVec p = el.momentum(s.velocities(nodes));
     for (int a = 0; a < 2; ++a) add(nodes[a], p.segment<kNodeDofs>(a * kNodeDofs));
   }
   for (int n = 0; n < model_.numNodes(); ++n) {
@@ -355,16 +351,11 @@ Assembler::Momentum Assembler::momentum(const State& s) const {
 
 double Assembler::kineticEnergy(const State& s) const {
   double w = 0;
-  ElemVec v;
-  for (int e = 0; e < model_.numElements(); ++e) {
-    if (!model_.hasElement(e)) continue;
-    const Element& el = model_.element(e);
-    const auto nodes = el.nodes();
-    for (int a = 0; a < 2; ++a)
-      v.segment<kNodeDofs>(a * kNodeDofs) =
-          s.v.segment<kNodeDofs>(static_cast<Eigen::Index>(nodes[a]) * kNodeDofs);
-    w += el.kineticEnergy(v);
-  }
+  for (int e = 0; e < model_.numElements(); ++e)
+    if (model_.hasElement(e)) {
+      const Element& el = model_.element(e);
+      w += el.kineticEnergy(s.velocities(el.nodes()));
+    }
   for (Eigen::Index i = 0; i < mNodal_.size(); ++i)
     if (mNodal_[i] != 0 && dofs_.used(static_cast<int>(i / kNodeDofs)))
       w += 0.5 * mNodal_[i] * s.v[i] * s.v[i];

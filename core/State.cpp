@@ -25,6 +25,14 @@ ElementKinematics State::kinematics(const std::array<int, 2>& nodes) const {
   return kin;
 }
 
+ElemVec State::velocities(const std::array<int, 2>& nodes) const {
+  ElemVec out;
+  for (int k = 0; k < 2; ++k)
+    out.segment<kNodeDofs>(k * kNodeDofs) =
+        v.segment<kNodeDofs>(static_cast<Eigen::Index>(nodes[k]) * kNodeDofs);
+  return out;
+}
+
 void State::commit() {
   un = u;
   vn = v;

@@ -22,6 +22,8 @@ struct State {
   void resize(int numNodes);   // keeps existing values, zero-fills new nodes
   // The values of an element with these nodes, in element dof order.
   ElementKinematics kinematics(const std::array<int, 2>& nodes) const;
+  // The trial velocities of an element with these nodes, in element dof order.
+  ElemVec velocities(const std::array<int, 2>& nodes) const;
   void commit();               // trial -> committed
   void revert();               // committed -> trial
 };

@@ -75,16 +75,11 @@ struct StepRule {
   double rateSlope(long i, double dd) const {
     return i % kNodeDofs == 2 ? rotationRateSlope(dd) : 1.0;
   }
-  // The same for an element's increment, and the diagonal of its derivative.
+  // The same for an element's increment.
   ElemVec rate(const ElemVec& dd) const {
     ElemVec r = dd;
     for (int i : {2, 2 + kNodeDofs}) r(i) = rotationRate(dd(i));
     return r;
-  }
-  ElemVec rateSlope(const ElemVec& dd) const {
-    ElemVec s = ElemVec::Ones();
-    for (int i : {2, 2 + kNodeDofs}) s(i) = rotationRateSlope(dd(i));
-    return s;
   }
 
   // Under the Cayley rule a rotation increment of pi or more has no rate: the

@@ -127,11 +127,14 @@ void Analysis::updateRates() {
     state_.a.setZero();
     return;
   }
-  Eigen::VectorXd r = state_.u - state_.un;
-  if (rule.rotationsByCayley())
-    for (Eigen::Index i = 2; i < r.size(); i += kNodeDofs) r[i] = rule.rotationRate(r[i]);
-  state_.v = rule.cv * r + rule.vv * state_.vn + rule.va * state_.an;
-  state_.a = rule.ca * r + rule.av * state_.vn + rule.aa * state_.an;
+  state_.v = rule.cv * (state_.u - state_.un) + rule.vv * state_.vn + rule.va * state_.an;
+  state_.a = rule.ca * (state_.u - state_.un) + rule.av * state_.vn + rule.aa * state_.an;
+  if (!rule.rotationsByCayley()) return;
+  for (Eigen::Index i = 2; i < state_.u.size(); i += kNodeDofs) {  // rotations: their rate measure
+    const double r = rule.rotationRate(state_.u[i] - state_.un[i]);
+    state_.v[i] = rule.velocity(r, state_.vn[i], state_.an[i]);
+    state_.a[i] = rule.acceleration(r, state_.vn[i], state_.an[i]);
+  }
 }
 
 Status Analysis::advance() {

@@ -20,19 +20,16 @@
 #include "elements/InelasticFrame.h"
 #include "solvers/Analysis.h"
 #include "solvers/ProportionalLoad.h"
+#include "tests/unit/V2Material.h"
 
 namespace c2d {
 namespace {
 
-constexpr double kEI = 77650, kGA = 1.25e6, kMc = 37.9, kMy = 268, kKh1 = 29400, kKh2 = 272;
-constexpr double kMu = 374, kKs = -18000, kL = 2.5;
-
-double kappaOf(double M) {
-  double k = M / kEI;
-  if (M > kMc) k += (std::min(M, kMy) - kMc) / kKh1;
-  if (M > kMy) k += (M - kMy) / kKh2;
-  return k;
-}
+using test::v2::kappaOf;
+using test::v2::kEI;
+using test::v2::kKs;
+// The V2 laws with the force case's ultimate moment (verification.md).
+constexpr double kGA = 1.25e6, kMu = 374, kL = 2.5;
 
 // Closed form of the n-element cantilever (midpoint moments M_i = P (L - x_i)).
 struct Discrete {
@@ -61,17 +58,7 @@ struct Discrete {
   }
 };
 
-MaterialSet material() {
-  MaterialSet m;
-  m.number = 1;
-  m.elementType = "FRAMe";
-  m.resEA = 3.6e6;
-  m.resGA = kGA;
-  m.resEI = kEI;
-  m.hardening = HardeningData{kMc, kMy, kKh1, kKh2};
-  m.softening = SofteningData{kMu, kKs, std::nullopt};
-  return m;
-}
+MaterialSet material() { return test::v2::material(1, kGA, Kinematics::Small, kMu); }
 
 Model cantilever(int n, double vMax) {
   Model m;
