@@ -239,7 +239,7 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
       if (!dofs_.used(n) || dofs_.aliased(n)) continue;
       const Eigen::Index iv = static_cast<Eigen::Index>(n) * kNodeDofs + 1;
       const double y0 = model_.coord(n).y();
-      const ContactForce c = groundContact(*ground, y0 + s.un[iv], y0 + s.u[iv], rule);
+      const ContactForce c = groundContact(*ground, s.crush[n], y0 + s.un[iv], y0 + s.u[iv], rule);
       if (c.force == 0 && c.tangent == 0) continue;
       r_[iv] -= c.force;
       fContact_[iv] = c.force;
@@ -307,7 +307,7 @@ double Assembler::contactEnergy(const State& s) const {
   if (!ground) return w;
   for (int n = 0; n < model_.numNodes(); ++n)
     if (dofs_.used(n) && !dofs_.aliased(n))
-      w += c2d::contactEnergy(*ground, model_.coord(n).y() + s.u[n * kNodeDofs + 1]);
+      w += c2d::contactEnergy(*ground, s.crush[n], model_.coord(n).y() + s.u[n * kNodeDofs + 1]);
   return w;
 }
 
@@ -320,7 +320,7 @@ double Assembler::contactDissipation(const State& s, const StepRule& rule) const
     const double eps = ground->mu > 0 ? frictionEps(n, s) : 0.0;
     const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs;
     const Vec2& X = model_.coord(n);
-    d += groundDissipation(*ground, X.x() + s.un[i], X.y() + s.un[i + 1], X.x() + s.u[i],
+    d += groundDissipation(*ground, s.crush[n], X.x() + s.un[i], X.y() + s.un[i + 1], X.x() + s.u[i],
                            X.y() + s.u[i + 1], rule, eps);
   }
   return d;

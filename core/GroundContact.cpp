@@ -9,15 +9,84 @@ namespace {
 double groundAlpha(const Ground& g, const StepRule& rule) {
   return g.alpha >= 0 ? g.alpha : rule.alpha;
 }
+
+bool crushes(const Ground& g) { return g.restitution < 1; }
+
+// The crushing law at the loading point q: f = k p beyond q, k/e^2 (p - ps)
+// between the set ps = q (1 - e^2) and q, 0 below ps.
+struct Crushing {
+  double k, ku, q, ps;
+  Crushing(const Ground& g, double loading)
+      : k(g.k),
+        ku(g.k / (g.restitution * g.restitution)),
+        q(loading),
+        ps(loading * (1 - g.restitution * g.restitution)) {}
+  double force(double p) const { return p >= q ? k * p : p > ps ? ku * (p - ps) : 0.0; }
+  double slope(double p) const { return p >= q ? k : p > ps ? ku : 0.0; }
+};
+
+// The mid-point force of the crushing law: its work on the straight path from
+// p0 to p1 divided by p1 - p0, summed over the law's linear pieces (the
+// trapezoid rule is exact on each), and its derivative with respect to p1,
+// sum_i [l_i sum_{j>i} c_j l_j + c_i l_i^2 / 2] / dp^2 for pieces of slope c_i
+// and signed length l_i: every term >= 0, so nothing cancels as dp -> 0.
+void crushingMidPoint(const Crushing& law, double p0, double p1, ContactForce& out) {
+  double pts[4];
+  int n = 0;
+  pts[n++] = p0;
+  const double kinks[2] = {law.ps, law.q};
+  for (int i = 0; i < 2; ++i) {
+    const double kink = p1 > p0 ? kinks[i] : kinks[1 - i];
+    if (kink > std::min(p0, p1) && kink < std::max(p0, p1) && kink != pts[n - 1]) pts[n++] = kink;
+  }
+  pts[n++] = p1;
+  if (n == 2) {  // one piece: the mean of the end forces
+    out.force = 0.5 * (law.force(p0) + law.force(p1));
+    out.tangent = 0.5 * law.slope(0.5 * (p0 + p1));
+    if (p0 == p1) out.tangent = 0.5 * law.slope(p1);
+    return;
+  }
+  double work = 0, stiffness = 0, tail = 0;
+  for (int i = n - 2; i >= 0; --i) {
+    const double a = pts[i], b = pts[i + 1], l = b - a, c = law.slope(0.5 * (a + b));
+    work += 0.5 * (law.force(a) + law.force(b)) * l;
+    stiffness += l * tail + 0.5 * c * l * l;
+    tail += c * l;
+  }
+  const double dp = p1 - p0;
+  out.force = work / dp;
+  out.tangent = stiffness / (dp * dp);
+}
 }  // namespace
 
-ContactForce groundContact(const Ground& g, double yn, double y, const StepRule& rule) {
+double contactEnergy(const Ground& g, double q, double y) {
+  const double p = penetration(g, y);
+  if (p <= 0) return 0.0;
+  if (!crushes(g)) return 0.5 * g.k * p * p;
+  const Crushing law(g, std::max(q, p));
+  const double f = law.force(p);
+  return 0.5 * f * f / law.ku;
+}
+
+double loadingPoint(const Ground& g, double q, double y) {
+  const double p = penetration(g, y);
+  return p > 0 ? std::max(q, p) : 0.0;
+}
+
+void commitLoadingPoints(const Ground& g, const Model& model, State& s) {
+  for (int n = 0; n < model.numNodes(); ++n)
+    s.crush[n] = loadingPoint(g, s.crush[n],
+                              model.coord(n).y() + s.u[static_cast<Eigen::Index>(n) * kNodeDofs + 1]);
+}
+
+ContactForce groundContact(const Ground& g, double q, double yn, double y, const StepRule& rule) {
   ContactForce out;
   const double p1 = penetration(g, y);
   if (rule.scheme != Scheme::MidPoint) {
     if (p1 > 0) {
-      out.force = out.normal = g.k * p1;
-      out.tangent = out.normalTangent = g.k;
+      const Crushing law(g, crushes(g) ? std::max(q, penetration(g, yn)) : 0.0);
+      out.force = out.normal = law.force(p1);
+      out.tangent = out.normalTangent = law.slope(p1);
     }
     return out;
   }
@@ -26,7 +95,9 @@ ContactForce groundContact(const Ground& g, double yn, double y, const StepRule&
   // step hardly moves a resting node (force error eps*p/dp, tangent eps*p^2/dp^2).
   const double p0 = penetration(g, yn);
   const double dp = p1 - p0;
-  if (p0 > 0 && p1 > 0) {
+  if (crushes(g)) {
+    if (p0 > 0 || p1 > 0) crushingMidPoint(Crushing(g, std::max(q, p0)), p0, p1, out);
+  } else if (p0 > 0 && p1 > 0) {
     out.force = 0.5 * g.k * (p0 + p1);
     out.tangent = 0.5 * g.k;
   } else if (p1 > 0) {
@@ -71,14 +142,16 @@ FrictionForce groundFriction(const Ground& g, const ContactForce& c, double dx, 
   return out;
 }
 
-double groundDissipation(const Ground& g, double xn, double yn, double x, double y,
+double groundDissipation(const Ground& g, double q, double xn, double yn, double x, double y,
                          const StepRule& rule, double eps) {
-  const ContactForce c = groundContact(g, yn, y, rule);
+  const ContactForce c = groundContact(g, q, yn, y, rule);
+  const double p0 = penetration(g, yn), p1 = penetration(g, y);
   double d = 0;
-  if (rule.scheme == Scheme::MidPoint) {
-    const double p0 = penetration(g, yn), p1 = penetration(g, y);
+  // Crushing: the loading work beyond q less what the stiffer unloading stores.
+  if (const double q0 = std::max(q, p0); crushes(g) && p1 > q0)
+    d += 0.5 * g.k * (1 - g.restitution * g.restitution) * (p1 - q0) * (p1 + q0);
+  if (rule.scheme == Scheme::MidPoint)
     d += groundAlpha(g, rule) * g.k * (std::max(p1, 0.0) - std::max(p0, 0.0)) * (p1 - p0);
-  }
   const double dx = x - xn;
   d -= groundFriction(g, c, dx, eps).force * dx;
   return d;

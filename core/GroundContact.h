@@ -3,6 +3,15 @@
 // (paper section 4, eqs 72-75). Penetration g = y0 - y >= 0 gives an upward
 // force p = k g and the stored energy U = k <g>^2 / 2.
 //
+// Restitution e < 1: the contact crushes. The force follows k g while the
+// penetration grows past its largest value q since the node touched down (the
+// loading point, State::crush), and unloads and reloads below q with the
+// stiffness k / e^2: f = <k q - (k / e^2)(q - g)>, zero below the set
+// g_s = q (1 - e^2). A node striking the ground with speed v leaves it with
+// e v whatever its mass, speed and k; the loading work k (g^2 - q^2)(1 - e^2)/2
+// beyond q is dissipated, and U = f^2 e^2 / (2 k) is stored. A node off the
+// ground (g <= 0) starts afresh (q = 0). For e = 1 this is the elastic law.
+//
 // With the mid-point scheme the force is the discrete gradient of U between t_n
 // and t_n+1, so an impact conserves energy exactly (alpha = 0), plus the
 // dissipative term alpha*k*(<g_n+1> - <g_n>) (eq 75; <.> the positive part, so
@@ -24,6 +33,7 @@
 // under a tangential load T creeps by dx = eps T / sqrt((mu N)^2 - T^2) per
 // step: by less than eps while T < mu N / sqrt(2).
 #include "core/Model.h"
+#include "core/State.h"
 #include "core/StepRule.h"
 
 namespace c2d {
@@ -45,14 +55,22 @@ struct FrictionForce {
 
 // Penetration of a node at vertical position y.
 inline double penetration(const Ground& g, double y) { return g.y0 - y; }
-inline double contactEnergy(const Ground& g, double y) {
-  const double p = penetration(g, y);
-  return p > 0 ? 0.5 * g.k * p * p : 0.0;
-}
+// Energy stored in the contact of a node at vertical position y whose loading
+// point was q at the last commit.
+double contactEnergy(const Ground& g, double q, double y);
+// The loading point after a step that ends at vertical position y.
+double loadingPoint(const Ground& g, double q, double y);
+// Every node's loading point (State::crush) moved to the trial state's, when
+// the step is committed.
+void commitLoadingPoints(const Ground& g, const Model& model, State& s);
 
 // Force and its stiffness for the node's vertical position yn (t_n) and y (t_n+1)
-// under the step rule; the ground's alpha, or the rule's when the ground gives none.
-ContactForce groundContact(const Ground& g, double yn, double y, const StepRule& rule);
+// and its loading point q at t_n, under the step rule; the ground's alpha, or the
+// rule's when the ground gives none. Mid-point: the work of the crushing law on
+// the straight path from yn to y divided by the step (a discrete gradient, so
+// that the force's work is the stored energy's change plus what crushing
+// dissipates); otherwise the law at t_n+1.
+ContactForce groundContact(const Ground& g, double q, double yn, double y, const StepRule& rule);
 
 // The friction regularisation eps (see above) of a node of mass m with the
 // reference normal force nRef, time step dt; `shortest` is the shortest element
@@ -65,11 +83,12 @@ double frictionRegularisation(const Ground& g, double mass, double nRef, double 
 FrictionForce groundFriction(const Ground& g, const ContactForce& c, double dx, double eps);
 
 // Energy the ground's contact law takes from a node over the step from (xn, yn)
-// to (x, y), >= 0: the dissipative term alpha k (<p_n+1> - <p_n>) (p_n+1 - p_n)
-// under the mid-point scheme and the friction's mu N dx^2 / sqrt(dx^2 + eps^2).
-// Under the static and Newmark rules the penalty force is the plain gradient at
-// t_n+1; what that integration loses or gains is the scheme's, not counted here.
-double groundDissipation(const Ground& g, double xn, double yn, double x, double y,
+// to (x, y), >= 0: the crushing beyond the loading point q, the dissipative term
+// alpha k (<p_n+1> - <p_n>) (p_n+1 - p_n) under the mid-point scheme and the
+// friction's mu N dx^2 / sqrt(dx^2 + eps^2). Under the static and Newmark rules
+// the penalty force is the plain gradient at t_n+1; what that integration loses
+// or gains is the scheme's, not counted here.
+double groundDissipation(const Ground& g, double q, double xn, double yn, double x, double y,
                          const StepRule& rule, double eps);
 
 }  // namespace c2d

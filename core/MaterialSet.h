@@ -19,6 +19,7 @@ struct HardeningData {
 struct SofteningData {
   double Mu = 0, Ks = 0;
   std::optional<double> thetaR;
+  double Mr = 0;  // friction moment of the joint the fully softened hinge becomes
 };
 
 struct MaterialSet {

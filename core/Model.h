@@ -27,9 +27,11 @@ struct Joint {
 
 // Rigid ground y = y0 with penalty stiffness k; alpha is the dissipation of the
 // mid-point contact force (negative: the integrator's alpha); mu the coefficient
-// of the regularised Coulomb friction (0: frictionless).
+// of the regularised Coulomb friction (0: frictionless); restitution the
+// coefficient e of an impact (1: elastic; below 1 the contact crushes:
+// core/GroundContact.h).
 struct Ground {
-  double y0 = 0, k = 0, alpha = -1, mu = 0;
+  double y0 = 0, k = 0, alpha = -1, mu = 0, restitution = 1;
 };
 
 // Frictionless penalty contact between members (core/MemberContact.h): stiffness

@@ -11,6 +11,9 @@ void State::resize(int numNodes) {
     x->conservativeResize(n);
     if (n > old) x->tail(n - old).setZero();
   }
+  const Eigen::Index old = crush.size();
+  crush.conservativeResize(numNodes);
+  if (numNodes > old) crush.tail(numNodes - old).setZero();
 }
 
 ElementKinematics State::kinematics(const std::array<int, 2>& nodes) const {

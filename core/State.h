@@ -18,6 +18,10 @@ struct State {
   double arcLambda = 0;        // extra load factor driven by arc-length (multiplies FORCe)
   double arcLambdan = 0;
   int step = 0;                // number of committed steps
+  // Per node: the ground contact's loading point, the largest penetration
+  // since the node last touched down (0 off the ground; core/GroundContact.h).
+  // Committed only: it changes when a step is committed.
+  Eigen::VectorXd crush;
 
   void resize(int numNodes);   // keeps existing values, zero-fills new nodes
   // The values of an element with these nodes, in element dof order.

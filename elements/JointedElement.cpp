@@ -53,13 +53,26 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
   const bool bounded = rule.rotationsByCayley() && inner_->mass()(k, k) > 0;
   double lo = -std::numbers::pi, hi = std::numbers::pi;
   auto increment = [&](double p) { return kin.d(k) + p - in.dn(k); };
+  // The joint's friction on the slave section: m(w), w the relative rate
+  // measure over the step, and dm/dpsi.
+  const double masterRate = rule.rotationRate(kin.d(k) - kin.dn(k));
+  auto friction = [&](double p, double& slope) {
+    if (friction_ <= 0) return slope = 0.0;
+    const double w = rule.rotationRate(increment(p)) - masterRate;
+    const double s2 = w * w + frictionEps_ * frictionEps_, s = std::sqrt(s2);
+    slope = friction_ * frictionEps_ * frictionEps_ / (s2 * s);
+    return friction_ * w / s;
+  };
   if (bounded && !(std::abs(increment(psi)) < hi)) psi = in.dn(k) - kin.d(k);
   for (int it = 0; it < kMaxLocalIterations; ++it) {
     in.d(k) = kin.d(k) + psi;
     if (Status st = inner_->evaluate(in, rule, true, residual, kin6); !st) return st;
+    double dm = 0;
+    const double m = friction(psi, dm);
+    const double slaveSlope = rule.rotationRateSlope(increment(psi));
     // Condensation needs a nonzero pivot only: a compressed member in large
     // motion can make the relative rotation's stiffness negative.
-    const double krr = kin6(k, k);
+    const double krr = kin6(k, k) + dm * slaveSlope;
     if (!(std::abs(krr) > 1e-13 * kin6.cwiseAbs().maxCoeff())) {
       std::ostringstream msg;
       msg << "joint at node " << slave_ + 1 << ": relative rotation stiffness " << krr
@@ -70,12 +83,13 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
       converged = true;
       break;
     }
-    double step = -residual(k) / krr;
+    const double local = residual(k) + m;
+    double step = -local / krr;
     const double small = kSmallStep * (1.0 + std::abs(psi));
     bool bisected = false;
     if (bounded) {
       const double inc = increment(psi);
-      (residual(k) > 0 ? hi : lo) = inc;
+      (local > 0 ? hi : lo) = inc;
       if (std::abs(step) > small && !(inc + step >= lo && inc + step <= hi)) {
         step = 0.5 * (lo + hi) - inc;
         bisected = true;
@@ -101,12 +115,34 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
   trial_.acc = rule.acceleration(rate, committed_.vel, committed_.acc);
   slaveRotation_ = in.d(k);
 
-  if (wantTangent) {
+  // The outer row k is the moment on the master: the friction's reaction -m,
+  // which the converged local equation r_k + m = 0 leaves in residual(k).
+  if (wantTangent && friction_ <= 0) {
     // psi_r(d) from r_k(d + psi_r e_k) = 0: dpsi_r/dd = -K_k./K_kk.
-    const double krr = kin6(k, k);
-    tangent = kin6 - kin6.col(k) * kin6.row(k) / krr;
+    tangent = kin6 - kin6.col(k) * kin6.row(k) / kin6(k, k);
+  } else if (wantTangent) {
+    // psi_r(d) from G = r_k(d + psi_r e_k) + m(w) = 0, w = c(slave inc) -
+    // c(master inc): dG/dpsi = K_kk + a, dG/dd_k = K_kk + b, with a = m' c'_s and
+    // b = m' (c'_s - c'_m); the outer row k is -m(w).
+    double dm = 0;
+    friction(psi, dm);
+    const double a = dm * rule.rotationRateSlope(in.d(k) - in.dn(k));
+    const double b = a - dm * rule.rotationRateSlope(kin.d(k) - kin.dn(k));
+    ElemVec gd = kin6.row(k).transpose();
+    gd(k) += b;  // dG/dd
+    ElemVec rpsi = kin6.col(k);
+    rpsi(k) = -a;  // dR/dpsi
+    tangent = kin6;
+    tangent.row(k).setZero();
+    tangent(k, k) = -b;
+    tangent -= rpsi * gd.transpose() / (kin6(k, k) + a);
   }
   return Status::success();
+}
+
+void JointedElement::setFriction(double Mr, double eps) {
+  friction_ = Mr;
+  frictionEps_ = eps;
 }
 
 ElemVec JointedElement::bodyLoad(const Vec2& g) const {
@@ -165,6 +201,8 @@ void JointedElement::writeState(std::ostream& out) const {
   for (const Relative* r : {&trial_, &committed_})
     for (double x : {r->psi, r->vel, r->acc}) put(out, x);
   put(out, slaveRotation_);
+  put(out, friction_);
+  put(out, frictionEps_);
 }
 
 void JointedElement::readState(std::istream& in) {
@@ -176,6 +214,8 @@ void JointedElement::readState(std::istream& in) {
   for (Relative* r : {&trial_, &committed_})
     for (double* x : {&r->psi, &r->vel, &r->acc}) *x = get<double>(in);
   slaveRotation_ = get<double>(in);
+  friction_ = get<double>(in);
+  frictionEps_ = get<double>(in);
 }
 
 Status JointedElement::setMaterial(const MaterialSet& mat, const ElemVec& d) {

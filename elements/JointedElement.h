@@ -88,6 +88,16 @@ class JointedElement final : public Element, public Checkpoint, public MaterialC
   // Rotation of the slave node, psi_m + psi_r, at the last evaluated state.
   double slaveRotation() const { return slaveRotation_; }
 
+  // Friction of the joint: a moment of magnitude Mr opposing the relative
+  // rotation, regularised over the step's relative rotation w (the slave's
+  // rate measure less the master's, core/StepRule.h):
+  //   m = Mr w / sqrt(w^2 + eps^2),  eps = Mr l / EI of the wrapped element
+  // (the elastic rotation of the member under Mr), so that a sticking joint is
+  // about as stiff as the member. Its work m w >= 0 is dissipated. Mr = 0: a
+  // free joint.
+  void setFriction(double Mr, double eps);
+  double frictionMoment() const { return friction_; }
+
   Element& inner() { return *inner_; }
   const Element& inner() const { return *inner_; }
   // Hands the wrapped element back (its node at slaveEnd set to the slave).
@@ -124,6 +134,7 @@ class JointedElement final : public Element, public Checkpoint, public MaterialC
   std::array<int, 2> nodes_;
   Relative trial_, committed_;
   double slaveRotation_ = 0;
+  double friction_ = 0, frictionEps_ = 1;
 };
 
 }  // namespace c2d

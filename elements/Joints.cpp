@@ -84,7 +84,16 @@ int installJoints(Model& model) {
       continue;
     }
     auto& slot = model.elements()[element];
-    slot = std::make_unique<JointedElement>(std::move(slot), end, joint.master);
+    auto jointed = std::make_unique<JointedElement>(std::move(slot), end, joint.master);
+    // The broken section's residual moment (SOFTening's Mr), regularised over
+    // the member's elastic rotation under it.
+    if (const MaterialSet* mat = model.material(innermost(*jointed).materialNumber());
+        mat && mat->softening && mat->softening->Mr > 0 && mat->EI() > 0) {
+      const auto n = jointed->nodes();
+      const double l = (model.coord(n[0]) - model.coord(n[1])).norm();
+      jointed->setFriction(mat->softening->Mr, mat->softening->Mr * l / mat->EI());
+    }
+    slot = std::move(jointed);
     ++changed;
   }
   if (changed) model.bumpTopology();

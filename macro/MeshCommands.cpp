@@ -285,6 +285,7 @@ void echoMaterial(std::ostream& os, const MaterialSet& m) {
     line("Softening Mu", m.softening->Mu);
     line("Softening Ks", m.softening->Ks);
     if (m.softening->thetaR) line("Rupture thetaR", *m.softening->thetaR);
+    if (m.softening->Mr > 0) line("Joint friction Mr", m.softening->Mr);
   }
 }
 
@@ -418,10 +419,10 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
       if (v[3] < 0) failAt(r, 5, "Kh2 must not be negative");
       mat.hardening = HardeningData{v[0], v[1], v[2], v[3]};
     } else if (key == "soft") {
-      const std::string syntax = "SOFTening LINEar Mu Ks [thetaR]";
+      const std::string syntax = "SOFTening LINEar Mu Ks [thetaR [Mr]]";
       numericText(syntax);
       if (!keywordMatches(text2, "LINEar")) failAt(r, 1, "expected LINEar", "write " + syntax);
-      const auto v = values(3, 2, syntax);
+      const auto v = values(4, 2, syntax);
       if (v[0] <= 0) failAt(r, 2, "Mu must be positive");
       if (v[1] >= 0) failAt(r, 3, "Ks must be negative (softening)");
       mat.softening = SofteningData{v[0], v[1], std::nullopt};
@@ -430,6 +431,11 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
           failAt(r, 4, "the rupture rotation thetaR must exceed the failure jump Mu/|Ks| = " +
                            std::to_string(v[0] / -v[1]));
         mat.softening->thetaR = v[2];
+      }
+      if (r.size() > 5 && !r.text(5).empty()) {
+        if (!(v[3] >= 0 && v[3] < v[0]))
+          failAt(r, 5, "the joint's friction moment Mr must lie in [0, Mu)");
+        mat.softening->Mr = v[3];
       }
     }
   }
@@ -840,16 +846,16 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
       continue;
     }
     if (!r.is("GROUnd")) {
-      std::string hint = "the records are 'GROUnd,,y0,k[,alpha[,mu]]' and 'MEMBers,,k[,alpha[,r]]'";
+      std::string hint = "the records are 'GROUnd,,y0,k[,alpha[,mu[,e]]]' and 'MEMBers,,k[,alpha[,r]]'";
       failAt(r, 0, "unknown contact type '" + r.text(0) + "'", hint);
     }
     if (previous)
       failAt(r, 0,
              "a second GROUnd record (the first is on line " + std::to_string(previous->loc.line) +
                  ")");
-    ctx.maxFields(r, 6, "GROUnd,,y0,k[,alpha[,mu]]");
+    ctx.maxFields(r, 7, "GROUnd,,y0,k[,alpha[,mu[,e]]]");
     if (looksNumeric(r.text(1)))
-      failAt(r, 1, "GROUnd takes two text fields, then numbers", "write GROUnd,,y0,k[,alpha[,mu]]");
+      failAt(r, 1, "GROUnd takes two text fields, then numbers", "write GROUnd,,y0,k[,alpha[,mu[,e]]]");
     Ground g;
     g.y0 = ctx.number(r, 2);
     g.k = ctx.number(r, 3);
@@ -858,6 +864,9 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
     if (r.size() > 4 && !r[4].text.empty() && g.alpha < 0)
       failAt(r, 4, "alpha must not be negative (leave it out for the integrator's)");
     g.mu = optional(r, 5, 0.0, "the friction coefficient mu", "0 or absent: frictionless");
+    g.restitution = r.size() > 6 && !r[6].text.empty() ? ctx.number(r, 6) : 1.0;
+    if (!(g.restitution > 0 && g.restitution <= 1))
+      failAt(r, 6, "the restitution e must lie in (0, 1]", "1 or absent: an elastic impact");
     ctx.model.ground() = g;
     ctx.groundOrigin = r;
     previous = &r;
@@ -871,6 +880,7 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
       else
         num(*os, g.alpha);
       if (g.mu > 0) num(*os << "   mu ", g.mu);
+      if (g.restitution < 1) num(*os << "   e ", g.restitution);
       *os << "\n";
     }
   }
@@ -1106,18 +1116,23 @@ std::vector<MeshCommandEntry> meshCommandTable() {
                 "regularised Coulomb friction (f = -mu N dx/sqrt(dx^2 + eps^2) on the node's "
                 "horizontal step dx, eps = mu N dt^2/(2 m) with N the larger of the node's weight "
                 "and its normal force at the last step: a node at rest under a load below "
-                "mu N/sqrt(2) creeps by less than eps per step). MEMBers,,k[,alpha[,r]]: "
+                "mu N/sqrt(2) creeps by less than eps per step); e: restitution of an impact "
+                "(below 1 the contact crushes: loading with k beyond the largest penetration q "
+                "since the node touched down, unloading and reloading with k/e^2 below it, so "
+                "that a node strikes with speed v and leaves with e v; the work k(p^2 - "
+                "q^2)(1 - e^2)/2 is dissipated). MEMBers,,k[,alpha[,r]]: "
                 "frictionless contact of every node with every element it is not part of "
                 "(nor tied to by a joint), at the distance r_node + r_element with "
                 "r = sqrt(3 I/A), half the section depth (r: the radius of members whose "
                 "material has no A and I, default 1e-3 of the shortest element); pairs already "
                 "that close in the reference configuration never contact.",
-                {}, "GROUnd,,y0,k[,alpha[,mu]] and/or MEMBers,,k[,alpha[,r]]",
+                {}, "GROUnd,,y0,k[,alpha[,mu[,e]]] and/or MEMBers,,k[,alpha[,r]]",
                 {text("GROUnd", "contact type (or MEMBers)"), text("", "empty"),
                  expr("y0", "ground level (MEMBers: k)"),
                  expr("k", "penalty stiffness (MEMBers: alpha)"),
                  expr("alpha", "dissipation (MEMBers: r)", "integrator's"),
-                 expr("mu", "friction coefficient", "0")}),
+                 expr("mu", "friction coefficient", "0"),
+                 expr("e", "restitution of an impact", "1")}),
        applyContact});
   t.push_back({meshSpec("GRAVity",
                         "Self-weight of every element with a density: acceleration (gx, gy), "
@@ -1200,13 +1215,18 @@ void registerMaterialSubRecords(CommandRegistry& r) {
                  expr("Kh1", "modulus"), expr("Kh2", "modulus")}));
   r.add(subSpec(
       "SOFTening",
-      "SOFTening LINEar Mu Ks [thetaR]: softening hinge activated when |M| reaches Mu; hinge "
-      "moment Mu + Ks*jump down to zero (Ks < 0). With FINIte kinematics a fully softened "
-      "hinge becomes a revolute joint during the run; a joint whose relative rotation "
-      "exceeds thetaR (rad) ruptures and the pieces separate (a joint whose node presses on "
-      "the ground ruptures when the node leaves it).",
+      "SOFTening LINEar Mu Ks [thetaR [Mr]]: softening hinge activated when |M| reaches Mu; "
+      "hinge moment Mu + Ks*jump down to zero (Ks < 0). With FINIte kinematics a fully "
+      "softened hinge becomes a revolute joint during the run; a joint whose relative "
+      "rotation exceeds thetaR (rad) ruptures and the pieces separate (a joint whose node "
+      "presses on the ground ruptures when the node leaves it). Mr: the joint's friction "
+      "(the broken section's residual moment), a moment Mr opposing its relative rotation, "
+      "regularised over the step's relative rotation w: Mr w/sqrt(w^2 + eps^2), eps = Mr "
+      "l/EI; dissipated (energy account). Only where the joint is condensed into the "
+      "element: a joint with more than one element at its slave node rejects Mr > 0.",
       {text("LINEar", ""), expr("Mu", "ultimate moment"), expr("Ks", "softening modulus"),
-       expr("thetaR", "rupture rotation of the joint (optional)")}));
+       expr("thetaR", "rupture rotation of the joint (optional)"),
+       expr("Mr", "friction moment of the joint (optional, 0)")}));
 }
 
 // ---------------------------------------------------------------------------

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/Checkpoint.h"
+#include "core/GroundContact.h"
 #include "solvers/LineSearch.h"
 
 namespace c2d {
@@ -608,6 +609,7 @@ Status Analysis::commitEvaluated() {
   for (auto& el : model_.elements())
     if (el) el->commit();
   hinges_.committed();
+  if (const auto& ground = model_.ground()) commitLoadingPoints(*ground, model_, state_);
   if (path_) {
     path_->endStep(stepInc_, stepDlambda_);
     path_->setStepScale(1.0);
@@ -672,7 +674,7 @@ void Analysis::writeState(std::ostream& out) const {
   if (path_) path_->write(out);
   putTag(out, "STAT");
   for (const Eigen::VectorXd* x :
-       {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an})
+       {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an, &state_.crush})
     putVector(out, *x);
   for (double x : {state_.t, state_.tn, state_.dt, state_.prop, state_.propn, state_.arcLambda,
                    state_.arcLambdan})
@@ -718,7 +720,8 @@ void Analysis::readState(std::istream& in) {
   path_.reset();
   if (getBool(in)) path_ = PathFollowing::read(in);
   expectTag(in, "STAT");
-  for (Eigen::VectorXd* x : {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an})
+  for (Eigen::VectorXd* x :
+       {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an, &state_.crush})
     *x = getVector(in);
   for (double* x : {&state_.t, &state_.tn, &state_.dt, &state_.prop, &state_.propn,
                     &state_.arcLambda, &state_.arcLambdan})
@@ -728,6 +731,8 @@ void Analysis::readState(std::istream& in) {
   for (const Eigen::VectorXd* x :
        {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an})
     if (x->size() != nd) throw CheckpointError("state vectors do not match the model's node count");
+  if (state_.crush.size() != model_.numNodes())
+    throw CheckpointError("state vectors do not match the model's node count");
   topologyChanged();
   expectTag(in, "BOOK");
   hinges_.setCommittedDemand(get<double>(in));

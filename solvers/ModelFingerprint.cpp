@@ -71,7 +71,11 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
   for (const Joint& j : model.joints()) boundary.add(j.master).add(j.slave);
   loads.add(model.gravity().x()).add(model.gravity().y()).add(model.ground().has_value());
   if (model.ground())
-    loads.add(model.ground()->y0).add(model.ground()->k).add(model.ground()->alpha);
+    loads.add(model.ground()->y0)
+        .add(model.ground()->k)
+        .add(model.ground()->alpha)
+        .add(model.ground()->mu)
+        .add(model.ground()->restitution);
   // The blast plan: element sets, times, release times.
   elements.add(model.blasts().size());
   for (const Blast& b : model.blasts()) {

@@ -660,15 +660,15 @@ TEST(GroundContact, MidPointForceIsTheDiscreteGradient) {
   for (double y0 : ys)
     for (double y1 : ys) {
       if (y0 == y1) continue;
-      const ContactForce c = groundContact(g, y0, y1, rule);
+      const ContactForce c = groundContact(g, 0.0, y0, y1, rule);
       // Work of the upward force over the step = -(U1 - U0).
       const double work = c.force * (y1 - y0);
-      EXPECT_NEAR(work, -(contactEnergy(g, y1) - contactEnergy(g, y0)), 1e-12 * g.k)
+      EXPECT_NEAR(work, -(contactEnergy(g, 0.0, y1) - contactEnergy(g, 0.0, y0)), 1e-12 * g.k)
           << y0 << " -> " << y1;
       // Tangent: d force / d penetration(y1) = -d force / d y1.
       const double h = 1e-7;
       const double fd =
-          -(groundContact(g, y0, y1 + h, rule).force - groundContact(g, y0, y1 - h, rule).force) /
+          -(groundContact(g, 0.0, y0, y1 + h, rule).force - groundContact(g, 0.0, y0, y1 - h, rule).force) /
           (2 * h);
       if (std::abs(y1 - g.y0) > 1e-6) {
         EXPECT_NEAR(c.tangent, fd, 1e-5 * g.k) << y0 << " " << y1;
@@ -677,26 +677,26 @@ TEST(GroundContact, MidPointForceIsTheDiscreteGradient) {
   // Dissipation: alpha k (g1 - g0) on top while in contact.
   Ground d = g;
   d.alpha = 0.2;
-  const ContactForce c0 = groundContact(g, 0.45, 0.40, rule),
-                     c1 = groundContact(d, 0.45, 0.40, rule);
+  const ContactForce c0 = groundContact(g, 0.0, 0.45, 0.40, rule),
+                     c1 = groundContact(d, 0.0, 0.45, 0.40, rule);
   EXPECT_NEAR(c1.force - c0.force, 0.2 * g.k * 0.05, 1e-12 * g.k);
   // Entering or leaving, the dissipative force is continuous where the node
   // passes the ground line (a jump there makes Newton's method cycle), never
   // does work on the node, and its tangent is the derivative of the force.
   for (double yn : {0.7, 0.52, 0.45, 0.3}) {
     const double eps = 1e-9;
-    const ContactForce above = groundContact(d, yn, g.y0 + eps, rule),
-                       below = groundContact(d, yn, g.y0 - eps, rule);
+    const ContactForce above = groundContact(d, 0.0, yn, g.y0 + eps, rule),
+                       below = groundContact(d, 0.0, yn, g.y0 - eps, rule);
     EXPECT_NEAR(above.force, below.force, 10 * g.k * eps) << "from y = " << yn;
     for (double y1 : {0.8, 0.51, 0.49, 0.35}) {
       const double diss =
-          groundContact(d, yn, y1, rule).force - groundContact(g, yn, y1, rule).force;
+          groundContact(d, 0.0, yn, y1, rule).force - groundContact(g, 0.0, yn, y1, rule).force;
       EXPECT_LE(diss * (y1 - yn), 0.0) << yn << " -> " << y1;
       const double h = 1e-7;
       const double fd =
-          -(groundContact(d, yn, y1 + h, rule).force - groundContact(d, yn, y1 - h, rule).force) /
+          -(groundContact(d, 0.0, yn, y1 + h, rule).force - groundContact(d, 0.0, yn, y1 - h, rule).force) /
           (2 * h);
-      EXPECT_NEAR(groundContact(d, yn, y1, rule).tangent, fd, 1e-5 * g.k) << yn << " -> " << y1;
+      EXPECT_NEAR(groundContact(d, 0.0, yn, y1, rule).tangent, fd, 1e-5 * g.k) << yn << " -> " << y1;
     }
   }
 }

@@ -27,20 +27,20 @@ TEST(GroundFriction, ForceOpposesTheIncrementAndIsBoundedByMuN) {
   const Ground g{0.0, 1e4, -1, 0.4};
   const StepRule rule = TimeIntegrator::midPoint(0, 0).rule(0.01);
   const double eps = 1e-5;
-  const ContactForce c = groundContact(g, -1e-3, -1.2e-3, rule);
+  const ContactForce c = groundContact(g, 0.0, -1e-3, -1.2e-3, rule);
   ASSERT_GT(c.normal, 0);
   for (double dx : {-0.3, -1e-4, -1e-6, 0.0, 2e-7, 3e-5, 0.2}) {
     const FrictionForce f = groundFriction(g, c, dx, eps);
     EXPECT_LE(f.force * dx, 0.0);
     EXPECT_LE(std::abs(f.force), g.mu * c.normal * (1 + 1e-15));
     // Dissipation = -f dx, and groundDissipation says so (no alpha: integrator's 0).
-    EXPECT_NEAR(groundDissipation(g, 1.0, -1e-3, 1.0 + dx, -1.2e-3, rule, eps), -f.force * dx,
+    EXPECT_NEAR(groundDissipation(g, 0.0, 1.0, -1e-3, 1.0 + dx, -1.2e-3, rule, eps), -f.force * dx,
                 1e-15 * g.k);
   }
   // Far from zero it is mu N.
   EXPECT_NEAR(groundFriction(g, c, 1.0, eps).force, -g.mu * c.normal, 1e-9 * c.normal);
   // No friction without a normal force.
-  const ContactForce free = groundContact(g, 0.1, 0.05, rule);
+  const ContactForce free = groundContact(g, 0.0, 0.1, 0.05, rule);
   EXPECT_EQ(groundFriction(g, free, 0.1, eps).force, 0.0);
 }
 
