@@ -78,6 +78,31 @@ TEST(CollapseDecks, PendulumPeriod) {
   EXPECT_LT(relativeDrift(c["total"], kmax), 1e-10);
 }
 
+// decks/collapse/friction_pendulum.inp: every half swing from theta_a to
+// theta_b loses the joint friction's work Mr (theta_a + theta_b) (the
+// extremes sampled at the steps), and the energy balance stays closed.
+TEST(CollapseDecks, FrictionPendulumLosesTheFrictionsWork) {
+  Columns c = runAndRead("collapse/friction_pendulum.inp", "friction_pendulum");
+  ASSERT_FALSE(c["time"].empty());
+  const double L = 1, th = 0.3, m = 1, g = 9.81, l = L / 2, Mr = 0.05;
+  std::vector<double> a;
+  for (size_t i = 0; i < c["time"].size(); ++i)
+    a.push_back(std::atan2(L * std::sin(th) + c["disp_7_1"][i], L * std::cos(th) - c["disp_7_2"][i]));
+  std::vector<double> extremes{a[0]};
+  for (size_t i = 1; i + 1 < a.size(); ++i)
+    if ((a[i] - a[i - 1]) * (a[i + 1] - a[i]) < 0) extremes.push_back(a[i]);
+  ASSERT_GE(extremes.size(), 4u);
+  for (int i = 0; i < 3; ++i) {
+    const double ta = std::abs(extremes[i]), tb = std::abs(extremes[i + 1]);
+    EXPECT_LT(extremes[i] * extremes[i + 1], 0.0);  // the other side
+    EXPECT_NEAR(m * g * l * (std::cos(tb) - std::cos(ta)), Mr * (ta + tb), 0.02 * Mr * (ta + tb))
+        << "half swing " << i;
+  }
+  const double kmax = *std::max_element(c["kinetic"].begin(), c["kinetic"].end());
+  EXPECT_LT(relativeDrift(c["balance"], kmax), 1e-9);
+  EXPECT_GT(c["dissipated"].back(), 0.1 * kmax);
+}
+
 // decks/collapse/free_spin.inp: after the pulse (t >= 0.2 s) the free beam's
 // linear and angular momentum and its energy stay constant to the solver
 // tolerance (rotations by the Cayley rule), while it turns 4.6 times.
@@ -129,6 +154,30 @@ TEST(CollapseDecks, BarDrop) {
     if (t[i] > last) rebound = std::max(rebound, y[i]);
   EXPECT_NEAR(rebound, h0, 1e-3 * h0);  // elastic rebound: energy conserved through impact
   EXPECT_LT(relativeDrift(c["total"], m * g * h0), 1e-10);
+}
+
+TEST(CollapseDecks, BarBounce) {
+  Columns c = runAndRead("collapse/bar_bounce.inp", "bar_bounce");
+  ASSERT_FALSE(c["time"].empty());
+  const double L = 2, n = 4, h0 = 0.05, k = 1e4, g = 9.81, m = L, e = 0.5;
+  const double K = (n + 1) * k, v0 = std::sqrt(2 * g * h0);
+  const double pen = m * g / K + std::sqrt(std::pow(m * g / K, 2) + m * v0 * v0 / K);
+  const auto& t = c["time"];
+  std::vector<double> y;
+  for (double d : c["disp_3_2"]) y.push_back(h0 + d);
+  EXPECT_NEAR(*std::min_element(y.begin(), y.end()), -pen, 0.01 * pen);
+  // Up again after the contact: the bar leaves at the set -pen (1 - e^2) with
+  // e v0 and rises to e^2 h0 - pen (1 - e^2).
+  size_t bottom = std::min_element(y.begin(), y.end()) - y.begin();
+  double rebound = -1;
+  for (size_t i = bottom; i < y.size() && t[i] < t[bottom] + 0.08; ++i) rebound = std::max(rebound, y[i]);
+  EXPECT_NEAR(rebound, e * e * h0 - pen * (1 - e * e), 2e-3 * h0);
+  // What the impact took, (1 - e^2) of the loading work k (n+1) pen^2 / 2 =
+  // m g (h0 + pen), dissipated, and the balance closed.
+  double dissipated = 0;
+  for (size_t i = 0; i < y.size() && t[i] < t[bottom] + 0.08; ++i) dissipated = c["dissipated"][i];
+  EXPECT_NEAR(dissipated, m * g * (h0 + pen) * (1 - e * e), 2e-3 * m * g * h0);
+  EXPECT_LT(relativeDrift(c["balance"], m * g * h0), 1e-10);
 }
 
 TEST(CollapseDecks, BarOnBeam) {

@@ -111,6 +111,41 @@ INSTANTIATE_TEST_SUITE_P(
                        ::testing::Values(Inner::Reissner, Inner::Timoshenko, Inner::EulerBernoulli),
                        ::testing::Values(0, 1)));
 
+// With friction Mr the moment on the master is the friction's reaction, at most
+// Mr, and the condensed tangent is still the derivative of the residual, when
+// the joint slides (w >> eps) and when it sticks (w ~ eps).
+TEST(JointedElement, FrictionTangentMatchesCentralDifferences) {
+  for (Scheme scheme : {Scheme::Static, Scheme::Newmark, Scheme::MidPoint})
+    for (Inner kind : {Inner::Reissner, Inner::Timoshenko})
+      for (double eps : {1e-3, 0.3}) {
+        std::mt19937 gen(5 + static_cast<int>(kind));
+        const Vec2 x1(0.3, 0.1), x2(1.5, 0.9);
+        JointedElement e(makeInner(kind, x1, x2), 1, 7);
+        const double Mr = 40;
+        e.setFriction(Mr, eps);
+        e.setRelativeState(0.3, 0.5, -0.2);
+        const StepRule rule = ruleFor(scheme);
+        const double scale = kind == Inner::Reissner ? 0.15 : 0.05;
+        for (int trial = 0; trial < 3; ++trial) {
+          const ElementKinematics kin{
+              rigidMotion(x1, x2, 0.8 * trial, Vec2(0.2, -0.1)) + test::randomVec(gen, scale),
+              rigidMotion(x1, x2, 0.8 * trial - 0.1, Vec2(0.1, 0)) + test::randomVec(gen, scale),
+              test::randomVec(gen, 1.0), test::randomVec(gen, 5.0)};
+          ElemVec r;
+          ElemMat k;
+          ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
+          const int kr = 5;
+          EXPECT_LE(std::abs(r(kr)), Mr);
+          EXPECT_GT(std::abs(r(kr)), 1e-3 * Mr);
+          const ElemMat fd = test::centralDifferenceTangent(e, kin, rule);
+          EXPECT_LT((fd - k).cwiseAbs().maxCoeff(), 2e-6 * k.cwiseAbs().maxCoeff())
+              << "scheme " << static_cast<int>(scheme) << ", eps " << eps << "\nK =\n"
+              << k << "\nFD =\n"
+              << fd;
+        }
+      }
+}
+
 TEST(JointedElement, FiniteRigidMotionReleasesThePinnedEnd) {
   // A stress-free element turned rigidly by a large angle: psi_r goes back to
   // zero from any start (the pin does not care about the slave's former angle),
