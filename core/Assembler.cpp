@@ -16,14 +16,7 @@ bool Assembler::refresh() {
       (members_ != nullptr) == model_.memberContact().has_value())
     return false;
   dofs_ = DofMap(model_);
-  shortest_ = model_.characteristicLength();
-  nodeMass_.assign(model_.numNodes(), 0.0);
-  for (int e = 0; e < model_.numElements(); ++e) {
-    if (!model_.hasElement(e)) continue;
-    const ElemMat me = model_.element(e).mass();
-    const auto nodes = model_.element(e).nodes();
-    for (int a = 0; a < 2; ++a) nodeMass_[nodes[a]] += me(3 * a, 0) + me(3 * a, 3);
-  }
+  stretch_.resize(0);  // until the next assembly: the committed stretches
   members_ = model_.memberContact() ? std::make_unique<MemberContact>(model_, dofs_) : nullptr;
   patternPairs_.clear();
   // With member contact the pattern waits for the first assembly, where the
@@ -167,20 +160,6 @@ void Assembler::restartContactSearch() {
   buildPattern();
 }
 
-double Assembler::frictionEps(int n, const State& s) const {
-  const Ground& g = *model_.ground();
-  const double m = nodeMass_[n];
-  const double yn = model_.coord(n).y() + s.un[static_cast<Eigen::Index>(n) * kNodeDofs + 1];
-  const double pn = penetration(g, yn);
-  const double nRef = std::max(m * model_.gravity().norm(), pn > 0 ? g.k * pn : 0.0);
-  // The length of the step being solved (a cut step, a located event's
-  // sub-step): s.dt may already hold the next step's length when a converged
-  // step is committed, and the friction forces booked then must be the ones
-  // the step was solved with.
-  const double h = s.t > s.tn ? s.t - s.tn : s.dt;
-  return frictionRegularisation(g, m, nRef, h, shortest_);
-}
-
 Status Assembler::assemble(const State& s, const StepRule& rule,
                            const Eigen::VectorXd& loadFactors, bool wantTangent) {
   refresh();
@@ -234,6 +213,11 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
 
   if (const auto& ground = model_.ground()) {
     fContact_.setZero();
+    // The friction springs' stretches at the end of the step: none off the
+    // ground (or on a node moving with a joint's master).
+    stretch_.setZero(model_.numNodes());
+    stretchU_ = s.u;
+    stretchUn_ = s.un;
     for (int n = 0; n < model_.numNodes(); ++n) {
       // A shared joint's slave moves with its master: its contact is the master's.
       if (!dofs_.used(n) || dofs_.aliased(n)) continue;
@@ -247,7 +231,9 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
       if (wantTangent && eq >= 0) K_.valuePtr()[diagPos_[eq]] += c.tangent;
       if (ground->mu <= 0) continue;
       const Eigen::Index iu = iv - 1;
-      const FrictionForce fr = groundFriction(*ground, c, s.u[iu] - s.un[iu], frictionEps(n, s));
+      const FrictionForce fr =
+          groundFriction(*ground, c, s.un[iu] - s.stretch[n], s.un[iu], s.u[iu], rule);
+      stretch_[n] = s.u[iu] - fr.anchor;
       r_[iu] -= fr.force;
       fContact_[iu] = fr.force;
       const int equ = dofs_.eq(n, 0);
@@ -305,10 +291,31 @@ double Assembler::contactEnergy(const State& s) const {
   double w = members_ ? members_->energy(model_, s) : 0.0;
   const auto& ground = model_.ground();
   if (!ground) return w;
+  const Eigen::VectorXd& stretches = stretchesOf(s);
   for (int n = 0; n < model_.numNodes(); ++n)
-    if (dofs_.used(n) && !dofs_.aliased(n))
-      w += c2d::contactEnergy(*ground, s.crush[n], model_.coord(n).y() + s.u[n * kNodeDofs + 1]);
+    if (dofs_.used(n) && !dofs_.aliased(n)) {
+      const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs;
+      w += c2d::contactEnergy(*ground, s.crush[n], model_.coord(n).y() + s.u[i + 1]);
+      if (ground->mu > 0) w += frictionEnergy(*ground, stretches[n]);
+    }
   return w;
+}
+
+void Assembler::commitGround(State& s) const {
+  const auto& ground = model_.ground();
+  if (!ground) return;
+  for (int n = 0; n < model_.numNodes(); ++n) {
+    const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs;
+    s.crush[n] = loadingPoint(*ground, s.crush[n], model_.coord(n).y() + s.u[i + 1]);
+  }
+  s.stretch = Eigen::VectorXd(stretchesOf(s));
+}
+
+const Eigen::VectorXd& Assembler::stretchesOf(const State& s) const {
+  const bool evaluated = stretch_.size() == model_.numNodes() && stretchU_.size() == s.u.size() &&
+                         stretchUn_.size() == s.un.size() && stretchU_ == s.u &&
+                         stretchUn_ == s.un;
+  return evaluated ? stretch_ : s.stretch;
 }
 
 double Assembler::contactDissipation(const State& s, const StepRule& rule) const {
@@ -317,11 +324,10 @@ double Assembler::contactDissipation(const State& s, const StepRule& rule) const
   if (!ground) return d;
   for (int n = 0; n < model_.numNodes(); ++n) {
     if (!dofs_.used(n) || dofs_.aliased(n)) continue;
-    const double eps = ground->mu > 0 ? frictionEps(n, s) : 0.0;
     const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs;
     const Vec2& X = model_.coord(n);
-    d += groundDissipation(*ground, s.crush[n], X.x() + s.un[i], X.y() + s.un[i + 1], X.x() + s.u[i],
-                           X.y() + s.u[i + 1], rule, eps);
+    d += groundDissipation(*ground, s.crush[n], X.x() + s.un[i] - s.stretch[n], X.x() + s.un[i],
+                           X.y() + s.un[i + 1], X.x() + s.u[i], X.y() + s.u[i + 1], rule);
   }
   return d;
 }

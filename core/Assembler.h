@@ -77,6 +77,9 @@ class Assembler {
   // Energies at the last assembled state.
   double strainEnergy() const;
   double contactEnergy(const State& s) const;  // ground and member contact penalty energy
+  // The ground contact's state at the end of the last assembled step into s
+  // when it is committed: the loading points and the friction stretches.
+  void commitGround(State& s) const;
   double kineticEnergy(const State& s) const;
   // Linear momentum and angular momentum about the origin (counterclockwise)
   // of the elements and nodal masses at s (positions X + u).
@@ -106,8 +109,6 @@ class Assembler {
   void evaluateMemberContact(const State& s, const StepRule& rule, bool wantTangent);
   // The released forces at the step rule's load point into fRel_.
   void releasedLoadAt(const State& s, const StepRule& rule);
-  // The friction regularisation of node n (core/GroundContact.h).
-  double frictionEps(int n, const State& s) const;
 
   Model& model_;
   DofMap dofs_;
@@ -115,9 +116,12 @@ class Assembler {
   std::vector<std::array<int, kElemDofs * kElemDofs>> elemPos_;  // index into K_ values, -1: none
   std::vector<int> diagPos_;                                     // per equation
   std::vector<int> uvPos_;        // per node: K(eq u, eq v) for the ground friction, -1: none
-  double shortest_ = 1;           // shortest element
-  std::vector<double> nodeMass_;  // per node: translational mass (row sums of the element masses)
   Eigen::VectorXd r_, fRef_, fGrav_, fContact_, mNodal_, fRel_;
+  Eigen::VectorXd stretch_;  // per node: friction stretches at the end of the last assembled step
+  Eigen::VectorXd stretchU_, stretchUn_;  // the state (u, u_n) stretch_ was evaluated at
+  // The friction stretches that go with s: the last assembly's when it was of
+  // s, else the committed ones (s is a committed state, or nothing assembled it).
+  const Eigen::VectorXd& stretchesOf(const State& s) const;
   std::vector<ElemVec> elemForce_;  // per element, of the last assembly
   int patternVersion_ = -1;
   int structureVersion_ = 0;

@@ -137,8 +137,9 @@ double groundForce(const Model& model, const DofMap& dofs, const State& state) {
   for (int n = 0; n < model.numNodes() && n < dofs.numNodes(); ++n) {
     // A shared joint's slave moves with its master: its contact is the master's.
     if (!dofs.used(n) || dofs.aliased(n)) continue;
-    const double p = penetration(*ground, model.coord(n).y() + state.u[n * kNodeDofs + 1]);
-    if (p > 0) f += ground->k * p;
+    // The contact law's force at this state (a crushed node rests in its set).
+    const double y = model.coord(n).y() + state.u[n * kNodeDofs + 1];
+    f += groundContact(*ground, state.crush[n], y, y, StepRule{}).normal;
   }
   return f;
 }

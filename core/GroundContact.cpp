@@ -73,12 +73,6 @@ double loadingPoint(const Ground& g, double q, double y) {
   return p > 0 ? std::max(q, p) : 0.0;
 }
 
-void commitLoadingPoints(const Ground& g, const Model& model, State& s) {
-  for (int n = 0; n < model.numNodes(); ++n)
-    s.crush[n] = loadingPoint(g, s.crush[n],
-                              model.coord(n).y() + s.u[static_cast<Eigen::Index>(n) * kNodeDofs + 1]);
-}
-
 ContactForce groundContact(const Ground& g, double q, double yn, double y, const StepRule& rule) {
   ContactForce out;
   const double p1 = penetration(g, y);
@@ -125,25 +119,66 @@ ContactForce groundContact(const Ground& g, double q, double yn, double y, const
   return out;
 }
 
-double frictionRegularisation(const Ground& g, double mass, double nRef, double dt,
-                              double shortest) {
-  const double eps = mass > 0 ? 0.5 * g.mu * nRef * dt * dt / mass : 0.0;
-  return std::max(eps, 1e-9 * shortest);
-}
-
-FrictionForce groundFriction(const Ground& g, const ContactForce& c, double dx, double eps) {
+FrictionForce groundFriction(const Ground& g, const ContactForce& c, double a, double xn, double x,
+                             const StepRule& rule) {
   FrictionForce out;
-  if (g.mu <= 0 || c.normal <= 0) return out;
-  const double s2 = dx * dx + eps * eps, s = std::sqrt(s2);
-  out.force = -g.mu * c.normal * dx / s;
-  out.dx = -g.mu * c.normal * eps * eps / (s2 * s);
-  // N depends on y through the penetration p = y0 - y.
-  out.dy = g.mu * c.normalTangent * dx / s;
+  out.anchor = x;
+  const double N = std::max(c.normal, 0.0);
+  if (g.mu <= 0) return out;
+  if (N <= 0) {  // off the ground: the spring lets go
+    out.slipped = frictionEnergy(g, xn - a);
+    return out;
+  }
+  const double k = g.k, L = g.mu * N / k;  // the spring's reach
+  // d(force)/dN -> d/dy_n+1: N depends on y through the penetration y0 - y.
+  const double dNdy = -c.normalTangent;
+  if (rule.scheme != Scheme::MidPoint) {  // return mapping at t_n+1
+    const double trial = k * (x - a);
+    if (std::abs(trial) <= g.mu * N) {
+      out.force = -trial;
+      out.dx = -k;
+      out.anchor = a;
+    } else {
+      const double s = trial > 0 ? 1.0 : -1.0;
+      out.force = -s * g.mu * N;
+      out.dy = -s * g.mu * dNdy;
+      out.anchor = x - s * L;
+      out.slipped = g.mu * N * std::abs(out.anchor - a);
+    }
+    return out;
+  }
+  // A spring beyond the step's reach slides at once (sigma: its side).
+  const double e = xn - a;
+  const bool clamped = std::abs(e) > L;
+  const double sigma = e > 0 ? 1.0 : -1.0;
+  const double a0 = clamped ? xn - sigma * L : a;
+  if (clamped) out.slipped = 0.5 * k * (e * e - L * L);
+  const double dx = x - xn;
+  const double s = dx >= 0 ? 1.0 : -1.0;
+  const double xe = a0 + s * L;  // where sliding starts on the way to x
+  if (dx == 0 || s * (x - xe) <= 0) {  // elastic all the way
+    out.force = -0.5 * k * (x + xn - 2 * a0);
+    out.dx = -0.5 * k;
+    if (clamped) out.dy = -sigma * g.mu * dNdy;  // a0 = xn - sigma mu N / k
+    out.anchor = a0;
+    return out;
+  }
+  // Elastic from xn to xe, then sliding at s mu N: the work over dx.
+  const double we = (xe - xn) / dx, ws = (x - xe) / dx;  // weights >= 0, sum 1
+  const double F = we * 0.5 * k * (xe + xn - 2 * a0) + ws * s * g.mu * N;
+  out.force = -F;
+  out.dx = -0.5 * k * we * we;
+  // dW/dN: the sliding stretch's force, and the reach's shift of xe (and of
+  // a0 when the spring slid at once).
+  const double dWdN = g.mu * (s * (x - a0) - L) + (clamped ? g.mu * L * (s * sigma - 1) : 0.0);
+  out.dy = -(dWdN / dx) * dNdy;
+  out.anchor = x - s * L;
+  out.slipped += g.mu * N * std::abs(x - xe);
   return out;
 }
 
-double groundDissipation(const Ground& g, double q, double xn, double yn, double x, double y,
-                         const StepRule& rule, double eps) {
+double groundDissipation(const Ground& g, double q, double a, double xn, double yn, double x,
+                         double y, const StepRule& rule) {
   const ContactForce c = groundContact(g, q, yn, y, rule);
   const double p0 = penetration(g, yn), p1 = penetration(g, y);
   double d = 0;
@@ -152,8 +187,7 @@ double groundDissipation(const Ground& g, double q, double xn, double yn, double
     d += 0.5 * g.k * (1 - g.restitution * g.restitution) * (p1 - q0) * (p1 + q0);
   if (rule.scheme == Scheme::MidPoint)
     d += groundAlpha(g, rule) * g.k * (std::max(p1, 0.0) - std::max(p0, 0.0)) * (p1 - p0);
-  const double dx = x - xn;
-  d -= groundFriction(g, c, dx, eps).force * dx;
+  d += groundFriction(g, c, a, xn, x, rule).slipped;
   return d;
 }
 

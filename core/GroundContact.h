@@ -17,23 +17,21 @@
 // dissipative term alpha*k*(<g_n+1> - <g_n>) (eq 75; <.> the positive part, so
 // that the force is continuous when a node enters or leaves contact).
 //
-// Friction (mu > 0): regularised Coulomb friction on every node with a normal
-// force N > 0 (the penalty force without the dissipative term, >= 0 on every
-// branch), on the node's horizontal increment dx = x_n+1 - x_n over the step:
-//   f_t = -mu N dx / sqrt(dx^2 + eps^2).
-// Its work -mu N dx^2 / sqrt(dx^2 + eps^2) is never positive. The regularisation
-// is eps = mu N_ref dt^2 / (2 m) for a node of mass m, N_ref the larger of its
-// weight m |g| and its normal force at t_n (at least 1e-9 of the shortest
-// element): the increment friction alone would cause in one step, which the
-// step cannot resolve anyway. Then the friction stiffness mu N / eps equals the
-// inertia stiffness 2 m / dt^2 of the mid-point scheme, so that Newton's method
-// converges where the node sticks (with a much smaller eps, or an eps from the
-// weight alone under a rocking body whose few nodes in contact carry it all,
-// Newton's method cycles between the two directions of sliding). A node at rest
-// under a tangential load T creeps by dx = eps T / sqrt((mu N)^2 - T^2) per
-// step: by less than eps while T < mu N / sqrt(2).
+// Friction (mu > 0): elastic-plastic Coulomb friction on every node with a
+// normal force N > 0 (the penalty force without the dissipative term, >= 0 on
+// every branch). The node is held by a horizontal spring of the ground's
+// stiffness k anchored where it last slid (its stretch x - a: State::stretch);
+// it slides when the spring force reaches mu N, the anchor then following it at
+// mu N / k, so a
+// node sticks to within mu N / k (mu times its penetration) and never creeps,
+// and sliding is resisted by the full mu N whatever the node's own mass. The
+// spring stores k (x - a)^2 / 2 <= (mu N)^2 / (2 k); sliding dissipates mu N
+// per unit of slip. With the mid-point scheme N is the step's normal force and
+// the friction force is the law's work along the straight path from x_n to
+// x_n+1 divided by the step (elastic, then sliding), so that its work is the
+// spring energy's change plus what sliding dissipated; it is continuously
+// differentiable in x_n+1. Otherwise the law at t_n+1 (return mapping).
 #include "core/Model.h"
-#include "core/State.h"
 #include "core/StepRule.h"
 
 namespace c2d {
@@ -45,12 +43,14 @@ struct ContactForce {
   double normalTangent = 0;  // d(normal)/d(penetration at t_n+1)
 };
 
-// Horizontal force on a node and its derivatives with respect to the node's
-// position at t_n+1.
+// Horizontal force on a node, its derivatives with respect to the node's
+// position at t_n+1, and the anchor at t_n+1.
 struct FrictionForce {
-  double force = 0;  // f_t
-  double dx = 0;     // d f_t / d x_n+1
-  double dy = 0;     // d f_t / d y_n+1 (through N)
+  double force = 0;   // f_t
+  double dx = 0;      // d f_t / d x_n+1
+  double dy = 0;      // d f_t / d y_n+1 (through N)
+  double anchor = 0;  // where the spring is anchored at the end of the step
+  double slipped = 0; // energy sliding dissipated over the step (>= 0)
 };
 
 // Penetration of a node at vertical position y.
@@ -60,9 +60,6 @@ inline double penetration(const Ground& g, double y) { return g.y0 - y; }
 double contactEnergy(const Ground& g, double q, double y);
 // The loading point after a step that ends at vertical position y.
 double loadingPoint(const Ground& g, double q, double y);
-// Every node's loading point (State::crush) moved to the trial state's, when
-// the step is committed.
-void commitLoadingPoints(const Ground& g, const Model& model, State& s);
 
 // Force and its stiffness for the node's vertical position yn (t_n) and y (t_n+1)
 // and its loading point q at t_n, under the step rule; the ground's alpha, or the
@@ -72,23 +69,22 @@ void commitLoadingPoints(const Ground& g, const Model& model, State& s);
 // dissipates); otherwise the law at t_n+1.
 ContactForce groundContact(const Ground& g, double q, double yn, double y, const StepRule& rule);
 
-// The friction regularisation eps (see above) of a node of mass m with the
-// reference normal force nRef, time step dt; `shortest` is the shortest element
-// (the floor's scale).
-double frictionRegularisation(const Ground& g, double mass, double nRef, double dt,
-                              double shortest);
-
-// Friction on a node whose normal force is c (groundContact at the same yn, y),
-// horizontal increment dx over the step.
-FrictionForce groundFriction(const Ground& g, const ContactForce& c, double dx, double eps);
+// Friction on a node whose normal force is c (groundContact at the same
+// rule), anchored at a (t_n), moving horizontally from xn to x.
+FrictionForce groundFriction(const Ground& g, const ContactForce& c, double a, double xn, double x,
+                             const StepRule& rule);
+// Energy stored in a friction spring stretched by x - a.
+inline double frictionEnergy(const Ground& g, double stretch) {
+  return 0.5 * g.k * stretch * stretch;
+}
 
 // Energy the ground's contact law takes from a node over the step from (xn, yn)
 // to (x, y), >= 0: the crushing beyond the loading point q, the dissipative term
 // alpha k (<p_n+1> - <p_n>) (p_n+1 - p_n) under the mid-point scheme and the
-// friction's mu N dx^2 / sqrt(dx^2 + eps^2). Under the static and Newmark rules
-// the penalty force is the plain gradient at t_n+1; what that integration loses
-// or gains is the scheme's, not counted here.
-double groundDissipation(const Ground& g, double q, double xn, double yn, double x, double y,
-                         const StepRule& rule, double eps);
+// friction's sliding from the anchor a. Under the static and Newmark rules the
+// penalty force is the plain gradient at t_n+1; what that integration loses or
+// gains is the scheme's, not counted here.
+double groundDissipation(const Ground& g, double q, double a, double xn, double yn, double x,
+                         double y, const StepRule& rule);
 
 }  // namespace c2d

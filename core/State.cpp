@@ -14,6 +14,9 @@ void State::resize(int numNodes) {
   const Eigen::Index old = crush.size();
   crush.conservativeResize(numNodes);
   if (numNodes > old) crush.tail(numNodes - old).setZero();
+  const Eigen::Index oldStretches = stretch.size();
+  stretch.conservativeResize(numNodes);
+  if (numNodes > oldStretches) stretch.tail(numNodes - oldStretches).setZero();
 }
 
 ElementKinematics State::kinematics(const std::array<int, 2>& nodes) const {

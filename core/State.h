@@ -22,6 +22,9 @@ struct State {
   // since the node last touched down (0 off the ground; core/GroundContact.h).
   // Committed only: it changes when a step is committed.
   Eigen::VectorXd crush;
+  // Per node: the stretch x - a of its ground friction spring, a where it is
+  // anchored (core/GroundContact.h; 0 off the ground). Committed only.
+  Eigen::VectorXd stretch;
 
   void resize(int numNodes);   // keeps existing values, zero-fills new nodes
   // The values of an element with these nodes, in element dof order.

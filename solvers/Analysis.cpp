@@ -7,7 +7,6 @@
 #include <string>
 
 #include "core/Checkpoint.h"
-#include "core/GroundContact.h"
 #include "solvers/LineSearch.h"
 
 namespace c2d {
@@ -609,7 +608,7 @@ Status Analysis::commitEvaluated() {
   for (auto& el : model_.elements())
     if (el) el->commit();
   hinges_.committed();
-  if (const auto& ground = model_.ground()) commitLoadingPoints(*ground, model_, state_);
+  assembler_.commitGround(state_);
   if (path_) {
     path_->endStep(stepInc_, stepDlambda_);
     path_->setStepScale(1.0);
@@ -674,7 +673,8 @@ void Analysis::writeState(std::ostream& out) const {
   if (path_) path_->write(out);
   putTag(out, "STAT");
   for (const Eigen::VectorXd* x :
-       {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an, &state_.crush})
+       {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an, &state_.crush,
+        &state_.stretch})
     putVector(out, *x);
   for (double x : {state_.t, state_.tn, state_.dt, state_.prop, state_.propn, state_.arcLambda,
                    state_.arcLambdan})
@@ -721,7 +721,8 @@ void Analysis::readState(std::istream& in) {
   if (getBool(in)) path_ = PathFollowing::read(in);
   expectTag(in, "STAT");
   for (Eigen::VectorXd* x :
-       {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an, &state_.crush})
+       {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an, &state_.crush,
+        &state_.stretch})
     *x = getVector(in);
   for (double* x : {&state_.t, &state_.tn, &state_.dt, &state_.prop, &state_.propn,
                     &state_.arcLambda, &state_.arcLambdan})
@@ -731,7 +732,7 @@ void Analysis::readState(std::istream& in) {
   for (const Eigen::VectorXd* x :
        {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an})
     if (x->size() != nd) throw CheckpointError("state vectors do not match the model's node count");
-  if (state_.crush.size() != model_.numNodes())
+  if (state_.crush.size() != model_.numNodes() || state_.stretch.size() != model_.numNodes())
     throw CheckpointError("state vectors do not match the model's node count");
   topologyChanged();
   expectTag(in, "BOOK");

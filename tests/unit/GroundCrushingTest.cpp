@@ -41,7 +41,7 @@ TEST(GroundCrushing, MidPointForceDoesTheWorkStoredPlusDissipated) {
     // The force acts upward: its work on the penetration's increment.
     const double work = f.force * (c.p1 - c.p0);
     const double stored = contactEnergy(g, c.q, y1) - contactEnergy(g, c.q, y0);
-    const double dissipated = groundDissipation(g, c.q, 0, y0, 0, y1, rule, 1);
+    const double dissipated = groundDissipation(g, c.q, 0, 0, y0, 0, y1, rule);
     EXPECT_GE(dissipated, 0.0);
     EXPECT_NEAR(work, stored + dissipated, 1e-12 * g.k * c.q * c.q)
         << c.q << " " << c.p0 << " -> " << c.p1;
