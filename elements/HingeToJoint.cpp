@@ -41,8 +41,8 @@ std::optional<HingedBendingState> sectionOf(const Element& e) {
 // Ends of an element that already carry a joint (its wrappers' slave ends).
 std::array<bool, 2> jointedEnds(const Element& e) {
   std::array<bool, 2> ends{false, false};
-  for (auto* j = dynamic_cast<const JointedElement*>(&e); j;
-       j = dynamic_cast<const JointedElement*>(&j->inner()))
+  for (auto* j = asJointed(&e); j;
+       j = asJointed(&j->inner()))
     ends[j->slaveEnd()] = true;
   return ends;
 }
@@ -82,8 +82,8 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
       fail(e, st.why);
     // The relative rates belong to the dynamics so far: keep them; the static
     // evaluation only solves psi_r at the current displacements.
-    for (auto* je = dynamic_cast<JointedElement*>(&el); je;
-         je = dynamic_cast<JointedElement*>(&je->inner()))
+    for (auto* je = asJointed(&el); je;
+         je = asJointed(&je->inner()))
       slaves[je->slaveNode()] = Relative{je->masterNode(), je->relativeRotation(),
                                          je->relativeVelocity(), je->relativeAcceleration()};
     forces[e] = el.sectionForces();
@@ -154,7 +154,7 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
   for (int e = 0; e < ne; ++e) {
     if (!rebuild[e]) continue;
     std::unique_ptr<Element> old = std::move(model.elements()[e]);
-    while (auto* je = dynamic_cast<JointedElement*>(old.get())) old = je->release();
+    while (auto* je = asJointed(old.get())) old = je->release();
     std::array<int, 2> nodes = old->nodes();
     if (auto it = hingeEnd.find(e); it != hingeEnd.end()) {
       for (const CreatedJoint& cj : created)
@@ -227,7 +227,7 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
     ElemMat k;
     ElementKinematics kin = state.kinematics(el.nodes());
     Element* in = &el;
-    while (auto* je = dynamic_cast<JointedElement*>(in)) {
+    while (auto* je = asJointed(in)) {
       kin = je->innerKinematics(kin, je->relativeRotation());
       in = &je->inner();
     }
@@ -255,7 +255,7 @@ std::vector<CreatedJoint> jointFailedHinges(Model& model, State& state) {
   // a free embedded one (a second joint would leave the element without any
   // rotational stiffness between its two free ends).
   const auto failed = [](const Element& e, const HingeInfo& h) {
-    return h.active && h.failed && asReissner(e) && !dynamic_cast<const JointedElement*>(&e);
+    return h.active && h.failed && asReissner(e) && !asJointed(&e);
   };
   bool any = false;
   for (int e = 0; e < model.numElements() && !any; ++e)

@@ -24,6 +24,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <typeinfo>
 
 #include "core/Checkpoint.h"
 #include "core/Element.h"
@@ -136,5 +137,17 @@ class JointedElement final : public Element, public Checkpoint, public MaterialC
   double slaveRotation_ = 0;
   double friction_ = 0, frictionEps_ = 1;
 };
+
+// The element as a joint wrapper, or null. A type check (the class is final)
+// instead of a dynamic_cast through its three bases: the loops over every
+// element at every commit (joint events, slave nodes) made the casts 4 % of
+// the ten-storey demolition decks.
+inline JointedElement* asJointed(Element* e) {
+  return e && typeid(*e) == typeid(JointedElement) ? static_cast<JointedElement*>(e) : nullptr;
+}
+inline const JointedElement* asJointed(const Element* e) {
+  return e && typeid(*e) == typeid(JointedElement) ? static_cast<const JointedElement*>(e)
+                                                    : nullptr;
+}
 
 }  // namespace c2d

@@ -26,21 +26,21 @@ bool isMasterOfAnotherJoint(const Model& model, int node) {
 
 Element& innermost(Element& e) {
   Element* el = &e;
-  while (auto* j = dynamic_cast<JointedElement*>(el)) el = &j->inner();
+  while (auto* j = asJointed(el)) el = &j->inner();
   return *el;
 }
 
 const Element& innermost(const Element& e) {
   const Element* el = &e;
-  while (auto* j = dynamic_cast<const JointedElement*>(el)) el = &j->inner();
+  while (auto* j = asJointed(el)) el = &j->inner();
   return *el;
 }
 
 std::vector<JointedElement*> jointedElements(Model& model) {
   std::vector<JointedElement*> out;
   for (int e = 0; e < model.numElements(); ++e)
-    for (auto* j = model.hasElement(e) ? dynamic_cast<JointedElement*>(&model.element(e)) : nullptr; j;
-         j = dynamic_cast<JointedElement*>(&j->inner()))
+    for (auto* j = model.hasElement(e) ? asJointed(&model.element(e)) : nullptr; j;
+         j = asJointed(&j->inner()))
       out.push_back(j);
   return out;
 }
@@ -49,21 +49,21 @@ std::vector<const JointedElement*> jointedElements(const Model& model) {
   std::vector<const JointedElement*> out;
   for (int e = 0; e < model.numElements(); ++e)
     for (auto* j =
-             model.hasElement(e) ? dynamic_cast<const JointedElement*>(&model.element(e)) : nullptr;
+             model.hasElement(e) ? asJointed(&model.element(e)) : nullptr;
          j;
-         j = dynamic_cast<const JointedElement*>(&j->inner()))
+         j = asJointed(&j->inner()))
       out.push_back(j);
   return out;
 }
 
 int installJoints(Model& model) {
   int changed = 0;
+  // The slaves that have their wrapper (one pass over the elements, not one per joint).
+  std::vector<char> installed(model.numNodes(), 0);
+  for (const JointedElement* je : jointedElements(model)) installed[je->slaveNode()] = 1;
   for (Joint& joint : model.joints()) {
     if (joint.form != JointForm::Condensed) continue;
-    bool installed = false;
-    for (const JointedElement* je : jointedElements(model))
-      if (je->slaveNode() == joint.slave) installed = true;
-    if (installed) continue;
+    if (installed[joint.slave]) continue;
 
     int attached = 0, element = -1, end = -1;
     for (int e = 0; e < model.numElements(); ++e) {
@@ -94,6 +94,7 @@ int installJoints(Model& model) {
       jointed->setFriction(mat->softening->Mr, mat->softening->Mr * l / mat->EI());
     }
     slot = std::move(jointed);
+    installed[joint.slave] = 1;
     ++changed;
   }
   if (changed) model.bumpTopology();
@@ -104,7 +105,7 @@ namespace {
 
 // The element chain `el` without the joint at `slave`.
 std::unique_ptr<Element> withoutJoint(std::unique_ptr<Element> el, int slave) {
-  auto* je = dynamic_cast<JointedElement*>(el.get());
+  auto* je = asJointed(el.get());
   if (!je) return el;
   if (je->slaveNode() == slave) return je->release();
   je->replaceInner(withoutJoint(je->takeInner(), slave));
@@ -135,8 +136,8 @@ std::vector<Joint> dissolveLooseJoints(Model& model, State& state) {
       if (joint.form == JointForm::Condensed)
         for (int e = 0; e < model.numElements() && holder < 0; ++e) {
           if (!model.hasElement(e)) continue;
-          for (auto* je = dynamic_cast<const JointedElement*>(&model.element(e)); je;
-               je = dynamic_cast<const JointedElement*>(&je->inner()))
+          for (auto* je = asJointed(&model.element(e)); je;
+               je = asJointed(&je->inner()))
             if (je->slaveNode() == joint.slave) holder = e;
         }
       // Condensed: its element is gone, or nothing but it holds the master.
@@ -173,8 +174,8 @@ void jointHolders(const Model& model, std::vector<int>& holder, std::vector<int>
   for (int e = model.numElements() - 1; e >= 0; --e) {
     if (!model.hasElement(e)) continue;
     for (int n : model.element(e).nodes()) holder[n] = e;
-    for (auto* je = dynamic_cast<const JointedElement*>(&model.element(e)); je;
-         je = dynamic_cast<const JointedElement*>(&je->inner()))
+    for (auto* je = asJointed(&model.element(e)); je;
+         je = asJointed(&je->inner()))
       wrapper[je->slaveNode()] = e;
   }
 }
@@ -199,8 +200,8 @@ std::vector<RupturedJoint> ruptureJoints(Model& model, State& state) {
     if (joint.form == JointForm::Condensed) {
       element = wrapper[joint.slave];
       if (element >= 0)
-        for (auto* je = dynamic_cast<const JointedElement*>(&model.element(element)); je;
-             je = dynamic_cast<const JointedElement*>(&je->inner()))
+        for (auto* je = asJointed(&model.element(element)); je;
+             je = asJointed(&je->inner()))
           if (je->slaveNode() == joint.slave) rotation = je->committedRelativeRotation();
     } else {
       element = holder[joint.slave];

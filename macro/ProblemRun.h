@@ -92,7 +92,10 @@ class ProblemRun {
   void scalePathIncrement();
   void setProportionalLoad(const Macro& m);
   void setIntegrator(const TimeIntegrator& ti);
-  void setStepCutting(bool on, double dtMin);
+  // AUTO,CUT,dtmin,pred: with pred a dynamic step whose predicted start
+  // diverges is cut (dt halved, from the prediction again) rather than started
+  // again from the committed state.
+  void setStepCutting(bool on, double dtMin, bool cutDivergingPrediction = false);
   void setPathFollowing(const Macro& m);
   void setTimeHistory(const Macro& m);
   void reenterMesh(const Macro& m);
@@ -150,6 +153,7 @@ class ProblemRun {
   // Step cutting (AUTO,CUT).
   bool cutting_ = false;
   double dtMin_ = 0, dtNominal_ = 0;
+  bool cutPrediction_ = false;  // a diverging predicted start cuts the step (AUTO,CUT,,1)
   int stepsSinceCut_ = 0;
   int cuts_ = 0;
   std::string lastFailure_;

@@ -414,15 +414,21 @@ class AutoCommand final : public SolutionCommand {
                     "Automatic step cutting: AUTO,CUT,dtmin: a Newton loop that ends unconverged, "
                     "diverges or stalls (or a singular tangent) returns to the last committed "
                     "step, halves dt and "
-                    "retries, down to dtmin; dt grows back after converged steps. AUTO,OFF.",
-                    {word("mode", "CUT or OFF"), num("dtmin", "smallest step", "dt/1024")});
+                    "retries, down to dtmin; dt grows back after converged steps. "
+                    "AUTO,CUT,dtmin,1: a dynamic step whose predicted start diverges is cut too "
+                    "(otherwise it starts again from the committed state). AUTO,OFF.",
+                    {word("mode", "CUT or OFF"), num("dtmin", "smallest step", "dt/1024"),
+                     num("pred", "1: a diverging predicted start cuts the step", "0")});
   }
   void bind(Macro& m, BindContext& ctx) const override {
     SolutionCommand::bind(m, ctx);
     const std::string k = m.option.substr(0, 3);
     if (k != "cut" && k != "off") fail(m, 1, "AUTO,CUT,dtmin or AUTO,OFF");
     // dtmin <= 0 would let the cutting halve the step forever.
-    if (k == "cut") checkPositive(m, 0, ctx.params(), "the smallest step dtmin");
+    if (k == "cut") {
+      checkPositive(m, 0, ctx.params(), "the smallest step dtmin");
+      predictionFlag(m, ctx.params());
+    }
   }
   Flow run(const Macro& m, ProblemRun& r) const override {
     if (m.option.rfind("off", 0) == 0) {
@@ -430,9 +436,19 @@ class AutoCommand final : public SolutionCommand {
     } else {
       checkPositive(m, 0, r.params(), "the smallest step dtmin");
       r.setStepCutting(true,
-                       m.has(0) && !m.record.text(2).empty() ? m.numbers[0].eval(r.params()) : 0.0);
+                       m.has(0) && !m.record.text(2).empty() ? m.numbers[0].eval(r.params()) : 0.0,
+                       predictionFlag(m, r.params()));
     }
     return Flow::Next;
+  }
+
+ private:
+  // The pred field: 0 (default) or 1.
+  static bool predictionFlag(const Macro& m, const Parameters& p) {
+    if (!written(m, 1)) return false;
+    const double v = m.numbers[1].eval(p);
+    if (v != 0 && v != 1) fail(m, 3, "AUTO,CUT,dtmin,pred: pred is 0 or 1, got " + formatNumber(v));
+    return v == 1;
   }
 };
 

@@ -133,7 +133,7 @@ Status HingeEvents::evaluateOpened(int element) {
   const State& s = an_.state_;
   Element* el = &an_.model().element(element);
   ElementKinematics kin = s.kinematics(el->nodes());
-  while (auto* je = dynamic_cast<JointedElement*>(el)) {
+  while (auto* je = asJointed(el)) {
     kin = je->innerKinematics(kin, je->relativeRotation());
     el = &je->inner();
   }

@@ -1,18 +1,68 @@
 #include "solvers/TopologyEvents.h"
 
+#include <cmath>
+#include <limits>
+
 #include "elements/HingeToJoint.h"
+#include "elements/JointedElement.h"
 #include "elements/Joints.h"
 
 namespace c2d {
 
+void TopologyEvents::index(const Model& model) {
+  if (indexedModel_ == &model && indexedVersion_ == model.topologyVersion()) return;
+  carriers_.clear();
+  wrappers_.clear();
+  for (int e = 0; e < model.numElements(); ++e) {
+    if (!model.hasElement(e)) continue;
+    if (const auto* c = dynamic_cast<const HingeCarrier*>(&innermost(model.element(e))))
+      carriers_.push_back(c);
+  }
+  for (const JointedElement* j : jointedElements(model)) wrappers_.push_back(j);
+  indexedModel_ = &model;
+  indexedVersion_ = model.topologyVersion();
+}
+
+bool TopologyEvents::anyFailedHinge() const {
+  // The condition of jointFailedHinges without its element kinds: when no
+  // hinge has failed it makes no joint.
+  for (const HingeCarrier* c : carriers_) {
+    const HingeInfo h = c->hinge();
+    if (h.active && h.failed) return true;
+  }
+  return false;
+}
+
+bool TopologyEvents::anyJointPastRupture(const Model& model, const State& state) const {
+  // The condition of ruptureJoints with the smallest rupture rotation of any
+  // material: when no joint's relative rotation exceeds it, none ruptures.
+  double limit = std::numeric_limits<double>::infinity();
+  for (const auto& [number, mat] : model.materials())
+    if (mat.softening && mat.softening->thetaR) limit = std::min(limit, *mat.softening->thetaR);
+  if (model.joints().empty() || !(limit < std::numeric_limits<double>::infinity())) return false;
+  for (const JointedElement* j : wrappers_)
+    if (std::abs(j->committedRelativeRotation()) > limit) return true;
+  for (const Joint& joint : model.joints())
+    if (joint.form != JointForm::Condensed &&
+        std::abs(state.un[static_cast<Eigen::Index>(joint.slave) * kNodeDofs + 2] -
+                 state.un[static_cast<Eigen::Index>(joint.master) * kNodeDofs + 2]) > limit)
+      return true;
+  return false;
+}
+
 bool TopologyEvents::afterCommit(Model& model, State& state) {
   std::vector<TopologyEvent> events;
-  for (const CreatedJoint& j : jointFailedHinges(model, state))
-    events.push_back({TopologyEvent::Kind::JointFormed, j.element, j.master, j.slave,
-                      j.relativeRotation, 0});
-  for (const RupturedJoint& j : ruptureJoints(model, state))
-    events.push_back(
-        {TopologyEvent::Kind::JointRuptured, j.element, j.master, j.slave, j.rotation, j.limit});
+  index(model);
+  if (anyFailedHinge()) {
+    for (const CreatedJoint& j : jointFailedHinges(model, state))
+      events.push_back({TopologyEvent::Kind::JointFormed, j.element, j.master, j.slave,
+                        j.relativeRotation, 0});
+    index(model);  // the joints just made
+  }
+  if (anyJointPastRupture(model, state))
+    for (const RupturedJoint& j : ruptureJoints(model, state))
+      events.push_back(
+          {TopologyEvent::Kind::JointRuptured, j.element, j.master, j.slave, j.rotation, j.limit});
   if (onEvent)
     for (const TopologyEvent& e : events) onEvent(e);
   return !events.empty();

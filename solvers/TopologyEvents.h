@@ -6,11 +6,15 @@
 // rotation separates the pieces (elements/Joints.h, ruptureJoints). The
 // analysis then rebuilds its dof map, pattern and factorization.
 #include <functional>
+#include <vector>
 
+#include "core/Hinge.h"
 #include "core/Model.h"
 #include "core/State.h"
 
 namespace c2d {
+
+class JointedElement;
 
 struct TopologyEvent {
   enum class Kind { JointFormed, JointRuptured };
@@ -27,6 +31,21 @@ class TopologyEvents {
   std::function<void(const TopologyEvent&)> onEvent;
   // True when the model changed.
   bool afterCommit(Model& model, State& state);
+
+ private:
+  // The hinge carriers (innermost elements) and the joint wrappers of the
+  // model's current topology, found once per topology version: most commits
+  // have no failed hinge and no joint past a rupture rotation, and then cost
+  // no search over the elements (a few dynamic casts per element, 4 % of the
+  // ten-storey demolition decks at every commit).
+  void index(const Model& model);
+  bool anyFailedHinge() const;
+  bool anyJointPastRupture(const Model& model, const State& state) const;
+
+  const Model* indexedModel_ = nullptr;
+  int indexedVersion_ = -1;
+  std::vector<const HingeCarrier*> carriers_;
+  std::vector<const JointedElement*> wrappers_;
 };
 
 }  // namespace c2d

@@ -5,8 +5,14 @@
 // CPU (28.8k -> 21.1k Newton iterations, 262 -> 235 cut steps), implosion
 // 8.5 -> 6.7 s CPU (23.8k -> 17.9k iterations), by one index of the joints'
 // elements per commit, hinge-event trials started from the chord of the
-// bracket and one pattern build per topology change (docs/design-notes.md,
-// Open problems).
+// bracket and one pattern build per topology change; then, with a diverging
+// predicted start cutting the step (AUTO,CUT,1e-6,1 in both decks; the same
+// binary, decks without and with it, load 2): felling 6.8 -> 5.2 s CPU
+// (25.2k -> 19.0k iterations, 311 -> 535 cuts), implosion 5.3 -> 4.8 s CPU
+// (19.5k -> 16.4k iterations, 212 -> 399 cuts); joint wrappers found without
+// dynamic casts (3.9 % -> 0.5 % of the felling, results bit for bit). This
+// benchmark afterwards: felling 5.8 s at load 1.4, 6.9 s at load 2;
+// implosion 5.0 s and 5.8 s (docs/design-notes.md, Open problems).
 // Run: build/tests/benchmarks --benchmark_filter=TenStory
 #include <benchmark/benchmark.h>
 

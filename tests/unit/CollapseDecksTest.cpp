@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "macro/DeckRunner.h"
+#include "tests/unit/RunDeckSupport.h"
 
 namespace c2d {
 namespace {
@@ -285,6 +287,69 @@ TEST(CollapseDecks, SchemeComparison) {
   EXPECT_GT(dNewmark, 1e4 * dConserving);
   // The free end falls by nearly the whole length of the chain.
   EXPECT_LT(*std::min_element(conserving["disp_10_2"].begin(), conserving["disp_10_2"].end()), -1.9);
+}
+
+
+// A double pendulum of two jointed rods released horizontal, under the
+// conserving mid-point scheme at h = 0.06 s: in its fastest swings Newton's
+// method from the constant-velocity prediction diverges. AUTO,CUT,dtmin,1 cuts
+// those steps (a half step from the prediction) instead of starting them again
+// from the committed state, AUTO,CUT,dtmin,0 starts them again; at the
+// smallest step (dtmin = h) the restart stays. Energy is kept to round-off
+// either way.
+std::string pendulumWithCutting(const std::string& autoRecord) {
+  return "FEAP * * double pendulum, mid-point scheme, step cutting\n"
+         "  0 0 0 2 3 2\n\n"
+         "BLOCk\n  CARTesian 4 0 1 1 1\n  1 0 0\n  2 1 0\n\n"
+         "BLOCk\n  CARTesian 4 0 6 5 1\n  1 1 0\n  2 2 0\n\n"
+         "JOINt\n  5 6\n\n"
+         "MATErial,1\n  FRAMe\n    RESUltant STIFfness 1e6 1e6 1e4\n"
+         "    CROSs section 1 1e-4\n    DENSity,,1\n    FINIte\n\n"
+         "BOUNdary\n  1 0 1 1 0\n\n"
+         "GRAVity,,0,-9.81\n\n"
+         "END\nBATCh\n  DYNAmic,ENERgy\n  " + autoRecord +
+         "\n  DT,,0.06\n  TPLOt\n  LOOP,,100000\n    TIME,,4\n    LOOP,,20\n      TANG,,1\n"
+         "    NEXT\n  NEXT\nEND\nener\n\nSTOP\n";
+}
+
+TEST(CollapseDecks, DivergingPredictionCutsTheStepWhenAsked) {
+  const testing::DeckTempDir dir;
+  struct Run {
+    int diverged = 0, restarts = 0, cuts = 0;
+    double drift = 0;
+  };
+  auto run = [&](const std::string& name, const std::string& autoRecord) {
+    const auto r = testing::runDeckText(dir, name + ".inp", pendulumWithCutting(autoRecord));
+    EXPECT_EQ(r.outcome.exitCode, 0) << r.console;
+    Run out;
+    for (std::size_t p = 0; (p = r.log.find("(the predicted start diverges)", p)) != std::string::npos; ++p)
+      ++out.diverged;
+    for (std::size_t p = 0; (p = r.log.find("the step starts again from the committed state\n", p)) !=
+                            std::string::npos;
+         ++p)
+      ++out.restarts;
+    for (std::size_t p = 0; (p = r.log.find("  cut    step to dt", p)) != std::string::npos; ++p)
+      ++out.cuts;
+    const auto csv = testing::readCsv(r.out / (name + "_tplot.csv"));
+    const auto total = csv.column("total");
+    const auto kinetic = csv.column("kinetic");
+    EXPECT_FALSE(total.empty());
+    if (!total.empty())
+      out.drift = relativeDrift(total, *std::max_element(kinetic.begin(), kinetic.end()));
+    return out;
+  };
+  const Run cut = run("cut", "AUTO,CUT,0.06/64,1");
+  const Run restart = run("restart", "AUTO,CUT,0.06/64,0");
+  const Run smallest = run("smallest", "AUTO,CUT,0.06,1");
+  EXPECT_GT(cut.diverged, 0);
+  EXPECT_EQ(cut.cuts, cut.diverged);
+  EXPECT_EQ(cut.restarts, 0);
+  EXPECT_EQ(restart.diverged, 0);
+  EXPECT_GT(restart.restarts, 0);
+  EXPECT_EQ(restart.cuts, 0);
+  EXPECT_EQ(smallest.diverged, 0);
+  EXPECT_GT(smallest.restarts, 0);
+  for (const Run* r : {&cut, &restart, &smallest}) EXPECT_LT(r->drift, 1e-10);
 }
 
 }  // namespace
