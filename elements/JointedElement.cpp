@@ -69,7 +69,7 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
     if (Status st = inner_->evaluate(in, rule, true, residual, kin6); !st) return st;
     double dm = 0;
     const double m = friction(psi, dm);
-    const double slaveSlope = rule.rotationRateSlope(increment(psi));
+    const double slaveSlope = friction_ > 0 ? rule.rotationRateSlope(increment(psi)) : 0.0;
     // Condensation needs a nonzero pivot only: a compressed member in large
     // motion can make the relative rotation's stiffness negative.
     const double krr = kin6(k, k) + dm * slaveSlope;
