@@ -124,6 +124,7 @@ void writeModel(std::ostream& out, const Model& model) {
     if (m.softening) {
       for (double x : {m.softening->Mu, m.softening->Ks}) put(out, x);
       putOptional(out, m.softening->thetaR);
+      put(out, m.softening->Mr);
     }
   }
   putTag(out, "ELEM");
@@ -143,7 +144,7 @@ void writeModel(std::ostream& out, const Model& model) {
   putBool(out, model.ground().has_value());
   if (model.ground())
     for (double x : {model.ground()->y0, model.ground()->k, model.ground()->alpha,
-                     model.ground()->mu})
+                     model.ground()->mu, model.ground()->restitution})
       put(out, x);
   putBool(out, model.memberContact().has_value());
   if (model.memberContact())
@@ -223,6 +224,7 @@ Model readModel(std::istream& in, int minTopologyVersion) {
       SofteningData s;
       for (double* x : {&s.Mu, &s.Ks}) *x = get<double>(in);
       s.thetaR = getOptional(in);
+      s.Mr = get<double>(in);
       m.softening = s;
     }
     model.materials()[key] = std::move(m);
@@ -248,7 +250,7 @@ Model readModel(std::istream& in, int minTopologyVersion) {
   expectTag(in, "GRND");
   if (getBool(in)) {
     Ground g;
-    for (double* x : {&g.y0, &g.k, &g.alpha, &g.mu}) *x = get<double>(in);
+    for (double* x : {&g.y0, &g.k, &g.alpha, &g.mu, &g.restitution}) *x = get<double>(in);
     model.ground() = g;
   }
   if (getBool(in)) {

@@ -65,7 +65,11 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
       for (double x : {m.hardening->Mc, m.hardening->My, m.hardening->Kh1, m.hardening->Kh2})
         materials.add(x);
     materials.add(m.softening.has_value());
-    if (m.softening) materials.add(m.softening->Mu).add(m.softening->Ks);
+    if (m.softening)
+      materials.add(m.softening->Mu)
+          .add(m.softening->Ks)
+          .add(m.softening->thetaR.value_or(-1))
+          .add(m.softening->Mr);
   }
   boundary.add(model.joints().size());
   for (const Joint& j : model.joints()) boundary.add(j.master).add(j.slave);

@@ -248,7 +248,9 @@ TEST(Restart, AcrossHingeToJointIntoTheCollapsePhase) {
 }
 
 // A bar dropped across a fixed beam (member contact) beside a beam sliding on
-// the ground with friction: saved in the middle of the impact.
+// the ground with friction on a crushing ground (e = 0.5): saved in the middle
+// of the impact, with the friction springs' stretches and the loading points
+// in the state.
 const char* kContact = R"(PARAmeter
   h = sqrt(3*1e-3/1.25) + sqrt(3*1e-3/0.5)
 
@@ -289,7 +291,7 @@ BOUNdary
   3 0 1 1 1
 
 CONTact
-  GROUnd,,0,1e5,,0.2
+  GROUnd,,0,1e5,,0.2,0.5
   MEMBers,,2e4
 
 GRAVity,,2.943,-9.81
@@ -319,6 +321,8 @@ TEST(Restart, MemberContactAndFrictionContinueBitForBit) {
   // The save falls inside the impact: the bar is in contact with the beam.
   const Loaded mid(first.out / "mid.rst");
   EXPECT_GT(mid.analysis->energy().contact, 1e-3);
+  EXPECT_GT(mid.analysis->state().crush.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_GT(mid.analysis->state().stretch.cwiseAbs().maxCoeff(), 0.0);
   expectSameTail(readText(whole.out / "whole_tplot.csv"), readText(first.out / "first_tplot.csv"),
                  readText(rest.out / "rest_tplot.csv"));
   expectSameState(whole.out / "whole_end.rst", rest.out / "rest_end.rst");
