@@ -308,7 +308,8 @@ void Assembler::commitGround(State& s) const {
     const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs;
     s.crush[n] = loadingPoint(*ground, s.crush[n], model_.coord(n).y() + s.u[i + 1]);
   }
-  s.stretch = Eigen::VectorXd(stretchesOf(s));
+  const Eigen::VectorXd& stretches = stretchesOf(s);
+  if (&stretches != &s.stretch) s.stretch = stretches;
 }
 
 const Eigen::VectorXd& Assembler::stretchesOf(const State& s) const {

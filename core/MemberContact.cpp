@@ -299,6 +299,9 @@ void MemberContact::search(const Model& model, const State& s) const {
   }
   std::sort(candidates_.begin(), candidates_.end(),
             [](const ContactPair& p, const ContactPair& q) { return p.key() < q.key(); });
+  // Room for the list to double before a later search must allocate (steps
+  // allocate nothing while the contacts change little).
+  if (candidates_.capacity() < 2 * candidates_.size()) candidates_.reserve(2 * candidates_.size());
   searched_ = true;
   ++candidatesVersion_;
 }

@@ -20,6 +20,7 @@ Analysis::Analysis(Model& model)
     : model_(model), assembler_(model), hinges_(*this), removal_(*this) {
   setLinearSolver("auto");
   state_.prop = state_.propn = 1.0;  // FEAP: loads at full value until a PROP table is given
+  history_.reserve(64);  // a step's iterations: a longer step than any before allocates nothing
   topologyChanged();
 }
 
@@ -82,6 +83,7 @@ void Analysis::setPathFollowing(std::optional<PathFollowing> p) {
 void Analysis::topologyChanged() {
   state_.resize(model_.numNodes());
   assembler_.refresh();
+  topology_.index(model_);
   const int neq = assembler_.dofs().numEquations();
   const Eigen::Index nd = static_cast<Eigen::Index>(model_.numNodes()) * kNodeDofs;
   R_.setZero(neq);
