@@ -1113,10 +1113,9 @@ std::vector<MeshCommandEntry> meshCommandTable() {
       {meshSpec("CONTact",
                 "Penalty contact. GROUnd: rigid ground y = y0 for every node, penalty stiffness "
                 "k; alpha: dissipation of the contact force (absent: the integrator's); mu: "
-                "regularised Coulomb friction (f = -mu N dx/sqrt(dx^2 + eps^2) on the node's "
-                "horizontal step dx, eps = mu N dt^2/(2 m) with N the larger of the node's weight "
-                "and its normal force at the last step: a node at rest under a load below "
-                "mu N/sqrt(2) creeps by less than eps per step); e: restitution of an impact "
+                "Coulomb friction, elastic-plastic: each node held by a horizontal spring of "
+                "stiffness k anchored where it last slid, sliding when the spring force reaches "
+                "mu N (N the normal force; no creep at rest); e: restitution of an impact "
                 "(below 1 the contact crushes: loading with k beyond the largest penetration q "
                 "since the node touched down, unloading and reloading with k/e^2 below it, so "
                 "that a node strikes with speed v and leaves with e v; the work k(p^2 - "
