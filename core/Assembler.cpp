@@ -215,9 +215,11 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
     fContact_.setZero();
     // The friction springs' stretches at the end of the step: none off the
     // ground (or on a node moving with a joint's master).
-    stretch_.setZero(model_.numNodes());
-    stretchU_ = s.u;
-    stretchUn_ = s.un;
+    if (ground->mu > 0) {
+      stretch_.setZero(model_.numNodes());
+      stretchU_ = s.u;
+      stretchUn_ = s.un;
+    }
     for (int n = 0; n < model_.numNodes(); ++n) {
       // A shared joint's slave moves with its master: its contact is the master's.
       if (!dofs_.used(n) || dofs_.aliased(n)) continue;

@@ -43,7 +43,6 @@ void crushingMidPoint(const Crushing& law, double p0, double p1, ContactForce& o
   if (n == 2) {  // one piece: the mean of the end forces
     out.force = 0.5 * (law.force(p0) + law.force(p1));
     out.tangent = 0.5 * law.slope(0.5 * (p0 + p1));
-    if (p0 == p1) out.tangent = 0.5 * law.slope(p1);
     return;
   }
   double work = 0, stiffness = 0, tail = 0;

@@ -1,5 +1,6 @@
 #include "elements/Joints.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -22,7 +23,47 @@ bool isMasterOfAnotherJoint(const Model& model, int node) {
   return false;
 }
 
+// The element at the slave of a joint and its end there, when exactly one.
+struct Attached {
+  int count = 0, element = -1, end = -1;
+};
+Attached attachedTo(const Model& model, int node) {
+  Attached out;
+  for (int e = 0; e < model.numElements(); ++e) {
+    if (!model.hasElement(e)) continue;
+    const auto n = model.element(e).nodes();
+    for (int a = 0; a < 2; ++a)
+      if (n[a] == node) {
+        ++out.count;
+        out.element = e;
+        out.end = a;
+      }
+  }
+  return out;
+}
+
+bool condensableWith(const Model& model, const Joint& joint, const Attached& at) {
+  return at.count == 1 && !carriesNodalData(model, joint.slave) &&
+         !isMasterOfAnotherJoint(model, joint.slave);
+}
+
 }  // namespace
+
+bool condensable(const Model& model, const Joint& joint) {
+  return condensableWith(model, joint, attachedTo(model, joint.slave));
+}
+
+double jointFriction(const Model& model, int node) {
+  double Mr = 0;
+  for (int e = 0; e < model.numElements(); ++e) {
+    if (!model.hasElement(e)) continue;
+    const auto n = model.element(e).nodes();
+    if (n[0] != node && n[1] != node) continue;
+    const MaterialSet* mat = model.material(innermost(model.element(e)).materialNumber());
+    if (mat && mat->softening) Mr = std::max(Mr, mat->softening->Mr);
+  }
+  return Mr;
+}
 
 Element& innermost(Element& e) {
   Element* el = &e;
@@ -65,24 +106,14 @@ int installJoints(Model& model) {
     if (joint.form != JointForm::Condensed) continue;
     if (installed[joint.slave]) continue;
 
-    int attached = 0, element = -1, end = -1;
-    for (int e = 0; e < model.numElements(); ++e) {
-      if (!model.hasElement(e)) continue;
-      const auto n = model.element(e).nodes();
-      for (int a = 0; a < 2; ++a)
-        if (n[a] == joint.slave) {
-          ++attached;
-          element = e;
-          end = a;
-        }
-    }
-    if (attached == 0) continue;
-    if (attached > 1 || carriesNodalData(model, joint.slave) ||
-        isMasterOfAnotherJoint(model, joint.slave)) {
+    const Attached at = attachedTo(model, joint.slave);
+    if (at.count == 0) continue;
+    if (!condensableWith(model, joint, at)) {
       joint.form = JointForm::Shared;
       ++changed;
       continue;
     }
+    const int element = at.element, end = at.end;
     auto& slot = model.elements()[element];
     auto jointed = std::make_unique<JointedElement>(std::move(slot), end, joint.master);
     // The broken section's residual moment (SOFTening's Mr), regularised over

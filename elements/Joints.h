@@ -25,6 +25,11 @@ namespace c2d {
 // model's topology version when it changed anything. Returns the number of
 // joints it wrapped or switched.
 int installJoints(Model& model);
+// A Condensed joint can be wrapped: exactly one element at its slave, which
+// carries no nodal data and masters no other joint (else it becomes Shared).
+bool condensable(const Model& model, const Joint& joint);
+// The largest joint friction moment Mr (SOFTening's) of the elements at a node.
+double jointFriction(const Model& model, int node);
 
 // The element inside any joint wrappers (an element with joints at both ends
 // is wrapped twice).

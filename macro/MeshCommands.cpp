@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "elements/ElementFactory.h"
+#include "elements/Joints.h"
 #include "elements/MaterialUpdate.h"
 #include "macro/Expression.h"
 #include "macro/Limits.h"
@@ -1222,7 +1223,8 @@ void registerMaterialSubRecords(CommandRegistry& r) {
       "(the broken section's residual moment), a moment Mr opposing its relative rotation, "
       "regularised over the step's relative rotation w: Mr w/sqrt(w^2 + eps^2), eps = Mr "
       "l/EI; dissipated (energy account). Only where the joint is condensed into the "
-      "element: a joint with more than one element at its slave node rejects Mr > 0.",
+      "element: a JOINt whose slave node has more than one element (or nodal data) with "
+      "Mr > 0 is an error at its record.",
       {text("LINEar", ""), expr("Mu", "ultimate moment"), expr("Ks", "softening modulus"),
        expr("thetaR", "rupture rotation of the joint (optional)"),
        expr("Mr", "friction moment of the joint (optional, 0)")}));
@@ -1338,6 +1340,17 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
           whereText,
           ctx.maxElements > 0 ? "define it, or set numel to 0 to have elements counted"
                               : "element numbers must run from 1 without gaps");
+
+  // A joint friction moment (SOFTening's Mr) acts on a joint condensed into
+  // its one slave element; on a joint shared by more it would be ignored.
+  for (const auto& j : ctx.joints)
+    if (const Joint joint{j.master - 1, j.slave - 1, JointForm::Condensed};
+        jointFriction(model, joint.slave) > 0 && !condensable(model, joint))
+      failAt(j.origin, 1,
+             "the joint friction Mr of the materials at node " + std::to_string(j.slave) +
+                 " needs a joint condensed into one element: the slave node has more than one "
+                 "element, nodal data, or is the master of another joint",
+             "give the slave node one element only, or leave Mr out");
 
   if (ctx.topologyChanged) model.bumpTopology();
   ctx.elements.clear();

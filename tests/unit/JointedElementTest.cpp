@@ -60,6 +60,15 @@ ElemVec rigidMotion(const Vec2& x1, const Vec2& x2, double w, const Vec2& t) {
   return d;
 }
 
+// Trial `trial` of the tangent checks: a rigid turn of 0.8 trial rad from t_n,
+// perturbed by `scale`, with random rates and accelerations at t_n.
+ElementKinematics trialKinematics(std::mt19937& gen, const Vec2& x1, const Vec2& x2, int trial,
+                                  double scale) {
+  return {rigidMotion(x1, x2, 0.8 * trial, Vec2(0.2, -0.1)) + test::randomVec(gen, scale),
+          rigidMotion(x1, x2, 0.8 * trial - 0.1, Vec2(0.1, 0)) + test::randomVec(gen, scale),
+          test::randomVec(gen, 1.0), test::randomVec(gen, 5.0)};
+}
+
 using TangentCase = std::tuple<Scheme, Inner, int>;
 class JointedElementTangent : public ::testing::TestWithParam<TangentCase> {};
 
@@ -75,10 +84,7 @@ TEST_P(JointedElementTangent, CondensedTangentMatchesCentralDifferences) {
   const StepRule rule = ruleFor(scheme);
   const double scale = kind == Inner::Reissner ? 0.15 : 0.05;
   for (int trial = 0; trial < 3; ++trial) {
-    const ElementKinematics kin{
-        rigidMotion(x1, x2, 0.8 * trial, Vec2(0.2, -0.1)) + test::randomVec(gen, scale),
-        rigidMotion(x1, x2, 0.8 * trial - 0.1, Vec2(0.1, 0)) + test::randomVec(gen, scale),
-        test::randomVec(gen, 1.0), test::randomVec(gen, 5.0)};
+    const ElementKinematics kin = trialKinematics(gen, x1, x2, trial, scale);
     ElemVec r;
     ElemMat k;
     ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
@@ -127,10 +133,7 @@ TEST(JointedElement, FrictionTangentMatchesCentralDifferences) {
         const StepRule rule = ruleFor(scheme);
         const double scale = kind == Inner::Reissner ? 0.15 : 0.05;
         for (int trial = 0; trial < 3; ++trial) {
-          const ElementKinematics kin{
-              rigidMotion(x1, x2, 0.8 * trial, Vec2(0.2, -0.1)) + test::randomVec(gen, scale),
-              rigidMotion(x1, x2, 0.8 * trial - 0.1, Vec2(0.1, 0)) + test::randomVec(gen, scale),
-              test::randomVec(gen, 1.0), test::randomVec(gen, 5.0)};
+          const ElementKinematics kin = trialKinematics(gen, x1, x2, trial, scale);
           ElemVec r;
           ElemMat k;
           ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
