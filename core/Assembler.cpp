@@ -303,15 +303,18 @@ double Assembler::contactEnergy(const State& s) const {
   return w;
 }
 
-void Assembler::commitGround(State& s) const {
+double Assembler::commitContact(State& s) {
+  const double released = members_ ? members_->commit(model_, s, pushedThrough_) : 0.0;
+  pushedThroughEnergy_ += released;
   const auto& ground = model_.ground();
-  if (!ground) return;
+  if (!ground) return released;
   for (int n = 0; n < model_.numNodes(); ++n) {
     const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs;
     s.crush[n] = loadingPoint(*ground, s.crush[n], model_.coord(n).y() + s.u[i + 1]);
   }
   const Eigen::VectorXd& stretches = stretchesOf(s);
   if (&stretches != &s.stretch) s.stretch = stretches;
+  return released;
 }
 
 const Eigen::VectorXd& Assembler::stretchesOf(const State& s) const {

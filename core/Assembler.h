@@ -77,9 +77,21 @@ class Assembler {
   // Energies at the last assembled state.
   double strainEnergy() const;
   double contactEnergy(const State& s) const;  // ground and member contact penalty energy
-  // The ground contact's state at the end of the last assembled step into s
-  // when it is committed: the loading points and the friction stretches.
-  void commitGround(State& s) const;
+  // The contacts' state at the end of the last assembled step into s when it
+  // is committed: the ground's loading points and friction stretches, the
+  // member contact pairs' memory. Returns the energy that released without
+  // work (MemberContact::commit).
+  double commitContact(State& s);
+  // Member contact pairs whose node was pushed past the member's centre line
+  // while in contact, since the assembler was made, and the energy released.
+  int pushedThrough() const { return pushedThrough_; }
+  double pushedThroughEnergy() const { return pushedThroughEnergy_; }
+  // After the member contact starts or the topology changes (s committed):
+  // pairs set free inside each other's contact distance start at zero force
+  // (MemberContact::openPairs).
+  void openContacts(State& s) const {
+    if (members_) members_->openPairs(model_, s);
+  }
   double kineticEnergy(const State& s) const;
   // Linear momentum and angular momentum about the origin (counterclockwise)
   // of the elements and nodal masses at s (positions X + u).
@@ -128,6 +140,8 @@ class Assembler {
   double forceScale_ = 0;
 
   std::unique_ptr<MemberContact> members_;
+  int pushedThrough_ = 0;
+  double pushedThroughEnergy_ = 0;
   std::vector<std::uint64_t> patternPairs_;   // sorted keys of the pairs in the pattern
   bool patternPending_ = false;  // refreshed with member contact: built at the next assembly
   std::vector<std::array<int, 36>> pairPos_;  // per pattern pair: index into K_ values

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/CrushingLaw.h"
+#include "core/SpringFriction.h"
+
 namespace c2d {
 
 namespace {
@@ -102,70 +105,222 @@ double pairPenetration(const PairPositions& q, int side, double h) {
   return p.p;
 }
 
-bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, double h, double k,
-                 double alpha, const StepRule& rule, bool wantTangent, PairVec& force,
-                 PairMat& tangent) {
-  const Vec4 z0 = relative(q0), z1 = relative(q1);
-  Penetration e1;
-  penetration(z1, side, h, wantTangent && rule.scheme != Scheme::MidPoint, e1);
-  const double p1 = e1.p;
-  Vec4 fz;
-  Mat4 kz;
-  if (rule.scheme != Scheme::MidPoint) {
-    if (p1 <= 0) return false;
-    fz = k * p1 * e1.g;
-    if (wantTangent) kz = k * (e1.g * e1.g.transpose() + p1 * e1.H);
-    toPair(fz, wantTangent ? &kz : nullptr, force, wantTangent ? &tangent : nullptr);
-    return true;
-  }
-  Penetration e0;
-  penetration(z0, side, h, false, e0);
-  const double p0 = e0.p;
-  if (p0 <= 0 && p1 <= 0) return false;
-  // phi'(p0, p1): the discrete derivative of k <p>^2 / 2, in closed form per
-  // branch (see core/GroundContact.cpp), and its derivative w.r.t. p1.
-  const double dp = p1 - p0;
-  double w = 0, dw = 0;
-  if (p0 > 0 && p1 > 0) {
-    w = 0.5 * k * (p0 + p1);
-    dw = 0.5 * k;
-  } else if (p1 > 0) {
-    w = 0.5 * k * p1 * p1 / dp;
-    dw = k * p1 / dp - 0.5 * k * p1 * p1 / (dp * dp);
-  } else {
-    w = -0.5 * k * p0 * p0 / dp;
-    dw = 0.5 * k * p0 * p0 / (dp * dp);
-  }
-  if (alpha > 0) {
-    w += alpha * k * (std::max(p1, 0.0) - std::max(p0, 0.0));
-    if (p1 > 0) dw += alpha * k;
-  }
-  // D: the discrete gradient of p (Gonzalez) between z0 and z1. Below a
-  // relative step of 1e-7 the correction, O(|dz|^2), is left out: there its
-  // round-off (eps |z| / |dz|) would exceed it.
-  const Vec4 dz = z1 - z0, zm = 0.5 * (z0 + z1);
-  Penetration em;
-  penetration(zm, side, h, wantTangent, em);
+namespace {
+
+// The node's position along the segment, c = r1.r2 / |r2| (measured from a),
+// its gradient and Hessian in z: the coordinate of the pair's friction.
+void slipCoordinate(const Vec4& z, bool wantHessian, Penetration& out) {
+  out.g.setZero();
+  if (wantHessian) out.H.setZero();
+  const Vec2 r1 = z.head<2>(), r2 = z.tail<2>();
+  const double l2 = r2.squaredNorm();
+  out.p = 0;
+  if (l2 == 0) return;
+  const double l = std::sqrt(l2), l3 = l2 * l;
+  const double c = r1.dot(r2) / l;
+  out.p = c;
+  out.g.head<2>() = r2 / l;
+  out.g.tail<2>() = r1 / l - c * r2 / l2;
+  if (!wantHessian) return;
+  const Mat2 h12 = Mat2::Identity() / l - r2 * r2.transpose() / l3;
+  const Mat2 h22 = -(r1 * r2.transpose() + r2 * r1.transpose()) / l3 +
+                   3 * c * r2 * r2.transpose() / (l2 * l2) - c * Mat2::Identity() / l2;
+  out.H.topRightCorner<2, 2>() = h12;
+  out.H.bottomLeftCorner<2, 2>() = h12.transpose();
+  out.H.bottomRightCorner<2, 2>() = h22;
+}
+
+// The discrete gradient (Gonzalez) of a function f of z between z0 and z1:
+// D = grad f(z_m) + (f1 - f0 - grad f(z_m).dz) dz / |dz|^2, so that D.dz = f1 - f0,
+// and, times w, its derivative with respect to z1 (wdD). em: f at z_m with its
+// Hessian; g1: grad f(z1). Below a relative step of 1e-7 the correction,
+// O(|dz|^2), is left out: there its round-off (eps |z| / |dz|) would exceed it.
+Vec4 discreteGradient(const Vec4& z0, const Vec4& z1, double f0, double f1, const Penetration& em,
+                      const Vec4& g1, double scale, double w, Mat4* wdD) {
+  const Vec4 dz = z1 - z0;
   const double n2 = dz.squaredNorm();
-  const double scale = z0.norm() + z1.norm() + h;
   const bool corrected = n2 > 1e-14 * scale * scale;
-  double c = 0;
   Vec4 D = em.g;
+  double c = 0;
   if (corrected) {
-    c = (p1 - p0 - em.g.dot(dz)) / n2;
+    c = (f1 - f0 - em.g.dot(dz)) / n2;
     D += c * dz;
   }
-  fz = w * D;
-  if (wantTangent) {
-    kz = D * (dw * e1.g).transpose() + 0.5 * w * em.H;
+  if (wdD) {
+    *wdD = 0.5 * w * em.H;
     if (corrected) {
-      const Vec4 dc = (e1.g - em.g - 0.5 * em.H * dz) / n2 - 2 * c * dz / n2;
-      kz += w * (c * Mat4::Identity() + dz * dc.transpose());
+      const Vec4 dc = (g1 - em.g - 0.5 * em.H * dz) / n2 - 2 * c * dz / n2;
+      *wdD += w * (c * Mat4::Identity() + dz * dc.transpose());
+    }
+  }
+  return D;
+}
+
+}  // namespace
+
+bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, double h,
+                 const PairLaw& law, const StepRule& rule, bool wantTangent, PairVec& force,
+                 PairMat& tangent, PairOutcome* outcome) {
+  const Vec4 z0 = relative(q0), z1 = relative(q1);
+  const double k = law.k;
+  const bool crushes = law.restitution < 1, midPoint = rule.scheme == Scheme::MidPoint;
+  const bool rubs = law.mu > 0;
+  Penetration e0, e1;
+  penetration(z0, side, h, false, e0);
+  penetration(z1, side, h, wantTangent && !midPoint, e1);
+  const double p0 = e0.p, p1 = e1.p;
+  if (outcome) *outcome = PairOutcome{p0, p1, 0.0, 0.0};
+  // Out of contact over the step: no force, and the friction spring lets go.
+  const bool touches = midPoint ? (p0 > 0 || p1 > 0) : p1 > 0;
+  if (!touches) {
+    if (outcome) outcome->slipped = springFrictionEnergy(k, law.stretch);
+    return false;
+  }
+  // The normal law: w, its derivative dw w.r.t. p1, and the normal force N
+  // (without the dissipative term) with dN/dp1.
+  double w = 0, dw = 0;
+  if (!midPoint) {
+    w = k * p1;
+    dw = k;
+    if (crushes) {
+      const CrushingLaw crush(k, law.restitution, std::max(law.q, p0));
+      w = crush.force(p1);
+      dw = crush.slope(p1);
+    }
+  } else {
+    // phi'(p0, p1): the discrete derivative of the law's energy (k <p>^2 / 2
+    // when elastic), in closed form per branch (see core/GroundContact.cpp).
+    const double dp = p1 - p0;
+    if (crushes) {
+      CrushingLaw(k, law.restitution, std::max(law.q, p0)).midPoint(p0, p1, w, dw);
+    } else if (p0 > 0 && p1 > 0) {
+      w = 0.5 * k * (p0 + p1);
+      dw = 0.5 * k;
+    } else if (p1 > 0) {
+      w = 0.5 * k * p1 * p1 / dp;
+      dw = k * p1 / dp - 0.5 * k * p1 * p1 / (dp * dp);
+    } else {
+      w = -0.5 * k * p0 * p0 / dp;
+      dw = 0.5 * k * p0 * p0 / (dp * dp);
+    }
+  }
+  const double N = std::max(w, 0.0), dN = w > 0 ? dw : 0.0;
+  if (midPoint && law.alpha > 0) {
+    w += law.alpha * k * (std::max(p1, 0.0) - std::max(p0, 0.0));
+    if (p1 > 0) dw += law.alpha * k;
+  }
+  const double scale = z0.norm() + z1.norm() + h;
+  Vec4 fz;
+  Mat4 kz, wdD;
+  if (!midPoint) {
+    fz = w * e1.g;
+    if (wantTangent) kz = dw * e1.g * e1.g.transpose() + w * e1.H;
+  } else {
+    Penetration em;
+    penetration(0.5 * (z0 + z1), side, h, wantTangent, em);
+    const Vec4 D = discreteGradient(z0, z1, p0, p1, em, e1.g, scale, w, wantTangent ? &wdD : nullptr);
+    fz = w * D;
+    if (wantTangent) kz = D * (dw * e1.g).transpose() + wdD;
+  }
+  // Friction along the segment: the spring law on the slip coordinate c, its
+  // force F = -f on c (an internal force, as the penalty's) through the
+  // coordinate's gradient (discrete gradient under the mid-point scheme).
+  if (rubs) {
+    Penetration c0, c1;
+    slipCoordinate(z0, false, c0);
+    slipCoordinate(z1, wantTangent && !midPoint, c1);
+    const SpringFrictionForce fr =
+        springFriction(k, law.mu, N, c0.p - law.stretch, c0.p, c1.p, midPoint);
+    const double F = -fr.force;
+    if (outcome) {
+      outcome->stretch = c1.p - fr.anchor;
+      outcome->slipped = fr.slipped;
+    }
+    const Vec4 dF = -fr.dx * c1.g - fr.dN * dN * e1.g;  // dF/dz1
+    if (!midPoint) {
+      fz += F * c1.g;
+      if (wantTangent) kz += c1.g * dF.transpose() + F * c1.H;
+    } else {
+      Penetration cm;
+      slipCoordinate(0.5 * (z0 + z1), wantTangent, cm);
+      const Vec4 Dc =
+          discreteGradient(z0, z1, c0.p, c1.p, cm, c1.g, scale, F, wantTangent ? &wdD : nullptr);
+      fz += F * Dc;
+      if (wantTangent) kz += Dc * dF.transpose() + wdD;
     }
   }
   toPair(fz, wantTangent ? &kz : nullptr, force, wantTangent ? &tangent : nullptr);
   return true;
 }
+
+namespace {
+
+// Joint groups merged further with the nodes at one reference position: the
+// nodes of the original mesh (a joint that ruptured still joins its two nodes
+// here).
+std::vector<int> originalGroups(const Model& model, const std::vector<int>& groups) {
+  const int nn = model.numNodes();
+  std::vector<int> parent = groups, order(nn);
+  auto find = [&](int n) {
+    while (parent[n] != n) n = parent[n] = parent[parent[n]];
+    return n;
+  };
+  std::iota(order.begin(), order.end(), 0);
+  auto less = [&](int a, int b) {
+    const Vec2 &x = model.coord(a), &y = model.coord(b);
+    return x.x() < y.x() || (x.x() == y.x() && x.y() < y.y());
+  };
+  std::sort(order.begin(), order.end(), less);
+  for (int i = 1; i < nn; ++i)
+    if (!less(order[i - 1], order[i])) {
+      const int a = find(order[i - 1]), b = find(order[i]);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  for (int n = 0; n < nn; ++n) parent[n] = find(n);
+  return parent;
+}
+
+// The node groups joined by the live elements.
+class GroupGraph {
+ public:
+  GroupGraph(const Model& model, const std::vector<int>& live, std::vector<int> group)
+      : model_(model), group_(std::move(group)), start_(group_.size() + 1, 0) {
+    for (int e : live)
+      for (int n : model.element(e).nodes()) ++start_[group_[n] + 1];
+    for (std::size_t g = 1; g < start_.size(); ++g) start_[g] += start_[g - 1];
+    elements_.resize(start_.back());
+    std::vector<int> fill(start_.begin(), start_.end() - 1);
+    for (int e : live)
+      for (int n : model.element(e).nodes()) elements_[fill[group_[n]]++] = e;
+  }
+  // Elements on the shortest path from node n's group to a node of element e
+  // (0: e has a node in it), counted up to maxHops; beyond: maxHops + 1.
+  int hops(int n, int e, int maxHops) const {
+    const auto target = model_.element(e).nodes();
+    std::vector<int> frontier{group_[n]}, seen{group_[n]}, next;
+    for (int depth = 0; depth <= maxHops; ++depth) {
+      for (int g : frontier)
+        if (g == group_[target[0]] || g == group_[target[1]]) return depth;
+      next.clear();
+      for (int g : frontier)
+        for (int i = start_[g]; i < start_[g + 1]; ++i)
+          for (int m : model_.element(elements_[i]).nodes())
+            if (std::find(seen.begin(), seen.end(), group_[m]) == seen.end()) {
+              seen.push_back(group_[m]);
+              next.push_back(group_[m]);
+            }
+      frontier.swap(next);
+    }
+    return maxHops + 1;
+  }
+
+ private:
+  const Model& model_;
+  std::vector<int> group_;
+  std::vector<int> start_, elements_;
+};
+
+}  // namespace
 
 std::vector<int> jointGroups(const Model& model) {
   std::vector<int> parent(model.numNodes());
@@ -226,8 +381,14 @@ MemberContact::MemberContact(const Model& model, const DofMap& dofs)
     b.add(model.coord(nodes[1]).x(), model.coord(nodes[1]).y());
     boxes[i] = b.inflated(elementRadius_[e]);
   }
+  // Such a pair stays excluded while the members between them hold: while the
+  // node is as few elements from the segment as in the original mesh (joints
+  // that ruptured since are counted as broken), or when it was not within a
+  // few elements of it there.
   ContactGrid grid;
   grid.build(boxes, 1e-6 * shortest);
+  const GroupGraph now(model, live_, group_), original(model, live_, originalGroups(model, group_));
+  constexpr int kNearHops = 3;
   for (int n : contactNodes_) {
     const Vec2& x = model.coord(n);
     grid.query(Box::point(x.x(), x.y()).inflated(nodeRadius_[n]), [&](int i) {
@@ -237,7 +398,9 @@ MemberContact::MemberContact(const Model& model, const DofMap& dofs)
       const PairPositions q{x, model.coord(nodes[0]), model.coord(nodes[1])};
       const double h = nodeRadius_[n] + elementRadius_[e];
       // Without a side: the distance itself (p = h - |d| inside the span).
-      if (pairPenetration(q, pairSide(q), h) > 0)
+      if (pairPenetration(q, pairSide(q), h) <= 0) return;
+      const int was = original.hops(n, e, kNearHops);
+      if (was > kNearHops || now.hops(n, e, was) <= was)
         referenceExcluded_.push_back(ContactPair{n, e}.key());
     });
   }
@@ -327,38 +490,126 @@ bool MemberContact::positions(const ContactPair& pair, const Model& model, const
   return node.inflated(pair.h + extra).overlaps(seg);
 }
 
+const PairMemory* MemberContact::memory(const State& s, std::uint64_t key) {
+  const auto it = std::lower_bound(s.pairs.begin(), s.pairs.end(), key,
+                                   [](const PairMemory& m, std::uint64_t k) { return m.key < k; });
+  return it != s.pairs.end() && it->key == key ? &*it : nullptr;
+}
+
 bool MemberContact::evaluate(const ContactPair& pair, const Model& model, const State& s,
                              const StepRule& rule, bool wantTangent, PairVec& force,
                              PairMat& tangent) const {
+  lastRule_ = rule;
   PairPositions q0, q1;
   if (!positions(pair, model, s, q0, q1)) return false;
-  return pairContact(q0, q1, pairSide(q0), pair.h, data_.k, alpha(rule), rule, wantTangent, force,
+  const PairMemory* m = memory(s, pair.key());
+  return pairContact(q0, q1, pairSide(q0), reach(pair, m), law(rule, m), rule, wantTangent, force,
                      tangent);
+}
+
+PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, const State& s,
+                                   const StepRule& rule, double* full) const {
+  PairPositions q0, q1;
+  const PairMemory* m = memory(s, pair.key());
+  if (!positions(pair, model, s, q0, q1)) {  // apart: a friction spring lets go
+    if (full) *full = 0;
+    PairOutcome out;
+    if (m) out.slipped = springFrictionEnergy(data_.k, m->stretch);
+    return out;
+  }
+  if (full) *full = pairPenetration(q1, pairSide(q0), pair.h);
+  PairOutcome out;
+  if (q0.x == q1.x && q0.a == q1.a && q0.b == q1.b) {
+    // No step (the committed state itself): nothing slides or lets go; the
+    // energy is that of the memory (so that the account sees no jump where a
+    // commit in place or a topology change evaluates it).
+    out.p0 = out.p1 = pairPenetration(q1, pairSide(q0), reach(pair, m));
+    out.stretch = m ? m->stretch : 0.0;
+    return out;
+  }
+  PairVec f;
+  PairMat k;
+  pairContact(q0, q1, pairSide(q0), reach(pair, m), law(rule, m), rule, false, f, k, &out);
+  return out;
 }
 
 double MemberContact::energy(const Model& model, const State& s) const {
   double w = 0;
-  PairPositions q0, q1;
   for (const ContactPair& pair : candidates(model, s)) {
-    if (!positions(pair, model, s, q0, q1)) continue;
-    const double p = pairPenetration(q1, pairSide(q0), pair.h);
-    if (p > 0) w += 0.5 * data_.k * p * p;
+    const PairMemory* m = memory(s, pair.key());
+    const PairOutcome o = outcome(pair, model, s, lastRule_);
+    w += crushingEnergy(data_.k, data_.restitution, m ? m->q : 0.0, o.p1) +
+         springFrictionEnergy(data_.k, o.stretch);
   }
   return w;
 }
 
 double MemberContact::dissipation(const Model& model, const State& s, const StepRule& rule) const {
-  const double a = alpha(rule);
-  if (rule.scheme != Scheme::MidPoint || a <= 0) return 0;
+  const double a = rule.scheme == Scheme::MidPoint ? alpha(rule) : 0.0;
+  const bool crushes = data_.restitution < 1;
+  if (a <= 0 && !crushes && data_.mu <= 0) return 0;
   double d = 0;
-  PairPositions q0, q1;
   for (const ContactPair& pair : candidates(model, s)) {
-    if (!positions(pair, model, s, q0, q1)) continue;
-    const int side = pairSide(q0);
-    const double p0 = pairPenetration(q0, side, pair.h), p1 = pairPenetration(q1, side, pair.h);
-    d += a * data_.k * (std::max(p1, 0.0) - std::max(p0, 0.0)) * (p1 - p0);
+    const PairMemory* m = memory(s, pair.key());
+    const PairOutcome o = outcome(pair, model, s, rule);
+    if (crushes) d += CrushingLaw(data_.k, data_.restitution, m ? m->q : 0.0).dissipated(o.p0, o.p1);
+    d += a * data_.k * (std::max(o.p1, 0.0) - std::max(o.p0, 0.0)) * (o.p1 - o.p0) + o.slipped;
   }
   return d;
+}
+
+double MemberContact::commit(const Model& model, State& s, int& pushed) const {
+  const std::vector<ContactPair>& pairs = candidates(model, s);
+  nextMemory_.clear();
+  if (nextMemory_.capacity() < pairs.size()) nextMemory_.reserve(2 * pairs.size());
+  double released = 0;
+  PairPositions q0, q1;
+  for (const ContactPair& pair : pairs) {
+    const PairMemory* m = memory(s, pair.key());
+    double full = 0;
+    const PairOutcome o = outcome(pair, model, s, lastRule_, &full);
+    PairMemory next{pair.key(), 0.0, 0.0, o.stretch};
+    // The offset shrinks with the penetration at the full distance (never
+    // while the pair presses on: its force and energy are unchanged).
+    if (m) next.offset = std::min(m->offset, std::max(full, 0.0));
+    if (o.p1 > 0) {
+      next.q = std::max(m ? m->q : 0.0, o.p1);
+      if (positions(pair, model, s, q0, q1) && pairSide(q1) != pairSide(q0)) {
+        // Seen from the new side the penetration is smaller (the loading point
+        // kept, so that the energy only drops).
+        const double seen = pairPenetration(q1, pairSide(q1), reach(pair, m));
+        released += crushingEnergy(data_.k, data_.restitution, next.q, o.p1) -
+                    crushingEnergy(data_.k, data_.restitution, next.q, seen);
+        if (seen <= 0) next.q = 0;
+        ++pushed;
+      }
+    }
+    if (next.q > 0 || next.offset > 0 || next.stretch != 0) nextMemory_.push_back(next);
+  }
+  // Candidates are sorted by key, so is the memory. Copied, with room to
+  // double, so that steps allocate nothing while the contacts change little.
+  if (s.pairs.capacity() < nextMemory_.size()) s.pairs.reserve(2 * nextMemory_.size());
+  s.pairs.assign(nextMemory_.begin(), nextMemory_.end());
+  return released;
+}
+
+void MemberContact::openPairs(const Model& model, State& s) const {
+  // Room for four pairs in contact per node before a commit must allocate.
+  const std::size_t room = 4 * contactNodes_.size();
+  if (s.pairs.capacity() < room) s.pairs.reserve(room);
+  if (nextMemory_.capacity() < room) nextMemory_.reserve(room);
+  PairPositions q0, q1;
+  bool added = false;
+  for (const ContactPair& pair : candidates(model, s)) {
+    if (memory(s, pair.key()) || !positions(pair, model, s, q0, q1)) continue;
+    const double p = pairPenetration(q1, pairSide(q1), pair.h);
+    if (p <= 0) continue;
+    s.pairs.push_back({pair.key(), 0.0, p, 0.0});
+    added = true;
+  }
+  if (added)
+    std::sort(s.pairs.begin(), s.pairs.end(),
+              [](const PairMemory& a, const PairMemory& b) { return a.key < b.key; });
 }
 
 }  // namespace c2d

@@ -56,13 +56,27 @@ int pairSide(const PairPositions& q);
 // Penetration of the pair for the side s and contact distance h (see above).
 double pairPenetration(const PairPositions& q, int side, double h);
 
+// The force law of a pair: penalty stiffness k, dissipation alpha (mid-point
+// scheme), restitution e and the pair's loading point q at t_n
+// (core/CrushingLaw.h; e = 1: elastic, q unused).
+struct PairLaw {
+  double k = 0, alpha = 0, restitution = 1, q = 0;
+  double mu = 0, stretch = 0;  // friction coefficient, the friction spring's stretch at t_n
+};
+
+// What a pair's step did: its penetrations at t_n and t_n+1, the friction
+// spring's stretch at t_n+1 and the energy its sliding (or letting go) took.
+struct PairOutcome {
+  double p0 = 0, p1 = 0, stretch = 0, slipped = 0;
+};
+
 // The pair's contact force (added to the residual as an internal force: the
 // gradient of the energy) and its derivative with respect to the positions at
 // t_n+1, for the positions at t_n (q0) and t_n+1 (q1). False, with nothing
 // written, when the pair carries no force.
-bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, double h, double k,
-                 double alpha, const StepRule& rule, bool wantTangent, PairVec& force,
-                 PairMat& tangent);
+bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, double h,
+                 const PairLaw& law, const StepRule& rule, bool wantTangent, PairVec& force,
+                 PairMat& tangent, PairOutcome* outcome = nullptr);
 
 // One node-segment pair of the model.
 struct ContactPair {
@@ -91,14 +105,29 @@ class MemberContact {
   const std::vector<ContactPair>& candidates(const Model& model, const State& s) const;
   int candidatesVersion() const { return candidatesVersion_; }
 
-  // Force and tangent of a candidate pair at s (false: no force).
+  // Force and tangent of a candidate pair at s (false: no force), with the
+  // pair's memory in s.pairs.
   bool evaluate(const ContactPair& pair, const Model& model, const State& s, const StepRule& rule,
                 bool wantTangent, PairVec& force, PairMat& tangent) const;
 
-  // Stored energy at the trial state s (sides from its committed state), and
-  // the energy the dissipative term took over the step from t_n to t_n+1.
+  // Stored energy at the trial state s (sides and memory from its committed
+  // state), and the energy the crushing and the dissipative term took over the
+  // step from t_n to t_n+1.
   double energy(const Model& model, const State& s) const;
   double dissipation(const Model& model, const State& s, const StepRule& rule) const;
+
+  // At a commit: the memory of every pair in contact at the end of the step
+  // (its loading point, friction stretch and shrinking offset) into s.pairs.
+  // Returns the energy released: a pair whose node ended the step past the
+  // segment's centre line is seen from its new side from then on, and the
+  // energy it stored from the old side is gone (its force pushed the node on);
+  // `pushed` counts such pairs.
+  double commit(const Model& model, State& s, int& pushed) const;
+  // When the contact starts or the topology changes (s committed): a pair now
+  // free to contact that is already inside its contact distance (the pieces of
+  // a joint that ruptured) and has no memory gets the offset of its present
+  // penetration, so that it starts at zero force.
+  void openPairs(const Model& model, State& s) const;
 
   // The pair's swept boxes are within contact distance plus `extra` at s.
   bool near(const ContactPair& pair, const Model& model, const State& s, double extra) const {
@@ -118,6 +147,20 @@ class MemberContact {
                  PairPositions& q1, double extra = 0) const;
   double alpha(const StepRule& rule) const { return data_.alpha >= 0 ? data_.alpha : rule.alpha; }
   bool excluded(int node, int element, const Model& model) const;
+  // The pair's memory at the last commit (null: none).
+  static const PairMemory* memory(const State& s, std::uint64_t key);
+  // Contact distance of a pair with the memory m (or none).
+  // The pair's step at s under the rule (and its penetration at the full
+  // contact distance, without offset, at t_n+1).
+  PairOutcome outcome(const ContactPair& pair, const Model& model, const State& s,
+                      const StepRule& rule, double* full = nullptr) const;
+  static double reach(const ContactPair& pair, const PairMemory* m) {
+    return m ? pair.h - m->offset : pair.h;
+  }
+  PairLaw law(const StepRule& rule, const PairMemory* m) const {
+    return {data_.k, alpha(rule), data_.restitution, m ? m->q : 0.0, data_.mu,
+            m ? m->stretch : 0.0};
+  }
 
   MemberContactData data_;
   std::vector<int> contactNodes_;                 // used and not aliased
@@ -134,6 +177,10 @@ class MemberContact {
   mutable std::vector<Box> boxes_;  // per entry of live_
   mutable std::vector<Box> anchor_;  // per node: its swept box at the last search
   mutable std::vector<ContactPair> candidates_;
+  mutable std::vector<PairMemory> nextMemory_;  // commit's scratch
+  // The rule of the last evaluation: the friction springs' stretches at a
+  // trial state are those of the step that was assembled (as the ground's).
+  mutable StepRule lastRule_;
   mutable int candidatesVersion_ = 0;
   mutable bool searched_ = false;
 };

@@ -38,7 +38,7 @@ struct Ground {
 // k, dissipation alpha as for the ground, and the contact radius of members whose
 // material gives no section (negative: 1e-3 of the shortest element).
 struct MemberContactData {
-  double k = 0, alpha = -1, radius = -1;
+  double k = 0, alpha = -1, radius = -1, restitution = 1, mu = 0;
 };
 
 // Uniform load per unit reference length on an element, global components

@@ -4,10 +4,25 @@
 // equation so that it survives a renumbering when the topology changes.
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
+#include <vector>
 
 #include "core/Element.h"
 
 namespace c2d {
+
+// What a member contact pair (node against element segment) keeps between
+// steps (core/MemberContact.h): its loading point q (the largest penetration
+// since the contact began, for the crushing law), the stretch of its friction
+// spring and its offset o, the
+// penetration the pair had when it first met (two members set free inside each
+// other's contact distance, at a joint that ruptured, start at zero force; o
+// shrinks as they separate).
+struct PairMemory {
+  std::uint64_t key = 0;  // ContactPair::key()
+  double q = 0, offset = 0;
+  double stretch = 0;  // the friction spring's stretch along the segment
+};
 
 struct State {
   Eigen::VectorXd u, v, a;     // trial: total displacement, velocity, acceleration
@@ -25,6 +40,9 @@ struct State {
   // Per node: the stretch x - a of its ground friction spring, a where it is
   // anchored (core/GroundContact.h; 0 off the ground). Committed only.
   Eigen::VectorXd stretch;
+  // The member contact pairs in contact at t_n (or with an offset), sorted by
+  // key. Committed only.
+  std::vector<PairMemory> pairs;
 
   void resize(int numNodes);   // keeps existing values, zero-fills new nodes
   // The values of an element with these nodes, in element dof order.

@@ -149,7 +149,8 @@ void writeModel(std::ostream& out, const Model& model) {
   putBool(out, model.memberContact().has_value());
   if (model.memberContact())
     for (double x :
-         {model.memberContact()->k, model.memberContact()->alpha, model.memberContact()->radius})
+         {model.memberContact()->k, model.memberContact()->alpha, model.memberContact()->radius,
+          model.memberContact()->restitution, model.memberContact()->mu})
       put(out, x);
   putFixed(out, model.gravity());
   // Floor loads, nodal masses, the site.
@@ -255,7 +256,7 @@ Model readModel(std::istream& in, int minTopologyVersion) {
   }
   if (getBool(in)) {
     MemberContactData c;
-    for (double* x : {&c.k, &c.alpha, &c.radius}) *x = get<double>(in);
+    for (double* x : {&c.k, &c.alpha, &c.radius, &c.restitution, &c.mu}) *x = get<double>(in);
     model.memberContact() = c;
   }
   getFixed(in, model.gravity());

@@ -819,17 +819,29 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
         failAt(r, 0,
                "a second MEMBers record (the first is on line " +
                    std::to_string(previousMembers->loc.line) + ")");
-      ctx.maxFields(r, 5, "MEMBers,,k[,alpha[,r]]");
+      ctx.maxFields(r, 7, "MEMBers,,k[,alpha[,r[,mu[,e]]]]");
       if (looksNumeric(r.text(1)))
-        failAt(r, 1, "MEMBers takes two text fields, then numbers", "write MEMBers,,k[,alpha[,r]]");
+        failAt(r, 1, "MEMBers takes two text fields, then numbers", "write MEMBers,,k[,alpha[,r[,mu[,e]]]]");
       MemberContactData c;
       c.k = ctx.number(r, 2);
-      if (c.k <= 0) failAt(r, 2, "penalty stiffness k must be positive");
+      if (c.k < 0) failAt(r, 2, "penalty stiffness k must not be negative", "0: no member contact");
       c.alpha = optional(r, 3, -1.0, "alpha", "leave it out for the integrator's");
       c.radius = optional(r, 4, -1.0, "the contact radius r", "leave it out for the default");
-      ctx.model.memberContact() = c;
-      ctx.topologyChanged = true;  // contact pairs enter the sparsity pattern
+      c.mu = optional(r, 5, 0.0, "the friction coefficient mu", "0 or absent: frictionless");
+      c.restitution = r.size() > 6 && !r[6].text.empty() ? ctx.number(r, 6) : 1.0;
+      if (!(c.restitution > 0 && c.restitution <= 1))
+        failAt(r, 6, "the restitution e must lie in (0, 1]", "1 or absent: an elastic impact");
       previousMembers = &r;
+      ctx.topologyChanged = true;  // contact pairs enter or leave the sparsity pattern
+      if (c.k == 0) {  // a study's switch: no member contact
+        ctx.model.memberContact().reset();
+        if (auto* os = ctx.out()) {
+          title(*os, "M e m b e r   C o n t a c t");
+          *os << "      off (k = 0)\n";
+        }
+        continue;
+      }
+      ctx.model.memberContact() = c;
       if (auto* os = ctx.out()) {
         title(*os, "M e m b e r   C o n t a c t");
         *os << "      k ";
@@ -840,14 +852,17 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
           num(*os, c.alpha);
         *os << "   r ";
         if (c.radius < 0)
-          *os << "(sections; 1e-3 of the shortest element without)\n";
+          *os << "(sections; 1e-3 of the shortest element without)";
         else
-          num(*os, c.radius) << "\n";
+          num(*os, c.radius);
+        if (c.mu > 0) num(*os << "   mu ", c.mu);
+        if (c.restitution < 1) num(*os << "   e ", c.restitution);
+        *os << "\n";
       }
       continue;
     }
     if (!r.is("GROUnd")) {
-      std::string hint = "the records are 'GROUnd,,y0,k[,alpha[,mu[,e]]]' and 'MEMBers,,k[,alpha[,r]]'";
+      std::string hint = "the records are 'GROUnd,,y0,k[,alpha[,mu[,e]]]' and 'MEMBers,,k[,alpha[,r[,mu[,e]]]]'";
       failAt(r, 0, "unknown contact type '" + r.text(0) + "'", hint);
     }
     if (previous)
@@ -1120,13 +1135,18 @@ std::vector<MeshCommandEntry> meshCommandTable() {
                 "(below 1 the contact crushes: loading with k beyond the largest penetration q "
                 "since the node touched down, unloading and reloading with k/e^2 below it, so "
                 "that a node strikes with speed v and leaves with e v; the work k(p^2 - "
-                "q^2)(1 - e^2)/2 is dissipated). MEMBers,,k[,alpha[,r]]: "
-                "frictionless contact of every node with every element it is not part of "
+                "q^2)(1 - e^2)/2 is dissipated). MEMBers,,k[,alpha[,r[,mu[,e]]]]: "
+                "contact of every node with every element it is not part of "
                 "(nor tied to by a joint), at the distance r_node + r_element with "
                 "r = sqrt(3 I/A), half the section depth (r: the radius of members whose "
-                "material has no A and I, default 1e-3 of the shortest element); pairs already "
-                "that close in the reference configuration never contact.",
-                {}, "GROUnd,,y0,k[,alpha[,mu[,e]]] and/or MEMBers,,k[,alpha[,r]]",
+                "material has no A and I, default 1e-3 of the shortest element); mu and e: "
+                "the ground's friction (along the member) and crushing law, per pair; k = 0: "
+                "no member contact (a study's switch). Pairs already that close in the "
+                "reference configuration do not contact while the members between them hold; "
+                "a joint that ruptures sets them free, and pieces inside each other's contact "
+                "distance then start at zero force, their full distance returning as they "
+                "separate.",
+                {}, "GROUnd,,y0,k[,alpha[,mu[,e]]] and/or MEMBers,,k[,alpha[,r[,mu[,e]]]]",
                 {text("GROUnd", "contact type (or MEMBers)"), text("", "empty"),
                  expr("y0", "ground level (MEMBers: k)"),
                  expr("k", "penalty stiffness (MEMBers: alpha)"),

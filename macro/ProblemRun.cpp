@@ -189,6 +189,13 @@ void ProblemRun::reportCrossings() {
          << "\n";
   if (crossings.size() > shown)
     log_ << "  warning: " << crossings.size() - shown << " more pairs of members cross\n";
+  // Members that went through each other during the run, whatever the end.
+  if (const Assembler& a = analysis_->assembler(); a.pushedThrough() > 0)
+    log_ << "  warning: " << a.pushedThrough()
+         << " times a node in contact with a member was pushed past its centre line ("
+         << fmt("%.3e", a.pushedThroughEnergy())
+         << " kJ of contact energy released): the member contact is too soft for the impact, or "
+            "the pieces of a ruptured joint slid through each other\n";
 }
 
 void ProblemRun::reportDebris() {

@@ -83,6 +83,7 @@ void Analysis::setPathFollowing(std::optional<PathFollowing> p) {
 void Analysis::topologyChanged() {
   state_.resize(model_.numNodes());
   assembler_.refresh();
+  assembler_.openContacts(state_);
   topology_.index(model_);
   const int neq = assembler_.dofs().numEquations();
   const Eigen::Index nd = static_cast<Eigen::Index>(model_.numNodes()) * kNodeDofs;
@@ -610,7 +611,7 @@ Status Analysis::commitEvaluated() {
   for (auto& el : model_.elements())
     if (el) el->commit();
   hinges_.committed();
-  assembler_.commitGround(state_);
+  account_.released(assembler_.commitContact(state_));
   if (path_) {
     path_->endStep(stepInc_, stepDlambda_);
     path_->setStepScale(1.0);
@@ -678,6 +679,13 @@ void Analysis::writeState(std::ostream& out) const {
        {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an, &state_.crush,
         &state_.stretch})
     putVector(out, *x);
+  putCount(out, state_.pairs.size());
+  for (const PairMemory& m : state_.pairs) {
+    put(out, m.key);
+    put(out, m.q);
+    put(out, m.offset);
+    put(out, m.stretch);
+  }
   for (double x : {state_.t, state_.tn, state_.dt, state_.prop, state_.propn, state_.arcLambda,
                    state_.arcLambdan})
     put(out, x);
@@ -726,6 +734,13 @@ void Analysis::readState(std::istream& in) {
        {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an, &state_.crush,
         &state_.stretch})
     *x = getVector(in);
+  state_.pairs.resize(getCount(in));
+  for (PairMemory& m : state_.pairs) {
+    m.key = get<std::uint64_t>(in);
+    m.q = get<double>(in);
+    m.offset = get<double>(in);
+    m.stretch = get<double>(in);
+  }
   for (double* x : {&state_.t, &state_.tn, &state_.dt, &state_.prop, &state_.propn,
                     &state_.arcLambda, &state_.arcLambdan})
     *x = get<double>(in);

@@ -55,6 +55,12 @@ class EnergyAccount {
   // so that a jump the change made shows in the balance instead of being
   // taken back as dissipation in the next step.
   void restartFrom(const Energy& now) { storedN_ = now.kinetic + now.strain + now.contact; }
+  // Stored energy the commit released without work (a member contact whose
+  // node was pushed past the centre line of the member: core/MemberContact.h).
+  void released(double energy) {
+    storedN_ -= energy;
+    dissipated_ += energy;
+  }
   // Elements left the model at the committed state (solvers/MemberRemoval.h),
   // per node dof: their forces of the last commit and the constant loads that
   // left with them (weight, floor loads); `after`: the energies of the model

@@ -80,6 +80,9 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
         .add(model.ground()->alpha)
         .add(model.ground()->mu)
         .add(model.ground()->restitution);
+  loads.add(model.memberContact().has_value());
+  if (const auto& c = model.memberContact())
+    loads.add(c->k).add(c->alpha).add(c->radius).add(c->restitution).add(c->mu);
   // The blast plan: element sets, times, release times.
   elements.add(model.blasts().size());
   for (const Blast& b : model.blasts()) {

@@ -12,8 +12,10 @@
 
 #include "ContactTestSupport.h"
 #include "core/ContactGrid.h"
+#include "core/CrushingLaw.h"
 #include "core/MemberContact.h"
 #include "core/MemberCrossing.h"
+#include "core/SpringFriction.h"
 #include "elements/Joints.h"
 #include "solvers/TimeIntegrator.h"
 
@@ -70,14 +72,14 @@ TEST(MemberContactPair, TangentMatchesFiniteDifferencesUnderEveryRule) {
       const int side = pairSide(q0);
       PairVec f, fp, fm;
       PairMat K, unused;
-      if (!pairContact(q0, q1, side, hc, k, ti.alpha, rule, true, f, K)) continue;
+      if (!pairContact(q0, q1, side, hc, PairLaw{k, ti.alpha}, rule, true, f, K)) continue;
       PairMat fd;
       const double h = 1e-7;
       for (int i = 0; i < 6; ++i) {
         ASSERT_TRUE(
-            pairContact(q0, shifted(q1, i, h), side, hc, k, ti.alpha, rule, false, fp, unused));
+            pairContact(q0, shifted(q1, i, h), side, hc, PairLaw{k, ti.alpha}, rule, false, fp, unused));
         ASSERT_TRUE(
-            pairContact(q0, shifted(q1, i, -h), side, hc, k, ti.alpha, rule, false, fm, unused));
+            pairContact(q0, shifted(q1, i, -h), side, hc, PairLaw{k, ti.alpha}, rule, false, fm, unused));
         fd.col(i) = (fp - fm) / (2 * h);
       }
       EXPECT_LT((fd - K).cwiseAbs().maxCoeff(), 1e-6 * K.cwiseAbs().maxCoeff())
@@ -109,7 +111,7 @@ TEST(MemberContactPair, MidPointForceIsADiscreteGradient) {
       const int side = pairSide(q0);
       PairVec f;
       PairMat K;
-      if (!pairContact(q0, q1, side, hc, k, alpha, rule, false, f, K)) continue;
+      if (!pairContact(q0, q1, side, hc, PairLaw{k, alpha}, rule, false, f, K)) continue;
       PairVec dq;
       dq << q1.x - q0.x, q1.a - q0.a, q1.b - q0.b;
       const double u0 = pairEnergy(q0, side, hc, k), u1 = pairEnergy(q1, side, hc, k);
@@ -120,6 +122,93 @@ TEST(MemberContactPair, MidPointForceIsADiscreteGradient) {
       ++checked;
     }
   EXPECT_GE(checked, 12);
+}
+
+// Laws with crushing (loading points below, inside and beyond the steps'
+// penetrations) and friction (springs sticking, sliding, clamped at t_n).
+std::vector<PairLaw> inelasticLaws(double k, double alpha) {
+  std::vector<PairLaw> laws;
+  for (double q : {0.0, 0.03, 0.2})
+    for (double stretch : {0.0, 2e-3, -0.05}) {
+      PairLaw law{k, alpha, 0.4, q, 0.5, stretch};
+      laws.push_back(law);
+      law.mu = 0;  // crushing alone
+      if (stretch == 0) laws.push_back(law);
+      law.mu = 0.3;  // friction alone
+      law.restitution = 1;
+      if (q == 0) laws.push_back(law);
+    }
+  return laws;
+}
+
+TEST(MemberContactPair, CrushingAndFrictionTangentsMatchFiniteDifferences) {
+  const double k = 3e3, hc = 0.12;
+  int checked = 0;
+  for (const TimeIntegrator& ti :
+       {TimeIntegrator::statics(), TimeIntegrator::newmark(0.25, 0.5),
+        TimeIntegrator::midPoint(0, 0), TimeIntegrator::midPoint(0.2, 0)})
+    for (const PairLaw& law : inelasticLaws(k, ti.alpha))
+      for (const auto& [q0, q1] : pairCases()) {
+        const StepRule rule = ti.rule(0.01);
+        const int side = pairSide(q0);
+        PairVec f, fp, fm;
+        PairMat K, unused;
+        if (!pairContact(q0, q1, side, hc, law, rule, true, f, K) || K.isZero()) continue;
+        PairMat fd;
+        const double h = 1e-7;
+        for (int i = 0; i < 6; ++i) {
+          pairContact(q0, shifted(q1, i, h), side, hc, law, rule, false, fp, unused);
+          pairContact(q0, shifted(q1, i, -h), side, hc, law, rule, false, fm, unused);
+          fd.col(i) = (fp - fm) / (2 * h);
+        }
+        EXPECT_LT((fd - K).cwiseAbs().maxCoeff(), 1e-5 * K.cwiseAbs().maxCoeff())
+            << ti.describe() << " q " << law.q << " mu " << law.mu << " stretch " << law.stretch
+            << " x0 " << q0.x.transpose() << " x1 " << q1.x.transpose() << "\nK\n"
+            << K << "\nFD\n"
+            << fd;
+        EXPECT_LT((f.segment<2>(0) + f.segment<2>(2) + f.segment<2>(4)).norm(), 1e-12 * f.norm());
+        ++checked;
+      }
+  EXPECT_GE(checked, 300);
+}
+
+TEST(MemberContactPair, MidPointWorkIsStoredPlusDissipatedEnergy) {
+  // f . (q1 - q0) = (U1 - U0) + crushing + alpha term + friction's sliding,
+  // every dissipated part >= 0, with U the crushing law's energy at the loading
+  // point max(q, p) and the friction spring's k s^2 / 2.
+  const double k = 3e3, hc = 0.12;
+  int checked = 0;
+  for (double alpha : {0.0, 0.3})
+    for (const PairLaw& given : inelasticLaws(k, alpha))
+      for (const auto& [q0, q1] : pairCases()) {
+        const StepRule rule = TimeIntegrator::midPoint(alpha, 0).rule(0.01);
+        const int side = pairSide(q0);
+        // A loading point is kept only while in contact.
+        PairLaw law = given;
+        if (pairPenetration(q0, side, hc) <= 0) law.q = 0;
+        PairVec f;
+        PairMat K;
+        PairOutcome out;
+        if (!pairContact(q0, q1, side, hc, law, rule, false, f, K, &out)) continue;
+        PairVec dq;
+        dq << q1.x - q0.x, q1.a - q0.a, q1.b - q0.b;
+        const double p0 = out.p0, p1 = out.p1;
+        const double qn = crushingLoadingPoint(law.q, p0);
+        const double u0 = crushingEnergy(k, law.restitution, law.q, p0) +
+                          springFrictionEnergy(k, law.stretch);
+        const double u1 = crushingEnergy(k, law.restitution, qn, p1) +
+                          springFrictionEnergy(k, out.stretch);
+        const double crushing = CrushingLaw(k, law.restitution, law.q).dissipated(p0, p1);
+        const double damping = alpha * k * (std::max(p1, 0.0) - std::max(p0, 0.0)) * (p1 - p0);
+        EXPECT_GE(crushing, 0.0);
+        EXPECT_GE(damping, 0.0);
+        EXPECT_GE(out.slipped, 0.0);
+        EXPECT_NEAR(f.dot(dq), u1 - u0 + crushing + damping + out.slipped, 1e-11 * k * hc * hc)
+            << "q " << law.q << " mu " << law.mu << " stretch " << law.stretch << " x0 "
+            << q0.x.transpose();
+        ++checked;
+      }
+  EXPECT_GE(checked, 150);
 }
 
 TEST(MemberContactPair, PenetrationFromTheSideAtTheLastCommittedState) {
@@ -350,7 +439,7 @@ struct BarOnBeam {
   double h = 0;  // contact distance
 };
 
-BarOnBeam barOnBeam(double y0, double k, double alpha) {
+BarOnBeam barOnBeam(double y0, double k, double alpha, double mu = 0, double e = 1) {
   BarOnBeam b;
   b.m.materials()[1] = rod(1, 1e7, 1e7, 1e5, 1.25, 1e-3);  // bar: mass 1.25 * 0.8 = 1, r = 0.049
   b.m.materials()[2] = rod(2, 1e6, 1e6, 1e3, 0.5, 1e-3);   // beam: r = 0.077
@@ -358,7 +447,7 @@ BarOnBeam barOnBeam(double y0, double k, double alpha) {
   for (int n = beam; n < beam + 3; ++n) b.m.bound(n) = {1, 1, 1};
   b.bar = newRod(b.m, Vec2(0.6, y0), Vec2(1.4, y0), 1, 1);
   b.m.gravity() = Vec2(0, -kGravity);
-  b.m.memberContact() = MemberContactData{k, alpha, -1};
+  b.m.memberContact() = MemberContactData{k, alpha, -1, e, mu};
   b.h = std::sqrt(3e-3 / 1.25) + std::sqrt(3e-3 / 0.5);
   return b;
 }
@@ -387,16 +476,17 @@ TEST(MemberContactBarOnBeam, StaticPenetrationIsWeightOverPairsTimesK) {
 
 struct Drop {
   double rebound = 0;     // highest point of the bar's first node after the impact
+  double deepest = 0;     // largest penetration of the bar's first node at a commit
   double dissipated = 0;  // sum of contactDissipation over the steps
   double worstBalance = 0;
   double energyScale = 0;
   bool converged = true;
 };
 
-Drop dropBar(double alpha, double dt, int steps) {
+Drop dropBar(double alpha, double dt, int steps, double e = 1) {
   // Dropped from 0.05 above contact.
   const double k = 2e4;
-  BarOnBeam b = barOnBeam(0, k, alpha);
+  BarOnBeam b = barOnBeam(0, k, alpha, 0, e);
   for (int n = 0; n < b.m.numNodes(); ++n)
     if (n >= b.bar) b.m.setCoord(n, b.m.coord(n) + Vec2(0, b.h + 0.05));
   Analysis an(b.m);
@@ -420,6 +510,7 @@ Drop dropBar(double alpha, double dt, int steps) {
     const Energy e = an.energy();
     out.worstBalance = std::max(out.worstBalance, std::abs(e.total() + out.dissipated - e0));
     if (e.contact > 0) touched = true;
+    out.deepest = std::max(out.deepest, b.h - position(b.m, s, b.bar).y());
     if (touched && e.contact == 0)
       out.rebound = std::max(out.rebound, position(b.m, s, b.bar).y() - b.h);
   }
@@ -443,6 +534,97 @@ TEST(MemberContactBarOnBeam, DissipationLowersTheReboundAndClosesTheBalance) {
   EXPECT_GT(d.dissipated, 0.01 * d.energyScale);
   EXPECT_LT(d.worstBalance, 1e-10 * d.energyScale);
   EXPECT_LT(d.rebound, 0.05 - d.dissipated / kGravity + kGravity * 1e-6);
+}
+
+TEST(MemberContactBarOnBeam, CrushingImpactReboundsToTheRestitutionsHeight) {
+  // Restitution e: the bar leaves the set q (1 - e^2) of its deepest
+  // penetration q with e times its speed there, so its apex above the contact
+  // distance is e^2 h0 - q (1 - e^2) (as the ground's, decks/collapse/bar_bounce);
+  // the energy it lost is the crushing's, and the balance closes.
+  const double e = 0.5, h0 = 0.05;
+  const Drop d = dropBar(0, 1e-3, 260, e);
+  ASSERT_TRUE(d.converged);
+  EXPECT_GT(d.deepest, 0.0);
+  EXPECT_NEAR(d.rebound, e * e * h0 - d.deepest * (1 - e * e), 3 * kGravity * 1e-6);
+  // The first impact took at least the height lost (the bar lands again).
+  EXPECT_GT(d.dissipated, kGravity * (h0 - d.rebound) - 1e-9);
+  EXPECT_LT(d.worstBalance, 1e-10 * d.energyScale);
+}
+
+// A bar resting on the beam under gravity tilted by gx = 0.3 g (started at its
+// static penetration): with mu = 0.5 it stays within the friction springs'
+// reach (a bar of mass 1, two pairs); with mu = 0.2 it slides as x = (0.3 - 0.2) g t^2 / 2 after the
+// springs' stretch mu N / k.
+double slideOnBeam(double mu, double time) {
+  const double k = 4e4;
+  BarOnBeam b = barOnBeam(0.2, k, -1, mu);
+  b.m.gravity() = Vec2(0.3 * kGravity, -kGravity);
+  Analysis an(b.m);
+  an.setIntegrator(TimeIntegrator::midPoint(0, 0));
+  an.setTolerance(1e-20);
+  const double dt = 1e-3;
+  an.setDt(dt);
+  State& s = an.state();
+  s.resize(b.m.numNodes());
+  for (int n : {b.bar, b.bar + 1})
+    s.u(3 * n + 1) = s.un(3 * n + 1) = b.h - 0.2 - kGravity / (2 * k);
+  const double x0 = position(b.m, s, b.bar).x();
+  double e0 = an.energy().total(), dissipated = 0, worst = 0;
+  for (int i = 0; i < static_cast<int>(time / dt + 0.5); ++i) {
+    EXPECT_TRUE(solveStep(an));
+    dissipated += an.assembler().contactDissipation(s, an.integrator().rule(dt));
+    an.commit();
+    const Energy en = an.energy();
+    worst = std::max(worst, std::abs(en.total() + dissipated - e0));
+  }
+  EXPECT_LT(worst, 1e-9) << "mu " << mu;
+  EXPECT_TRUE(findCrossings(b.m, s).empty());
+  return position(b.m, s, b.bar).x() - x0;
+}
+
+TEST(MemberContactFriction, BarOnTiltedBeamStaysOrSlides) {
+  const double k = 4e4, t = 0.3;
+  const double stays = slideOnBeam(0.5, t);
+  // Sticking: within twice the springs' static stretch 0.3 g m / (2 k) (the
+  // overshoot of the tilt applied at once).
+  EXPECT_LT(std::abs(stays), 2 * 0.3 * kGravity / 2 / k);
+  // Sliding: the closed form to 5 % (the start, where the springs stretch at
+  // 0.3 g for 4 ms before the bar slides, leaves it 0.005 m/s ahead).
+  const double slides = slideOnBeam(0.2, t);
+  EXPECT_NEAR(slides, 0.05 * kGravity * t * t, 0.05 * 0.05 * kGravity * t * t);
+  EXPECT_GT(slides, 0.05 * kGravity * t * t);
+}
+
+TEST(MemberContactModel, MembersSetFreeInsideTheirDistanceStartAtZeroForce) {
+  // Two rods meeting end to end at x = 1 at a right angle, their end nodes
+  // coincident but not tied (a joint that ruptured): each end node lies on the
+  // other rod's end, inside the contact distance. They start at zero force;
+  // moving the free end into the other rod's span from its side leaves it at
+  // zero force (the offset), pushing it past the centre line does not.
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 1e4, 10, 2.5e-3 / 3);  // r = 0.05
+  const int a = newRod(m, Vec2(0, 0), Vec2(1, 0), 4);
+  const int b = newRod(m, Vec2(1, 0), Vec2(1, 1), 4);
+  m.memberContact() = MemberContactData{1e3, -1, -1};
+  Assembler as(m);
+  as.refresh();
+  State s;
+  s.resize(m.numNodes());
+  as.openContacts(s);
+  ASSERT_FALSE(s.pairs.empty());
+  for (const PairMemory& p : s.pairs) EXPECT_GT(p.offset, 0.0);
+  const StepRule rule = TimeIntegrator::statics().rule(1.0);
+  const Eigen::VectorXd factors = Eigen::VectorXd::Zero(3 * m.numNodes());
+  ASSERT_TRUE(as.assemble(s, rule, factors, false));
+  EXPECT_EQ(as.contactForces().cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(as.contactEnergy(s), 0.0);
+  // Rod b's end node (b) moved down into rod a's last element, past its
+  // centre line (it came from above): pushed back up.
+  s.u(3 * b + 0) = -0.1;
+  s.u(3 * b + 1) = -0.01;
+  ASSERT_TRUE(as.assemble(s, rule, factors, false));
+  EXPECT_GT(as.contactEnergy(s), 0.0);
+  (void)a;
 }
 
 // --- crossings ---------------------------------------------------------------

@@ -3,6 +3,8 @@
 // re-entry and into the dynamic phase; bad files are clear errors; a killed
 // run leaves only .part files.
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -292,7 +294,7 @@ BOUNdary
 
 CONTact
   GROUnd,,0,1e5,,0.2,0.5
-  MEMBers,,2e4
+  MEMBers,,2e4,,,0.3,0.5
 
 GRAVity,,2.943,-9.81
 
@@ -323,6 +325,11 @@ TEST(Restart, MemberContactAndFrictionContinueBitForBit) {
   EXPECT_GT(mid.analysis->energy().contact, 1e-3);
   EXPECT_GT(mid.analysis->state().crush.cwiseAbs().maxCoeff(), 0.0);
   EXPECT_GT(mid.analysis->state().stretch.cwiseAbs().maxCoeff(), 0.0);
+  // The member contact pairs' memory: loading points and friction stretches.
+  const std::vector<PairMemory>& pairs = mid.analysis->state().pairs;
+  EXPECT_TRUE(std::any_of(pairs.begin(), pairs.end(), [](const PairMemory& p) { return p.q > 0; }));
+  EXPECT_TRUE(
+      std::any_of(pairs.begin(), pairs.end(), [](const PairMemory& p) { return p.stretch != 0; }));
   expectSameTail(readText(whole.out / "whole_tplot.csv"), readText(first.out / "first_tplot.csv"),
                  readText(rest.out / "rest_tplot.csv"));
   expectSameState(whole.out / "whole_end.rst", rest.out / "rest_end.rst");

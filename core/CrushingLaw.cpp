@@ -1,0 +1,50 @@
+#include "core/CrushingLaw.h"
+
+#include <algorithm>
+
+namespace c2d {
+
+// Summed over the law's linear pieces between p0 and p1 (the trapezoid rule is
+// exact on each); the derivative with respect to p1 is
+// sum_i [l_i sum_{j>i} c_j l_j + c_i l_i^2 / 2] / dp^2 for pieces of slope c_i
+// and signed length l_i: every term >= 0, so nothing cancels as dp -> 0.
+void CrushingLaw::midPoint(double p0, double p1, double& outForce, double& outTangent) const {
+  double pts[4];
+  int n = 0;
+  pts[n++] = p0;
+  const double kinks[2] = {ps, q};
+  for (int i = 0; i < 2; ++i) {
+    const double kink = p1 > p0 ? kinks[i] : kinks[1 - i];
+    if (kink > std::min(p0, p1) && kink < std::max(p0, p1) && kink != pts[n - 1]) pts[n++] = kink;
+  }
+  pts[n++] = p1;
+  if (n == 2) {  // one piece: the mean of the end forces
+    outForce = 0.5 * (force(p0) + force(p1));
+    outTangent = 0.5 * slope(0.5 * (p0 + p1));
+    return;
+  }
+  double work = 0, stiffness = 0, tail = 0;
+  for (int i = n - 2; i >= 0; --i) {
+    const double a = pts[i], b = pts[i + 1], l = b - a, c = slope(0.5 * (a + b));
+    work += 0.5 * (force(a) + force(b)) * l;
+    stiffness += l * tail + 0.5 * c * l * l;
+    tail += c * l;
+  }
+  const double dp = p1 - p0;
+  outForce = work / dp;
+  outTangent = stiffness / (dp * dp);
+}
+
+double CrushingLaw::dissipated(double p0, double p1) const {
+  const double q0 = std::max(q, p0);
+  if (p1 <= q0 || ku <= k) return 0.0;
+  return 0.5 * (k - k * k / ku) * (p1 - q0) * (p1 + q0);
+}
+
+double crushingEnergy(double k, double e, double q, double p) {
+  if (p <= 0) return 0.0;
+  if (e >= 1) return 0.5 * k * p * p;
+  return CrushingLaw(k, e, std::max(q, p)).energy(p);
+}
+
+}  // namespace c2d
