@@ -17,7 +17,8 @@
 // dissipative term alpha*k*(<g_n+1> - <g_n>) (eq 75; <.> the positive part, so
 // that the force is continuous when a node enters or leaves contact).
 //
-// Friction (mu > 0): elastic-plastic Coulomb friction on every node with a
+// Friction (mu > 0, the law in core/SpringFriction.h): elastic-plastic Coulomb
+// friction on every node with a
 // normal force N > 0 (the penalty force without the dissipative term, >= 0 on
 // every branch). The node is held by a horizontal spring of the ground's
 // stiffness k anchored where it last slid (its stretch x - a: State::stretch);

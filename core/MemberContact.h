@@ -1,6 +1,8 @@
 #pragma once
-// Frictionless penalty contact between members (CONTact record MEMBers): every
-// node against every element segment it does not belong to.
+// Penalty contact between members (CONTact record MEMBers,,k[,alpha[,r[,mu[,e]]]]):
+// every node against every element segment it does not belong to, with the
+// ground's crushing law (restitution e, core/CrushingLaw.h) and elastic-plastic
+// friction (mu, core/SpringFriction.h) per pair.
 //
 // Geometry of a pair: node x, segment a-b (translations only), contact distance
 // h = r_node + r_segment, with an element's contact radius r = sqrt(3 I / A)
@@ -12,25 +14,46 @@
 //                   side the node was on at t_n (two-sided segments: a node
 //                   pushed through the centre line is pushed back to its side),
 //   p = h - |x - a| (or |x - b|) beyond the ends (rounded ends),
-// and the stored energy U = k <p>^2 / 2. p is continuous and its gradient too,
+// and the stored energy U = k <p>^2 / 2 (the crushing law's energy for e < 1:
+// each pair keeps its loading point q while in contact, State::pairs). p is
+// continuous and its gradient too,
 // except where a node that went through the centre line leaves the segment's
 // span. At a vertex of a polyline the rounded end of one segment and the side of
 // its neighbour both push a node within sqrt(2 h p) of the vertex: there the
 // contact is up to twice as stiff.
 //
+// A node that ends a step in contact past the centre line is seen from its new
+// side from then on: the energy its old side stored is released (booked in the
+// energy account, counted and logged: the contact was too soft for the impact).
+//
+// Friction acts on the node's position along the segment, c = r1.r2 / |r2|
+// (measured from a): a spring of stiffness k anchored where the pair last slid
+// (its stretch kept per pair), sliding at mu N with N the pair's normal force
+// (without the dissipative term); under the mid-point scheme the force is the
+// law's path work over the step through the discrete gradient of c. Beyond the
+// segment's ends it still acts along the segment.
+//
 // Excluded pairs: the elements at the node, the elements at the nodes tied to
 // it by joints (a joint's master and slave are one node for contact), and pairs
 // already within contact distance in the reference configuration (members
-// meeting at a frame joint: parts of one piece of structure).
+// meeting at a frame joint: parts of one piece of structure) while the members
+// between them hold: while the node is as few elements from the segment as in
+// the original mesh, joints counted as one node and ruptured ones as broken.
+// A pair set free inside its contact distance (a joint ruptured; contact
+// switched on at a deformed state) gets an offset o, its penetration then,
+// and contacts at the distance h - o, the offset shrinking as the two move
+// apart: it starts at zero force and the full distance returns once apart.
 //
 // Forces: under the static and Newmark rules the gradient of U at t_n+1; under
 // the mid-point scheme a discrete gradient, so that an impact conserves energy
 // exactly: with z = (x - a, b - a) (translation invariant: the forces sum to
 // zero and linear momentum is conserved),
 //   f_z = phi'(p_n, p_n+1) D,   D = grad p(z_m) + (p_n+1 - p_n - grad p(z_m).dz) dz / |dz|^2,
-// phi' the closed-form discrete derivative of k <p>^2 / 2 (as the ground's), so
-// that f_z.dz = U_n+1 - U_n, plus the dissipative alpha k (<p_n+1> - <p_n>) D
-// (work alpha k (<p_n+1> - <p_n>)(p_n+1 - p_n) >= 0 taken per step).
+// phi' the closed-form discrete derivative of k <p>^2 / 2 (as the ground's), or
+// the crushing law's work over the step divided by p_n+1 - p_n, so that
+// f_z.dz = U_n+1 - U_n (+ what crushing dissipated), plus the dissipative
+// alpha k (<p_n+1> - <p_n>) D (work alpha k (<p_n+1> - <p_n>)(p_n+1 - p_n) >= 0
+// taken per step).
 #include <Eigen/Core>
 #include <cstdint>
 #include <vector>
