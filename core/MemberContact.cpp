@@ -501,8 +501,8 @@ bool MemberContact::evaluate(const ContactPair& pair, const Model& model, const 
                              PairMat& tangent) const {
   lastRule_ = rule;
   PairPositions q0, q1;
-  if (!positions(pair, model, s, q0, q1)) return false;
   const PairMemory* m = memory(s, pair.key());
+  if (!positions(pair, model, s, q0, q1, beyond(pair, m))) return false;
   return pairContact(q0, q1, pairSide(q0), reach(pair, m), law(rule, m), rule, wantTangent, force,
                      tangent);
 }
@@ -511,13 +511,13 @@ PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, 
                                    const StepRule& rule, double* full) const {
   PairPositions q0, q1;
   const PairMemory* m = memory(s, pair.key());
-  if (!positions(pair, model, s, q0, q1)) {  // apart: a friction spring lets go
+  if (!positions(pair, model, s, q0, q1, beyond(pair, m))) {  // apart: a friction spring lets go
     if (full) *full = 0;
     PairOutcome out;
     if (m) out.slipped = springFrictionEnergy(data_.k, m->stretch);
     return out;
   }
-  if (full) *full = pairPenetration(q1, pairSide(q0), pair.h);
+  if (full) *full = pairPenetration(q1, pairSide(q0), distance(pair, m));
   PairOutcome out;
   if (q0.x == q1.x && q0.a == q1.a && q0.b == q1.b) {
     // No step (the committed state itself): nothing slides or lets go; the
@@ -525,6 +525,12 @@ PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, 
     // commit in place or a topology change evaluates it).
     out.p0 = out.p1 = pairPenetration(q1, pairSide(q0), reach(pair, m));
     out.stretch = m ? m->stretch : 0.0;
+    return out;
+  }
+  if (data_.mu <= 0) {  // frictionless: the penetrations tell all
+    const int side = pairSide(q0);
+    out.p0 = pairPenetration(q0, side, reach(pair, m));
+    out.p1 = pairPenetration(q1, side, reach(pair, m));
     return out;
   }
   PairVec f;
@@ -568,13 +574,13 @@ double MemberContact::commit(const Model& model, State& s, int& pushed) const {
     const PairMemory* m = memory(s, pair.key());
     double full = 0;
     const PairOutcome o = outcome(pair, model, s, lastRule_, &full);
-    PairMemory next{pair.key(), 0.0, 0.0, o.stretch};
+    PairMemory next{pair.key(), 0.0, 0.0, o.stretch, distance(pair, m)};
     // The offset shrinks with the penetration at the full distance (never
     // while the pair presses on: its force and energy are unchanged).
     if (m) next.offset = std::min(m->offset, std::max(full, 0.0));
     if (o.p1 > 0) {
       next.q = std::max(m ? m->q : 0.0, o.p1);
-      if (positions(pair, model, s, q0, q1) && pairSide(q1) != pairSide(q0)) {
+      if (positions(pair, model, s, q0, q1, beyond(pair, m)) && pairSide(q1) != pairSide(q0)) {
         // Seen from the new side the penetration is smaller (the loading point
         // kept, so that the energy only drops).
         const double seen = pairPenetration(q1, pairSide(q1), reach(pair, m));
@@ -604,7 +610,7 @@ void MemberContact::openPairs(const Model& model, State& s) const {
     if (memory(s, pair.key()) || !positions(pair, model, s, q0, q1)) continue;
     const double p = pairPenetration(q1, pairSide(q1), pair.h);
     if (p <= 0) continue;
-    s.pairs.push_back({pair.key(), 0.0, p, 0.0});
+    s.pairs.push_back({pair.key(), 0.0, p, 0.0, pair.h});
     added = true;
   }
   if (added)

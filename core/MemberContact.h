@@ -172,13 +172,19 @@ class MemberContact {
   bool excluded(int node, int element, const Model& model) const;
   // The pair's memory at the last commit (null: none).
   static const PairMemory* memory(const State& s, std::uint64_t key);
-  // Contact distance of a pair with the memory m (or none).
+  // Contact distance of a pair with the memory m (or none): the distance it
+  // met at, less its offset.
   // The pair's step at s under the rule (and its penetration at the full
   // contact distance, without offset, at t_n+1).
   PairOutcome outcome(const ContactPair& pair, const Model& model, const State& s,
                       const StepRule& rule, double* full = nullptr) const;
+  static double distance(const ContactPair& pair, const PairMemory* m) { return m ? m->h : pair.h; }
+  // How much farther than its present distance a pair with memory m reaches.
+  static double beyond(const ContactPair& pair, const PairMemory* m) {
+    return m && m->h > pair.h ? m->h - pair.h : 0.0;
+  }
   static double reach(const ContactPair& pair, const PairMemory* m) {
-    return m ? pair.h - m->offset : pair.h;
+    return m ? m->h - m->offset : pair.h;
   }
   PairLaw law(const StepRule& rule, const PairMemory* m) const {
     return {data_.k, alpha(rule), data_.restitution, m ? m->q : 0.0, data_.mu,

@@ -14,7 +14,9 @@ namespace c2d {
 // What a member contact pair (node against element segment) keeps between
 // steps (core/MemberContact.h): its loading point q (the largest penetration
 // since the contact began, for the crushing law), the stretch of its friction
-// spring and its offset o, the
+// spring, the contact distance it met at (a topology change that changes the
+// radii of its node or member does not change a contact under way) and its
+// offset o, the
 // penetration the pair had when it first met (two members set free inside each
 // other's contact distance, at a joint that ruptured, start at zero force; o
 // shrinks as they separate).
@@ -22,6 +24,7 @@ struct PairMemory {
   std::uint64_t key = 0;  // ContactPair::key()
   double q = 0, offset = 0;
   double stretch = 0;  // the friction spring's stretch along the segment
+  double h = 0;        // the contact distance it met at (kept while in memory)
 };
 
 struct State {

@@ -627,6 +627,9 @@ Status Analysis::afterCommitEvents() {
   // Until nothing changes: a change can make another (a joint formed at a
   // failed hinge can find its neighbour's hinge failed, or rupture at once).
   bool removed = false, joints = false;
+  const MemberContact* members = assembler_.memberContact();  // replaced at a topology change
+  const bool hadMembers = members != nullptr;
+  const double membersBefore = hadMembers ? members->energy(model_, state_) : 0.0;
   for (int pass = 0; pass < 16; ++pass) {
     const bool r = removal_.afterCommit();
     const bool j = topology_.afterCommit(model_, state_);
@@ -641,7 +644,13 @@ Status Analysis::afterCommitEvents() {
   topologyChanged();
   if (!integrator_.dynamic())
     if (Status ev = evaluateState(); !ev) return ev;
-  // Joints: a jump the change made shows in the balance (removals book theirs).
+  // Joints: a jump the change made shows in the balance (removals book theirs),
+  // but for member contacts that a new joint made part of one piece: their
+  // energy is released (pairs set free start at zero force: no change).
+  if (joints && !removed && hadMembers) {
+    const MemberContact* now = assembler_.memberContact();
+    account_.released(membersBefore - (now ? now->energy(model_, state_) : 0.0));
+  }
   if (joints) account_.restartFrom(energy());
   return Status::success();
 }
@@ -685,6 +694,7 @@ void Analysis::writeState(std::ostream& out) const {
     put(out, m.q);
     put(out, m.offset);
     put(out, m.stretch);
+    put(out, m.h);
   }
   for (double x : {state_.t, state_.tn, state_.dt, state_.prop, state_.propn, state_.arcLambda,
                    state_.arcLambdan})
@@ -740,6 +750,7 @@ void Analysis::readState(std::istream& in) {
     m.q = get<double>(in);
     m.offset = get<double>(in);
     m.stretch = get<double>(in);
+    m.h = get<double>(in);
   }
   for (double* x : {&state_.t, &state_.tn, &state_.dt, &state_.prop, &state_.propn,
                     &state_.arcLambda, &state_.arcLambdan})
