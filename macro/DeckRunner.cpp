@@ -154,8 +154,11 @@ std::vector<std::string> runWarnings(const RunSummary& s) {
   if (s.crossings > 0) {
     std::snprintf(buf, sizeof buf,
                   "warning: %d pair%s of members cross each other at the end (listed in the "
-                  "log): they passed through each other; CONTact MEMBers,,k keeps them apart",
-                  s.crossings, s.crossings == 1 ? "" : "s");
+                  "log): they passed through each other; %s",
+                  s.crossings, s.crossings == 1 ? "" : "s",
+                  s.memberContact ? "the member contact was too soft for an impact, or the "
+                                    "pieces of a ruptured joint slid through each other"
+                                  : "CONTact MEMBers,,k keeps them apart");
     out.push_back(buf);
   }
   if (s.blastsNotMade > 0) {
@@ -306,6 +309,7 @@ class Walker {
     total_.jointsRuptured += s.jointsRuptured;
     total_.removed += s.removed;
     total_.crossings += s.crossings;
+    total_.memberContact = total_.memberContact || s.memberContact;
     total_.blastsNotMade += s.blastsNotMade;
     total_.debrisRuns += s.debrisRuns;
     total_.outsideRuns += s.outsideRuns;

@@ -244,6 +244,7 @@ RunSummary ProblemRun::summary() const {
   s.jointsRuptured = jointsRuptured_;
   s.removed = removed_;
   s.crossings = crossings_;
+  s.memberContact = crossings_ > 0 && model_.memberContact().has_value();
   s.blastsNotMade = blastsNotMade_;
   s.debrisRuns = debris_ ? 1 : 0;
   s.outsideRuns = debris_ && debris_->outside() ? 1 : 0;

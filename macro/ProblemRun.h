@@ -48,6 +48,7 @@ struct RunSummary {
   int jointsFormed = 0, jointsRuptured = 0;  // during the run (fully softened hinges, ruptures)
   int removed = 0;                            // elements removed (BLASt, REMOve)
   int crossings = 0;  // pairs of members crossing each other at the end
+  bool memberContact = false;  // the crossing members had member contact (CONTact MEMBers)
   int blastsNotMade = 0;  // BLASt records whose time the run never reached
   // Runs that ended with ground contact (debris figures), and those of them whose
   // debris left the site (SITE).
