@@ -598,11 +598,11 @@ TEST(MemberContactFriction, BarOnTiltedBeamStaysOrSlides) {
 TEST(MemberContactModel, MembersSetFreeInsideTheirDistanceStartAtZeroForce) {
   // Two rods meeting end to end at x = 1 at a right angle, their end nodes
   // coincident but not tied (a joint that ruptured): each end node lies on the
-  // other rod's end, inside the contact distance. They start at zero force;
-  // moving the free end into the other rod's span from its side leaves it at
-  // zero force (the offset), pushing it past the centre line does not.
+  // other rod's end, inside the contact distance. They start at zero force
+  // (the offsets); one end moved into the other rod's span past its centre
+  // line is pushed back.
   Model m;
-  m.materials()[1] = rod(1, 1e4, 1e4, 1e4, 10, 2.5e-3 / 3);  // r = 0.05
+  m.materials()[1] = rod(1, 1e4, 1e4, 1e4, 10, 2.5e-3 / 3);  // r = sqrt(3 I / A) = 0.016
   const int a = newRod(m, Vec2(0, 0), Vec2(1, 0), 4);
   const int b = newRod(m, Vec2(1, 0), Vec2(1, 1), 4);
   m.memberContact() = MemberContactData{1e3, -1, -1};
@@ -625,6 +625,40 @@ TEST(MemberContactModel, MembersSetFreeInsideTheirDistanceStartAtZeroForce) {
   ASSERT_TRUE(as.assemble(s, rule, factors, false));
   EXPECT_GT(as.contactEnergy(s), 0.0);
   (void)a;
+}
+
+TEST(MemberContactModel, ANodePushedPastTheCentreLineReleasesWhatItsOldSideStored) {
+  // A rod and a rod standing on it whose lower end ends the step 0.01 below
+  // the first rod's centre line: seen from above its penetration is h + 0.01,
+  // from below h - 0.01 (h the contact distance). The commit sees it from
+  // below from then on, and returns the energy k ((h + 0.01)^2 - (h - 0.01)^2)
+  // / 2 as released; the stored energy drops by as much.
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 1e4, 10, 2.5e-3 / 3);
+  newRod(m, Vec2(0, 0), Vec2(2, 0), 2);
+  const int stand = newRod(m, Vec2(0.5, 1.0), Vec2(0.5, 2.0), 2);
+  const double k = 1e3;
+  m.memberContact() = MemberContactData{k, 0, -1};
+  Assembler as(m);
+  as.refresh();
+  const double h = 2 * as.memberContact()->radius(0);
+  ASSERT_GT(h, 0.02);
+  State s;
+  s.resize(m.numNodes());
+  for (int n = stand; n < stand + 3; ++n) {
+    s.un(3 * n + 1) = -0.99;  // 0.01 above the centre line
+    s.u(3 * n + 1) = -1.01;   // 0.01 below it
+  }
+  const Eigen::VectorXd factors = Eigen::VectorXd::Zero(3 * m.numNodes());
+  ASSERT_TRUE(as.assemble(s, TimeIntegrator::statics().rule(1.0), factors, false));
+  const double above = h + 0.01, below = h - 0.01;
+  const double before = as.contactEnergy(s);
+  EXPECT_NEAR(before, 0.5 * k * above * above, 1e-12);
+  const double released = as.commitContact(s);
+  EXPECT_NEAR(released, 0.5 * k * (above * above - below * below), 1e-12);
+  EXPECT_EQ(as.pushedThrough(), 1);
+  s.commit();
+  EXPECT_NEAR(as.contactEnergy(s), before - released, 1e-12);
 }
 
 // --- crossings ---------------------------------------------------------------
