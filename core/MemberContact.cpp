@@ -475,20 +475,6 @@ const std::vector<ContactPair>& MemberContact::candidates(const Model& model,
   return candidates_;
 }
 
-bool MemberContact::positions(const ContactPair& pair, const Model& model, const State& s,
-                              PairPositions& q0, PairPositions& q1, double extra) const {
-  auto at = [&](const Eigen::VectorXd& u, int n) {
-    return Vec2(model.coord(n).x() + u[3 * n], model.coord(n).y() + u[3 * n + 1]);
-  };
-  q0 = {at(s.un, pair.node), at(s.un, pair.a), at(s.un, pair.b)};
-  q1 = {at(s.u, pair.node), at(s.u, pair.a), at(s.u, pair.b)};
-  Box node = Box::point(q0.x.x(), q0.x.y()), seg = Box::point(q0.a.x(), q0.a.y());
-  node.add(q1.x.x(), q1.x.y());
-  seg.add(q0.b.x(), q0.b.y());
-  seg.add(q1.a.x(), q1.a.y());
-  seg.add(q1.b.x(), q1.b.y());
-  return node.inflated(pair.h + extra).overlaps(seg);
-}
 
 const PairMemory* MemberContact::memory(const State& s, std::uint64_t key) {
   const auto it = std::lower_bound(s.pairs.begin(), s.pairs.end(), key,
@@ -499,10 +485,12 @@ const PairMemory* MemberContact::memory(const State& s, std::uint64_t key) {
 bool MemberContact::evaluate(const ContactPair& pair, const Model& model, const State& s,
                              const StepRule& rule, bool wantTangent, PairVec& force,
                              PairMat& tangent) const {
-  lastRule_ = rule;
+  if (lastRule_.scheme != rule.scheme || lastRule_.alpha != rule.alpha) lastRule_ = rule;
   PairPositions q0, q1;
+  // The memory only of a pair within reach (slack_: the most a memory's
+  // contact distance exceeds its pair's present one).
+  if (!positions(pair, model, s, q0, q1, slack_)) return false;
   const PairMemory* m = memory(s, pair.key());
-  if (!positions(pair, model, s, q0, q1, beyond(pair, m))) return false;
   return pairContact(q0, q1, pairSide(q0), reach(pair, m), law(rule, m), rule, wantTangent, force,
                      tangent);
 }
@@ -511,7 +499,7 @@ PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, 
                                    const StepRule& rule, double* full) const {
   PairPositions q0, q1;
   const PairMemory* m = memory(s, pair.key());
-  if (!positions(pair, model, s, q0, q1, beyond(pair, m))) {  // apart: a friction spring lets go
+  if (!positions(pair, model, s, q0, q1, slack_)) {  // apart: a friction spring lets go
     if (full) *full = 0;
     PairOutcome out;
     if (m) out.slipped = springFrictionEnergy(data_.k, m->stretch);
@@ -569,6 +557,7 @@ double MemberContact::commit(const Model& model, State& s, int& pushed) const {
   nextMemory_.clear();
   if (nextMemory_.capacity() < pairs.size()) nextMemory_.reserve(2 * pairs.size());
   double released = 0;
+  committedEnergy_ = 0;
   PairPositions q0, q1;
   for (const ContactPair& pair : pairs) {
     const PairMemory* m = memory(s, pair.key());
@@ -580,7 +569,7 @@ double MemberContact::commit(const Model& model, State& s, int& pushed) const {
     if (m) next.offset = std::min(m->offset, std::max(full, 0.0));
     if (o.p1 > 0) {
       next.q = std::max(m ? m->q : 0.0, o.p1);
-      if (positions(pair, model, s, q0, q1, beyond(pair, m)) && pairSide(q1) != pairSide(q0)) {
+      if (positions(pair, model, s, q0, q1, slack_) && pairSide(q1) != pairSide(q0)) {
         // Seen from the new side the penetration is smaller (the loading point
         // kept, so that the energy only drops).
         const double seen = pairPenetration(q1, pairSide(q1), reach(pair, m));
@@ -590,16 +579,34 @@ double MemberContact::commit(const Model& model, State& s, int& pushed) const {
         ++pushed;
       }
     }
-    if (next.q > 0 || next.offset > 0 || next.stretch != 0) nextMemory_.push_back(next);
+    if (next.q > 0 || next.offset > 0 || next.stretch != 0) {
+      nextMemory_.push_back(next);
+      // Its energy at the committed state (as energy() finds it there).
+      if (positions(pair, model, s, q0, q1, slack_))
+        committedEnergy_ +=
+            crushingEnergy(data_.k, data_.restitution, next.q,
+                           pairPenetration(q1, pairSide(q1), reach(pair, &next))) +
+            springFrictionEnergy(data_.k, next.stretch);
+    }
   }
   // Candidates are sorted by key, so is the memory. Copied, with room to
   // double, so that steps allocate nothing while the contacts change little.
   if (s.pairs.capacity() < nextMemory_.size()) s.pairs.reserve(2 * nextMemory_.size());
   s.pairs.assign(nextMemory_.begin(), nextMemory_.end());
+  committed_ = true;
   return released;
 }
 
 void MemberContact::openPairs(const Model& model, State& s) const {
+  // Pairs in memory keep the contact distance they met at: the candidates'
+  // boxes reach as far as the largest excess over the present distances.
+  slack_ = 0;
+  for (const PairMemory& m : s.pairs) {
+    const int node = static_cast<int>(m.key >> 32), element = static_cast<int>(m.key & 0xffffffffu);
+    if (node < static_cast<int>(nodeRadius_.size()) && element < model.numElements() &&
+        model.hasElement(element))
+      slack_ = std::max(slack_, m.h - nodeRadius_[node] - elementRadius_[element]);
+  }
   // Room for four pairs in contact per node before a commit must allocate.
   const std::size_t room = 4 * contactNodes_.size();
   if (s.pairs.capacity() < room) s.pairs.reserve(room);

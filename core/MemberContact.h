@@ -146,6 +146,11 @@ class MemberContact {
   // energy it stored from the old side is gone (its force pushed the node on);
   // `pushed` counts such pairs.
   double commit(const Model& model, State& s, int& pushed) const;
+  // The stored energy at the committed state s: as found by this contact's
+  // last commit (no pass over the pairs), or evaluated when it made none.
+  double committedEnergy(const Model& model, const State& s) const {
+    return committed_ ? committedEnergy_ : energy(model, s);
+  }
   // When the contact starts or the topology changes (s committed): a pair now
   // free to contact that is already inside its contact distance (the pieces of
   // a joint that ruptured) and has no memory gets the offset of its present
@@ -179,10 +184,6 @@ class MemberContact {
   PairOutcome outcome(const ContactPair& pair, const Model& model, const State& s,
                       const StepRule& rule, double* full = nullptr) const;
   static double distance(const ContactPair& pair, const PairMemory* m) { return m ? m->h : pair.h; }
-  // How much farther than its present distance a pair with memory m reaches.
-  static double beyond(const ContactPair& pair, const PairMemory* m) {
-    return m && m->h > pair.h ? m->h - pair.h : 0.0;
-  }
   static double reach(const ContactPair& pair, const PairMemory* m) {
     return m ? m->h - m->offset : pair.h;
   }
@@ -210,8 +211,27 @@ class MemberContact {
   // The rule of the last evaluation: the friction springs' stretches at a
   // trial state are those of the step that was assembled (as the ground's).
   mutable StepRule lastRule_;
+  mutable double committedEnergy_ = 0;
+  mutable bool committed_ = false;  // committedEnergy_ is that of a commit
+  mutable double slack_ = 0;        // the most a pair's memory reaches beyond its distance
   mutable int candidatesVersion_ = 0;
   mutable bool searched_ = false;
 };
+
+// Inline: evaluated for every candidate at every assembly.
+inline bool MemberContact::positions(const ContactPair& pair, const Model& model, const State& s,
+                              PairPositions& q0, PairPositions& q1, double extra) const {
+  auto at = [&](const Eigen::VectorXd& u, int n) {
+    return Vec2(model.coord(n).x() + u[3 * n], model.coord(n).y() + u[3 * n + 1]);
+  };
+  q0 = {at(s.un, pair.node), at(s.un, pair.a), at(s.un, pair.b)};
+  q1 = {at(s.u, pair.node), at(s.u, pair.a), at(s.u, pair.b)};
+  Box node = Box::point(q0.x.x(), q0.x.y()), seg = Box::point(q0.a.x(), q0.a.y());
+  node.add(q1.x.x(), q1.x.y());
+  seg.add(q0.b.x(), q0.b.y());
+  seg.add(q1.a.x(), q1.a.y());
+  seg.add(q1.b.x(), q1.b.y());
+  return node.inflated(pair.h + extra).overlaps(seg);
+}
 
 }  // namespace c2d

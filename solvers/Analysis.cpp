@@ -629,7 +629,7 @@ Status Analysis::afterCommitEvents() {
   bool removed = false, joints = false;
   const MemberContact* members = assembler_.memberContact();  // replaced at a topology change
   const bool hadMembers = members != nullptr;
-  const double membersBefore = hadMembers ? members->energy(model_, state_) : 0.0;
+  const double membersBefore = hadMembers ? members->committedEnergy(model_, state_) : 0.0;
   for (int pass = 0; pass < 16; ++pass) {
     const bool r = removal_.afterCommit();
     const bool j = topology_.afterCommit(model_, state_);
