@@ -9,6 +9,25 @@ namespace c2d {
 // sum_i [l_i sum_{j>i} c_j l_j + c_i l_i^2 / 2] / dp^2 for pieces of slope c_i
 // and signed length l_i: every term >= 0, so nothing cancels as dp -> 0.
 void CrushingLaw::midPoint(double p0, double p1, double& outForce, double& outTangent) const {
+  if (ku == k) {
+    // Elastic (e = 1): the discrete derivative of k <p>^2 / 2 in closed form on
+    // each branch (dividing U1 - U0 by p1 - p0 would lose all digits when the
+    // step hardly moves a resting contact: force error eps p/dp, tangent
+    // eps p^2/dp^2).
+    const double dp = p1 - p0;
+    outForce = outTangent = 0;
+    if (p0 > 0 && p1 > 0) {
+      outForce = 0.5 * k * (p0 + p1);
+      outTangent = 0.5 * k;
+    } else if (p1 > 0) {  // entering: (k p1^2/2)/(p1 - p0), p0 <= 0 < p1
+      outForce = 0.5 * k * p1 * p1 / dp;
+      outTangent = k * p1 / dp - 0.5 * k * p1 * p1 / (dp * dp);
+    } else if (p0 > 0) {  // leaving: (k p0^2/2)/(p0 - p1), p1 <= 0 < p0
+      outForce = -0.5 * k * p0 * p0 / dp;
+      outTangent = 0.5 * k * p0 * p0 / (dp * dp);
+    }
+    return;
+  }
   double pts[4];
   int n = 0;
   pts[n++] = p0;

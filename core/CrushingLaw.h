@@ -25,9 +25,10 @@ struct CrushingLaw {
     return 0.5 * f * f / ku;
   }
   // The law's work on the straight path from p0 to p1 divided by p1 - p0 (a
-  // discrete derivative of its energy, exact on every linear piece), and the
-  // derivative of that with respect to p1. p0 != p1 unless both lie on one
-  // piece (then the mean of the end forces).
+  // discrete derivative of its energy, exact on every linear piece; closed
+  // forms per branch for e = 1), and the derivative of that with respect to
+  // p1. p0 != p1 unless both lie on one piece (then the mean of the end
+  // forces).
   void midPoint(double p0, double p1, double& force, double& tangent) const;
   // Energy the law dissipates on the way from p0 to p1 (loading beyond
   // max(q, p0)): k (1 - e^2)(p1^2 - q0^2) / 2, >= 0.

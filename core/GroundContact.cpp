@@ -33,31 +33,15 @@ ContactForce groundContact(const Ground& g, double q, double yn, double y, const
   const double p1 = penetration(g, y);
   if (rule.scheme != Scheme::MidPoint) {
     if (p1 > 0) {
-      const CrushingLaw law = crushing(g, crushes(g) ? std::max(q, penetration(g, yn)) : 0.0);
+      const CrushingLaw law = crushing(g, std::max(q, penetration(g, yn)));
       out.force = out.normal = law.force(p1);
       out.tangent = out.normalTangent = law.slope(p1);
     }
     return out;
   }
-  // Discrete gradient of U(p) = k <p>^2 / 2 between p0 and p1, in closed form
-  // on each branch: dividing U1 - U0 by p1 - p0 would lose all digits when the
-  // step hardly moves a resting node (force error eps*p/dp, tangent eps*p^2/dp^2).
+  // The law's discrete derivative between p0 and p1 (core/CrushingLaw.h).
   const double p0 = penetration(g, yn);
-  const double dp = p1 - p0;
-  if (crushes(g)) {
-    if (p0 > 0 || p1 > 0) crushing(g, std::max(q, p0)).midPoint(p0, p1, out.force, out.tangent);
-  } else if (p0 > 0 && p1 > 0) {
-    out.force = 0.5 * g.k * (p0 + p1);
-    out.tangent = 0.5 * g.k;
-  } else if (p1 > 0) {
-    // Entering: (k p1^2/2)/(p1 - p0), p0 <= 0 < p1, so dp >= p1 > 0.
-    out.force = 0.5 * g.k * p1 * p1 / dp;
-    out.tangent = g.k * p1 / dp - 0.5 * g.k * p1 * p1 / (dp * dp);
-  } else if (p0 > 0) {
-    // Leaving: (k p0^2/2)/(p0 - p1), p1 <= 0 < p0.
-    out.force = -0.5 * g.k * p0 * p0 / dp;
-    out.tangent = 0.5 * g.k * p0 * p0 / (dp * dp);
-  }
+  if (p0 > 0 || p1 > 0) crushing(g, std::max(q, p0)).midPoint(p0, p1, out.force, out.tangent);
   out.normal = out.force;
   out.normalTangent = out.tangent;
   // Dissipation (eq 75) on the change of the penetration while in contact,

@@ -163,7 +163,7 @@ bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, dou
                  PairMat& tangent, PairOutcome* outcome) {
   const Vec4 z0 = relative(q0), z1 = relative(q1);
   const double k = law.k;
-  const bool crushes = law.restitution < 1, midPoint = rule.scheme == Scheme::MidPoint;
+  const bool midPoint = rule.scheme == Scheme::MidPoint;
   const bool rubs = law.mu > 0;
   Penetration e0, e1;
   penetration(z0, side, h, false, e0);
@@ -179,30 +179,12 @@ bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, dou
   // The normal law: w, its derivative dw w.r.t. p1, and the normal force N
   // (without the dissipative term) with dN/dp1.
   double w = 0, dw = 0;
+  const CrushingLaw normal(k, law.restitution, std::max(law.q, p0));
   if (!midPoint) {
-    w = k * p1;
-    dw = k;
-    if (crushes) {
-      const CrushingLaw crush(k, law.restitution, std::max(law.q, p0));
-      w = crush.force(p1);
-      dw = crush.slope(p1);
-    }
+    w = normal.force(p1);
+    dw = normal.slope(p1);
   } else {
-    // phi'(p0, p1): the discrete derivative of the law's energy (k <p>^2 / 2
-    // when elastic), in closed form per branch (see core/GroundContact.cpp).
-    const double dp = p1 - p0;
-    if (crushes) {
-      CrushingLaw(k, law.restitution, std::max(law.q, p0)).midPoint(p0, p1, w, dw);
-    } else if (p0 > 0 && p1 > 0) {
-      w = 0.5 * k * (p0 + p1);
-      dw = 0.5 * k;
-    } else if (p1 > 0) {
-      w = 0.5 * k * p1 * p1 / dp;
-      dw = k * p1 / dp - 0.5 * k * p1 * p1 / (dp * dp);
-    } else {
-      w = -0.5 * k * p0 * p0 / dp;
-      dw = 0.5 * k * p0 * p0 / (dp * dp);
-    }
+    normal.midPoint(p0, p1, w, dw);  // phi'(p0, p1): the law's discrete derivative
   }
   const double N = std::max(w, 0.0), dN = w > 0 ? dw : 0.0;
   if (midPoint && law.alpha > 0) {
@@ -563,13 +545,14 @@ double MemberContact::commit(const Model& model, State& s, int& pushed) const {
     const PairMemory* m = memory(s, pair.key());
     double full = 0;
     const PairOutcome o = outcome(pair, model, s, lastRule_, &full);
+    const bool near = positions(pair, model, s, q0, q1, slack_);
     PairMemory next{pair.key(), 0.0, 0.0, o.stretch, distance(pair, m)};
     // The offset shrinks with the penetration at the full distance (never
     // while the pair presses on: its force and energy are unchanged).
     if (m) next.offset = std::min(m->offset, std::max(full, 0.0));
     if (o.p1 > 0) {
       next.q = std::max(m ? m->q : 0.0, o.p1);
-      if (positions(pair, model, s, q0, q1, slack_) && pairSide(q1) != pairSide(q0)) {
+      if (near && pairSide(q1) != pairSide(q0)) {
         // Seen from the new side the penetration is smaller (the loading point
         // kept, so that the energy only drops).
         const double seen = pairPenetration(q1, pairSide(q1), reach(pair, m));
@@ -582,7 +565,7 @@ double MemberContact::commit(const Model& model, State& s, int& pushed) const {
     if (next.q > 0 || next.offset > 0 || next.stretch != 0) {
       nextMemory_.push_back(next);
       // Its energy at the committed state (as energy() finds it there).
-      if (positions(pair, model, s, q0, q1, slack_))
+      if (near)
         committedEnergy_ +=
             crushingEnergy(data_.k, data_.restitution, next.q,
                            pairPenetration(q1, pairSide(q1), reach(pair, &next))) +

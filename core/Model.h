@@ -27,16 +27,17 @@ struct Joint {
 
 // Rigid ground y = y0 with penalty stiffness k; alpha is the dissipation of the
 // mid-point contact force (negative: the integrator's alpha); mu the coefficient
-// of the regularised Coulomb friction (0: frictionless); restitution the
+// of the elastic-plastic Coulomb friction (0: frictionless); restitution the
 // coefficient e of an impact (1: elastic; below 1 the contact crushes:
 // core/GroundContact.h).
 struct Ground {
   double y0 = 0, k = 0, alpha = -1, mu = 0, restitution = 1;
 };
 
-// Frictionless penalty contact between members (core/MemberContact.h): stiffness
-// k, dissipation alpha as for the ground, and the contact radius of members whose
-// material gives no section (negative: 1e-3 of the shortest element).
+// Penalty contact between members (core/MemberContact.h): stiffness k,
+// dissipation alpha, restitution and friction coefficient mu as for the
+// ground, and the contact radius of members whose material gives no section
+// (negative: 1e-3 of the shortest element).
 struct MemberContactData {
   double k = 0, alpha = -1, radius = -1, restitution = 1, mu = 0;
 };

@@ -16,10 +16,9 @@ namespace c2d {
 // since the contact began, for the crushing law), the stretch of its friction
 // spring, the contact distance it met at (a topology change that changes the
 // radii of its node or member does not change a contact under way) and its
-// offset o, the
-// penetration the pair had when it first met (two members set free inside each
-// other's contact distance, at a joint that ruptured, start at zero force; o
-// shrinks as they separate).
+// offset o, the penetration the pair had when it first met (two members set
+// free inside each other's contact distance, at a joint that ruptured, start
+// at zero force; o shrinks as they separate).
 struct PairMemory {
   std::uint64_t key = 0;  // ContactPair::key()
   double q = 0, offset = 0;

@@ -813,6 +813,13 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
     if (v < 0) failAt(r, i, std::string(what) + " must not be negative", hint);
     return v;
   };
+  // The restitution e at field i: in (0, 1], absent or empty 1.
+  auto restitution = [&](const Record& r, std::size_t i) {
+    const double e = r.size() > i && !r[i].text.empty() ? ctx.number(r, i) : 1.0;
+    if (!(e > 0 && e <= 1))
+      failAt(r, i, "the restitution e must lie in (0, 1]", "1 or absent: an elastic impact");
+    return e;
+  };
   for (const Record& r : cmd.data) {
     if (r.is("MEMBers")) {
       if (previousMembers)
@@ -828,16 +835,15 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
       c.alpha = optional(r, 3, -1.0, "alpha", "leave it out for the integrator's");
       c.radius = optional(r, 4, -1.0, "the contact radius r", "leave it out for the default");
       c.mu = optional(r, 5, 0.0, "the friction coefficient mu", "0 or absent: frictionless");
-      c.restitution = r.size() > 6 && !r[6].text.empty() ? ctx.number(r, 6) : 1.0;
-      if (!(c.restitution > 0 && c.restitution <= 1))
-        failAt(r, 6, "the restitution e must lie in (0, 1]", "1 or absent: an elastic impact");
+      c.restitution = restitution(r, 6);
       previousMembers = &r;
       ctx.topologyChanged = true;  // contact pairs enter or leave the sparsity pattern
       if (c.k == 0) {  // a study's switch: no member contact
         ctx.model.memberContact().reset();
         if (auto* os = ctx.out()) {
           title(*os, "M e m b e r   C o n t a c t");
-          *os << "      off (k = 0)\n";
+          *os << "      off (k = 0"
+              << (r.size() > 3 ? ": the record's other values are not used" : "") << ")\n";
         }
         continue;
       }
@@ -880,9 +886,7 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
     if (r.size() > 4 && !r[4].text.empty() && g.alpha < 0)
       failAt(r, 4, "alpha must not be negative (leave it out for the integrator's)");
     g.mu = optional(r, 5, 0.0, "the friction coefficient mu", "0 or absent: frictionless");
-    g.restitution = r.size() > 6 && !r[6].text.empty() ? ctx.number(r, 6) : 1.0;
-    if (!(g.restitution > 0 && g.restitution <= 1))
-      failAt(r, 6, "the restitution e must lie in (0, 1]", "1 or absent: an elastic impact");
+    g.restitution = restitution(r, 6);
     ctx.model.ground() = g;
     ctx.groundOrigin = r;
     previous = &r;

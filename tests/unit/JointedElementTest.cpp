@@ -60,10 +60,21 @@ ElemVec rigidMotion(const Vec2& x1, const Vec2& x2, double w, const Vec2& t) {
   return d;
 }
 
-// Trial `trial` of the tangent checks: a rigid turn of 0.8 trial rad from t_n,
-// perturbed by `scale`, with random rates and accelerations at t_n.
-ElementKinematics trialKinematics(std::mt19937& gen, const Vec2& x1, const Vec2& x2, int trial,
-                                  double scale) {
+// The tangent checks' element: kind's element from x1 to x2 jointed at its end
+// slaveEnd (slave node 7), a relative rotation under way.
+const Vec2 kTrialX1(0.3, 0.1), kTrialX2(1.5, 0.9);
+std::unique_ptr<JointedElement> trialJoint(Inner kind, int slaveEnd) {
+  auto e = std::make_unique<JointedElement>(makeInner(kind, kTrialX1, kTrialX2), slaveEnd, 7);
+  e->setRelativeState(0.3, 0.5, -0.2);
+  return e;
+}
+
+// Trial `trial` of the tangent checks on kind's element: a rigid turn of 0.8
+// trial rad from t_n, perturbed (0.15 for the Reissner element, else 0.05),
+// with random rates and accelerations at t_n.
+ElementKinematics trialKinematics(std::mt19937& gen, Inner kind, int trial) {
+  const double scale = kind == Inner::Reissner ? 0.15 : 0.05;
+  const Vec2 &x1 = kTrialX1, &x2 = kTrialX2;
   return {rigidMotion(x1, x2, 0.8 * trial, Vec2(0.2, -0.1)) + test::randomVec(gen, scale),
           rigidMotion(x1, x2, 0.8 * trial - 0.1, Vec2(0.1, 0)) + test::randomVec(gen, scale),
           test::randomVec(gen, 1.0), test::randomVec(gen, 5.0)};
@@ -75,16 +86,14 @@ class JointedElementTangent : public ::testing::TestWithParam<TangentCase> {};
 TEST_P(JointedElementTangent, CondensedTangentMatchesCentralDifferences) {
   const auto [scheme, kind, slaveEnd] = GetParam();
   std::mt19937 gen(17 + 3 * static_cast<int>(kind) + slaveEnd);
-  const Vec2 x1(0.3, 0.1), x2(1.5, 0.9);
-  JointedElement e(makeInner(kind, x1, x2), slaveEnd, 7);
+  const std::unique_ptr<JointedElement> joint = trialJoint(kind, slaveEnd);
+  JointedElement& e = *joint;
   EXPECT_EQ(e.slaveNode(), slaveEnd == 0 ? 3 : 4);
   EXPECT_EQ(e.nodes()[slaveEnd], 7);
   EXPECT_EQ(e.nodes()[1 - slaveEnd], slaveEnd == 0 ? 4 : 3);
-  e.setRelativeState(0.3, 0.5, -0.2);
   const StepRule rule = ruleFor(scheme);
-  const double scale = kind == Inner::Reissner ? 0.15 : 0.05;
   for (int trial = 0; trial < 3; ++trial) {
-    const ElementKinematics kin = trialKinematics(gen, x1, x2, trial, scale);
+    const ElementKinematics kin = trialKinematics(gen, kind, trial);
     ElemVec r;
     ElemMat k;
     ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
@@ -125,15 +134,13 @@ TEST(JointedElement, FrictionTangentMatchesCentralDifferences) {
     for (Inner kind : {Inner::Reissner, Inner::Timoshenko})
       for (double eps : {1e-3, 0.3}) {
         std::mt19937 gen(5 + static_cast<int>(kind));
-        const Vec2 x1(0.3, 0.1), x2(1.5, 0.9);
-        JointedElement e(makeInner(kind, x1, x2), 1, 7);
+        const std::unique_ptr<JointedElement> joint = trialJoint(kind, 1);
+        JointedElement& e = *joint;
         const double Mr = 40;
         e.setFriction(Mr, eps);
-        e.setRelativeState(0.3, 0.5, -0.2);
         const StepRule rule = ruleFor(scheme);
-        const double scale = kind == Inner::Reissner ? 0.15 : 0.05;
         for (int trial = 0; trial < 3; ++trial) {
-          const ElementKinematics kin = trialKinematics(gen, x1, x2, trial, scale);
+          const ElementKinematics kin = trialKinematics(gen, kind, trial);
           ElemVec r;
           ElemMat k;
           ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);

@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <random>
+#include <sstream>
 #include <vector>
 
 #include "ContactTestSupport.h"
@@ -18,6 +20,7 @@
 #include "core/SpringFriction.h"
 #include "elements/Joints.h"
 #include "solvers/TimeIntegrator.h"
+#include "tests/unit/RunDeckSupport.h"
 
 namespace c2d {
 namespace {
@@ -659,6 +662,28 @@ TEST(MemberContactModel, ANodePushedPastTheCentreLineReleasesWhatItsOldSideStore
   EXPECT_EQ(as.pushedThrough(), 1);
   s.commit();
   EXPECT_NEAR(as.contactEnergy(s), before - released, 1e-12);
+}
+
+TEST(MemberContactDeck, ZeroStiffnessSwitchesMemberContactOff) {
+  // decks/collapse/bar_on_beam.inp with MEMBers,,0 (and values a study keeps
+  // for when it turns the contact on): the echo says the contact is off and
+  // its other values unused, and the bar falls through the beam as if free
+  // (g t^2 / 2 after 0.24 s), where with contact it rebounds.
+  std::ifstream in(std::string(C2D_SOURCE_DIR) + "/decks/collapse/bar_on_beam.inp");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string deck = text.str();
+  const std::string on = "  MEMBers,,k\n";
+  const auto at = deck.find(on);
+  ASSERT_NE(at, std::string::npos);
+  deck.replace(at, on.size(), "  MEMBers,,0,,,0.3,0.5\n");
+  testing::DeckTempDir dir;
+  const testing::DeckResult r = testing::runDeckText(dir, "off.inp", deck);
+  ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
+  EXPECT_NE(r.log.find("off (k = 0: the record's other values are not used)"), std::string::npos);
+  const std::vector<double> y = testing::readCsv(r.out / "off_tplot.csv").column("disp_4_2");
+  ASSERT_FALSE(y.empty());
+  EXPECT_NEAR(y.back(), -0.5 * kGravity * 0.24 * 0.24, 1e-9);
 }
 
 // --- crossings ---------------------------------------------------------------
