@@ -1,6 +1,7 @@
 #include "core/MemberCrossing.h"
 
 #include <algorithm>
+#include <array>
 
 #include "core/ContactGrid.h"
 #include "core/MemberContact.h"
@@ -14,10 +15,25 @@ double orient(const Vec2& a, const Vec2& b, const Vec2& c) {
   return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
 }
 
-bool properlyCross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+// Whether the segments ab and cd cross at a point inside both; if so t is
+// where along ab (0 at a, 1 at b) and v along cd.
+bool properlyCross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d, double& t,
+                   double& v) {
   const double o1 = orient(a, b, c), o2 = orient(a, b, d);
   const double o3 = orient(c, d, a), o4 = orient(c, d, b);
-  return ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
+  if (!(((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0))))
+    return false;
+  t = o3 / (o3 - o4);
+  v = o1 / (o1 - o2);
+  return true;
+}
+
+// The end of the member (nodes n) nearer to the crossing at fraction t along
+// it, and the distance to it.
+void nearEnd(const std::array<int, 2>& n, const Vec2& a, const Vec2& b, double t, int& node,
+             double& along) {
+  node = t <= 0.5 ? n[0] : n[1];
+  along = std::min(t, 1.0 - t) * (b - a).norm();
 }
 
 }  // namespace
@@ -52,7 +68,16 @@ std::vector<MemberCrossing> findCrossings(const Model& model, const State& s) {
       for (int m : ne1)
         for (int n : ne2)
           if (group[m] == group[n]) return;
-      if (properlyCross(a, b, at(ne2[0]), at(ne2[1]))) out.push_back({e, f});
+      const Vec2 c = at(ne2[0]), d = at(ne2[1]);
+      double t = 0.0, v = 0.0;
+      if (!properlyCross(a, b, c, d, t, v)) return;
+      MemberCrossing m;
+      m.first = e;
+      m.second = f;
+      m.point = a + t * (b - a);
+      nearEnd(ne1, a, b, t, m.nearNode[0], m.fromNode[0]);
+      nearEnd(ne2, c, d, v, m.nearNode[1], m.fromNode[1]);
+      out.push_back(m);
     });
   }
   std::sort(out.begin(), out.end(), [](const MemberCrossing& p, const MemberCrossing& q) {

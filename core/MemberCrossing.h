@@ -17,6 +17,11 @@ namespace c2d {
 
 struct MemberCrossing {
   int first = -1, second = -1;  // element indices (0-based), first < second
+  Vec2 point = Vec2::Zero();     // where the centre lines cross
+  // For each member: its end node nearer to the crossing (0-based) and the
+  // distance from that node to the crossing along the member.
+  int nearNode[2] = {-1, -1};
+  double fromNode[2] = {0.0, 0.0};
 };
 
 // Pairs ordered by (first, second), positions from the trial displacements s.u.

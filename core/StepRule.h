@@ -16,6 +16,7 @@
 // angular momentum together (elements/ReissnerFrame.h); with additive rates no
 // energy conserving force can (docs/design-notes.md). A rotation increment must
 // stay below pi in magnitude within one step.
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -104,8 +105,10 @@ struct StepRule {
   double acceleration(double r, double vn, double an) const { return ca * r + av * vn + aa * an; }
 
   // Inertia of an element's constant mass matrix m: residual m a_eff, tangent ca m diag(r').
+  // halfTan: tan(dd/2) of the two rotations when the element has them at hand.
   void addInertia(const ElemMat& m, const ElemVec& dd, const ElemVec& vn, const ElemVec& an,
-                  ElemVec& residual, ElemMat* tangent) const {
+                  ElemVec& residual, ElemMat* tangent,
+                  const std::array<double, 2>* halfTan = nullptr) const {
     ElemVec r = dd;
     if (!rotationsByCayley()) {
       residual += m * acceleration(r, vn, an);
@@ -113,8 +116,9 @@ struct StepRule {
       return;
     }
     ElemVec slope = ElemVec::Ones();
-    for (int i : {2, 2 + kNodeDofs}) {  // one tangent per rotation: c = 2t, c' = 1 + t^2
-      const double t = std::tan(0.5 * dd(i));
+    for (int a = 0; a < 2; ++a) {  // one tangent per rotation: c = 2t, c' = 1 + t^2
+      const int i = 2 + a * kNodeDofs;
+      const double t = halfTan ? (*halfTan)[a] : std::tan(0.5 * dd(i));
       r(i) = 2 * t;
       slope(i) = 1 + t * t;
     }

@@ -179,7 +179,8 @@ Vec3 ReissnerFrame::staticForce(const ElemVec& d, double m, double kt, bool want
 // difference share the denominator cos^2 x - sin^2 y).
 // m: the algorithmic bending moment, kt: dm/dK_{n+1} / (1/2 + alpha).
 Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double alpha, double m,
-                                  double kt, bool wantTangent, ElemVec& f, ElemMat& k) const {
+                                  double kt, bool wantTangent, ElemVec& f, ElemMat& k,
+                                  std::array<double, 2>& halfTan) const {
   const double l = length_;
   const Vec2 g1 = (x2_ + d.segment<2>(3) - x1_ - d.segment<2>(0)) / l;
   const Vec2 g0 = (x2_ + dn.segment<2>(3) - x1_ - dn.segment<2>(0)) / l;
@@ -208,6 +209,8 @@ Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double al
   const double sc2 = std::abs(2 * y) < 0.1 ? sinc(2 * y) : s2y / (2 * y);
   const double g = (cx * cx - sy * sy) / sc2;
   const std::array<double, 2> h = {0.5 * (cx + sx * ty), 0.5 * (cx - sx * ty)};
+  // dtheta_a / 2 = x -+ y.
+  halfTan = {(sx * cy - cx * sy) / (cx * cy + sx * sy), (sx * cy + cx * sy) / (cx * cy - sx * sy)};
   for (int a = 0; a < 2; ++a) {
     f.segment<2>(uDof(a)) = (nodeSign(a) * cx) * lamN;
     f(thDof(a)) = S * h[a] + nodeSign(a) * m * g;
@@ -259,27 +262,31 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
     return st;
   const double m1 = bend.state.M;
   Vec3 strain;
+  std::array<double, 2> halfTan{};
+  const std::array<double, 2>* halfTanAt = nullptr;
   if (rule.scheme == Scheme::MidPoint) {
     // Resultants at the alpha-weighted point: for bending the weighted moments
     // of the committed and the trial state; an elastic section's moment at t_n
     // is that of the curvature at d_n.
     const double w = 0.5 + rule.alpha;
+    halfTanAt = &halfTan;
     const double kappaN = (kin.dn(5) - kin.dn(2)) / length_ - e0_(2);
     if (law_.isElastic()) {
       strain = midPointForce(kin.d, kin.dn, rule.alpha, w * m1 + (1 - w) * law_.EI() * kappaN,
-                             bend.tangent, wantTangent, residual, tangent);
+                             bend.tangent, wantTangent, residual, tangent, halfTan);
     } else {  // inelastic: a moment whose work never exceeds the stored energy's change
       const auto mm =
           law_.midPointMoment(from, kappaN, bend.state, (kin.d(5) - kin.d(2)) / length_ - e0_(2),
                               bend.tangent, length_, w);
       strain = midPointForce(kin.d, kin.dn, rule.alpha, mm.m, mm.tangent / w, wantTangent, residual,
-                             tangent);
+                             tangent, halfTan);
     }
   } else {
     strain = staticForce(kin.d, m1, bend.tangent, wantTangent, residual, tangent);
   }
   if (rule.dynamic())
-    rule.addInertia(mass_, kin.d - kin.dn, kin.vn, kin.an, residual, wantTangent ? &tangent : nullptr);
+    rule.addInertia(mass_, kin.d - kin.dn, kin.vn, kin.an, residual, wantTangent ? &tangent : nullptr,
+                    halfTanAt);
   if (!residual.allFinite() || (wantTangent && !tangent.allFinite()))
     return Status::failure("frame-reissner element: non-finite residual or tangent");
 

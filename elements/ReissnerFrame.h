@@ -110,8 +110,11 @@ class ReissnerFrame final : public Element, public HingeCarrier, public Checkpoi
   // Internal force and tangent; both return the strains E(d).
   Vec3 staticForce(const ElemVec& d, double m, double kt, bool wantTangent, ElemVec& f,
                    ElemMat& k) const;
+  // halfTan: tan of the nodal rotation increments' halves (the Cayley rate of
+  // the inertia), found from the sines and cosines the force needs.
   Vec3 midPointForce(const ElemVec& d, const ElemVec& dn, double alpha, double m, double kt,
-                     bool wantTangent, ElemVec& f, ElemMat& k) const;
+                     bool wantTangent, ElemVec& f, ElemMat& k,
+                     std::array<double, 2>& halfTan) const;
 
   std::array<int, 2> nodes_;
   int materialNumber_ = 0;

@@ -183,10 +183,14 @@ void ProblemRun::reportCrossings() {
   const std::vector<MemberCrossing> crossings = findCrossings(model_, analysis_->state());
   crossings_ = static_cast<int>(crossings.size());
   const std::size_t shown = std::min<std::size_t>(crossings.size(), 20);
-  for (std::size_t i = 0; i < shown; ++i)
-    log_ << (i == 0 ? "\n" : "") << "  warning: members " << crossings[i].first + 1 << " and "
-         << crossings[i].second + 1 << " cross at t = " << fmt("%.6e", analysis_->state().t)
-         << "\n";
+  for (std::size_t i = 0; i < shown; ++i) {
+    const MemberCrossing& c = crossings[i];
+    log_ << (i == 0 ? "\n" : "") << "  warning: members " << c.first + 1 << " and " << c.second + 1
+         << " cross at t = " << fmt("%.6e", analysis_->state().t) << ", at ("
+         << fmt("%.3f", c.point.x()) << ", " << fmt("%.3f", c.point.y()) << ") m: "
+         << fmt("%.3f", c.fromNode[0]) << " m from node " << c.nearNode[0] + 1 << " and "
+         << fmt("%.3f", c.fromNode[1]) << " m from node " << c.nearNode[1] + 1 << "\n";
+  }
   if (crossings.size() > shown)
     log_ << "  warning: " << crossings.size() - shown << " more pairs of members cross\n";
   // Members that went through each other during the run, whatever the end.

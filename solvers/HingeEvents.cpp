@@ -1,6 +1,7 @@
 #include "solvers/HingeEvents.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "elements/JointedElement.h"
 #include "elements/Joints.h"
@@ -168,8 +169,11 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   // bracket creeps over dozens of solves. So when the last two points of one
   // side are known, the secant through them (their true demands, not Illinois'
   // scaled ones) is tried first: on the flat side it lands next to the root.
-  // Every third trial halves the bracket, which a secant creeping along a
-  // flat side would not shrink.
+  // A trial halves the bracket when the two before it did not bring the
+  // demand four times closer to the target: a secant creeping along a flat
+  // side does not. (A rule on the bracket's width instead threw away the
+  // secant's approach from one side, where the other end stays put, at every
+  // third trial, and the event then took three trials more.)
   State& s = an_.state_;
   locating_ = true;
   const double tEnd = s.t;
@@ -184,9 +188,9 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   // The points each side had before its last update, and the true demands.
   double sLoOld = -1, dLoOld = 0, sHiOld = -1, dHiOld = 0, dLoTrue = dLo, dHiTrue = dHi;
   const double target = 1.0 + 0.5 * kBand;
-  // The bracket at the resolution of the step fraction: the band is below
-  // the round-off of the solves there.
-  double width[3] = {1, 1, 1};
+  // The closest approach to the target before each trial.
+  double best[3] = {0, 0, 0};
+  double closest = std::min(std::abs(dLo - target), std::abs(dHi - target));
   for (int k = 0; k < 60 && !found && sHi - sLo > 4e-16; ++k) {
     f = -1;
     if (side == -1 && sHiOld >= 0 && dHiTrue != dHiOld)
@@ -194,15 +198,15 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
     else if (side == 1 && sLoOld >= 0 && dLoTrue != dLoOld)
       f = sLo - (dLoTrue - target) * (sLo - sLoOld) / (dLoTrue - dLoOld);
     if (!(f > sLo && f < sHi)) f = sLo + (target - dLo) * (sHi - sLo) / (dHi - dLo);
-    // Bisection when the last two trials did not halve the bracket.
-    if (k >= 2 && sHi - sLo > 0.5 * width[(k - 2) % 3]) f = 0.5 * (sLo + sHi);
-    width[k % 3] = sHi - sLo;
+    if (k >= 2 && closest > 0.25 * best[(k - 2) % 3]) f = 0.5 * (sLo + sHi);
+    best[k % 3] = closest;
     f = std::clamp(f, sLo + 1e-9 * (sHi - sLo), sHi - 1e-9 * (sHi - sLo));
     st = solveBetween(f, sLo, sHi, tEnd, lineSearch);
     if (!st) break;
     const double d = maxDemand(element);
     found = d >= 1.0 && d <= 1.0 + kBand;
     if (found) break;
+    closest = std::min(closest, std::abs(d - target));
     if (d > 1.0) {
       sHiOld = sHi;
       dHiOld = dHiTrue;
