@@ -25,6 +25,29 @@ struct Penetration {
 
 Vec2 perp(const Vec2& v) { return Vec2(-v.y(), v.x()); }  // J v: v turned by +90 degrees
 
+// The node's position along the segment, c = r1.r2 / |r2| (measured from a),
+// its gradient and Hessian in z: the coordinate of the pair's friction.
+void slipCoordinate(const Vec4& z, bool wantHessian, Penetration& out) {
+  out.g.setZero();
+  if (wantHessian) out.H.setZero();
+  const Vec2 r1 = z.head<2>(), r2 = z.tail<2>();
+  const double l2 = r2.squaredNorm();
+  out.p = 0;
+  if (l2 == 0) return;
+  const double l = std::sqrt(l2), l3 = l2 * l;
+  const double c = r1.dot(r2) / l;
+  out.p = c;
+  out.g.head<2>() = r2 / l;
+  out.g.tail<2>() = r1 / l - c * r2 / l2;
+  if (!wantHessian) return;
+  const Mat2 h12 = Mat2::Identity() / l - r2 * r2.transpose() / l3;
+  const Mat2 h22 = -(r1 * r2.transpose() + r2 * r1.transpose()) / l3 +
+                   3 * c * r2 * r2.transpose() / (l2 * l2) - c * Mat2::Identity() / l2;
+  out.H.topRightCorner<2, 2>() = h12;
+  out.H.bottomLeftCorner<2, 2>() = h12.transpose();
+  out.H.bottomRightCorner<2, 2>() = h22;
+}
+
 // Rounded end: p = h - |r| with r = r1 (end a, sign = 0) or r1 - r2 (end b).
 void endPenetration(const Vec2& r, bool endB, double h, bool wantHessian, Penetration& out) {
   const double dist = r.norm();
@@ -43,16 +66,11 @@ void endPenetration(const Vec2& r, bool endB, double h, bool wantHessian, Penetr
   }
 }
 
-void penetration(const Vec4& z, int side, double h, bool wantHessian, Penetration& out) {
-  out.g.setZero();
-  if (wantHessian) out.H.setZero();
+// The side's penetration p = h - s d, d = (r2 x r1) / |r2| the signed
+// distance from the segment's line.
+void sidePenetration(const Vec4& z, int side, double h, bool wantHessian, Penetration& out) {
   const Vec2 r1 = z.head<2>(), r2 = z.tail<2>();
   const double l2 = r2.squaredNorm();
-  if (l2 == 0) return endPenetration(r1, false, h, wantHessian, out);
-  const double xi = r1.dot(r2) / l2;
-  if (xi < 0) return endPenetration(r1, false, h, wantHessian, out);
-  if (xi > 1) return endPenetration(r1 - r2, true, h, wantHessian, out);
-  // Inside: d = (r2 x r1) / |r2|, p = h - s d.
   const double l = std::sqrt(l2), l3 = l2 * l;
   const double c = r2.x() * r1.y() - r2.y() * r1.x();
   const double s = side;
@@ -69,6 +87,45 @@ void penetration(const Vec4& z, int side, double h, bool wantHessian, Penetratio
   out.H.topRightCorner<2, 2>() = -s * h12;
   out.H.bottomLeftCorner<2, 2>() = -s * h12.transpose();
   out.H.bottomRightCorner<2, 2>() = -s * h22;
+}
+
+void penetration(const Vec4& z, int side, double h, bool wantHessian, Penetration& out,
+                 bool held = false) {
+  out.g.setZero();
+  if (wantHessian) out.H.setZero();
+  const Vec2 r1 = z.head<2>(), r2 = z.tail<2>();
+  const double l2 = r2.squaredNorm();
+  if (l2 == 0) return endPenetration(r1, false, h, wantHessian, out);
+  const double xi = r1.dot(r2) / l2;
+  if (xi < 0 || xi > 1) {
+    // A held node beyond an end on the wrong side: the side's penetration
+    // less the distance e beyond the end, p = h - s d - e, continuous with the
+    // span's (e = 0) and the rounded end's (d = 0); the rounded end alone
+    // would drop from h + |d| to h - |d| there.
+    if (held && side * (r2.x() * r1.y() - r2.y() * r1.x()) < 0) {
+      sidePenetration(z, side, h, wantHessian, out);
+      Penetration e;
+      slipCoordinate(z, wantHessian, e);  // c, measured from a
+      if (xi > 1) {                       // e = c - l
+        const double l = std::sqrt(l2);
+        e.p -= l;
+        e.g.tail<2>() -= r2 / l;
+        if (wantHessian)
+          e.H.bottomRightCorner<2, 2>() -= (Mat2::Identity() - r2 * r2.transpose() / l2) / l;
+      } else {  // e = -c
+        e.p = -e.p;
+        e.g = -e.g;
+        if (wantHessian) e.H = -e.H;
+      }
+      out.p -= e.p;
+      out.g -= e.g;
+      if (wantHessian) out.H -= e.H;
+      return;
+    }
+    return xi < 0 ? endPenetration(r1, false, h, wantHessian, out)
+                  : endPenetration(r1 - r2, true, h, wantHessian, out);
+  }
+  sidePenetration(z, side, h, wantHessian, out);
 }
 
 Vec4 relative(const PairPositions& q) {
@@ -99,36 +156,13 @@ int pairSide(const PairPositions& q) {
   return r2.x() * r1.y() - r2.y() * r1.x() >= 0 ? 1 : -1;
 }
 
-double pairPenetration(const PairPositions& q, int side, double h) {
+double pairPenetration(const PairPositions& q, int side, double h, bool held) {
   Penetration p;
-  penetration(relative(q), side, h, false, p);
+  penetration(relative(q), side, h, false, p, held);
   return p.p;
 }
 
 namespace {
-
-// The node's position along the segment, c = r1.r2 / |r2| (measured from a),
-// its gradient and Hessian in z: the coordinate of the pair's friction.
-void slipCoordinate(const Vec4& z, bool wantHessian, Penetration& out) {
-  out.g.setZero();
-  if (wantHessian) out.H.setZero();
-  const Vec2 r1 = z.head<2>(), r2 = z.tail<2>();
-  const double l2 = r2.squaredNorm();
-  out.p = 0;
-  if (l2 == 0) return;
-  const double l = std::sqrt(l2), l3 = l2 * l;
-  const double c = r1.dot(r2) / l;
-  out.p = c;
-  out.g.head<2>() = r2 / l;
-  out.g.tail<2>() = r1 / l - c * r2 / l2;
-  if (!wantHessian) return;
-  const Mat2 h12 = Mat2::Identity() / l - r2 * r2.transpose() / l3;
-  const Mat2 h22 = -(r1 * r2.transpose() + r2 * r1.transpose()) / l3 +
-                   3 * c * r2 * r2.transpose() / (l2 * l2) - c * Mat2::Identity() / l2;
-  out.H.topRightCorner<2, 2>() = h12;
-  out.H.bottomLeftCorner<2, 2>() = h12.transpose();
-  out.H.bottomRightCorner<2, 2>() = h22;
-}
 
 // The discrete gradient (Gonzalez) of a function f of z between z0 and z1:
 // D = grad f(z_m) + (f1 - f0 - grad f(z_m).dz) dz / |dz|^2, so that D.dz = f1 - f0,
@@ -160,14 +194,14 @@ Vec4 discreteGradient(const Vec4& z0, const Vec4& z1, double f0, double f1, cons
 
 bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, double h,
                  const PairLaw& law, const StepRule& rule, bool wantTangent, PairVec& force,
-                 PairMat& tangent, PairOutcome* outcome) {
+                 PairMat& tangent, PairOutcome* outcome, bool held) {
   const Vec4 z0 = relative(q0), z1 = relative(q1);
   const double k = law.k;
   const bool midPoint = rule.scheme == Scheme::MidPoint;
   const bool rubs = law.mu > 0;
   Penetration e0, e1;
-  penetration(z0, side, h, false, e0);
-  penetration(z1, side, h, wantTangent && !midPoint, e1);
+  penetration(z0, side, h, false, e0, held);
+  penetration(z1, side, h, wantTangent && !midPoint, e1, held);
   const double p0 = e0.p, p1 = e1.p;
   if (outcome) *outcome = PairOutcome{p0, p1, 0.0, 0.0};
   // Out of contact over the step: no force, and the friction spring lets go.
@@ -199,7 +233,7 @@ bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, dou
     if (wantTangent) kz = dw * e1.g * e1.g.transpose() + w * e1.H;
   } else {
     Penetration em;
-    penetration(0.5 * (z0 + z1), side, h, wantTangent, em);
+    penetration(0.5 * (z0 + z1), side, h, wantTangent, em, held);
     const Vec4 D = discreteGradient(z0, z1, p0, p1, em, e1.g, scale, w, wantTangent ? &wdD : nullptr);
     fz = w * D;
     if (wantTangent) kz = D * (dw * e1.g).transpose() + wdD;
@@ -473,8 +507,8 @@ bool MemberContact::evaluate(const ContactPair& pair, const Model& model, const 
   // contact distance exceeds its pair's present one).
   if (!positions(pair, model, s, q0, q1, slack_)) return false;
   const PairMemory* m = memory(s, pair.key());
-  return pairContact(q0, q1, pairSide(q0), reach(pair, m), law(rule, m), rule, wantTangent, force,
-                     tangent);
+  return pairContact(q0, q1, side(m, q0), reach(pair, m), law(rule, m), rule, wantTangent, force,
+                     tangent, nullptr, held(m));
 }
 
 PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, const State& s,
@@ -487,25 +521,25 @@ PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, 
     if (m) out.slipped = springFrictionEnergy(data_.k, m->stretch);
     return out;
   }
-  if (full) *full = pairPenetration(q1, pairSide(q0), distance(pair, m));
+  const int sd = side(m, q0);
+  if (full) *full = pairPenetration(q1, sd, distance(pair, m), held(m));
   PairOutcome out;
   if (q0.x == q1.x && q0.a == q1.a && q0.b == q1.b) {
     // No step (the committed state itself): nothing slides or lets go; the
     // energy is that of the memory (so that the account sees no jump where a
     // commit in place or a topology change evaluates it).
-    out.p0 = out.p1 = pairPenetration(q1, pairSide(q0), reach(pair, m));
+    out.p0 = out.p1 = pairPenetration(q1, sd, reach(pair, m), held(m));
     out.stretch = m ? m->stretch : 0.0;
     return out;
   }
   if (data_.mu <= 0) {  // frictionless: the penetrations tell all
-    const int side = pairSide(q0);
-    out.p0 = pairPenetration(q0, side, reach(pair, m));
-    out.p1 = pairPenetration(q1, side, reach(pair, m));
+    out.p0 = pairPenetration(q0, sd, reach(pair, m), held(m));
+    out.p1 = pairPenetration(q1, sd, reach(pair, m), held(m));
     return out;
   }
   PairVec f;
   PairMat k;
-  pairContact(q0, q1, pairSide(q0), reach(pair, m), law(rule, m), rule, false, f, k, &out);
+  pairContact(q0, q1, sd, reach(pair, m), law(rule, m), rule, false, f, k, &out, held(m));
   return out;
 }
 
@@ -546,29 +580,37 @@ double MemberContact::commit(const Model& model, State& s, int& pushed) const {
     double full = 0;
     const PairOutcome o = outcome(pair, model, s, lastRule_, &full);
     const bool near = positions(pair, model, s, q0, q1, slack_);
-    PairMemory next{pair.key(), 0.0, 0.0, o.stretch, distance(pair, m)};
+    PairMemory next{pair.key(), 0.0, 0.0, o.stretch, distance(pair, m), m ? m->side : 0};
     // The offset shrinks with the penetration at the full distance (never
     // while the pair presses on: its force and energy are unchanged).
     if (m) next.offset = std::min(m->offset, std::max(full, 0.0));
     if (o.p1 > 0) {
       next.q = std::max(m ? m->q : 0.0, o.p1);
-      if (near && pairSide(q1) != pairSide(q0)) {
+      const int was = near ? side(m, q0) : 0;
+      // A held side changes only past the centre line by the full distance.
+      if (near && pairSide(q1) != was && (!next.side || o.p1 > reach(pair, m) + next.h)) {
+        if (next.side) next.side = -next.side;
         // Seen from the new side the penetration is smaller (the loading point
         // kept, so that the energy only drops).
-        const double seen = pairPenetration(q1, pairSide(q1), reach(pair, m));
+        const double seen = pairPenetration(q1, -was, reach(pair, m), held(&next));
         released += crushingEnergy(data_.k, data_.restitution, next.q, o.p1) -
                     crushingEnergy(data_.k, data_.restitution, next.q, seen);
         if (seen <= 0) next.q = 0;
         ++pushed;
       }
     }
+    // A held side is let go once the node has cleared the centre line on it
+    // (from then on the side at t_n is that side) or gone around the end, and
+    // when the offset is gone.
+    if (next.side && (!near || next.offset <= 0 || pairPenetration(q1, next.side, 0.0, true) < 0))
+      next.side = 0;
     if (next.q > 0 || next.offset > 0 || next.stretch != 0) {
       nextMemory_.push_back(next);
       // Its energy at the committed state (as energy() finds it there).
       if (near)
         committedEnergy_ +=
             crushingEnergy(data_.k, data_.restitution, next.q,
-                           pairPenetration(q1, pairSide(q1), reach(pair, &next))) +
+                           pairPenetration(q1, side(&next, q1), reach(pair, &next), held(&next))) +
             springFrictionEnergy(data_.k, next.stretch);
     }
   }
@@ -578,6 +620,30 @@ double MemberContact::commit(const Model& model, State& s, int& pushed) const {
   s.pairs.assign(nextMemory_.begin(), nextMemory_.end());
   committed_ = true;
   return released;
+}
+
+int MemberContact::membersSide(const ContactPair& pair, const Model& model, const State& s,
+                               const PairPositions& q) const {
+  // The far ends of the node's members (the elements at its joint group) seen
+  // from the segment's line; members along the line tell nothing.
+  const Vec2 t = q.b - q.a;
+  const double l = t.norm();
+  if (l == 0) return 0;
+  int found = 0;
+  for (int e : live_) {
+    const auto nodes = model.element(e).nodes();
+    for (int end = 0; end < 2; ++end) {
+      if (group_[nodes[end]] != group_[pair.node]) continue;
+      const int far = nodes[1 - end];
+      const Vec2 x = model.coord(far) + Vec2(s.u[3 * far], s.u[3 * far + 1]);
+      const double d = (t.x() * (x - q.a).y() - t.y() * (x - q.a).x()) / l;
+      if (std::abs(d) <= 1e-3 * pair.h) continue;
+      const int sd = d > 0 ? 1 : -1;
+      if (found && sd != found) return 0;  // members on both sides
+      found = sd;
+    }
+  }
+  return found;
 }
 
 void MemberContact::openPairs(const Model& model, State& s) const {
@@ -598,9 +664,13 @@ void MemberContact::openPairs(const Model& model, State& s) const {
   bool added = false;
   for (const ContactPair& pair : candidates(model, s)) {
     if (memory(s, pair.key()) || !positions(pair, model, s, q0, q1)) continue;
-    const double p = pairPenetration(q1, pairSide(q1), pair.h);
+    // A node on the segment itself (a ruptured joint's end node, on the
+    // centre line of the member it was joined to) has no side of its own.
+    const bool onSegment = pairPenetration(q1, pairSide(q1), pair.h) >= (1 - 1e-6) * pair.h;
+    const int sd = onSegment ? membersSide(pair, model, s, q1) : 0;
+    const double p = pairPenetration(q1, sd ? sd : pairSide(q1), pair.h, sd != 0);
     if (p <= 0) continue;
-    s.pairs.push_back({pair.key(), 0.0, p, 0.0, pair.h});
+    s.pairs.push_back({pair.key(), 0.0, p, 0.0, pair.h, sd});
     added = true;
   }
   if (added)

@@ -43,6 +43,17 @@
 // switched on at a deformed state) gets an offset o, its penetration then,
 // and contacts at the distance h - o, the offset shrinking as the two move
 // apart: it starts at zero force and the full distance returns once apart.
+// A node set free on the segment itself (a ruptured joint's end node lies on
+// the centre line of the member it was joined to, where its own side is a
+// toss-up) is held on the side where its own members lie (the far ends of its
+// elements), until it has cleared the centre line on that side or gone
+// around the segment's end: held, it is pushed back from the wrong side also
+// beyond the ends, by p = h - s d - e (e the distance beyond the end,
+// continuous with the span's and the rounded end's), and a commit does not
+// turn it to the wrong side unless it went through by the full distance.
+// (Seen from its side at t_n, a node that the first step took a hundredth of
+// a millimetre past the line was held on the wrong side from then on, and the
+// pieces of a ruptured joint ended crossed.)
 //
 // Forces: under the static and Newmark rules the gradient of U at t_n+1; under
 // the mid-point scheme a discrete gradient, so that an impact conserves energy
@@ -76,8 +87,10 @@ struct PairPositions {
 
 // The side of the node relative to the line a->b: +1 left (or on it), -1 right.
 int pairSide(const PairPositions& q);
-// Penetration of the pair for the side s and contact distance h (see above).
-double pairPenetration(const PairPositions& q, int side, double h);
+// Penetration of the pair for the side s and contact distance h (see above);
+// held: the node is held on the side s (a ruptured joint's pair), also beyond
+// the segment's ends.
+double pairPenetration(const PairPositions& q, int side, double h, bool held = false);
 
 // The force law of a pair: penalty stiffness k, dissipation alpha (mid-point
 // scheme), restitution e and the pair's loading point q at t_n
@@ -99,7 +112,7 @@ struct PairOutcome {
 // written, when the pair carries no force.
 bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, double h,
                  const PairLaw& law, const StepRule& rule, bool wantTangent, PairVec& force,
-                 PairMat& tangent, PairOutcome* outcome = nullptr);
+                 PairMat& tangent, PairOutcome* outcome = nullptr, bool held = false);
 
 // One node-segment pair of the model.
 struct ContactPair {
@@ -156,6 +169,10 @@ class MemberContact {
   // a joint that ruptured) and has no memory gets the offset of its present
   // penetration, so that it starts at zero force.
   void openPairs(const Model& model, State& s) const;
+  // The side of the pair's segment (at the positions q) where the node's
+  // members lie, or 0 where they lie on both sides or along it.
+  int membersSide(const ContactPair& pair, const Model& model, const State& s,
+                  const PairPositions& q) const;
 
   // The pair's swept boxes are within contact distance plus `extra` at s.
   bool near(const ContactPair& pair, const Model& model, const State& s, double extra) const {
@@ -184,6 +201,11 @@ class MemberContact {
   PairOutcome outcome(const ContactPair& pair, const Model& model, const State& s,
                       const StepRule& rule, double* full = nullptr) const;
   static double distance(const ContactPair& pair, const PairMemory* m) { return m ? m->h : pair.h; }
+  // The side the node is held on: the memory's, or the one it was on at t_n.
+  static int side(const PairMemory* m, const PairPositions& q0) {
+    return m && m->side ? m->side : pairSide(q0);
+  }
+  static bool held(const PairMemory* m) { return m && m->side; }
   static double reach(const ContactPair& pair, const PairMemory* m) {
     return m ? m->h - m->offset : pair.h;
   }

@@ -24,6 +24,9 @@ struct PairMemory {
   double q = 0, offset = 0;
   double stretch = 0;  // the friction spring's stretch along the segment
   double h = 0;        // the contact distance it met at (kept while in memory)
+  // The side of the segment the node is held on while it has not cleared the
+  // centre line (+1 left, -1 right; 0: the side it was on at t_n).
+  int side = 0;
 };
 
 struct State {

@@ -695,6 +695,7 @@ void Analysis::writeState(std::ostream& out) const {
     put(out, m.offset);
     put(out, m.stretch);
     put(out, m.h);
+    put(out, m.side);
   }
   for (double x : {state_.t, state_.tn, state_.dt, state_.prop, state_.propn, state_.arcLambda,
                    state_.arcLambdan})
@@ -751,6 +752,7 @@ void Analysis::readState(std::istream& in) {
     m.offset = get<double>(in);
     m.stretch = get<double>(in);
     m.h = get<double>(in);
+    m.side = get<int>(in);
   }
   for (double* x : {&state_.t, &state_.tn, &state_.dt, &state_.prop, &state_.propn,
                     &state_.arcLambda, &state_.arcLambdan})

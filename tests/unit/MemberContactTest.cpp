@@ -175,6 +175,55 @@ TEST(MemberContactPair, CrushingAndFrictionTangentsMatchFiniteDifferences) {
   EXPECT_GE(checked, 300);
 }
 
+TEST(MemberContactPair, HeldSideTangentsMatchFiniteDifferences) {
+  // A node held on either side (the pairs of a ruptured joint), in every
+  // region: on the wrong side inside the span and beyond either end.
+  const double k = 3e3, hc = 0.12;
+  int checked = 0;
+  for (const TimeIntegrator& ti : {TimeIntegrator::statics(), TimeIntegrator::midPoint(0.2, 0)})
+    for (const PairLaw& law : inelasticLaws(k, ti.alpha))
+      for (const auto& [q0, q1] : pairCases())
+        for (int side : {1, -1}) {
+          const StepRule rule = ti.rule(0.01);
+          PairVec f, fp, fm;
+          PairMat K, unused;
+          if (!pairContact(q0, q1, side, hc, law, rule, true, f, K, nullptr, true) || K.isZero())
+            continue;
+          PairMat fd;
+          const double h = 1e-7;
+          for (int i = 0; i < 6; ++i) {
+            pairContact(q0, shifted(q1, i, h), side, hc, law, rule, false, fp, unused, nullptr, true);
+            pairContact(q0, shifted(q1, i, -h), side, hc, law, rule, false, fm, unused, nullptr,
+                        true);
+            fd.col(i) = (fp - fm) / (2 * h);
+          }
+          EXPECT_LT((fd - K).cwiseAbs().maxCoeff(), 1e-5 * K.cwiseAbs().maxCoeff())
+              << ti.describe() << " side " << side << " x0 " << q0.x.transpose() << " x1 "
+              << q1.x.transpose();
+          ++checked;
+        }
+  EXPECT_GE(checked, 100);
+}
+
+TEST(MemberContactPair, HeldSideIsContinuousAroundTheSegmentsEnds) {
+  // Held above a segment along x from 0 to 1: a node below it is pushed up
+  // inside the span (p = h + |d|) and, beyond the end, by p = h + |d| - e (e
+  // the distance beyond the end), which meets the span's at the end and the
+  // rounded end's (h - e) on the line; above it the rounded end holds.
+  const Vec2 a(0, 0), b(1, 0);
+  const double h = 0.01, eps = 1e-9;
+  auto p = [&](double x, double y) { return pairPenetration({Vec2(x, y), a, b}, 1, h, true); };
+  EXPECT_NEAR(p(1 - eps, -0.003), h + 0.003, 1e-8);
+  EXPECT_NEAR(p(1 + eps, -0.003), h + 0.003, 1e-8);
+  EXPECT_NEAR(p(1.004, -0.003), h + 0.003 - 0.004, 1e-12);
+  EXPECT_NEAR(p(1.004, -eps), h - 0.004, 1e-8);
+  EXPECT_NEAR(p(1.004, eps), h - 0.004, 1e-8);
+  EXPECT_NEAR(p(-0.002, -0.005), h + 0.005 - 0.002, 1e-12);
+  EXPECT_NEAR(p(1.003, 0.004), h - 0.005, 1e-12);  // rounded end on its side
+  // Not held: the rounded end on both sides.
+  EXPECT_NEAR(pairPenetration({Vec2(1.004, -0.003), a, b}, 1, h), h - 0.005, 1e-12);
+}
+
 TEST(MemberContactPair, MidPointWorkIsStoredPlusDissipatedEnergy) {
   // f . (q1 - q0) = (U1 - U0) + crushing + alpha term + friction's sliding,
   // every dissipated part >= 0, with U the crushing law's energy at the loading
@@ -628,6 +677,54 @@ TEST(MemberContactModel, MembersSetFreeInsideTheirDistanceStartAtZeroForce) {
   ASSERT_TRUE(as.assemble(s, rule, factors, false));
   EXPECT_GT(as.contactEnergy(s), 0.0);
   (void)a;
+}
+
+TEST(MemberContactModel, ARupturedJointsEndNodeIsHeldOnItsMembersSide) {
+  // The two rods of the test above: rod b's end node lies on rod a's centre
+  // line, at its end, so its side is a toss-up; it is held on the side where
+  // rod b lies (above). Rod b moved 1 mm down, it is pushed back, and a
+  // commit there does not turn it to the wrong side: the contact still pushes
+  // up at the next step. Above the line again, the pair lets the held side go.
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 1e4, 10, 2.5e-3 / 3);
+  const int a = newRod(m, Vec2(0, 0), Vec2(1, 0), 4);
+  const int b = newRod(m, Vec2(1, 0), Vec2(1, 1), 4);
+  m.memberContact() = MemberContactData{1e3, -1, -1};
+  Assembler as(m);
+  as.refresh();
+  State s;
+  s.resize(m.numNodes());
+  as.openContacts(s);
+  // The pair (node b, rod a's last element) and (rod a's end node, rod b's first).
+  const int lastA = 3, firstB = 4;
+  auto pairOf = [&](int node, int element) -> const PairMemory* {
+    for (const PairMemory& p : s.pairs)
+      if (p.key == ContactPair{node, element}.key()) return &p;
+    return nullptr;
+  };
+  ASSERT_NE(pairOf(b, lastA), nullptr);
+  EXPECT_EQ(pairOf(b, lastA)->side, 1);
+  ASSERT_NE(pairOf(a + 4, firstB), nullptr);
+  EXPECT_EQ(pairOf(a + 4, firstB)->side, 1);  // rod a lies left of rod b (up its axis)
+  const StepRule rule = TimeIntegrator::statics().rule(1.0);
+  const Eigen::VectorXd factors = Eigen::VectorXd::Zero(3 * m.numNodes());
+  for (int n = b; n <= b + 4; ++n) s.u(3 * n + 1) = -0.001;  // rod b moved down 1 mm
+  ASSERT_TRUE(as.assemble(s, rule, factors, false));
+  const double below = as.contactEnergy(s);
+  EXPECT_NEAR(below, 0.5 * 1e3 * 0.001 * 0.001, 1e-12);
+  as.commitContact(s);
+  s.commit();
+  EXPECT_EQ(pairOf(b, lastA)->side, 1);
+  ASSERT_TRUE(as.assemble(s, rule, factors, false));
+  EXPECT_NEAR(as.contactEnergy(s), below, 1e-15);
+  EXPECT_EQ(as.pushedThrough(), 0);
+  // Cleared above the line: from then on the side at t_n, the same.
+  for (int n = b; n <= b + 4; ++n) s.u(3 * n + 1) = 0.002;
+  ASSERT_TRUE(as.assemble(s, rule, factors, false));
+  as.commitContact(s);
+  s.commit();
+  ASSERT_NE(pairOf(b, lastA), nullptr);
+  EXPECT_EQ(pairOf(b, lastA)->side, 0);
 }
 
 TEST(MemberContactModel, ANodePushedPastTheCentreLineReleasesWhatItsOldSideStored) {
