@@ -338,6 +338,11 @@ class GroupGraph {
 
 }  // namespace
 
+double sectionRadius(const Model& model, int element) {
+  const MaterialSet* m = model.material(model.element(element).materialNumber());
+  return m && m->A > 0 && m->I > 0 ? std::sqrt(3 * m->I / m->A) : 0.0;
+}
+
 std::vector<int> jointGroups(const Model& model) {
   std::vector<int> parent(model.numNodes());
   std::iota(parent.begin(), parent.end(), 0);
@@ -375,8 +380,7 @@ MemberContact::MemberContact(const Model& model, const DofMap& dofs)
   double length = 0;
   for (int e : live_) {
     const Element& el = model.element(e);
-    if (const MaterialSet* m = model.material(el.materialNumber()); m && m->A > 0 && m->I > 0)
-      elementRadius_[e] = std::sqrt(3 * m->I / m->A);
+    if (const double r = sectionRadius(model, e); r > 0) elementRadius_[e] = r;
     const auto nodes = el.nodes();
     length += (model.coord(nodes[0]) - model.coord(nodes[1])).norm();
     for (int n : nodes) nodeRadius_[n] = std::max(nodeRadius_[n], elementRadius_[e]);
@@ -600,9 +604,11 @@ double MemberContact::commit(const Model& model, State& s, int& pushed) const {
       }
     }
     // A held side is let go once the node has cleared the centre line on it
-    // (from then on the side at t_n is that side) or gone around the end, and
-    // when the offset is gone.
-    if (next.side && (!near || next.offset <= 0 || pairPenetration(q1, next.side, 0.0, true) < 0))
+    // by a quarter of the contact distance, or gone as far around the end
+    // (from then on the side at t_n is that side, and the contact distance it
+    // has gained keeps it there), and when the offset is gone.
+    if (next.side && (!near || next.offset <= 0 ||
+                      pairPenetration(q1, next.side, 0.0, true) < -0.25 * next.h))
       next.side = 0;
     if (next.q > 0 || next.offset > 0 || next.stretch != 0) {
       nextMemory_.push_back(next);
@@ -661,7 +667,9 @@ void MemberContact::openPairs(const Model& model, State& s) const {
   if (s.pairs.capacity() < room) s.pairs.reserve(room);
   if (nextMemory_.capacity() < room) nextMemory_.reserve(room);
   PairPositions q0, q1;
-  bool added = false;
+  // The new pairs gathered apart: appended to the memory they would unsort
+  // it for the lookups of the pairs after them.
+  nextMemory_.clear();
   for (const ContactPair& pair : candidates(model, s)) {
     if (memory(s, pair.key()) || !positions(pair, model, s, q0, q1)) continue;
     // A node on the segment itself (a ruptured joint's end node, on the
@@ -670,12 +678,12 @@ void MemberContact::openPairs(const Model& model, State& s) const {
     const int sd = onSegment ? membersSide(pair, model, s, q1) : 0;
     const double p = pairPenetration(q1, sd ? sd : pairSide(q1), pair.h, sd != 0);
     if (p <= 0) continue;
-    s.pairs.push_back({pair.key(), 0.0, p, 0.0, pair.h, sd});
-    added = true;
+    nextMemory_.push_back({pair.key(), 0.0, p, 0.0, pair.h, sd});
   }
-  if (added)
-    std::sort(s.pairs.begin(), s.pairs.end(),
-              [](const PairMemory& a, const PairMemory& b) { return a.key < b.key; });
+  if (nextMemory_.empty()) return;
+  s.pairs.insert(s.pairs.end(), nextMemory_.begin(), nextMemory_.end());
+  std::sort(s.pairs.begin(), s.pairs.end(),
+            [](const PairMemory& a, const PairMemory& b) { return a.key < b.key; });
 }
 
 }  // namespace c2d

@@ -127,6 +127,10 @@ struct ContactPair {
 // For every node: the representative of the nodes tied to it by joints.
 std::vector<int> jointGroups(const Model& model);
 
+// An element's contact radius from its section, sqrt(3 I / A) (half the depth
+// of the rectangle with the section's A and I); 0 without a section.
+double sectionRadius(const Model& model, int element);
+
 class MemberContact {
  public:
   // Per topology version: contact nodes (used, not aliased), radii, joint

@@ -10,6 +10,11 @@ namespace c2d {
 
 namespace {
 
+// Two members whose centre lines cross within this fraction of their contact
+// distance (the sum of their section radii) of an end of each: their tips
+// overlap by less than the penalty contact lets them press into each other.
+constexpr double kTipOverlap = 0.05;
+
 // Twice the signed area of the triangle (a, b, c).
 double orient(const Vec2& a, const Vec2& b, const Vec2& c) {
   return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
@@ -77,6 +82,8 @@ std::vector<MemberCrossing> findCrossings(const Model& model, const State& s) {
       m.point = a + t * (b - a);
       nearEnd(ne1, a, b, t, m.nearNode[0], m.fromNode[0]);
       nearEnd(ne2, c, d, v, m.nearNode[1], m.fromNode[1]);
+      const double tip = kTipOverlap * (sectionRadius(model, e) + sectionRadius(model, f));
+      if (m.fromNode[0] < tip && m.fromNode[1] < tip) return;  // tips pressed together
       out.push_back(m);
     });
   }

@@ -2,7 +2,12 @@
 // Members passing through each other: the pairs of elements whose centre lines
 // cross at a state. Elements that share a node, or nodes tied by a joint, meet
 // by construction and are not checked. A proper crossing only: segments that
-// touch or overlap along a line are not reported.
+// touch or overlap along a line are not reported, nor two whose crossing lies
+// within 5 % of their contact distance (the sum of their section radii,
+// sqrt(3 I / A) each) of an end of each: their tips overlap by millimetres,
+// as two pieces of a ruptured joint pressed together by the penalty contact
+// do (the node held on the other's centre line penetrates it by its force
+// over k).
 //
 // The check is linear in the number of elements (core/ContactGrid.h). A run
 // calls it at its end and reports every crossing in its log: penalty contact

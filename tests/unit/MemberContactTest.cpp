@@ -684,7 +684,7 @@ TEST(MemberContactModel, ARupturedJointsEndNodeIsHeldOnItsMembersSide) {
   // line, at its end, so its side is a toss-up; it is held on the side where
   // rod b lies (above). Rod b moved 1 mm down, it is pushed back, and a
   // commit there does not turn it to the wrong side: the contact still pushes
-  // up at the next step. Above the line again, the pair lets the held side go.
+  // up at the next step. Clear of the line, the pair lets the held side go.
   Model m;
   m.materials()[1] = rod(1, 1e4, 1e4, 1e4, 10, 2.5e-3 / 3);
   const int a = newRod(m, Vec2(0, 0), Vec2(1, 0), 4);
@@ -718,13 +718,40 @@ TEST(MemberContactModel, ARupturedJointsEndNodeIsHeldOnItsMembersSide) {
   ASSERT_TRUE(as.assemble(s, rule, factors, false));
   EXPECT_NEAR(as.contactEnergy(s), below, 1e-15);
   EXPECT_EQ(as.pushedThrough(), 0);
-  // Cleared above the line: from then on the side at t_n, the same.
-  for (int n = b; n <= b + 4; ++n) s.u(3 * n + 1) = 0.002;
-  ASSERT_TRUE(as.assemble(s, rule, factors, false));
-  as.commitContact(s);
-  s.commit();
-  ASSERT_NE(pairOf(b, lastA), nullptr);
-  EXPECT_EQ(pairOf(b, lastA)->side, 0);
+  // Above the line by 2 mm it is still held; clear of it by a quarter of the
+  // contact distance (0.25 * 0.0316 m), the side at t_n takes over.
+  for (const auto& [y, held] : {std::pair{0.002, 1}, std::pair{0.01, 0}}) {
+    for (int n = b; n <= b + 4; ++n) s.u(3 * n + 1) = y;
+    ASSERT_TRUE(as.assemble(s, rule, factors, false));
+    as.commitContact(s);
+    s.commit();
+    ASSERT_NE(pairOf(b, lastA), nullptr);
+    EXPECT_EQ(pairOf(b, lastA)->side, held) << y;
+  }
+}
+
+TEST(MemberContactModel, OpeningPairsKeepsOneMemoryPerPair) {
+  // The two rods above, the pair (rod b's end node, rod a's last element)
+  // already in memory: opening the others (whose keys sort before it) must
+  // not give it a second memory.
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 1e4, 10, 2.5e-3 / 3);
+  newRod(m, Vec2(0, 0), Vec2(1, 0), 4);
+  const int b = newRod(m, Vec2(1, 0), Vec2(1, 1), 4);
+  m.memberContact() = MemberContactData{1e3, -1, -1};
+  Assembler as(m);
+  as.refresh();
+  State s;
+  s.resize(m.numNodes());
+  const std::uint64_t known = ContactPair{b, 3}.key();
+  s.pairs.push_back({known, 0.0, 0.01, 0.0, 0.0316, 0});
+  as.openContacts(s);
+  ASSERT_GT(s.pairs.size(), 1u);
+  int copies = 0;
+  for (const PairMemory& p : s.pairs) copies += p.key == known;
+  EXPECT_EQ(copies, 1);
+  EXPECT_TRUE(std::is_sorted(s.pairs.begin(), s.pairs.end(),
+                             [](const PairMemory& x, const PairMemory& y) { return x.key < y.key; }));
 }
 
 TEST(MemberContactModel, ANodePushedPastTheCentreLineReleasesWhatItsOldSideStored) {
@@ -812,6 +839,20 @@ TEST(MemberCrossing, ReportsCrossingMembersOnly) {
   ASSERT_EQ(crossings.size(), 2u);
   EXPECT_EQ(crossings[0].first, 0);
   EXPECT_EQ(crossings[0].second, 3);
+}
+
+TEST(MemberCrossing, TipsPressedTogetherDoNotCross) {
+  // Section radius sqrt(3 I / A) = 0.0173, so tips within 5 % of 0.0346 m
+  // (1.7 mm) of the crossing are pressed together, not through each other.
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 50.0, 1.0, 1e-4);
+  newRod(m, Vec2(3, 0), Vec2(4, 0), 1);                   // element 0
+  const int q = newRod(m, Vec2(3.001, 0.5), Vec2(3.0005, -0.0005), 1);  // its tip 0.5 mm under
+  State s;
+  s.resize(m.numNodes());
+  EXPECT_TRUE(findCrossings(m, s).empty());
+  s.u(3 * (q + 1) + 1) = -0.0095;  // the tip 10 mm under: through
+  ASSERT_EQ(findCrossings(m, s).size(), 1u);
 }
 
 }  // namespace
