@@ -304,8 +304,8 @@ double Assembler::contactEnergy(const State& s) const {
 }
 
 double Assembler::commitContact(State& s) {
-  const double released = members_ ? members_->commit(model_, s, pushedThrough_) : 0.0;
-  pushedThroughEnergy_ += released;
+  const double released =
+      members_ ? members_->commit(model_, s, pushedThrough_, pushedThroughEnergy_) : 0.0;
   const auto& ground = model_.ground();
   if (!ground) return released;
   for (int n = 0; n < model_.numNodes(); ++n) {

@@ -572,11 +572,12 @@ double MemberContact::dissipation(const Model& model, const State& s, const Step
   return d;
 }
 
-double MemberContact::commit(const Model& model, State& s, int& pushed) const {
+double MemberContact::commit(const Model& model, State& s, int& pushed,
+                             double& pushedEnergy) const {
   const std::vector<ContactPair>& pairs = candidates(model, s);
   nextMemory_.clear();
   if (nextMemory_.capacity() < pairs.size()) nextMemory_.reserve(2 * pairs.size());
-  double released = 0;
+  double released = 0, letGo = 0;
   committedEnergy_ = 0;
   PairPositions q0, q1;
   for (const ContactPair& pair : pairs) {
@@ -585,6 +586,7 @@ double MemberContact::commit(const Model& model, State& s, int& pushed) const {
     const PairOutcome o = outcome(pair, model, s, lastRule_, &full);
     const bool near = positions(pair, model, s, q0, q1, slack_);
     PairMemory next{pair.key(), 0.0, 0.0, o.stretch, distance(pair, m), m ? m->side : 0};
+    bool flipped = false;
     // The offset shrinks with the penetration at the full distance (never
     // while the pair presses on: its force and energy are unchanged).
     if (m) next.offset = std::min(m->offset, std::max(full, 0.0));
@@ -601,31 +603,45 @@ double MemberContact::commit(const Model& model, State& s, int& pushed) const {
                     crushingEnergy(data_.k, data_.restitution, next.q, seen);
         if (seen <= 0) next.q = 0;
         ++pushed;
+        flipped = true;
       }
     }
     // A held side is let go once the node has cleared the centre line on it
     // by a quarter of the contact distance, or gone as far around the end
     // (from then on the side at t_n is that side, and the contact distance it
     // has gained keeps it there), and when the offset is gone.
+    // A held node can press on beyond the reach of the pair's boxes at the
+    // committed positions alone (far on the wrong side beyond an end), where
+    // energy() does not see it.
+    const bool nearAfter = near && reachesAt(pair, q1);
+    const bool wasHeld = next.side != 0;
     if (next.side && (!near || next.offset <= 0 ||
                       pairPenetration(q1, next.side, 0.0, true) < -0.25 * next.h))
       next.side = 0;
-    if (next.q > 0 || next.offset > 0 || next.stretch != 0) {
-      nextMemory_.push_back(next);
-      // Its energy at the committed state (as energy() finds it there).
-      if (near)
-        committedEnergy_ +=
-            crushingEnergy(data_.k, data_.restitution, next.q,
-                           pairPenetration(q1, side(&next, q1), reach(pair, &next), held(&next))) +
-            springFrictionEnergy(data_.k, next.stretch);
-    }
+    const bool kept = next.q > 0 || next.offset > 0 || next.stretch != 0;
+    // Its energy at the committed state (as energy() finds it there).
+    const double after =
+        kept && nearAfter
+            ? crushingEnergy(data_.k, data_.restitution, next.q,
+                             pairPenetration(q1, side(&next, q1), reach(pair, &next), held(&next))) +
+                  springFrictionEnergy(data_.k, next.stretch)
+            : 0.0;
+    committedEnergy_ += after;
+    // What a held pair stored at the end of the step and does not store so
+    // seen from its new side, or apart, is released (the trial energy counted
+    // it; a pushed pair booked its own above).
+    if (wasHeld && !flipped)
+      letGo += crushingEnergy(data_.k, data_.restitution, m ? m->q : 0.0, o.p1) +
+               springFrictionEnergy(data_.k, o.stretch) - after;
+    if (kept) nextMemory_.push_back(next);
   }
   // Candidates are sorted by key, so is the memory. Copied, with room to
   // double, so that steps allocate nothing while the contacts change little.
   if (s.pairs.capacity() < nextMemory_.size()) s.pairs.reserve(2 * nextMemory_.size());
   s.pairs.assign(nextMemory_.begin(), nextMemory_.end());
   committed_ = true;
-  return released;
+  pushedEnergy += released;
+  return released + letGo;
 }
 
 int MemberContact::membersSide(const ContactPair& pair, const Model& model, const State& s,

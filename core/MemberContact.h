@@ -161,8 +161,9 @@ class MemberContact {
   // Returns the energy released: a pair whose node ended the step past the
   // segment's centre line is seen from its new side from then on, and the
   // energy it stored from the old side is gone (its force pushed the node on);
-  // `pushed` counts such pairs.
-  double commit(const Model& model, State& s, int& pushed) const;
+  // `pushed` counts such pairs, `pushedEnergy` adds what they released. So is
+  // what a held pair stored and stores no more once let go (or apart).
+  double commit(const Model& model, State& s, int& pushed, double& pushedEnergy) const;
   // The stored energy at the committed state s: as found by this contact's
   // last commit (no pass over the pairs), or evaluated when it made none.
   double committedEnergy(const Model& model, const State& s) const {
@@ -179,6 +180,13 @@ class MemberContact {
                   const PairPositions& q) const;
 
   // The pair's swept boxes are within contact distance plus `extra` at s.
+  // The pair's boxes at the positions q alone are within contact distance
+  // (plus the slack of its memory): energy() at a committed state sees it.
+  bool reachesAt(const ContactPair& pair, const PairPositions& q) const {
+    Box seg = Box::point(q.a.x(), q.a.y());
+    seg.add(q.b.x(), q.b.y());
+    return Box::point(q.x.x(), q.x.y()).inflated(pair.h + slack_).overlaps(seg);
+  }
   bool near(const ContactPair& pair, const Model& model, const State& s, double extra) const {
     PairPositions q0, q1;
     return positions(pair, model, s, q0, q1, extra);

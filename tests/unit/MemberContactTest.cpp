@@ -730,6 +730,36 @@ TEST(MemberContactModel, ARupturedJointsEndNodeIsHeldOnItsMembersSide) {
   }
 }
 
+TEST(MemberContactModel, ACommitReleasesWhatAHeldPairNoLongerStores) {
+  // Rod b's end node, held above rod a, ends a step beyond rod a's end and
+  // below its line (the held side's wedge presses it: p = |d| - e > 0) but
+  // farther from the segment than the contact distance: at the committed
+  // state alone the pair is apart. What it stored is released at the commit,
+  // so that the energy before the commit less the released equals the energy
+  // after it.
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 1e4, 10, 2.5e-3 / 3);  // h = 0.0316
+  newRod(m, Vec2(0, 0), Vec2(1, 0), 4);
+  const int b = newRod(m, Vec2(1, 0), Vec2(1, 1), 4);
+  m.memberContact() = MemberContactData{1e3, -1, -1};
+  Assembler as(m);
+  as.refresh();
+  State s;
+  s.resize(m.numNodes());
+  as.openContacts(s);
+  s.u(3 * b + 0) = 0.03;
+  s.u(3 * b + 1) = -0.04;
+  const StepRule rule = TimeIntegrator::statics().rule(1.0);
+  const Eigen::VectorXd factors = Eigen::VectorXd::Zero(3 * m.numNodes());
+  ASSERT_TRUE(as.assemble(s, rule, factors, false));
+  const double before = as.contactEnergy(s);
+  EXPECT_GT(before, 0.0);
+  const double released = as.commitContact(s);
+  s.commit();
+  EXPECT_NEAR(before - released, as.contactEnergy(s), 1e-12);
+  EXPECT_EQ(as.contactEnergy(s), 0.0);
+}
+
 TEST(MemberContactModel, OpeningPairsKeepsOneMemoryPerPair) {
   // The two rods above, the pair (rod b's end node, rod a's last element)
   // already in memory: opening the others (whose keys sort before it) must
