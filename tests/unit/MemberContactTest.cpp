@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <memory>
 #include <cmath>
 #include <fstream>
 #include <random>
@@ -647,26 +648,41 @@ TEST(MemberContactFriction, BarOnTiltedBeamStaysOrSlides) {
   EXPECT_GT(slides, 0.05 * kGravity * t * t);
 }
 
+// Two rods meeting end to end at x = 1 at a right angle, their end nodes
+// coincident but not tied (a joint that ruptured): rod a along x from 0 to 1,
+// rod b up from (1, 0), four elements each; section radius sqrt(3 I / A) =
+// 0.0158 (contact distance 0.0316), member contact k = 1e3.
+// Statics, no loads.
+struct RupturedCorner {
+  Model m;
+  int a = 0, b = 0;
+  std::unique_ptr<Assembler> as;
+  State s;
+  StepRule rule = TimeIntegrator::statics().rule(1.0);
+  Eigen::VectorXd factors;
+  RupturedCorner() {
+    m.materials()[1] = rod(1, 1e4, 1e4, 1e4, 10, 2.5e-3 / 3);
+    a = newRod(m, Vec2(0, 0), Vec2(1, 0), 4);
+    b = newRod(m, Vec2(1, 0), Vec2(1, 1), 4);
+    m.memberContact() = MemberContactData{1e3, -1, -1};
+    as = std::make_unique<Assembler>(m);
+    as->refresh();
+    s.resize(m.numNodes());
+    factors = Eigen::VectorXd::Zero(3 * m.numNodes());
+  }
+};
+
 TEST(MemberContactModel, MembersSetFreeInsideTheirDistanceStartAtZeroForce) {
-  // Two rods meeting end to end at x = 1 at a right angle, their end nodes
-  // coincident but not tied (a joint that ruptured): each end node lies on the
+  // The ruptured corner: each end node lies on the
   // other rod's end, inside the contact distance. They start at zero force
   // (the offsets); one end moved into the other rod's span past its centre
   // line is pushed back.
-  Model m;
-  m.materials()[1] = rod(1, 1e4, 1e4, 1e4, 10, 2.5e-3 / 3);  // r = sqrt(3 I / A) = 0.016
-  const int a = newRod(m, Vec2(0, 0), Vec2(1, 0), 4);
-  const int b = newRod(m, Vec2(1, 0), Vec2(1, 1), 4);
-  m.memberContact() = MemberContactData{1e3, -1, -1};
-  Assembler as(m);
-  as.refresh();
-  State s;
-  s.resize(m.numNodes());
+  RupturedCorner c;
+  auto& [m, a, b, corner, s, rule, factors] = c;
+  Assembler& as = *corner;
   as.openContacts(s);
   ASSERT_FALSE(s.pairs.empty());
   for (const PairMemory& p : s.pairs) EXPECT_GT(p.offset, 0.0);
-  const StepRule rule = TimeIntegrator::statics().rule(1.0);
-  const Eigen::VectorXd factors = Eigen::VectorXd::Zero(3 * m.numNodes());
   ASSERT_TRUE(as.assemble(s, rule, factors, false));
   EXPECT_EQ(as.contactForces().cwiseAbs().maxCoeff(), 0.0);
   EXPECT_EQ(as.contactEnergy(s), 0.0);
@@ -676,29 +692,22 @@ TEST(MemberContactModel, MembersSetFreeInsideTheirDistanceStartAtZeroForce) {
   s.u(3 * b + 1) = -0.01;
   ASSERT_TRUE(as.assemble(s, rule, factors, false));
   EXPECT_GT(as.contactEnergy(s), 0.0);
-  (void)a;
 }
 
 TEST(MemberContactModel, ARupturedJointsEndNodeIsHeldOnItsMembersSide) {
-  // The two rods of the test above: rod b's end node lies on rod a's centre
+  // The ruptured corner: rod b's end node lies on rod a's centre
   // line, at its end, so its side is a toss-up; it is held on the side where
   // rod b lies (above). Rod b moved 1 mm down, it is pushed back, and a
   // commit there does not turn it to the wrong side: the contact still pushes
   // up at the next step. Clear of the line, the pair lets the held side go.
-  Model m;
-  m.materials()[1] = rod(1, 1e4, 1e4, 1e4, 10, 2.5e-3 / 3);
-  const int a = newRod(m, Vec2(0, 0), Vec2(1, 0), 4);
-  const int b = newRod(m, Vec2(1, 0), Vec2(1, 1), 4);
-  m.memberContact() = MemberContactData{1e3, -1, -1};
-  Assembler as(m);
-  as.refresh();
-  State s;
-  s.resize(m.numNodes());
+  RupturedCorner c;
+  auto& [m, a, b, corner, s, rule, factors] = c;
+  Assembler& as = *corner;
   as.openContacts(s);
   // The pair (node b, rod a's last element) and (rod a's end node, rod b's first).
   const int lastA = 3, firstB = 4;
   auto pairOf = [&](int node, int element) -> const PairMemory* {
-    for (const PairMemory& p : s.pairs)
+    for (const PairMemory& p : c.s.pairs)
       if (p.key == ContactPair{node, element}.key()) return &p;
     return nullptr;
   };
@@ -706,8 +715,6 @@ TEST(MemberContactModel, ARupturedJointsEndNodeIsHeldOnItsMembersSide) {
   EXPECT_EQ(pairOf(b, lastA)->side, 1);
   ASSERT_NE(pairOf(a + 4, firstB), nullptr);
   EXPECT_EQ(pairOf(a + 4, firstB)->side, 1);  // rod a lies left of rod b (up its axis)
-  const StepRule rule = TimeIntegrator::statics().rule(1.0);
-  const Eigen::VectorXd factors = Eigen::VectorXd::Zero(3 * m.numNodes());
   for (int n = b; n <= b + 4; ++n) s.u(3 * n + 1) = -0.001;  // rod b moved down 1 mm
   ASSERT_TRUE(as.assemble(s, rule, factors, false));
   const double below = as.contactEnergy(s);
@@ -737,20 +744,12 @@ TEST(MemberContactModel, ACommitReleasesWhatAHeldPairNoLongerStores) {
   // state alone the pair is apart. What it stored is released at the commit,
   // so that the energy before the commit less the released equals the energy
   // after it.
-  Model m;
-  m.materials()[1] = rod(1, 1e4, 1e4, 1e4, 10, 2.5e-3 / 3);  // h = 0.0316
-  newRod(m, Vec2(0, 0), Vec2(1, 0), 4);
-  const int b = newRod(m, Vec2(1, 0), Vec2(1, 1), 4);
-  m.memberContact() = MemberContactData{1e3, -1, -1};
-  Assembler as(m);
-  as.refresh();
-  State s;
-  s.resize(m.numNodes());
+  RupturedCorner c;
+  auto& [m, a, b, corner, s, rule, factors] = c;
+  Assembler& as = *corner;
   as.openContacts(s);
   s.u(3 * b + 0) = 0.03;
   s.u(3 * b + 1) = -0.04;
-  const StepRule rule = TimeIntegrator::statics().rule(1.0);
-  const Eigen::VectorXd factors = Eigen::VectorXd::Zero(3 * m.numNodes());
   ASSERT_TRUE(as.assemble(s, rule, factors, false));
   const double before = as.contactEnergy(s);
   EXPECT_GT(before, 0.0);
@@ -761,18 +760,12 @@ TEST(MemberContactModel, ACommitReleasesWhatAHeldPairNoLongerStores) {
 }
 
 TEST(MemberContactModel, OpeningPairsKeepsOneMemoryPerPair) {
-  // The two rods above, the pair (rod b's end node, rod a's last element)
+  // The ruptured corner, the pair (rod b's end node, rod a's last element)
   // already in memory: opening the others (whose keys sort before it) must
   // not give it a second memory.
-  Model m;
-  m.materials()[1] = rod(1, 1e4, 1e4, 1e4, 10, 2.5e-3 / 3);
-  newRod(m, Vec2(0, 0), Vec2(1, 0), 4);
-  const int b = newRod(m, Vec2(1, 0), Vec2(1, 1), 4);
-  m.memberContact() = MemberContactData{1e3, -1, -1};
-  Assembler as(m);
-  as.refresh();
-  State s;
-  s.resize(m.numNodes());
+  RupturedCorner c;
+  auto& [m, a, b, corner, s, rule, factors] = c;
+  Assembler& as = *corner;
   const std::uint64_t known = ContactPair{b, 3}.key();
   s.pairs.push_back({known, 0.0, 0.01, 0.0, 0.0316, 0});
   as.openContacts(s);
