@@ -25,6 +25,12 @@ struct Penetration {
 
 Vec2 perp(const Vec2& v) { return Vec2(-v.y(), v.x()); }  // J v: v turned by +90 degrees
 
+// Held sides (the pairs of a ruptured joint), as fractions of the contact
+// distance: a node this close to a segment is on it, a member whose far end
+// is this close to the segment's line lies along it, and a held node this far
+// clear of the line (or around the end) is let go.
+constexpr double kOnSegment = 1e-6, kAlongLine = 1e-3, kLetGo = 0.25;
+
 // The node's position along the segment, c = r1.r2 / |r2| (measured from a),
 // its gradient and Hessian in z: the coordinate of the pair's friction.
 void slipCoordinate(const Vec4& z, bool wantHessian, Penetration& out) {
@@ -607,17 +613,17 @@ double MemberContact::commit(const Model& model, State& s, int& pushed,
       }
     }
     // A held side is let go once the node has cleared the centre line on it
-    // by a quarter of the contact distance, or gone as far around the end
-    // (from then on the side at t_n is that side, and the contact distance it
-    // has gained keeps it there), and when the offset is gone.
+    // by kLetGo of the contact distance, or gone as far around the end (from
+    // then on the side at t_n is that side, and the contact distance it has
+    // gained keeps it there), and when the offset is gone.
+    const bool wasHeld = next.side != 0;
+    if (next.side && (!near || next.offset <= 0 ||
+                      pairPenetration(q1, next.side, 0.0, true) < -kLetGo * next.h))
+      next.side = 0;
     // A held node can press on beyond the reach of the pair's boxes at the
     // committed positions alone (far on the wrong side beyond an end), where
     // energy() does not see it.
     const bool nearAfter = near && reachesAt(pair, q1);
-    const bool wasHeld = next.side != 0;
-    if (next.side && (!near || next.offset <= 0 ||
-                      pairPenetration(q1, next.side, 0.0, true) < -0.25 * next.h))
-      next.side = 0;
     const bool kept = next.q > 0 || next.offset > 0 || next.stretch != 0;
     // Its energy at the committed state (as energy() finds it there).
     const double after =
@@ -659,7 +665,7 @@ int MemberContact::membersSide(const ContactPair& pair, const Model& model, cons
       const int far = nodes[1 - end];
       const Vec2 x = model.coord(far) + Vec2(s.u[3 * far], s.u[3 * far + 1]);
       const double d = (t.x() * (x - q.a).y() - t.y() * (x - q.a).x()) / l;
-      if (std::abs(d) <= 1e-3 * pair.h) continue;
+      if (std::abs(d) <= kAlongLine * pair.h) continue;
       const int sd = d > 0 ? 1 : -1;
       if (found && sd != found) return 0;  // members on both sides
       found = sd;
@@ -690,7 +696,7 @@ void MemberContact::openPairs(const Model& model, State& s) const {
     if (memory(s, pair.key()) || !positions(pair, model, s, q0, q1)) continue;
     // A node on the segment itself (a ruptured joint's end node, on the
     // centre line of the member it was joined to) has no side of its own.
-    const bool onSegment = pairPenetration(q1, pairSide(q1), pair.h) >= (1 - 1e-6) * pair.h;
+    const bool onSegment = pairPenetration(q1, pairSide(q1), pair.h) >= (1 - kOnSegment) * pair.h;
     const int sd = onSegment ? membersSide(pair, model, s, q1) : 0;
     const double p = pairPenetration(q1, sd ? sd : pairSide(q1), pair.h, sd != 0);
     if (p <= 0) continue;
