@@ -104,12 +104,19 @@ void penetration(const Vec4& z, int side, double h, bool wantHessian, Penetratio
   if (l2 == 0) return endPenetration(r1, false, h, wantHessian, out);
   const double xi = r1.dot(r2) / l2;
   if (xi < 0 || xi > 1) {
-    // A held node beyond an end on the wrong side: the side's penetration
-    // less the distance e beyond the end, p = h - s d - e, continuous with the
-    // span's (e = 0) and the rounded end's (d = 0); the rounded end alone
-    // would drop from h + |d| to h - |d| there.
+    // A held node beyond an end on the wrong side: with rho its distance from
+    // the end point and e its distance beyond the end along the segment,
+    // p = h + rho - 2 e^2 / rho = h + (d^2 - e^2) / rho. It is the span's
+    // h + |d| where e = 0 (value and slope), and the rounded end's h - rho
+    // where the node crosses the line beyond the end (d = 0: value and slope
+    // again), so that a node held end to end with the member (a ruptured
+    // joint's pieces in line) meets no kink in its force there.
     if (held && side * (r2.x() * r1.y() - r2.y() * r1.x()) < 0) {
-      sidePenetration(z, side, h, wantHessian, out);
+      const Vec2 r = xi < 0 ? r1 : Vec2(r1 - r2);
+      Penetration end;  // -rho, -grad rho, -Hess rho
+      endPenetration(r, xi > 1, 0.0, wantHessian, end);
+      const double rho = -end.p;
+      if (rho == 0) return endPenetration(r, xi > 1, h, wantHessian, out);
       Penetration e;
       slipCoordinate(z, wantHessian, e);  // c, measured from a
       if (xi > 1) {                       // e = c - l
@@ -123,9 +130,15 @@ void penetration(const Vec4& z, int side, double h, bool wantHessian, Penetratio
         e.g = -e.g;
         if (wantHessian) e.H = -e.H;
       }
-      out.p -= e.p;
-      out.g -= e.g;
-      if (wantHessian) out.H -= e.H;
+      const double ee = e.p, a = 2 * ee * ee / (rho * rho), b = 4 * ee / rho;
+      const Vec4 gr = -end.g;
+      out.p = h + rho - 2 * ee * ee / rho;
+      out.g = (1 + a) * gr - b * e.g;
+      if (wantHessian) {
+        const Vec4 da = (b / rho) * e.g - (2 * a / rho) * gr;  // grad a
+        const Vec4 db = (4 / rho) * e.g - (b / rho) * gr;      // grad b
+        out.H = -(1 + a) * end.H + gr * da.transpose() - b * e.H - e.g * db.transpose();
+      }
       return;
     }
     return xi < 0 ? endPenetration(r1, false, h, wantHessian, out)

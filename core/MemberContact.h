@@ -48,8 +48,10 @@
 // toss-up) is held on the side where its own members lie (the far ends of its
 // elements), until it has cleared the centre line on that side or gone
 // around the segment's end: held, it is pushed back from the wrong side also
-// beyond the ends, by p = h - s d - e (e the distance beyond the end,
-// continuous with the span's and the rounded end's), and a commit does not
+// beyond the ends, by p = h + (d^2 - e^2) / rho (e the distance beyond the
+// end, rho the distance from the end point: continuous in value and slope
+// with the span's h + |d| and with the rounded end's h - rho across the line,
+// where the pieces of a ruptured joint lie end to end), and a commit does not
 // turn it to the wrong side unless it went through by the full distance.
 // (Seen from its side at t_n, a node that the first step took a hundredth of
 // a millimetre past the line was held on the wrong side from then on, and the

@@ -208,19 +208,33 @@ TEST(MemberContactPair, HeldSideTangentsMatchFiniteDifferences) {
 
 TEST(MemberContactPair, HeldSideIsContinuousAroundTheSegmentsEnds) {
   // Held above a segment along x from 0 to 1: a node below it is pushed up
-  // inside the span (p = h + |d|) and, beyond the end, by p = h + |d| - e (e
-  // the distance beyond the end), which meets the span's at the end and the
-  // rounded end's (h - e) on the line; above it the rounded end holds.
+  // inside the span (p = h + |d|) and, beyond the end, by
+  // p = h + (d^2 - e^2) / rho (e the distance beyond the end, rho from the end
+  // point), which meets the span's at the end and the rounded end's (h - rho)
+  // on the line, in value and in slope; above it the rounded end holds.
   const Vec2 a(0, 0), b(1, 0);
   const double h = 0.01, eps = 1e-9;
   auto p = [&](double x, double y) { return pairPenetration({Vec2(x, y), a, b}, 1, h, true); };
   EXPECT_NEAR(p(1 - eps, -0.003), h + 0.003, 1e-8);
   EXPECT_NEAR(p(1 + eps, -0.003), h + 0.003, 1e-8);
-  EXPECT_NEAR(p(1.004, -0.003), h + 0.003 - 0.004, 1e-12);
+  EXPECT_NEAR(p(1.004, -0.003), h + (0.003 * 0.003 - 0.004 * 0.004) / 0.005, 1e-12);
   EXPECT_NEAR(p(1.004, -eps), h - 0.004, 1e-8);
   EXPECT_NEAR(p(1.004, eps), h - 0.004, 1e-8);
-  EXPECT_NEAR(p(-0.002, -0.005), h + 0.005 - 0.002, 1e-12);
+  EXPECT_NEAR(p(-0.002, -0.005), h + (0.005 * 0.005 - 0.002 * 0.002) / std::hypot(0.002, 0.005),
+              1e-12);
   EXPECT_NEAR(p(1.003, 0.004), h - 0.005, 1e-12);  // rounded end on its side
+  // The slopes on either side of the line beyond the end (where the pieces of
+  // a ruptured joint lie end to end) and of the end's normal below the span.
+  const double step = 1e-8, off = 1e-7;
+  auto slope = [&](double x, double y, double dx, double dy) {
+    return (p(x + step * dx, y + step * dy) - p(x - step * dx, y - step * dy)) / (2 * step);
+  };
+  for (const Vec2& dir : {Vec2(1, 0), Vec2(0, 1)}) {
+    EXPECT_NEAR(slope(1.004, -off, dir.x(), dir.y()), slope(1.004, off, dir.x(), dir.y()), 1e-3);
+    EXPECT_NEAR(slope(-0.004, -off, dir.x(), dir.y()), slope(-0.004, off, dir.x(), dir.y()), 1e-3);
+    EXPECT_NEAR(slope(1 - off, -0.003, dir.x(), dir.y()), slope(1 + off, -0.003, dir.x(), dir.y()),
+                1e-3);
+  }
   // Not held: the rounded end on both sides.
   EXPECT_NEAR(pairPenetration({Vec2(1.004, -0.003), a, b}, 1, h), h - 0.005, 1e-12);
 }
