@@ -38,6 +38,7 @@
 // stored energy. The hinge opens only when the solver
 // asks (core/Hinge.h), as in InelasticFrame.
 #include <array>
+#include <limits>
 #include <string>
 
 #include "core/Checkpoint.h"
@@ -126,6 +127,10 @@ class ReissnerFrame final : public Element, public HingeCarrier, public Checkpoi
   HingedBending law_;
   ElemMat mass_;  // global frame
   Report trial_, committed_;
+  // The mean rotation's sine and cosine at d_n (fixed over a step) and the
+  // angle they belong to: the mid-point force needs them at every iteration.
+  mutable double meanAngleN_ = std::numeric_limits<double>::quiet_NaN();
+  mutable double cosN_ = 1, sinN_ = 0;
 
  public:
   // New EA, GA, EI, density and mass type; the section forces at d are kept by
