@@ -483,9 +483,29 @@ Flow ProblemRun::solveOnly(const Macro& m) {
   return info.converged ? Flow::ExitLoop : Flow::Next;
 }
 
-Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax) {
+Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::optional<Rest> rest) {
   State& s = analysis_->state();
   if (tmax && s.t >= *tmax - 1e-10 * std::max(1.0, std::abs(*tmax))) return Flow::ExitLoop;
+  if (rest) {
+    if (!analysis_->integrator().dynamic())
+      fail(m, "TIME,REST needs a dynamic analysis (DYNAmic): a static one has no motion to come "
+              "to rest");
+    // A new ratio is watched from now on.
+    if (rest->ratio != restRatio_) {
+      restRatio_ = rest->ratio;
+      lastMoving_ = s.t;
+    }
+    const double kinetic = analysis_->energy().kinetic;
+    if (peakKinetic_ > 0 && kinetic <= restRatio_ * peakKinetic_ && s.t - lastMoving_ >= rest->hold) {
+      if (!restLogged_)
+        log_ << "  TIME   at rest at t = " << fmt("%.6e", s.t) << ": the kinetic energy "
+             << fmt("%.4e", kinetic) << " has stayed at most " << fmt("%.1e", restRatio_)
+             << " of its peak " << fmt("%.4e", peakKinetic_) << " since t = "
+             << fmt("%.6e", lastMoving_) << "\n";
+      restLogged_ = true;
+      return Flow::ExitLoop;
+    }
+  }
   if (cutting_ && s.dt < dtNominal_ && ++stepsSinceCut_ >= 2) {
     analysis_->setDt(std::min(2 * s.dt, dtNominal_));
     stepsSinceCut_ = 0;
@@ -854,7 +874,7 @@ std::string ProblemRun::runState() const {
   put(out, hingeCount_);
   putBool(out, cutting_);
   for (double x : {dtMin_, dtNominal_, energy0_, energyScale_, energyError_, maxMomentRatio_,
-                   peakGroundForce_, peakGroundTime_})
+                   peakGroundForce_, peakGroundTime_, peakKinetic_, restRatio_, lastMoving_})
     put(out, x);
   for (int x : {stepsSinceCut_, cuts_, jointsFormed_, jointsRuptured_, removed_}) put(out, x);
   putBool(out, energyStarted_);
@@ -872,7 +892,8 @@ void ProblemRun::setRunState(const std::string& bytes) {
   hingeCount_ = get<int>(in);
   cutting_ = getBool(in);
   for (double* x : {&dtMin_, &dtNominal_, &energy0_, &energyScale_, &energyError_,
-                    &maxMomentRatio_, &peakGroundForce_, &peakGroundTime_})
+                    &maxMomentRatio_, &peakGroundForce_, &peakGroundTime_, &peakKinetic_,
+                    &restRatio_, &lastMoving_})
     *x = get<double>(in);
   for (int* x : {&stepsSinceCut_, &cuts_, &jointsFormed_, &jointsRuptured_, &removed_})
     *x = get<int>(in);
@@ -956,6 +977,10 @@ void ProblemRun::onCommit() {
     energyScale_ = std::max(energyScale_, scale);
     if (energyScale_ > 0)
       energyError_ = std::max(energyError_, std::abs(en.balance() - energy0_) / energyScale_);
+    if (analysis_->integrator().dynamic()) {
+      peakKinetic_ = std::max(peakKinetic_, en.kinetic);
+      if (en.kinetic > restRatio_ * peakKinetic_) lastMoving_ = s.t;
+    }
   }
   outputs_->onCommit(model_, analysis_->state());
   progress(false);

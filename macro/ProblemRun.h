@@ -87,7 +87,13 @@ class ProblemRun {
   Flow newtonIteration(const Macro& m, bool update, bool lineSearch, bool symmetric);
   Flow formResidual(const Macro& m);
   Flow solveOnly(const Macro& m);
-  Flow advanceTime(const Macro& m, std::optional<double> tmax);
+  // TIME,REST: the motion is at rest when the kinetic energy has stayed at or
+  // below `ratio` of its peak (in this run's dynamic analysis) for `hold`
+  // time units; then the loop ends without a step.
+  struct Rest {
+    double ratio = 1e-5, hold = 0.5;
+  };
+  Flow advanceTime(const Macro& m, std::optional<double> tmax, std::optional<Rest> rest = {});
   void setDt(double dt);
   // Under step cutting the path-following increment follows dt / nominal dt.
   void scalePathIncrement();
@@ -176,6 +182,10 @@ class ProblemRun {
   double energy0_ = 0, energyScale_ = 0, energyError_ = 0;
   bool energyStarted_ = false;
   bool dynamicSeen_ = false;
+  // TIME,REST: the kinetic energy's peak, the ratio watched (0: none yet) and
+  // the last committed time at which the kinetic energy was above it.
+  double peakKinetic_ = 0, restRatio_ = 0, lastMoving_ = 0;
+  bool restLogged_ = false;
   // Debris: the largest total ground force so far and its time; the figures at the end.
   double peakGroundForce_ = 0, peakGroundTime_ = 0;
   std::optional<DebrisFigures> debris_;

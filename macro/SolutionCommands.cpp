@@ -274,13 +274,40 @@ class TimeCommand final : public SolutionCommand {
   CommandSpec spec() const override {
     return solution("TIME",
                     "Commit the converged step and advance the time by dt; with tmax the "
-                    "enclosing loop ends once the time has reached tmax.",
-                    {word("-", ""), num("tmax", "end time (optional)")});
+                    "enclosing loop ends once the time has reached tmax. TIME,REST,tmax,ratio,"
+                    "hold: the loop also ends (without a step) once the motion has come to rest: "
+                    "the kinetic energy at most ratio of its peak for the last hold time units "
+                    "(the log says when).",
+                    {word("option", "REST: end the loop at rest"), num("tmax", "end time (optional)"),
+                     num("ratio", "REST: kinetic energy over its peak", "1e-5"),
+                     num("hold", "REST: for this long", "0.5")});
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    if (!m.option.empty() && m.option.rfind("rest", 0) != 0)
+      fail(m, 1, "TIME,,tmax or TIME,REST,tmax,ratio,hold");
+    if (m.option.empty() && (written(m, 1) || written(m, 2)))
+      fail(m, written(m, 1) ? 3 : 4, "ratio and hold belong to TIME,REST,tmax,ratio,hold");
+    rest(m, ctx.params());
   }
   Flow run(const Macro& m, ProblemRun& r) const override {
-    const bool hasMax = m.has(0) && !m.record.text(2).empty();
+    const bool hasMax = written(m, 0);
     return r.advanceTime(
-        m, hasMax ? std::optional<double>(m.numbers[0].eval(r.params())) : std::nullopt);
+        m, hasMax ? std::optional<double>(m.numbers[0].eval(r.params())) : std::nullopt,
+        rest(m, r.params()));
+  }
+
+ private:
+  static std::optional<ProblemRun::Rest> rest(const Macro& m, const Parameters& p) {
+    if (m.option.empty()) return std::nullopt;
+    ProblemRun::Rest r;
+    if (written(m, 1)) r.ratio = m.numbers[1].eval(p);
+    if (written(m, 2)) r.hold = m.numbers[2].eval(p);
+    if (!(r.ratio > 0 && r.ratio < 1))
+      fail(m, 3, "the kinetic energy ratio of TIME,REST is between 0 and 1, got " +
+                     formatNumber(r.ratio));
+    if (!(r.hold >= 0)) fail(m, 4, "the hold time of TIME,REST is 0 or more, got " + formatNumber(r.hold));
+    return r;
   }
 };
 

@@ -182,6 +182,26 @@ TEST(CollapseDecks, BarBounce) {
   EXPECT_LT(relativeDrift(c["balance"], m * g * h0), 1e-10);
 }
 
+TEST(CollapseDecks, BarComesToRest) {
+  // TIME,REST,10,1e-6,0.1 (see the deck): the loop ends at the first step at
+  // which the kinetic energy has stayed at most 1e-6 of its peak for 0.1 s,
+  // long before t = 10.
+  Columns c = runAndRead("collapse/bar_at_rest.inp", "bar_at_rest");
+  ASSERT_FALSE(c["time"].empty());
+  const auto& t = c["time"];
+  const auto& kinetic = c["kinetic"];
+  const double ratio = 1e-6, hold = 0.1, dt = 1e-3;
+  const double peak = *std::max_element(kinetic.begin(), kinetic.end());
+  std::size_t moving = 0;  // the last row above ratio of the peak
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (kinetic[i] > ratio * peak) moving = i;
+  ASSERT_LT(moving + 1, t.size());
+  EXPECT_LT(t.back(), 1.0);
+  EXPECT_GE(t.back() - t[moving], hold - 1e-9);
+  EXPECT_LT(t.back() - t[moving], hold + 1.5 * dt);
+  EXPECT_LT(relativeDrift(c["balance"], peak), 1e-10);
+}
+
 TEST(CollapseDecks, BarOnBeam) {
   // Member contact: two node-to-segment pairs of stiffness k (see the deck).
   Columns c = runAndRead("collapse/bar_on_beam.inp", "bar_on_beam");
