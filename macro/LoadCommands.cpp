@@ -21,11 +21,6 @@ std::ostream& num(std::ostream& os, double v) {
 
 void title(std::ostream& os, const std::string& t) { os << "\n   " << t << "\n\n"; }
 
-bool looksNumeric(const std::string& t) {
-  return !t.empty() && (std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '.' ||
-                        t[0] == '-' || t[0] == '+' || t[0] == '(');
-}
-
 // QLOAd: n1 n2 inc qx qy [MASS]. Elements are built when the mesh is complete,
 // so the loads are checked and added then (in deck order).
 void applyElementLoads(MeshContext& ctx, const MeshCommand& cmd) {
@@ -115,8 +110,8 @@ void applyNodalMasses(MeshContext& ctx, const MeshCommand& cmd) {
 void applySite(MeshContext& ctx, const MeshCommand& cmd) {
   const Record& h = cmd.head;
   ctx.maxFields(h, 4, "SITE,,xmin,xmax");
-  if (looksNumeric(h.text(1)))
-    failAt(h, 1, "SITE takes two text fields, then numbers", "write SITE,,xmin,xmax");
+  if (!h.text(1).empty())
+    failAt(h, 1, "SITE takes no option word (its second field is empty)", "write SITE,,xmin,xmax");
   if (h.size() < 4 || h[3].text.empty())
     failAt(h, h.size() < 4 ? h.size() : 3, "SITE needs xmin and xmax", "write SITE,,xmin,xmax");
   const Site s{ctx.number(h, 2), ctx.number(h, 3)};

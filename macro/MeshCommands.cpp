@@ -827,8 +827,9 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
                "a second MEMBers record (the first is on line " +
                    std::to_string(previousMembers->loc.line) + ")");
       ctx.maxFields(r, 7, "MEMBers,,k[,alpha[,r[,mu[,e]]]]");
-      if (looksNumeric(r.text(1)))
-        failAt(r, 1, "MEMBers takes two text fields, then numbers", "write MEMBers,,k[,alpha[,r[,mu[,e]]]]");
+      if (!r.text(1).empty())
+        failAt(r, 1, "MEMBers takes no option word (its second field is empty)",
+               "write MEMBers,,k[,alpha[,r[,mu[,e]]]]");
       MemberContactData c;
       c.k = ctx.number(r, 2);
       if (c.k < 0) failAt(r, 2, "penalty stiffness k must not be negative", "0: no member contact");
@@ -876,8 +877,9 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
              "a second GROUnd record (the first is on line " + std::to_string(previous->loc.line) +
                  ")");
     ctx.maxFields(r, 7, "GROUnd,,y0,k[,alpha[,mu[,e]]]");
-    if (looksNumeric(r.text(1)))
-      failAt(r, 1, "GROUnd takes two text fields, then numbers", "write GROUnd,,y0,k[,alpha[,mu[,e]]]");
+    if (!r.text(1).empty())
+      failAt(r, 1, "GROUnd takes no option word (its second field is empty)",
+             "write GROUnd,,y0,k[,alpha[,mu[,e]]]");
     Ground g;
     g.y0 = ctx.number(r, 2);
     g.k = ctx.number(r, 3);
@@ -911,8 +913,8 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
 void applyGravity(MeshContext& ctx, const MeshCommand& cmd) {
   const Record& h = cmd.head;
   ctx.maxFields(h, 4, "GRAVity,,gx,gy");
-  if (looksNumeric(h.text(1)))
-    failAt(h, 1, "GRAVity takes two text fields, then numbers", "write GRAVity,,gx,gy");
+  if (!h.text(1).empty())
+    failAt(h, 1, "GRAVity takes no option word (its second field is empty)", "write GRAVity,,gx,gy");
   ctx.model.gravity() = Vec2(ctx.number(h, 2), ctx.number(h, 3));
   ctx.gravityOrigin = h;
   if (auto* os = ctx.out()) {

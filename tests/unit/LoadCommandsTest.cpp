@@ -89,7 +89,8 @@ TEST(LoadCommands, Errors) {
   expectError(kBeam + "MASS\n 2 0 1 -1 0\n\n", 16, 8, "a mass must not be negative");
   expectError(kBeam + "SITE,,5,1\n", 15, 9, "xmax must be greater than xmin");
   expectError(kBeam + "SITE,,5\n", 15, 8, "SITE needs xmin and xmax");
-  expectError(kBeam + "SITE,1,5\n", 15, 6, "SITE takes two text fields");
+  expectError(kBeam + "SITE,1,5\n", 15, 6, "SITE takes no option word");
+  expectError(kBeam + "SITE,X,1,5\n", 15, 6, "SITE takes no option word");
 }
 
 }  // namespace

@@ -345,7 +345,11 @@ TEST(MeshBinderContact, GroundGravityAndPrint) {
   expectBuildError(kPortal + "CONT\n GROU,,0,-1\n\n", 21, 10,
                    "penalty stiffness k must be positive");
   expectBuildError(kPortal + "CONT\n WALL,,0,1\n\n", 21, 2, "unknown contact type 'WALL'");
-  expectBuildError(kPortal + "GRAV,0,-9.81\n", 20, 6, "GRAVity takes two text fields");
+  expectBuildError(kPortal + "GRAV,0,-9.81\n", 20, 6, "GRAVity takes no option word");
+  expectBuildError(kPortal + "GRAV,DOWN,0,-9.81\n", 20, 6, "GRAVity takes no option word");
+  expectBuildError(kPortal + "CONT\n GROU,Y,0,1e5\n\n", 21, 7, "GROUnd takes no option word");
+  expectBuildError(kPortal + "CONT\n GROU,,0,1e5\n MEMB,X,1e5\n\n", 22, 7,
+                   "MEMBers takes no option word");
 }
 
 TEST(MeshBinderControl, LimitsAndChecks) {
