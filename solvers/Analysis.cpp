@@ -124,6 +124,7 @@ void Analysis::applyPrescribed() {
 }
 
 void Analysis::updateRates() {
+  ratesStale_ = false;
   const StepRule rule = stepRule();
   if (!rule.dynamic()) {
     state_.v.setZero();
@@ -243,7 +244,7 @@ void Analysis::applyIncrement(const Eigen::VectorXd& du, double scale) {
     if (eq >= 0) state_.u[i] += scale * du[eq];
   }
   stepInc_ += scale * du;
-  updateRates();
+  ratesStale_ = true;
 }
 
 double Analysis::rotationStepLimit(const Eigen::VectorXd& du, double s) const {
@@ -405,6 +406,7 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
 
   info.converged = convergedAt(info.energy, info.iteration);
   if (info.converged) {
+    syncRates();
     // A hinge past its ultimate moment: the event is located, and the rest of
     // the step starts a new iteration history.
     bool handled = false;
@@ -566,6 +568,7 @@ Status Analysis::solveOnly(IterationInfo& info) {
   applyIncrement(du_, 1.0);
   dirty_ = true;
   info.converged = convergedAt(info.energy, info.iteration);
+  if (info.converged) syncRates();
   converged_ = info.converged;
   history_.push_back(info);
   return Status::success();
@@ -575,6 +578,7 @@ void Analysis::back() {
   for (auto& el : model_.elements())
     if (el) el->revert();
   state_.revert();
+  ratesStale_ = false;
   history_.clear();
   energy0_ = 0;
   converged_ = false;
@@ -598,6 +602,7 @@ Status Analysis::evaluateState() {
 
 Status Analysis::commit() {
   if (!dirty_) return Status::success();
+  syncRates();
   if (assembler_.patternVersion() != model_.topologyVersion()) topologyChanged();
   const StepRule rule = stepRule();
   Status st = assembler_.assemble(state_, rule, stepLoadFactors(rule), false);
@@ -608,6 +613,7 @@ Status Analysis::commit() {
 }
 
 Status Analysis::commitEvaluated() {
+  syncRates();
   for (auto& el : model_.elements())
     if (el) el->commit();
   hinges_.committed();
@@ -664,7 +670,10 @@ Status Analysis::reactions(Eigen::VectorXd& r) {
   return Status::success();
 }
 
-Energy Analysis::energy() { return account_.energy(assembler_, state_); }
+Energy Analysis::energy() {
+  syncRates();
+  return account_.energy(assembler_, state_);
+}
 
 // ------------------------------------------------------------ restart files
 

@@ -147,6 +147,9 @@ class Analysis {
   // dynamic step's free dofs start from the constant-velocity prediction.
   void beginStep(double time, double pathScale, bool predict);
   void updateRates();
+  void syncRates() {
+    if (ratesStale_) updateRates();
+  }
   // Residual and tangent at the current state; factorization of the tangent.
   Status assemble();
   Status factor(bool symmetric);
@@ -216,6 +219,10 @@ class Analysis {
   int totalFactorizations_ = 0;
   bool converged_ = false;
   bool dirty_ = false;  // trial differs from committed
+  // The velocities and accelerations lag the Newton increments (nothing in an
+  // iteration reads them): brought up to date at a converged state, a commit
+  // and the energy (syncRates).
+  bool ratesStale_ = false;
   double stepDlambda_ = 0;
   EnergyAccount account_;
   HingeEvents hinges_;

@@ -150,6 +150,7 @@ void HingeEvents::restoreCommitted() {
   for (auto& el : an_.model().elements())
     if (el) el->revert();
   an_.state_.revert();
+  an_.ratesStale_ = false;
   an_.dirty_ = false;
   solved_ = true;
 }
