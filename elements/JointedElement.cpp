@@ -17,6 +17,9 @@ namespace {
 // energy of a long run would drift.
 constexpr int kMaxLocalIterations = 60;
 constexpr double kSmallStep = 1e-9;
+// The largest first-order change of psi_r taken as the local iteration's
+// start (radians).
+constexpr double kGuessRange = 0.05;
 
 }  // namespace
 
@@ -43,8 +46,16 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
                                 bool wantTangent, ElemVec& residual, ElemMat& tangent) {
   const int k = dof();
   double psi = trial_.psi;
+  // A first-order start only for a small change: the local equation's roots
+  // recur with the turns of the slave section, and a start far off may find
+  // another one.
+  if (guessValid_) {
+    const double change = guessSlope_.dot(kin.d - guessD_);
+    if (std::abs(change) <= kGuessRange) psi += change;
+  }
   ElementKinematics in = innerKinematics(kin, psi);
   ElemMat kin6;
+  double krr = 0;
   bool lastPass = false, converged = false;
   // Under the Cayley rule (core/StepRule.h) the slave section's rotation
   // increment lies in (-pi, pi), where the rate of its inertia, 2 tan(inc/2),
@@ -72,7 +83,7 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
     const double slaveSlope = friction_ > 0 ? rule.rotationRateSlope(increment(psi)) : 0.0;
     // Condensation needs a nonzero pivot only: a compressed member in large
     // motion can make the relative rotation's stiffness negative.
-    const double krr = kin6(k, k) + dm * slaveSlope;
+    krr = kin6(k, k) + dm * slaveSlope;
     if (!(std::abs(krr) > 1e-13 * kin6.cwiseAbs().maxCoeff())) {
       std::ostringstream msg;
       msg << "joint at node " << slave_ + 1 << ": relative rotation stiffness " << krr
@@ -108,6 +119,9 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
   }
 
   trial_.psi = psi;
+  guessD_ = kin.d;
+  guessSlope_ = -kin6.row(k).transpose() / krr;
+  guessValid_ = true;
   // The slave's rate measure less the master's (equal to dpsi unless the
   // rotations advance by the Cayley rule).
   const double rate = rule.rotationRate(in.d(k) - in.dn(k)) - rule.rotationRate(kin.d(k) - kin.dn(k));
@@ -154,11 +168,13 @@ ElemVec JointedElement::bodyLoad(const Vec2& g) const {
 void JointedElement::commit() {
   inner_->commit();
   committed_ = trial_;
+  guessValid_ = false;
 }
 
 void JointedElement::revert() {
   inner_->revert();
   trial_ = committed_;
+  guessValid_ = false;
 }
 
 double JointedElement::kineticEnergy(const ElemVec& v) const {
@@ -175,6 +191,7 @@ ElemVec JointedElement::momentum(const ElemVec& v) const {
 
 void JointedElement::setRelativeState(double psi, double vel, double acc) {
   trial_ = committed_ = Relative{psi, vel, acc};
+  guessValid_ = false;
 }
 
 std::unique_ptr<Element> JointedElement::release() {

@@ -136,6 +136,11 @@ class JointedElement final : public Element, public Checkpoint, public MaterialC
   Relative trial_, committed_;
   double slaveRotation_ = 0;
   double friction_ = 0, frictionEps_ = 1;
+  // Within a step: the outer d of the last evaluation and dpsi_r/dd there
+  // (-K_k./K_kk, the condensation's), so that the local iteration starts from
+  // psi_r's first-order change with d; dropped at a commit or a revert.
+  ElemVec guessD_ = ElemVec::Zero(), guessSlope_ = ElemVec::Zero();
+  bool guessValid_ = false;
 };
 
 // The element as a joint wrapper, or null. A type check (the class is final)
