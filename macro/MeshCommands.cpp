@@ -914,7 +914,8 @@ void applyGravity(MeshContext& ctx, const MeshCommand& cmd) {
   const Record& h = cmd.head;
   ctx.maxFields(h, 4, "GRAVity,,gx,gy");
   if (!h.text(1).empty())
-    failAt(h, 1, "GRAVity takes no option word (its second field is empty)", "write GRAVity,,gx,gy");
+    failAt(h, 1, "GRAVity takes no option word (its second field is empty)",
+           "write GRAVity,,gx,gy");
   ctx.model.gravity() = Vec2(ctx.number(h, 2), ctx.number(h, 3));
   ctx.gravityOrigin = h;
   if (auto* os = ctx.out()) {

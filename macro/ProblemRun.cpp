@@ -495,8 +495,9 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::op
       restRatio_ = rest->ratio;
       lastMoving_ = s.t;
     }
-    const double kinetic = analysis_->energy().kinetic;
-    if (peakKinetic_ > 0 && kinetic <= restRatio_ * peakKinetic_ && s.t - lastMoving_ >= rest->hold) {
+    const double kinetic = analysis_->kineticEnergy();
+    if (peakKinetic_ > 0 && kinetic <= restRatio_ * peakKinetic_ &&
+        s.t - lastMoving_ >= rest->hold) {
       if (!restLogged_)
         log_ << "  TIME   at rest at t = " << fmt("%.6e", s.t) << ": the kinetic energy "
              << fmt("%.4e", kinetic) << " has stayed at most " << fmt("%.1e", restRatio_)

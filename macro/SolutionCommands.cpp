@@ -278,7 +278,8 @@ class TimeCommand final : public SolutionCommand {
                     "hold: the loop also ends (without a step) once the motion has come to rest: "
                     "the kinetic energy at most ratio of its peak for the last hold time units "
                     "(the log says when).",
-                    {word("option", "REST: end the loop at rest"), num("tmax", "end time (optional)"),
+                    {word("option", "REST: end the loop at rest"),
+                     num("tmax", "end time (optional)"),
                      num("ratio", "REST: kinetic energy over its peak", "1e-5"),
                      num("hold", "REST: for this long", "0.5")});
   }
@@ -306,7 +307,8 @@ class TimeCommand final : public SolutionCommand {
     if (!(r.ratio > 0 && r.ratio < 1))
       fail(m, 3, "the kinetic energy ratio of TIME,REST is between 0 and 1, got " +
                      formatNumber(r.ratio));
-    if (!(r.hold >= 0)) fail(m, 4, "the hold time of TIME,REST is 0 or more, got " + formatNumber(r.hold));
+    if (!(r.hold >= 0))
+      fail(m, 4, "the hold time of TIME,REST is 0 or more, got " + formatNumber(r.hold));
     return r;
   }
 };

@@ -675,6 +675,11 @@ Energy Analysis::energy() {
   return account_.energy(assembler_, state_);
 }
 
+double Analysis::kineticEnergy() {
+  syncRates();
+  return assembler_.kineticEnergy(state_);
+}
+
 // ------------------------------------------------------------ restart files
 
 void Analysis::writeState(std::ostream& out) const {

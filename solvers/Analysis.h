@@ -93,6 +93,7 @@ class Analysis {
   // Reactions (residual at the current state, every node dof).
   Status reactions(Eigen::VectorXd& r);
   Energy energy();
+  double kineticEnergy();  // of the state now (no pass over the contacts)
   double loadFactor() const;  // multiplier of table-1 FORCe at t_n+1 (with the arc-length factor)
   double tableFactor(int table, double time) const;
   // The highest load table number in use (FPROportional or PROP,,n); 1 at least.
