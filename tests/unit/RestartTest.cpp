@@ -335,6 +335,58 @@ TEST(Restart, MemberContactAndFrictionContinueBitForBit) {
   expectSameState(whole.out / "whole_end.rst", rest.out / "rest_end.rst");
 }
 
+// A bar dropped on a crushing ground, run until at rest (TIME,REST).
+const char* kAtRest = R"(FEAP * * bar dropped on a crushing ground, run until at rest
+  0 0 0 2 3 2
+
+BLOCk
+  CARTesian 4 0 1 1 1
+  1 0 0.05
+  2 2 0.05
+
+MATErial,1
+  FRAMe
+    RESUltant STIFfness 1e7 1e7 1e5
+    CROSs section 1 1e-3
+    DENSity,,1
+    FINIte
+
+CONTact
+  GROUnd,,0,1e4,1,,0.3
+
+GRAVity,,0,-9.81
+
+END
+BATCh
+  DYNAmic,ENERgy,0.1,0.1
+  DT,,1e-3
+  TPLOt
+)";
+
+TEST(Restart, TimeRestEndsWhereTheUninterruptedRunEnds) {
+  // The kinetic energy's peak and the time it was last above the watched
+  // ratio travel in the restart file: saved after the impact, the restarted
+  // run comes to rest at the same step as the uninterrupted one.
+  DeckTempDir dir;
+  const std::string data = "disp,3,2\nener\n\nSTOP\n";
+  const std::string rest = "TIME,REST,10,1e-6,0.1";
+  const DeckResult whole = runDeckText(
+      dir, "whole.inp", kAtRest + newtonLoop(rest, 100000) + "  SAVE,whole_end\nEND\n" + data);
+  expectRan(whole);
+  const DeckResult first =
+      runDeckText(dir, "first.inp", kAtRest + newtonLoop(rest, 150) + "  SAVE,mid\nEND\n" + data);
+  expectRan(first);
+  const DeckResult second = runDeckText(
+      dir, "second.inp",
+      std::string(kAtRest).substr(0, std::string(kAtRest).find("  DYNA")) +
+          "  REST,mid\n  TPLOt\n" + newtonLoop(rest, 100000) + "  SAVE,second_end\nEND\n" + data);
+  expectRan(second);
+  EXPECT_NE(whole.log.find("at rest at t = "), std::string::npos);
+  expectSameTail(readText(whole.out / "whole_tplot.csv"), readText(first.out / "first_tplot.csv"),
+                 readText(second.out / "second_tplot.csv"));
+  expectSameState(whole.out / "whole_end.rst", second.out / "second_end.rst");
+}
+
 TEST(Restart, BadFilesAreClearErrors) {
   DeckTempDir dir;
   const std::string data = std::string(kLoads) + kTplot;
