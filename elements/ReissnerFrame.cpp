@@ -189,15 +189,12 @@ Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double al
   const double y = 0.25 * ((d(5) - dn(5)) - (d(2) - dn(2)));
   // Lambda_mid = Lambda_n R(x): Lambda_n = rot(beta0 + th0) once per step.
   if (const double angleN = beta0_ + th0; angleN != meanAngleN_) {
-    cosN_ = std::cos(angleN);
-    sinN_ = std::sin(angleN);
+    lamN_ = rot(angleN);
     meanAngleN_ = angleN;
   }
-  const double cx = std::cos(x), sx = std::sin(x);
-  const Mat2 rx = (Mat2() << cx, -sx, sx, cx).finished();
-  const Mat2 lamM = (Mat2() << cosN_ * cx - sinN_ * sx, -(sinN_ * cx + cosN_ * sx),
-                     sinN_ * cx + cosN_ * sx, cosN_ * cx - sinN_ * sx)
-                        .finished();
+  const Mat2 rx = rot(x);
+  const double cx = rx(0, 0), sx = rx(1, 0);
+  const Mat2 lamM = lamN_ * rx;
   const Vec2 a1 = lamM.transpose() * g1, a0 = lamM.transpose() * g0;
   const Vec2 aM = 0.5 * (a1 + a0);
   const Vec2 h1 = rx.transpose() * a1;  // Lambda_{n+1}^T g1

@@ -127,10 +127,10 @@ class ReissnerFrame final : public Element, public HingeCarrier, public Checkpoi
   HingedBending law_;
   ElemMat mass_;  // global frame
   Report trial_, committed_;
-  // The mean rotation's sine and cosine at d_n (fixed over a step) and the
-  // angle they belong to: the mid-point force needs them at every iteration.
+  // The mean rotation at d_n (fixed over a step) and the angle it belongs to:
+  // the mid-point force needs it at every iteration.
   mutable double meanAngleN_ = std::numeric_limits<double>::quiet_NaN();
-  mutable double cosN_ = 1, sinN_ = 0;
+  mutable Eigen::Matrix2d lamN_ = Eigen::Matrix2d::Identity();
 
  public:
   // New EA, GA, EI, density and mass type; the section forces at d are kept by
