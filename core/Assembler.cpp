@@ -290,11 +290,13 @@ double Assembler::strainEnergy() const {
 }
 
 double Assembler::contactEnergy(const State& s) const {
-  // At the committed positions the member contact's last commit found the
-  // energy (the same sum), without another pass over the pairs.
-  double w = !members_                ? 0.0
-             : s.u.size() == s.un.size() && s.u == s.un ? members_->committedEnergy(model_, s)
-                                                        : members_->energy(model_, s);
+  double w = 0;
+  if (members_) {
+    // At the committed positions the member contact's last commit found the
+    // energy (the same sum), without another pass over the pairs.
+    const bool committed = s.u.size() == s.un.size() && s.u == s.un;
+    w = committed ? members_->committedEnergy(model_, s) : members_->energy(model_, s);
+  }
   const auto& ground = model_.ground();
   if (!ground) return w;
   const Eigen::VectorXd& stretches = stretchesOf(s);
