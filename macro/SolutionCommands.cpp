@@ -848,17 +848,20 @@ Macro makeMacro(const Record& rec, const SolutionCommands& table) {
   // Written fields the command does not read are errors, not ignored: an
   // option word where it takes none ("-"), a value beyond its last field.
   const CommandSpec& spec = m.command->spec();
-  std::string syntax = spec.name.substr(0, 4);
-  for (std::size_t i = 0; i < spec.fields.size(); ++i)
-    syntax += "," + (i == 0 && spec.fields[0].name == "-" ? std::string() : spec.fields[i].name);
+  auto syntax = [&spec] {
+    std::string s = "the command is " + spec.name.substr(0, 4);
+    for (std::size_t i = 0; i < spec.fields.size(); ++i)
+      s += "," + (i == 0 && spec.fields[0].name == "-" ? std::string() : spec.fields[i].name);
+    return s;
+  };
   if (!m.optionText.empty() && !spec.fields.empty() && spec.fields[0].name == "-")
     throw DeckError(rec[1].loc,
                     spec.name.substr(0, 4) + " takes no option word, got '" + m.optionText + "'",
-                    rec.excerpt(rec[1].loc), "the command is " + syntax);
+                    rec.excerpt(rec[1].loc), syntax());
   for (std::size_t i = std::max<std::size_t>(spec.fields.size() + 1, 2); i < rec.size(); ++i)
     if (!rec.text(i).empty())
       throw DeckError(rec[i].loc, "a field beyond the command's last one would be ignored",
-                      rec.excerpt(rec[i].loc), "the command is " + syntax);
+                      rec.excerpt(rec[i].loc), syntax());
   for (std::size_t i = 2; i < rec.size(); ++i) m.numbers.push_back(Expression::parse(rec[i]));
   return m;
 }
