@@ -225,15 +225,38 @@ Status Analysis::factor(bool symmetric) {
               assembler_.symmetricTangent();
   Status st;
   if (analyzedVersion_ != assembler_.structureVersion() || analyzedSymmetric_ != symmetric) {
+    solver_->groupEquations(nodeOfEquation());
     st = solver_->analyze(assembler_.tangent(), symmetric);
     if (!st) return st;
     analyzedVersion_ = assembler_.structureVersion();
     analyzedSymmetric_ = symmetric;
   }
   st = solver_->factorize(assembler_.tangent());
-  if (!st) return Status::failure("singular tangent: " + st.why);
+  if (!st) {
+    // Where the pivot vanished: a dof of the mechanism, or one without stiffness.
+    const int eq = solver_->singularEquation();
+    const DofMap& dofs = assembler_.dofs();
+    for (int i = 0; eq >= 0 && i < dofs.numNodes() * kNodeDofs; ++i)
+      if (dofs.eq(i) == eq)
+        return Status::failure("singular tangent: no stiffness at node " +
+                               std::to_string(i / kNodeDofs + 1) + ", dof " +
+                               std::to_string(i % kNodeDofs + 1) +
+                               " (a mechanism, or a dof nothing holds): " + st.why);
+    return Status::failure("singular tangent: " + st.why);
+  }
   ++totalFactorizations_;
   return Status::success();
+}
+
+std::vector<int> Analysis::nodeOfEquation() const {
+  // A shared joint's slave has only its rotation: its translations are the
+  // master's equations, grouped with the master.
+  const DofMap& dofs = assembler_.dofs();
+  std::vector<int> node(dofs.numEquations(), -1);
+  for (int n = 0; n < dofs.numNodes(); ++n)
+    for (int d = dofs.aliased(n) ? 2 : 0; d < kNodeDofs; ++d)
+      if (const int eq = dofs.eq(n, d); eq >= 0) node[eq] = n;
+  return node;
 }
 
 void Analysis::applyIncrement(const Eigen::VectorXd& du, double scale) {

@@ -154,6 +154,8 @@ class Analysis {
   // Residual and tangent at the current state; factorization of the tangent.
   Status assemble();
   Status factor(bool symmetric);
+  // The node of each equation (the grouping handed to the linear solver).
+  std::vector<int> nodeOfEquation() const;
   // du_ for the residual R_ and the tangent just assembled, with the factors of
   // an earlier tangent of the step; false when they are too far off.
   bool solveWithEarlierFactors();

@@ -1,17 +1,22 @@
 #pragma once
-// The default solver. Symmetric matrices go to CHOLMOD's Cholesky; when it
-// finds the matrix not positive definite (a softening hinge has made the
-// tangent indefinite), the same matrix is factorized by KLU's pivoting LU
+// The default solver. When the caller has grouped the equations by node (the
+// analyses do), the block LU on the nodes' 3x3 blocks: it needs no pivoting for
+// a frame's tangent, static or dynamic, and factors in a third to a half of
+// the time of KLU's refactorization or CHOLMOD's simplicial Cholesky on these
+// matrices. Without a grouping, symmetric matrices go to CHOLMOD's Cholesky and
+// unsymmetric ones to KLU. When the block LU finds it would need pivoting (a
+// near-singular pivot block, growth of the entries: a tangent made indefinite
+// by a softening hinge can do that) or the Cholesky finds the matrix not
+// positive definite, the same matrix is factorized by KLU's pivoting LU
 // instead, and KLU stays in use for every later factorization of this
-// pattern: an indefinite tangent usually stays indefinite over the following
-// iterations and steps, so retrying the Cholesky each time would mostly waste a
-// failed factorization. The next analyze() (a new pattern) starts again with
-// CHOLMOD. Unsymmetric matrices go to KLU directly. KLU rather than UMFPACK:
-// frame tangents are very sparse, and KLU's refactorization reuses the pivot
-// order and its storage, which halved the time of the six-story collapse
-// workflow (mid-point tangents are unsymmetric).
+// pattern: such a tangent usually stays so over the following iterations and
+// steps, so retrying would mostly waste a failed factorization. The next
+// analyze() (a new pattern) starts again. KLU rather than UMFPACK: frame
+// tangents are very sparse, and KLU's refactorization reuses the pivot order
+// and its storage.
 #include <memory>
 
+#include "solvers/BlockLuSolver.h"
 #include "solvers/CholmodSolver.h"
 #include "solvers/LinearSolver.h"
 #include "solvers/KluSolver.h"
@@ -25,25 +30,33 @@ class AutoSolver final : public LinearSolver {
   AutoSolver& operator=(const AutoSolver&) = delete;
 
   std::string name() const override { return "auto"; }
+  void groupEquations(std::vector<int> group) override;
   Status analyze(const SparseMatrix& A, bool symmetric) override;
   Status factorize(const SparseMatrix& A) override;
   Status solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
+  int singularEquation() const override;
 
-  // "cholmod" or "klu": the solver the next factorize() will use.
+  // "cholmod", "block-lu" or "klu": the solver the next factorize() will use.
   std::string activeName() const;
-  // True once the Cholesky has failed for the current pattern.
-  bool fellBack() const { return fellBack_; }
+  // True once the Cholesky or the block LU has failed for the current pattern.
+  bool fellBack() const { return analyzed_ && active_ != first(); }
 
  private:
   // KLU's factorization, with its symbolic analysis first if this
   // pattern has not had one yet.
   Status factorizeLu(const SparseMatrix& A);
 
+  enum class Kind { Cholesky, BlockLu, Klu };
+  // The solver a pattern starts with.
+  Kind first() const;
+
   std::unique_ptr<CholmodSolver> cholesky_;
+  std::unique_ptr<BlockLuSolver> blockLu_;
   std::unique_ptr<KluSolver> lu_;
+  bool grouped_ = false;
   bool symmetric_ = false;
   bool luAnalyzed_ = false;
-  bool fellBack_ = false;
+  Kind active_ = Kind::Klu;
   bool analyzed_ = false;
 };
 

@@ -54,6 +54,7 @@ Status KluSolver::freshFactor(int* p, int* i, double* x) {
   freeNumeric();
   numeric_ = klu_factor(p, i, x, symbolic_, &common_);
   if (common_.status == KLU_SINGULAR) {
+    singular_ = common_.singular_col;
     // With halt_if_singular (the default) KLU has already freed the factors.
     freeNumeric();
     return Status::failure("klu: matrix is singular (zero pivot at column " +
@@ -71,6 +72,7 @@ Status KluSolver::freshFactor(int* p, int* i, double* x) {
 
 Status KluSolver::factorize(const SparseMatrix& A) {
   factored_ = false;
+  singular_ = -1;
   if (!symbolic_) return Status::failure("klu: factorize() before analyze()");
   if (Status s = pattern_.check(A); !s) return Status::failure("klu: " + s.why);
   // KLU reads but does not write its inputs.

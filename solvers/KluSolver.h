@@ -21,6 +21,7 @@ class KluSolver final : public LinearSolver {
   Status analyze(const SparseMatrix& A, bool symmetric) override;
   Status factorize(const SparseMatrix& A) override;
   Status solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
+  int singularEquation() const override { return singular_; }
 
   // Whether the last successful factorize() reused the previous pivot order.
   bool lastWasRefactor() const { return lastWasRefactor_; }
@@ -36,6 +37,7 @@ class KluSolver final : public LinearSolver {
   SparsePattern pattern_;
   bool factored_ = false;
   bool lastWasRefactor_ = false;
+  int singular_ = -1;
 };
 
 }  // namespace c2d

@@ -21,17 +21,24 @@ class LinearSolver {
   // Symbolic analysis for A's pattern (A holds both triangles even when symmetric).
   // Called again only when the pattern changes (a new topology version).
   virtual Status analyze(const SparseMatrix& A, bool symmetric) = 0;
+  // The equations that belong together (group[i] for equation i: the dofs of
+  // one node), for the solvers that factor dense blocks; the others ignore
+  // it. Takes effect at the next analyze().
+  virtual void groupEquations(std::vector<int> /*group*/) {}
   // Numeric factorization of A, whose pattern is the analyzed one. A failure
   // (singular, or not positive definite for a Cholesky) is returned; the "auto"
   // solver falls back to an LU factorization by itself.
   virtual Status factorize(const SparseMatrix& A) = 0;
   // x = A^{-1} b with the current factors; x is sized by the caller.
   virtual Status solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
+  // The equation (of A's numbering) whose pivot vanished when the last
+  // factorize() failed for a singular matrix, or -1.
+  virtual int singularEquation() const { return -1; }
 };
 
-// Names: "auto" (default: CHOLMOD for symmetric, falling back to UMFPACK when the
-// tangent is indefinite; UMFPACK for unsymmetric), "cholmod", "umfpack", "klu",
-// "eigen-ldlt", "eigen-lu". Returns nullptr for an unknown name.
+// Names: "auto" (default: CHOLMOD for symmetric, falling back to KLU when the
+// tangent is indefinite; block LU for unsymmetric, falling back to KLU where it
+// needs pivoting), "cholmod", "umfpack", "klu", "block-lu", "eigen-ldlt", "eigen-lu". Returns nullptr for an unknown name.
 std::unique_ptr<LinearSolver> makeLinearSolver(std::string_view name);
 std::vector<std::string> linearSolverNames();
 

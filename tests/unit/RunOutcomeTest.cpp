@@ -141,6 +141,34 @@ TEST(RunOutcome, FullDiskUnderTheTimeHistoryIsAnIoError) {
   EXPECT_TRUE(contains(readFile(r.out / "tp.failed.out"), std::strerror(ENOSPC)));
 }
 
+TEST(RunOutcome, SingularTangentNamesTheNodeOfTheMechanism) {
+  // decks/newton/mechanism.inp: a bar on two rollers under a horizontal force.
+  // Each solver stops the run where the tangent is singular and names the
+  // horizontal motion of node 2: the block LU and KLU by the dof of the zero
+  // pivot; CHOLMOD ends with a round-off pivot, so the solve's check of
+  // K du = R does it, by the largest component of the correction.
+  const fs::path deck = fs::path(C2D_SOURCE_DIR) / "decks" / "newton" / "mechanism.inp";
+  const std::pair<const char*, const char*> cases[] = {
+      {"auto", "no stiffness at node 2, dof 1"},
+      {"klu", "no stiffness at node 2, dof 1"},
+      {"cholmod", "the solve leaves"},
+  };
+  for (const auto& [solver, report] : cases) {
+    DeckTempDir dir;
+    DeckOptions o;
+    o.outDir = dir.path();
+    o.quiet = true;
+    o.solver = solver;
+    const SolutionCommands commands;
+    std::ostringstream console;
+    const DeckOutcome r = runDeck(deck.string(), o, commands, console);
+    EXPECT_EQ(r.exitCode, kExitAnalysisFailed) << solver;
+    EXPECT_TRUE(contains(r.message, "singular tangent")) << solver << ": " << r.message;
+    EXPECT_TRUE(contains(r.message, report)) << solver << ": " << r.message;
+    EXPECT_TRUE(contains(r.message, "node 2, dof 1")) << solver << ": " << r.message;
+  }
+}
+
 TEST(RunOutcome, OutputDirectoryThatCannotBeMadeIsAnIoError) {
   DeckTempDir dir;
   dir.write("plain", "a file where the output directory should be");
