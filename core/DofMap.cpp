@@ -1,8 +1,6 @@
 #include "core/DofMap.h"
 
-#include <amd.h>
-
-#include <algorithm>
+#include "core/FillOrder.h"
 
 namespace c2d {
 
@@ -68,16 +66,8 @@ void DofMap::orderForFill(const Model& model) {
         for (int j : eqs)
           if (j >= 0 && j != i) adj[i].push_back(j);
   }
-  std::vector<int> Ap(numEq_ + 1, 0), Ai;
-  for (int i = 0; i < numEq_; ++i) {
-    std::sort(adj[i].begin(), adj[i].end());
-    adj[i].erase(std::unique(adj[i].begin(), adj[i].end()), adj[i].end());
-    Ap[i + 1] = Ap[i] + static_cast<int>(adj[i].size());
-    Ai.insert(Ai.end(), adj[i].begin(), adj[i].end());
-  }
-  if (Ai.empty()) return;
-  std::vector<int> perm(numEq_);
-  if (amd_order(numEq_, Ap.data(), Ai.data(), perm.data(), nullptr, nullptr) < AMD_OK) return;
+  const std::vector<int> perm = fillReducingOrder(adj);
+  if (perm.empty()) return;
   std::vector<int> newNumber(numEq_);
   for (int k = 0; k < numEq_; ++k) newNumber[perm[k]] = k;
   for (int& eq : eq_)

@@ -1,6 +1,6 @@
 #include "solvers/BlockLuSolver.h"
 
-#include <amd.h>
+#include "core/FillOrder.h"
 
 #include <algorithm>
 #include <cmath>
@@ -61,16 +61,9 @@ void BlockLuSolver::orderBlocks(const SparseMatrix& A) {
       adj[bi].push_back(bj);
       adj[bj].push_back(bi);
     }
-  std::vector<int> Gp(nb_ + 1, 0), Gi;
-  for (int b = 0; b < nb_; ++b) {
-    std::sort(adj[b].begin(), adj[b].end());
-    adj[b].erase(std::unique(adj[b].begin(), adj[b].end()), adj[b].end());
-    Gp[b + 1] = Gp[b] + static_cast<int>(adj[b].size());
-    Gi.insert(Gi.end(), adj[b].begin(), adj[b].end());
-  }
-  std::vector<int> perm(nb_), position(nb_);
-  if (Gi.empty() || amd_order(nb_, Gp.data(), Gi.data(), perm.data(), nullptr, nullptr) < AMD_OK)
-    for (int b = 0; b < nb_; ++b) perm[b] = b;
+  std::vector<int> perm = fillReducingOrder(adj), position(nb_);
+  if (perm.empty())
+    for (int b = 0; b < nb_; ++b) perm.push_back(b);
   for (int k = 0; k < nb_; ++k) position[perm[k]] = k;
   std::vector<int> members(members_.size());
   for (int k = 0; k < nb_; ++k)
@@ -153,7 +146,7 @@ Status BlockLuSolver::factorize(const SparseMatrix& A) {
   if (Status s = pattern_.check(A); !s) return Status::failure("block-lu: " + s.why);
   const int* Ap = A.outerIndexPtr();
   const double* Ax = A.valuePtr();
-  const double largestA = A.coeffs().cwiseAbs().maxCoeff();
+  const double largestA = A.nonZeros() > 0 ? A.coeffs().cwiseAbs().maxCoeff() : 0.0;
   double largestU = 0;
   for (int k = 0; k < nb_; ++k) {
     for (int q = Up_[k]; q < Up_[k + 1]; ++q) work_[Ui_[q]].setZero();
