@@ -161,6 +161,13 @@ std::vector<std::string> runWarnings(const RunSummary& s) {
                                   : "CONTact MEMBers,,k keeps them apart");
     out.push_back(buf);
   }
+  if (s.folded > 0) {
+    std::snprintf(buf, sizeof buf,
+                  "warning: %d member%s bent through more than a quarter turn at the end "
+                  "(listed in the log): no RC member does that whole",
+                  s.folded, s.folded == 1 ? " is" : "s are");
+    out.push_back(buf);
+  }
   if (s.blastsNotMade > 0) {
     std::snprintf(buf, sizeof buf,
                   "warning: %d blast%s of the BLASt plan did not happen: the run ended before "
@@ -309,6 +316,7 @@ class Walker {
     total_.jointsRuptured += s.jointsRuptured;
     total_.removed += s.removed;
     total_.crossings += s.crossings;
+    total_.folded += s.folded;
     total_.memberContact = total_.memberContact || s.memberContact;
     total_.blastsNotMade += s.blastsNotMade;
     total_.debrisRuns += s.debrisRuns;

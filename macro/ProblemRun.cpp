@@ -15,6 +15,7 @@
 #include "core/Checkpoint.h"
 #include "core/SvgDebris.h"
 #include "core/MemberCrossing.h"
+#include "elements/MemberFold.h"
 #include "elements/HingeToJoint.h"
 #include "elements/Joints.h"
 #include "macro/DeckParser.h"
@@ -193,6 +194,15 @@ void ProblemRun::reportCrossings() {
   }
   if (crossings.size() > shown)
     log_ << "  warning: " << crossings.size() - shown << " more pairs of members cross\n";
+  // RC members folded beyond what a member does whole (elements/MemberFold.h).
+  const std::vector<MemberFold> folds = foldedMembers(model_, analysis_->state());
+  folded_ = static_cast<int>(folds.size());
+  for (std::size_t i = 0; i < std::min<std::size_t>(folds.size(), 20); ++i)
+    log_ << (i == 0 && crossings.empty() ? "\n" : "") << "  warning: member " << folds[i].element + 1
+         << " is bent through " << fmt("%.3f", folds[i].fold) << " rad between its ends (nodes "
+         << folds[i].nodes[0] + 1 << " and " << folds[i].nodes[1] + 1
+         << ") at t = " << fmt("%.6e", analysis_->state().t)
+         << ": more than a quarter turn, which no RC member bends whole\n";
   // Members that went through each other during the run, whatever the end.
   if (const Assembler& a = analysis_->assembler(); a.pushedThrough() > 0)
     log_ << "  warning: " << a.pushedThrough()
@@ -248,6 +258,7 @@ RunSummary ProblemRun::summary() const {
   s.jointsRuptured = jointsRuptured_;
   s.removed = removed_;
   s.crossings = crossings_;
+  s.folded = folded_;
   s.memberContact = crossings_ > 0 && model_.memberContact().has_value();
   s.blastsNotMade = blastsNotMade_;
   s.debrisRuns = debris_ ? 1 : 0;

@@ -48,6 +48,7 @@ struct RunSummary {
   int jointsFormed = 0, jointsRuptured = 0;  // during the run (fully softened hinges, ruptures)
   int removed = 0;                            // elements removed (BLASt, REMOve)
   int crossings = 0;  // pairs of members crossing each other at the end
+  int folded = 0;     // RC members bent through more than a quarter turn at the end
   bool memberContact = false;  // the crossing members had member contact (CONTact MEMBers)
   int blastsNotMade = 0;  // BLASt records whose time the run never reached
   // Runs that ended with ground contact (debris figures), and those of them whose
@@ -177,6 +178,7 @@ class ProblemRun {
   int jointsFormed_ = 0, jointsRuptured_ = 0;
   int removed_ = 0;
   int crossings_ = 0;
+  int folded_ = 0;
   int blastsNotMade_ = 0;
   double maxMomentRatio_ = 0;
   double energy0_ = 0, energyScale_ = 0, energyError_ = 0;

@@ -267,6 +267,11 @@ TEST(RunOutcome, SummaryWordsTheEnergyErrorAndWarnsWhenTheBalanceDoesNotClose) {
   ASSERT_EQ(runWarnings(s).size(), 2u);
   EXPECT_TRUE(contains(runWarnings(s)[1], "warning: 3 pairs of members cross each other at the end"))
       << runWarnings(s)[1];
+  // Members folded beyond a quarter turn: a third.
+  s.folded = 1;
+  ASSERT_EQ(runWarnings(s).size(), 3u);
+  EXPECT_TRUE(contains(runWarnings(s)[2], "warning: 1 member is bent through more than a quarter"))
+      << runWarnings(s)[2];
 }
 
 }  // namespace

@@ -1,0 +1,35 @@
+#include "elements/MemberFold.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "elements/JointedElement.h"
+#include "elements/Joints.h"
+
+namespace c2d {
+
+std::vector<MemberFold> foldedMembers(const Model& model, const State& state) {
+  constexpr double kQuarterTurn = 0.5 * std::numbers::pi;
+  std::vector<MemberFold> out;
+  for (int e = 0; e < model.numElements(); ++e) {
+    if (!model.hasElement(e)) continue;
+    const Element* el = &model.element(e);
+    const MaterialSet* mat = model.material(innermost(*el).materialNumber());
+    if (!mat || !(mat->hardening || mat->softening)) continue;
+    // The rotations at the inner element's ends: a condensed joint's
+    // relative rotation added at its end.
+    ElementKinematics kin = state.kinematics(el->nodes());
+    while (const auto* je = asJointed(el)) {
+      kin = je->innerKinematics(kin, je->relativeRotation());
+      el = &je->inner();
+    }
+    const double fold = std::abs(kin.d[5] - kin.d[2]);
+    if (fold > kQuarterTurn) out.push_back({e, {el->nodes()[0], el->nodes()[1]}, fold});
+  }
+  std::sort(out.begin(), out.end(),
+            [](const MemberFold& a, const MemberFold& b) { return a.fold > b.fold; });
+  return out;
+}
+
+}  // namespace c2d
