@@ -225,14 +225,10 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
     Element& el = model.element(e);
     ElemVec r;
     ElemMat k;
-    ElementKinematics kin = state.kinematics(el.nodes());
-    Element* in = &el;
-    while (auto* je = asJointed(in)) {
-      kin = je->innerKinematics(kin, je->relativeRotation());
-      in = &je->inner();
-    }
-    if (Status st = in->evaluate(kin, statics, false, r, k); !st) fail(e, st.why);
-    in->commit();
+    Element& in = innermost(el);
+    if (Status st = in.evaluate(innermostKinematics(el, state), statics, false, r, k); !st)
+      fail(e, st.why);
+    in.commit();
   }
   if (std::find(rebuild.begin(), rebuild.end(), 1) != rebuild.end()) model.bumpTopology();
   return created;

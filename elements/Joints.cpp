@@ -77,6 +77,13 @@ const Element& innermost(const Element& e) {
   return *el;
 }
 
+ElementKinematics innermostKinematics(const Element& e, const State& state) {
+  ElementKinematics kin = state.kinematics(e.nodes());
+  for (const Element* el = &e; const auto* je = asJointed(el); el = &je->inner())
+    kin = je->innerKinematics(kin, je->relativeRotation());
+  return kin;
+}
+
 std::vector<JointedElement*> jointedElements(Model& model) {
   std::vector<JointedElement*> out;
   for (int e = 0; e < model.numElements(); ++e)

@@ -35,6 +35,9 @@ double jointFriction(const Model& model, int node);
 // is wrapped twice).
 Element& innermost(Element& e);
 const Element& innermost(const Element& e);
+// The kinematics of e's innermost element at the state's displacements: each
+// wrapper's relative rotation added at its end (JointedElement::innerKinematics).
+ElementKinematics innermostKinematics(const Element& e, const State& state);
 
 // The jointed elements of the model, wrappers inside wrappers included
 // (borrowed pointers, valid until the element list changes).

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "elements/JointedElement.h"
 #include "elements/Joints.h"
 
 namespace c2d {
@@ -14,18 +13,14 @@ std::vector<MemberFold> foldedMembers(const Model& model, const State& state) {
   std::vector<MemberFold> out;
   for (int e = 0; e < model.numElements(); ++e) {
     if (!model.hasElement(e)) continue;
-    const Element* el = &model.element(e);
-    const MaterialSet* mat = model.material(innermost(*el).materialNumber());
+    const Element& in = innermost(model.element(e));
+    const MaterialSet* mat = model.material(in.materialNumber());
     if (!mat || !(mat->hardening || mat->softening)) continue;
-    // The rotations at the inner element's ends: a condensed joint's
-    // relative rotation added at its end.
-    ElementKinematics kin = state.kinematics(el->nodes());
-    while (const auto* je = asJointed(el)) {
-      kin = je->innerKinematics(kin, je->relativeRotation());
-      el = &je->inner();
-    }
+    // The rotations at the inner element's ends (a condensed joint's relative
+    // rotation added at its end).
+    const ElementKinematics kin = innermostKinematics(model.element(e), state);
     const double fold = std::abs(kin.d[5] - kin.d[2]);
-    if (fold > kQuarterTurn) out.push_back({e, {el->nodes()[0], el->nodes()[1]}, fold});
+    if (fold > kQuarterTurn) out.push_back({e, {in.nodes()[0], in.nodes()[1]}, fold});
   }
   std::sort(out.begin(), out.end(),
             [](const MemberFold& a, const MemberFold& b) { return a.fold > b.fold; });

@@ -131,16 +131,10 @@ Status HingeEvents::solveBetween(double fraction, double sLo, double sHi, double
 Status HingeEvents::evaluateOpened(int element) {
   // The innermost element at the committed displacements, its joints' relative
   // rotations as committed (JointedElement::innerKinematics).
-  const State& s = an_.state_;
-  Element* el = &an_.model().element(element);
-  ElementKinematics kin = s.kinematics(el->nodes());
-  while (auto* je = asJointed(el)) {
-    kin = je->innerKinematics(kin, je->relativeRotation());
-    el = &je->inner();
-  }
+  Element& el = an_.model().element(element);
   ElemVec r;
   ElemMat k;
-  return el->evaluate(kin, an_.stepRule(), false, r, k);
+  return innermost(el).evaluate(innermostKinematics(el, an_.state_), an_.stepRule(), false, r, k);
 }
 
 void HingeEvents::restoreCommitted() {
