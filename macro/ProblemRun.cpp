@@ -168,6 +168,7 @@ void ProblemRun::run() {
   outputs_->finish(model_, analysis_->state(), history_.get());
   if (model_.ground()) reportDebris();
   reportCrossings();
+  reportFolds();
   // A blast plan the run did not reach is not silently dropped.
   for (const Blast& b : model_.blasts())
     if (!b.done) {
@@ -194,15 +195,6 @@ void ProblemRun::reportCrossings() {
   }
   if (crossings.size() > shown)
     log_ << "  warning: " << crossings.size() - shown << " more pairs of members cross\n";
-  // RC members folded beyond what a member does whole (elements/MemberFold.h).
-  const std::vector<MemberFold> folds = foldedMembers(model_, analysis_->state());
-  folded_ = static_cast<int>(folds.size());
-  for (std::size_t i = 0; i < std::min<std::size_t>(folds.size(), 20); ++i)
-    log_ << (i == 0 && crossings.empty() ? "\n" : "") << "  warning: member " << folds[i].element + 1
-         << " is bent through " << fmt("%.3f", folds[i].fold) << " rad between its ends (nodes "
-         << folds[i].nodes[0] + 1 << " and " << folds[i].nodes[1] + 1
-         << ") at t = " << fmt("%.6e", analysis_->state().t)
-         << ": more than a quarter turn, which no RC member bends whole\n";
   // Members that went through each other during the run, whatever the end.
   if (const Assembler& a = analysis_->assembler(); a.pushedThrough() > 0)
     log_ << "  warning: " << a.pushedThrough()
@@ -210,6 +202,18 @@ void ProblemRun::reportCrossings() {
          << fmt("%.3e", a.pushedThroughEnergy())
          << " kJ of contact energy released): the member contact is too soft for the impact, or "
             "the pieces of a ruptured joint slid through each other\n";
+}
+
+void ProblemRun::reportFolds() {
+  // RC members folded beyond what a member does whole (elements/MemberFold.h).
+  const std::vector<MemberFold> folds = foldedMembers(model_, analysis_->state());
+  folded_ = static_cast<int>(folds.size());
+  for (std::size_t i = 0; i < std::min<std::size_t>(folds.size(), 20); ++i)
+    log_ << (i == 0 && crossings_ == 0 ? "\n" : "") << "  warning: member " << folds[i].element + 1
+         << " is bent through " << fmt("%.3f", folds[i].fold) << " rad between its ends (nodes "
+         << folds[i].nodes[0] + 1 << " and " << folds[i].nodes[1] + 1
+         << ") at t = " << fmt("%.6e", analysis_->state().t)
+         << ": more than a quarter turn, which no RC member bends whole\n";
 }
 
 void ProblemRun::reportDebris() {

@@ -139,6 +139,8 @@ class ProblemRun {
   void onCommit();
   void reportDebris();
   void reportCrossings();
+  // RC members bent through more than a quarter turn at the end: log lines.
+  void reportFolds();
   void progress(bool final);
   std::filesystem::path restartPath(const Macro& m) const;
   // This class's own part of a restart file: hinge steps, step cutting, energy check.
