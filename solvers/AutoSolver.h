@@ -1,10 +1,10 @@
 #pragma once
 // The default solver. When the caller has grouped the equations by node (the
-// analyses do), the block LU on the nodes' 3x3 blocks: it needs no pivoting for
-// a frame's tangent, static or dynamic, factors in a third to a half of the
-// time of KLU's refactorization, and keeps up with CHOLMOD's Cholesky on
-// symmetric ones (the frame push takes the same time). Without a grouping, symmetric matrices go to CHOLMOD's Cholesky and
-// unsymmetric ones to KLU. When the block LU finds it would need pivoting (a
+// analyses do), the block LU on the nodes' 3x3 blocks: it needs no pivoting
+// for a frame's tangent, static or dynamic, factors in a third to a half of
+// the time of KLU's refactorization, and keeps up with CHOLMOD's Cholesky on
+// symmetric ones (the frame push takes the same time). Without a grouping,
+// symmetric matrices go to CHOLMOD's Cholesky and unsymmetric ones to KLU. When the block LU finds it would need pivoting (a
 // near-singular pivot block, growth of the entries: a tangent made indefinite
 // by a softening hinge can do that) or the Cholesky finds the matrix not
 // positive definite, the same matrix is factorized by KLU's pivoting LU

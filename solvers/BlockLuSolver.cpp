@@ -47,7 +47,7 @@ void BlockLuSolver::makeBlocks(int n) {
   nb_ = static_cast<int>(members_.size()) / kB;
 }
 
-void BlockLuSolver::orderBlocks(const SparseMatrix& A) {
+std::vector<std::vector<int>> BlockLuSolver::orderBlocks(const SparseMatrix& A) {
   // The block graph of A + A^T, ordered by AMD; blocks renumbered in that order.
   std::vector<int> natural(n_);
   for (int b = 0; b < nb_; ++b)
@@ -69,9 +69,9 @@ void BlockLuSolver::orderBlocks(const SparseMatrix& A) {
   for (int k = 0; k < nb_; ++k)
     std::copy_n(members_.begin() + kB * perm[k], kB, members.begin() + kB * k);
   members_ = std::move(members);
-  adjacent_.assign(nb_, {});
+  std::vector<std::vector<int>> adjacent(nb_);
   for (int b = 0; b < nb_; ++b)
-    for (int j : adj[b]) adjacent_[position[b]].push_back(position[j]);
+    for (int j : adj[b]) adjacent[position[b]].push_back(position[j]);
   blockOf_.assign(n_, -1);
   slot_.assign(n_, -1);
   for (int k = 0; k < nb_; ++k)
@@ -80,9 +80,10 @@ void BlockLuSolver::orderBlocks(const SparseMatrix& A) {
         blockOf_[eq] = k;
         slot_[eq] = l;
       }
+  return adjacent;
 }
 
-void BlockLuSolver::symbolic() {
+void BlockLuSolver::symbolic(const std::vector<std::vector<int>>& adjacent) {
   // The blocks of U above the diagonal in column k are the row structure of L
   // in row k: the row subtrees of the elimination tree (Liu), found by walking
   // up the tree from each block coupled to k until a block already marked.
@@ -90,7 +91,7 @@ void BlockLuSolver::symbolic() {
   std::vector<std::vector<int>> above(nb_), below(nb_);
   for (int k = 0; k < nb_; ++k) {
     mark[k] = k;
-    for (int i : adjacent_[k]) {
+    for (int i : adjacent[k]) {
       if (i > k) continue;
       for (int j = i; mark[j] != k; j = parent[j]) {
         above[k].push_back(j);
@@ -125,8 +126,7 @@ Status BlockLuSolver::analyze(const SparseMatrix& A, bool /*symmetric*/) {
   if (Status s = pattern_.record(A); !s) return Status::failure("block-lu: " + s.why);
   n_ = pattern_.size();
   makeBlocks(n_);
-  orderBlocks(A);
-  symbolic();
+  symbolic(orderBlocks(A));
   // Where each entry of A goes in its block column's work blocks.
   target_.resize(A.nonZeros());
   offset_.resize(A.nonZeros());

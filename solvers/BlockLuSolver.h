@@ -5,8 +5,9 @@
 // no pivoting between blocks, the diagonal blocks inverted. A frame's tangent
 // couples every dof of a node with every dof of its neighbours, so the blocks
 // are dense and the kernel is a 3x3 product where a scalar sparse LU (KLU)
-// gathers and scatters each entry: on the ten-storey felling's tangents it
-// factors in about half of KLU's refactorization time and solves in half.
+// gathers and scatters each entry: a factorization and solve takes half of
+// KLU's refactorization time at the ten-storey decks' size, and 0.35-0.45 of
+// it at 10k-40k unknowns (benchmark factorizeAndSolve).
 //
 // Without pivoting it suits matrices whose diagonal blocks dominate, as a
 // dynamic tangent's (mass / (beta dt^2) + K) do. A factorization whose pivot
@@ -39,8 +40,9 @@ class BlockLuSolver final : public LinearSolver {
   using BlockVec = Eigen::Vector3d;
 
   void makeBlocks(int n);
-  void orderBlocks(const SparseMatrix& A);
-  void symbolic();
+  // Returns the block graph in factor order.
+  std::vector<std::vector<int>> orderBlocks(const SparseMatrix& A);
+  void symbolic(const std::vector<std::vector<int>>& adjacent);
 
   std::vector<int> group_;         // the caller's grouping of the equations
   SparsePattern pattern_;
@@ -48,7 +50,6 @@ class BlockLuSolver final : public LinearSolver {
   std::vector<int> members_;       // equations of block b: members_[3b..3b+2], -1 pads
   std::vector<int> blockOf_;       // block (in factor order) of each equation
   std::vector<int> slot_;          // its row or column within the block
-  std::vector<std::vector<int>> adjacent_;  // block graph, factor order
   std::vector<int> target_;        // per entry of A: block of its row (factor order)
   std::vector<int> offset_;        // and its place within that block (column-major)
   std::vector<int> Lp_, Li_;       // block rows below the diagonal, per block column

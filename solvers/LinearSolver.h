@@ -36,9 +36,10 @@ class LinearSolver {
   virtual int singularEquation() const { return -1; }
 };
 
-// Names: "auto" (default: CHOLMOD for symmetric, falling back to KLU when the
-// tangent is indefinite; block LU for unsymmetric, falling back to KLU where it
-// needs pivoting), "cholmod", "umfpack", "klu", "block-lu", "eigen-ldlt", "eigen-lu". Returns nullptr for an unknown name.
+// Names: "auto" (default: the block LU when the equations are grouped, else
+// CHOLMOD for symmetric and KLU for unsymmetric matrices; KLU where the first
+// one fails for want of pivoting), "cholmod", "umfpack", "klu", "block-lu",
+// "eigen-ldlt", "eigen-lu". Returns nullptr for an unknown name.
 std::unique_ptr<LinearSolver> makeLinearSolver(std::string_view name);
 std::vector<std::string> linearSolverNames();
 
