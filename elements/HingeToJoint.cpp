@@ -76,17 +76,21 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
     joint[e] = carrier && wantsJoint(el, carrier->hinge());
     if (!joint[e] && !rebuildAlways(el)) continue;
     rebuild[e] = 1;
+    // The innermost element at the joints' committed relative rotations and
+    // rates: they belong to the motion so far (a static solve of the joints
+    // would move them, and change the stored energy at the switch). Its end
+    // moments choose the joint's end; a joint's own end carries none.
     ElemVec r;
     ElemMat k;
-    if (Status st = el.evaluate(state.kinematics(el.nodes()), statics, false, r, k); !st)
+    Element& in = innermost(el);
+    if (Status st = in.evaluate(innermostKinematics(el, state), statics, false, r, k); !st)
       fail(e, st.why);
-    // The relative rates belong to the dynamics so far: keep them; the static
-    // evaluation only solves psi_r at the current displacements.
     for (auto* je = asJointed(&el); je;
          je = asJointed(&je->inner()))
-      slaves[je->slaveNode()] = Relative{je->masterNode(), je->relativeRotation(),
-                                         je->relativeVelocity(), je->relativeAcceleration()};
-    forces[e] = el.sectionForces();
+      slaves[je->slaveNode()] =
+          Relative{je->masterNode(), je->committedRelativeRotation(),
+                   je->committedRelativeVelocity(), je->committedRelativeAcceleration()};
+    forces[e] = in.sectionForces();
     sections[e] = sectionOf(el);
     endForces[e] = r;
   }
@@ -247,11 +251,14 @@ std::vector<CreatedJoint> hingeToJoint(Model& model, State& state, MemberLaws la
 
 std::vector<CreatedJoint> jointFailedHinges(Model& model, State& state) {
   // Only geometrically exact elements: the failure phase keeps its embedded
-  // hinges. An element that already carries a joint keeps its failed hinge as
-  // a free embedded one (a second joint would leave the element without any
-  // rotational stiffness between its two free ends).
+  // hinges. An element that already carries a joint at one end gets the new
+  // one at its other end (the end of the larger moment: the joint's moment is
+  // zero): the member, failed twice, becomes a link pinned at both ends. An
+  // element with joints at both ends carries no moment and opens no hinge.
   const auto failed = [](const Element& e, const HingeInfo& h) {
-    return h.active && h.failed && asReissner(e) && !asJointed(&e);
+    if (!h.active || !h.failed || !asReissner(e)) return false;
+    const std::array<bool, 2> ends = jointedEnds(e);
+    return !(ends[0] && ends[1]);
   };
   bool any = false;
   for (int e = 0; e < model.numElements() && !any; ++e)

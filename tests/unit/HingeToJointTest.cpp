@@ -292,5 +292,103 @@ TEST(HingeToJoint, SoftenedCantileverBecomesAPendulumWithContinuousSectionForces
   EXPECT_GT(je->relativeRotation() - hinge.jump, 0.5);
 }
 
+// A member whose hinge fails after it already carries a joint at one end (the
+// joint of its first failure) gets the new joint at its other end: it becomes
+// a link pinned at both ends, whose inner rotations follow its chord, instead
+// of keeping the failed hinge inside (nothing would then resist its two ends
+// turning against each other: the member would fold through any angle). The
+// switch keeps the first joint's relative rotation and rates as the motion
+// left them, and the member's section forces and stored energy.
+TEST(JointFailedHinges, AMemberFailedTwiceBecomesALinkPinnedAtBothEnds) {
+  MaterialSet mat;
+  mat.number = 1;
+  mat.elementType = "FRAMe";
+  mat.kinematics = Kinematics::Finite;
+  mat.resEA = 1e6;
+  mat.resGA = 5e5;
+  mat.resEI = 1e3;
+  mat.density = 1;
+  mat.A = 10;
+  mat.I = 1e-2;
+  mat.hardening = HardeningData{1.0, 2.0, 400, 40};
+  mat.softening = SofteningData{2.4, -8, 0.6};
+  Model m;
+  m.materials()[1] = mat;
+  m.resizeNodes(4);
+  for (int i = 0; i < 4; ++i) m.setCoord(i, Vec2(1.0 * i, 0));
+  for (int e = 0; e < 3; ++e)
+    m.setElement(e, std::make_unique<ReissnerFrame>(mat, std::array{e, e + 1}, m.coord(e),
+                                                    m.coord(e + 1)));
+  // Element 1 on a slave of node 1: the joint of its first failure.
+  const int first = m.addNode(m.coord(1));
+  m.element(1).setNodes({first, 2});
+  m.joints().push_back(Joint{1, first, JointForm::Condensed});
+  ASSERT_EQ(installJoints(m), 1);
+  // Its hinge has failed since: no moment, whatever the jump.
+  HingedBendingState failed;
+  failed.hingeActive = failed.hingeFailed = true;
+  failed.jump.alpha = failed.jump.xi = 0.05;
+  dynamic_cast<ReissnerFrame&>(innermost(m.element(1))).setSection(failed);
+  // A moving state in which the first joint's relative rotation is not the
+  // one a static solve would give.
+  State s;
+  s.resize(m.numNodes());
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-0.02, 0.02);
+  for (Eigen::Index i = 0; i < s.u.size(); ++i) {
+    s.u[i] = u(rng);
+    s.v[i] = 10 * u(rng);
+  }
+  s.un = s.u;
+  s.vn = s.v;
+  jointedElements(m).front()->setRelativeState(0.2, 0.5, 0);
+  syncSlaveNodes(m, s);
+  const StepRule statics{};
+  auto innerEnergy = [&] {
+    ElemVec r;
+    ElemMat k;
+    Element& in = innermost(m.element(1));
+    EXPECT_TRUE(in.evaluate(innermostKinematics(m.element(1), s), statics, false, r, k));
+    return std::pair{in.strainEnergy(), in.sectionForces()};
+  };
+  const auto [energyBefore, forcesBefore] = innerEnergy();
+  const double alpha = dynamic_cast<const HingeCarrier&>(innermost(m.element(1))).hinge().jump;
+
+  const std::vector<CreatedJoint> created = jointFailedHinges(m, s);
+  ASSERT_EQ(created.size(), 1u);
+  EXPECT_EQ(created[0].element, 1);
+  EXPECT_EQ(created[0].slaveEnd, 1);  // the end without a joint
+  EXPECT_EQ(created[0].master, 2);
+  EXPECT_EQ(created[0].slave, 5);
+  EXPECT_EQ(created[0].relativeRotation, -alpha);
+  // Wrapped at both ends; the first joint as the motion left it.
+  auto* outer = dynamic_cast<JointedElement*>(&m.element(1));
+  ASSERT_NE(outer, nullptr);
+  auto* inner = dynamic_cast<JointedElement*>(&outer->inner());
+  ASSERT_NE(inner, nullptr);
+  const JointedElement* atFirst = outer->slaveNode() == first ? outer : inner;
+  const JointedElement* atNew = outer->slaveNode() == first ? inner : outer;
+  EXPECT_EQ(atFirst->slaveNode(), first);
+  EXPECT_EQ(atFirst->committedRelativeRotation(), 0.2);
+  EXPECT_EQ(atFirst->committedRelativeVelocity(), 0.5);
+  EXPECT_EQ(atNew->slaveNode(), 5);
+  EXPECT_EQ(atNew->committedRelativeRotation(), -alpha);
+  // The hinge's capacity is fresh, the section forces and energy unchanged.
+  const auto& frame = dynamic_cast<const ReissnerFrame&>(innermost(m.element(1)));
+  EXPECT_FALSE(frame.hinge().active);
+  const auto [energyAfter, forcesAfter] = innerEnergy();
+  EXPECT_NEAR(energyAfter, energyBefore, 1e-12 * std::abs(energyBefore));
+  EXPECT_NEAR(forcesAfter.N, forcesBefore.N, 1e-9 * std::abs(forcesBefore.N));
+  EXPECT_NEAR(forcesAfter.V, forcesBefore.V, 1e-9 * std::abs(forcesBefore.N));
+  EXPECT_NEAR(forcesAfter.M, 0, 1e-9);
+
+  // A link pinned at both ends opens no hinge and gets no third joint: a
+  // failed hinge there leaves it as it is.
+  dynamic_cast<ReissnerFrame&>(innermost(m.element(1))).setSection(failed);
+  const int version = m.topologyVersion();
+  EXPECT_TRUE(jointFailedHinges(m, s).empty());
+  EXPECT_EQ(m.topologyVersion(), version);
+}
+
 }  // namespace
 }  // namespace c2d
