@@ -6,6 +6,7 @@
 
 #include "core/FloorLoad.h"
 #include "core/GroundContact.h"
+#include "core/MemberContact.h"
 
 namespace c2d {
 
@@ -144,16 +145,38 @@ double groundForce(const Model& model, const DofMap& dofs, const State& state) {
   return f;
 }
 
+GroundDepth deepestNode(const Model& model, const DofMap& dofs, const State& state) {
+  GroundDepth d;
+  const auto& ground = model.ground();
+  if (!ground) return d;
+  for (int n = 0; n < model.numNodes() && n < dofs.numNodes(); ++n) {
+    if (!dofs.used(n) || dofs.aliased(n)) continue;  // as groundForce
+    const double depth = penetration(*ground, model.coord(n).y() + state.u[n * kNodeDofs + 1]);
+    if (depth > 0 && (d.node < 0 || depth > d.depth)) d = GroundDepth{n, depth};
+  }
+  return d;
+}
+
+double halfSectionDepth(const Model& model, int node) {
+  double r = 0;
+  for (int e = 0; e < model.numElements(); ++e)
+    if (model.hasElement(e))
+      for (int n : model.element(e).nodes())
+        if (n == node) r = std::max(r, sectionRadius(model, e));
+  return r;
+}
+
 std::string debrisCsvHeader() {
   return "left,right,height,total_mass,outside_mass,site,site_xmin,site_xmax,peak_ground_force,"
-         "peak_time";
+         "peak_time,deepest,deepest_time";
 }
 
 std::string debrisCsvRow(const DebrisFigures& d) {
   std::string row = num(d.left) + "," + num(d.right) + "," + num(d.height) + "," +
                     num(d.totalMass) + "," + num(d.outsideMass) + "," + d.siteStatus() + ",";
   row += d.site ? num(d.site->xmin) + "," + num(d.site->xmax) : std::string(",");
-  return row + "," + num(d.peakGroundForce) + "," + num(d.peakTime);
+  return row + "," + num(d.peakGroundForce) + "," + num(d.peakTime) + "," + num(d.deepest) + "," +
+         num(d.deepestTime);
 }
 
 std::string debrisLogLines(const DebrisFigures& d) {
@@ -181,7 +204,17 @@ std::string debrisLogLines(const DebrisFigures& d) {
   out += buf;
   std::snprintf(buf, sizeof buf, "  debris: peak ground force %.4e kN at t = %.4e s\n",
                 d.peakGroundForce, d.peakTime);
-  return out + buf;
+  out += buf;
+  if (d.deepestNode < 0) return out;
+  std::snprintf(buf, sizeof buf, "  debris: deepest in the ground %.4e m (node %d at t = %.4e s)",
+                d.deepest, d.deepestNode + 1, d.deepestTime);
+  out += buf;
+  if (d.deepestLimit > 0) {
+    std::snprintf(buf, sizeof buf, ", half its members' section depth %.4e m%s", d.deepestLimit,
+                  d.sunk() ? ": BURIED, the ground is too soft for the impact (GROUnd's k)" : "");
+    out += buf;
+  }
+  return out + "\n";
 }
 
 }  // namespace c2d

@@ -32,11 +32,19 @@ struct DebrisFigures {
   double totalMass = 0, outsideMass = 0;      // outside: 0 without a site
   std::optional<Site> site;
   double peakGroundForce = 0, peakTime = 0;  // largest total ground force over the run
+  // The node that went deepest into the ground over the run (-1: none touched
+  // it), how deep (y0 - y) and when, and half the section depth of its members
+  // (0: they give no section), deeper than which it lies buried in the pictures.
+  int deepestNode = -1;
+  double deepest = 0, deepestTime = 0, deepestLimit = 0;
 
   // Some node lies outside the site (false without one).
   bool outside() const;
   // "none", "inside" or "outside".
   std::string siteStatus() const;
+  // A node went deeper into the ground than half its members' section depth:
+  // the ground's penalty is too soft for the impact.
+  bool sunk() const { return deepestLimit > 0 && deepest > deepestLimit; }
 };
 
 // The figures of the state (peakGroundForce/peakTime are the caller's to fill).
@@ -53,6 +61,18 @@ std::vector<double> massHistogram(const std::vector<MassPiece>& pieces, double x
 
 // Total ground contact force at the state's positions (0 without ground).
 double groundForce(const Model& model, const DofMap& dofs, const State& state);
+
+// The node deepest in the ground at the state's positions and its depth y0 - y
+// (node -1 when no node is below the ground line, or without ground).
+struct GroundDepth {
+  int node = -1;
+  double depth = 0;
+};
+GroundDepth deepestNode(const Model& model, const DofMap& dofs, const State& state);
+// Half the section depth of the members at a node: the largest contact radius
+// (core/MemberContact.h sectionRadius) of the elements holding it; 0 when none
+// gives a section.
+double halfSectionDepth(const Model& model, int node);
 
 // The debris CSV: one header, one row per run (same columns in the plans table).
 std::string debrisCsvHeader();  // "left,right,height,total_mass,outside_mass,site,..."

@@ -42,8 +42,85 @@ ElementKinematics JointedElement::innerKinematics(const ElementKinematics& outer
   return in;
 }
 
+bool JointedElement::evaluateLink(JointedElement& j, const ElementKinematics& kin,
+                                  const StepRule& rule, bool wantTangent, ElemVec& residual,
+                                  ElemMat& tangent) {
+  const int ko = dof(), ki = j.dof();
+  if (ko == ki) return false;
+  Element& core = *j.inner_;
+  // Starts as the nested iteration's: each relative rotation's first-order
+  // change with the kinematics its own wrapper sees.
+  double po = trial_.psi, pi = j.trial_.psi;
+  if (guessValid_) {
+    const double change = guessSlope_.dot(kin.d - guessD_);
+    if (std::abs(change) <= kGuessRange) po += change;
+  }
+  ElementKinematics mid = innerKinematics(kin, po);  // what the inner wrapper sees
+  if (j.guessValid_) {
+    const double change = j.guessSlope_.dot(mid.d - j.guessD_);
+    if (std::abs(change) <= kGuessRange) pi += change;
+  }
+  ElementKinematics in = j.innerKinematics(mid, pi);
+  const bool cayley = rule.rotationsByCayley();
+  const ElemMat mass = core.mass();
+  auto inWindow = [&](int k, double p) {
+    return !(cayley && mass(k, k) > 0) || std::abs(kin.d(k) + p - in.dn(k)) < std::numbers::pi;
+  };
+  ElemMat K;
+  bool lastPass = false, converged = false;
+  for (int it = 0; it < kMaxLocalIterations && inWindow(ko, po) && inWindow(ki, pi); ++it) {
+    in.d(ko) = kin.d(ko) + po;
+    in.d(ki) = kin.d(ki) + pi;
+    if (!core.evaluate(in, rule, true, residual, K)) return false;
+    const double scale = 1e-13 * K.cwiseAbs().maxCoeff();
+    const double det = K(ko, ko) * K(ki, ki) - K(ko, ki) * K(ki, ko);
+    if (!(std::abs(K(ki, ki)) > scale) || !(std::abs(det) > scale * std::abs(K(ki, ki))))
+      return false;
+    if (lastPass) {
+      converged = true;
+      break;
+    }
+    const double so = -(K(ki, ki) * residual(ko) - K(ko, ki) * residual(ki)) / det;
+    const double si = -(K(ko, ko) * residual(ki) - K(ki, ko) * residual(ko)) / det;
+    if (!std::isfinite(so) || !std::isfinite(si)) return false;
+    lastPass = std::abs(so) <= kSmallStep * (1.0 + std::abs(po)) &&
+               std::abs(si) <= kSmallStep * (1.0 + std::abs(pi));
+    po += so;
+    pi += si;
+  }
+  if (!converged) return false;
+
+  // The inner wrapper as its own evaluation would leave it: condensed over
+  // its relative rotation.
+  const ElemMat Ki = K - K.col(ki) * K.row(ki) / K(ki, ki);
+  mid.d(ko) = kin.d(ko) + po;
+  j.trial_.psi = pi;
+  j.guessD_ = mid.d;
+  j.guessSlope_ = -K.row(ki).transpose() / K(ki, ki);
+  j.guessValid_ = true;
+  const double rateI = rule.rotationRate(in.d(ki) - in.dn(ki)) - rule.rotationRate(mid.d(ki) - mid.dn(ki));
+  j.trial_.vel = rule.velocity(rateI, j.committed_.vel, j.committed_.acc);
+  j.trial_.acc = rule.acceleration(rateI, j.committed_.vel, j.committed_.acc);
+  j.slaveRotation_ = in.d(ki);
+  // This wrapper: condensed over its own relative rotation too.
+  trial_.psi = po;
+  guessD_ = kin.d;
+  guessSlope_ = -Ki.row(ko).transpose() / Ki(ko, ko);
+  guessValid_ = true;
+  const double rateO = rule.rotationRate(mid.d(ko) - mid.dn(ko)) - rule.rotationRate(kin.d(ko) - kin.dn(ko));
+  trial_.vel = rule.velocity(rateO, committed_.vel, committed_.acc);
+  trial_.acc = rule.acceleration(rateO, committed_.vel, committed_.acc);
+  slaveRotation_ = mid.d(ko);
+  if (wantTangent) tangent = Ki - Ki.col(ko) * Ki.row(ko) / Ki(ko, ko);
+  return true;
+}
+
 Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& rule,
                                 bool wantTangent, ElemVec& residual, ElemMat& tangent) {
+  if (JointedElement* j = asJointed(inner_.get());
+      j && friction_ <= 0 && j->friction_ <= 0 &&
+      evaluateLink(*j, kin, rule, wantTangent, residual, tangent))
+    return Status::success();
   const int k = dof();
   double psi = trial_.psi;
   // A first-order start only for a small change: the local equation's roots

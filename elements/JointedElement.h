@@ -128,6 +128,15 @@ class JointedElement final : public Element, public Checkpoint, public MaterialC
   };
 
   int dof() const { return kNodeDofs * slaveEnd_ + 2; }
+  // A link (this wrapper around another, joints at both ends, neither with
+  // friction): both relative rotations by one Newton iteration on the
+  // innermost element, two evaluations of it where the nested iterations
+  // take four. False (nothing changed but trial states that the nested
+  // iteration sets again) where that iteration leaves the Cayley rule's
+  // window of a slave section's increment, meets a singular pivot or does not
+  // converge: the nested iteration, with its bracket, takes over.
+  bool evaluateLink(JointedElement& inner, const ElementKinematics& kin, const StepRule& rule,
+                    bool wantTangent, ElemVec& residual, ElemMat& tangent);
 
   std::unique_ptr<Element> inner_;
   int slaveEnd_;

@@ -168,6 +168,14 @@ std::vector<std::string> runWarnings(const RunSummary& s) {
                   s.folded, s.folded == 1 ? " is" : "s are");
     out.push_back(buf);
   }
+  if (s.sunk > 0) {
+    std::snprintf(buf, sizeof buf,
+                  "warning: %s a node went deeper into the ground than half the section depth "
+                  "of its members (the log's debris lines): the ground is too soft for the "
+                  "impact (GROUnd's k)",
+                  s.sunk == 1 ? "in this run" : (std::to_string(s.sunk) + " runs:").c_str());
+    out.push_back(buf);
+  }
   if (s.blastsNotMade > 0) {
     std::snprintf(buf, sizeof buf,
                   "warning: %d blast%s of the BLASt plan did not happen: the run ended before "
@@ -317,6 +325,7 @@ class Walker {
     total_.removed += s.removed;
     total_.crossings += s.crossings;
     total_.folded += s.folded;
+    total_.sunk += s.sunk;
     total_.memberContact = total_.memberContact || s.memberContact;
     total_.blastsNotMade += s.blastsNotMade;
     total_.debrisRuns += s.debrisRuns;

@@ -216,13 +216,24 @@ void ProblemRun::reportFolds() {
          << ": more than a quarter turn, which no RC member bends whole\n";
 }
 
+DebrisFigures ProblemRun::debrisNow() const {
+  DebrisFigures d = debrisFigures(model_, analysis_->state());
+  d.peakGroundForce = peakGroundForce_;
+  d.peakTime = peakGroundTime_;
+  if (deepest_.node >= 0) {
+    d.deepestNode = deepest_.node;
+    d.deepest = deepest_.depth;
+    d.deepestTime = deepestTime_;
+    d.deepestLimit = halfSectionDepth(model_, deepest_.node);
+  }
+  return d;
+}
+
 void ProblemRun::reportDebris() {
   // Where the debris ends up, against the footprint and the site: the log's lines,
   // <stem>_debris.csv (one row), and the picture when PLOT,DEBRis asked for one.
-  DebrisFigures d = debrisFigures(model_, analysis_->state());
+  const DebrisFigures d = debrisNow();
   if (d.leftNode < 0) return;
-  d.peakGroundForce = peakGroundForce_;
-  d.peakTime = peakGroundTime_;
   debris_ = d;
   log_ << "\n" << debrisLogLines(d);
   const std::filesystem::path csv = options_.outDir / (options_.stem + "_debris.csv");
@@ -234,9 +245,7 @@ void ProblemRun::reportDebris() {
 void ProblemRun::plotDebris() {
   State& s = analysis_->state();
   if (!model_.joints().empty()) syncSlaveNodes(model_, s);
-  DebrisFigures d = debrisFigures(model_, s);
-  d.peakGroundForce = peakGroundForce_;
-  d.peakTime = peakGroundTime_;
+  const DebrisFigures d = debrisNow();
   std::string title = RunOutputs::displayTitle(problem_.title);
   if (!options_.label.empty()) title += (title.empty() ? "" : ", ") + options_.label;
   title += (title.empty() ? "" : ": ") + std::string("debris at t = ") + fmt("%.4g", s.t);
@@ -263,6 +272,7 @@ RunSummary ProblemRun::summary() const {
   s.removed = removed_;
   s.crossings = crossings_;
   s.folded = folded_;
+  s.sunk = debris_ && debris_->sunk() ? 1 : 0;
   s.memberContact = crossings_ > 0 && model_.memberContact().has_value();
   s.blastsNotMade = blastsNotMade_;
   s.debrisRuns = debris_ ? 1 : 0;
@@ -890,9 +900,11 @@ std::string ProblemRun::runState() const {
   put(out, hingeCount_);
   putBool(out, cutting_);
   for (double x : {dtMin_, dtNominal_, energy0_, energyScale_, energyError_, maxMomentRatio_,
-                   peakGroundForce_, peakGroundTime_, peakKinetic_, restRatio_, lastMoving_})
+                   peakGroundForce_, peakGroundTime_, peakKinetic_, restRatio_, lastMoving_,
+                   deepest_.depth, deepestTime_})
     put(out, x);
-  for (int x : {stepsSinceCut_, cuts_, jointsFormed_, jointsRuptured_, removed_}) put(out, x);
+  for (int x : {stepsSinceCut_, cuts_, jointsFormed_, jointsRuptured_, removed_, deepest_.node})
+    put(out, x);
   putBool(out, energyStarted_);
   putBool(out, dynamicSeen_);
   return out.str();
@@ -909,10 +921,13 @@ void ProblemRun::setRunState(const std::string& bytes) {
   cutting_ = getBool(in);
   for (double* x : {&dtMin_, &dtNominal_, &energy0_, &energyScale_, &energyError_,
                     &maxMomentRatio_, &peakGroundForce_, &peakGroundTime_, &peakKinetic_,
-                    &restRatio_, &lastMoving_})
+                    &restRatio_, &lastMoving_, &deepest_.depth, &deepestTime_})
     *x = get<double>(in);
-  for (int* x : {&stepsSinceCut_, &cuts_, &jointsFormed_, &jointsRuptured_, &removed_})
+  for (int* x : {&stepsSinceCut_, &cuts_, &jointsFormed_, &jointsRuptured_, &removed_,
+                 &deepest_.node})
     *x = get<int>(in);
+  if (deepest_.node >= model_.numNodes())
+    throw CheckpointError("the deepest node is not in the model");
   energyStarted_ = getBool(in);
   dynamicSeen_ = getBool(in);
 }
@@ -979,6 +994,11 @@ void ProblemRun::onCommit() {
     if (f > peakGroundForce_) {
       peakGroundForce_ = f;
       peakGroundTime_ = s.t;
+    }
+    if (const GroundDepth d = deepestNode(model_, analysis_->assembler().dofs(), s);
+        d.node >= 0 && d.depth > deepest_.depth) {
+      deepest_ = d;
+      deepestTime_ = s.t;
     }
   }
   dynamicSeen_ = dynamicSeen_ || analysis_->integrator().dynamic();

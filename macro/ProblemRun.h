@@ -49,6 +49,7 @@ struct RunSummary {
   int removed = 0;                            // elements removed (BLASt, REMOve)
   int crossings = 0;  // pairs of members crossing each other at the end
   int folded = 0;     // RC members bent through more than a quarter turn at the end
+  int sunk = 0;       // runs in which a node went deeper into the ground than half its section
   bool memberContact = false;  // the crossing members had member contact (CONTact MEMBers)
   int blastsNotMade = 0;  // BLASt records whose time the run never reached
   // Runs that ended with ground contact (debris figures), and those of them whose
@@ -138,6 +139,9 @@ class ProblemRun {
   std::vector<int> selection(const Macro& m, int count) const;
   void onCommit();
   void reportDebris();
+  // The debris figures of the state now, with the run's peak ground force and
+  // deepest node.
+  DebrisFigures debrisNow() const;
   void reportCrossings();
   // RC members bent through more than a quarter turn at the end: log lines.
   void reportFolds();
@@ -192,6 +196,9 @@ class ProblemRun {
   bool restLogged_ = false;
   // Debris: the largest total ground force so far and its time; the figures at the end.
   double peakGroundForce_ = 0, peakGroundTime_ = 0;
+  // The deepest any node went into the ground, and when.
+  GroundDepth deepest_;
+  double deepestTime_ = 0;
   std::optional<DebrisFigures> debris_;
   bool debrisPlot_ = false;
   std::chrono::steady_clock::time_point start_;

@@ -126,7 +126,7 @@ TEST(Debris, BarDropPeakGroundForce) {
   std::vector<std::string> cells;
   std::stringstream ss(row);
   for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-  ASSERT_EQ(cells.size(), 10u) << row;
+  ASSERT_EQ(cells.size(), 12u) << row;
   const double L = 2, n = 4, h0 = 0.05, k = 1e4, g = 9.81, m = L;
   const double K = (n + 1) * k, v0 = std::sqrt(2 * g * h0);
   const double pen = m * g / K + std::sqrt(std::pow(m * g / K, 2) + m * v0 * v0 / K);
@@ -136,6 +136,43 @@ TEST(Debris, BarDropPeakGroundForce) {
   // The peak comes a quarter contact period after the impact at sqrt(2 h0/g).
   const double omega = std::sqrt(K / m);
   EXPECT_NEAR(std::stod(cells[9]), std::sqrt(2 * h0 / g) + 0.5 * 3.14159265 / omega, 3e-3);
+  // The deepest node went as deep as that penetration, at the same time.
+  EXPECT_NEAR(std::stod(cells[10]), pen, 5e-3 * pen);
+  EXPECT_NEAR(std::stod(cells[11]), std::stod(cells[9]), 1e-3);
+  EXPECT_EQ(o.total.sunk, 0);
+}
+
+// The same bar on a ground a hundred times softer sinks 0.113 m, deeper than
+// half its section (sqrt(3 I / A) = 0.055 m): the log's debris line says it
+// is buried, and the run warns.
+TEST(Debris, ANodeDeeperThanHalfItsSectionIsBuriedAndWarned) {
+  testing::DeckTempDir dir;
+  const std::filesystem::path deck = dir.path() / "soft_ground.inp";
+  std::ofstream(deck) << "PARAmeter\n  L = 2\n  n = 4\n  h0 = 0.05\n  k = 1e2\n  g = 9.81\n"
+                         "  e = 1\n\nINCLude,"
+                      << C2D_SOURCE_DIR << "/decks/collapse/bar_drop.inc\n\nSTOP\n";
+  DeckOptions opt;
+  opt.outDir = dir.path();
+  opt.quiet = true;
+  const SolutionCommands commands;
+  std::ostringstream out;
+  const DeckOutcome o = runDeck(deck.string(), opt, commands, out);
+  ASSERT_EQ(o.exitCode, 0) << o.message;
+  EXPECT_EQ(o.total.sunk, 1);
+  std::ifstream log(dir.path() / "soft_ground.out");
+  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  const double L = 2, n = 4, h0 = 0.05, k = 1e2, g = 9.81, m = L;
+  const double K = (n + 1) * k, v0 = std::sqrt(2 * g * h0);
+  const double pen = m * g / K + std::sqrt(std::pow(m * g / K, 2) + m * v0 * v0 / K);
+  EXPECT_NEAR(pen, 0.113, 1e-3);
+  const std::size_t at = text.find("debris: deepest in the ground ");
+  ASSERT_NE(at, std::string::npos) << text;
+  EXPECT_NEAR(std::stod(text.substr(at + 30)), pen, 5e-3 * pen);
+  EXPECT_NE(text.find("half its members' section depth 5.4772e-02 m: BURIED", at),
+            std::string::npos)
+      << text.substr(at, 200);
+  EXPECT_NE(text.find("warning: in this run a node went deeper into the ground than half"),
+            std::string::npos);
 }
 
 // A run whose debris leaves the site says so in its summary line and in the

@@ -126,6 +126,113 @@ INSTANTIATE_TEST_SUITE_P(
                        ::testing::Values(Inner::Reissner, Inner::Timoshenko, Inner::EulerBernoulli),
                        ::testing::Values(0, 1)));
 
+// A link, an element with joints at both ends (a member failed twice): both
+// relative rotations are solved together (JointedElement::evaluateLink). No
+// moment on either master, each wrapper's residual the innermost element's
+// at the relative rotations found, the tangent the derivative of the
+// residual, and the same solution as the nested iteration's (the inner joint
+// with a friction moment too small to matter takes that path).
+class JointedElementLink : public ::testing::TestWithParam<std::tuple<Scheme, Inner>> {};
+
+// An element that counts its evaluations (the one inside a link).
+class Counted final : public Element {
+ public:
+  Counted(std::unique_ptr<Element> e, int& count) : e_(std::move(e)), count_(count) {}
+  std::array<int, 2> nodes() const override { return e_->nodes(); }
+  void setNodes(const std::array<int, 2>& n) override { e_->setNodes(n); }
+  int materialNumber() const override { return e_->materialNumber(); }
+  std::string typeName() const override { return e_->typeName(); }
+  Status evaluate(const ElementKinematics& kin, const StepRule& rule, bool wantTangent,
+                  ElemVec& r, ElemMat& k) override {
+    ++count_;
+    return e_->evaluate(kin, rule, wantTangent, r, k);
+  }
+  ElemMat mass() const override { return e_->mass(); }
+  ElemVec bodyLoad(const Vec2& g) const override { return e_->bodyLoad(g); }
+  void commit() override { e_->commit(); }
+  void revert() override { e_->revert(); }
+  double strainEnergy() const override { return e_->strainEnergy(); }
+  SectionForces sectionForces() const override { return e_->sectionForces(); }
+
+ private:
+  std::unique_ptr<Element> e_;
+  int& count_;
+};
+
+TEST_P(JointedElementLink, BothJointsSolvedAtOnceAsByTheNestedIteration) {
+  const auto [scheme, kind] = GetParam();
+  std::mt19937 gen(29 + static_cast<int>(kind));
+  int evaluations = 0, evaluationsNested = 0, linkCalls = 0;
+  auto makeLink = [&, kind = kind](double innerFriction) {
+    auto inner = std::make_unique<JointedElement>(
+        std::make_unique<Counted>(makeInner(kind, kTrialX1, kTrialX2),
+                                  innerFriction > 0 ? evaluationsNested : evaluations),
+        0, 7);
+    inner->setRelativeState(0.3, 0.5, -0.2);
+    inner->setFriction(innerFriction, 1.0);
+    auto link = std::make_unique<JointedElement>(std::move(inner), 1, 8);
+    link->setRelativeState(-0.2, -0.4, 0.3);
+    return link;
+  };
+  const std::unique_ptr<JointedElement> link = makeLink(0), nested = makeLink(1e-300);
+  EXPECT_EQ(link->nodes(), (std::array<int, 2>{7, 8}));
+  const StepRule rule = ruleFor(scheme);
+  for (int trial = 0; trial < 3; ++trial) {
+    const ElementKinematics kin = trialKinematics(gen, kind, trial);
+    ElemVec r, rn;
+    ElemMat k, kn;
+    const int before = evaluations;
+    ASSERT_TRUE(link->evaluate(kin, rule, true, r, k).ok);
+    linkCalls += evaluations - before;
+    ASSERT_TRUE(nested->evaluate(kin, rule, true, rn, kn).ok);
+    const double scale = r.cwiseAbs().maxCoeff();
+    EXPECT_LT(std::abs(r(2)), 1e-12 * scale);
+    EXPECT_LT(std::abs(r(5)), 1e-12 * scale);
+    auto& inner = static_cast<JointedElement&>(link->inner());
+    auto& innerN = static_cast<JointedElement&>(nested->inner());
+    EXPECT_NEAR(link->relativeRotation(), nested->relativeRotation(), 1e-12);
+    EXPECT_NEAR(inner.relativeRotation(), innerN.relativeRotation(), 1e-12);
+    EXPECT_NEAR(link->relativeVelocity(), nested->relativeVelocity(), 1e-9);
+    EXPECT_NEAR(inner.relativeVelocity(), innerN.relativeVelocity(), 1e-9);
+    EXPECT_NEAR(link->slaveRotation(), nested->slaveRotation(), 1e-12);
+    EXPECT_NEAR(inner.slaveRotation(), innerN.slaveRotation(), 1e-12);
+    EXPECT_LT((r - rn).cwiseAbs().maxCoeff(), 1e-10 * scale);
+    EXPECT_LT((k - kn).cwiseAbs().maxCoeff(), 1e-9 * k.cwiseAbs().maxCoeff());
+    // The innermost element's residual at the rotations found.
+    ElemVec rin;
+    ElemMat kin6;
+    ASSERT_TRUE(inner.inner()
+                    .evaluate(inner.innerKinematics(
+                                  link->innerKinematics(kin, link->relativeRotation()),
+                                  inner.relativeRotation()),
+                              rule, true, rin, kin6)
+                    .ok);
+    EXPECT_EQ((rin - r).cwiseAbs().maxCoeff(), 0.0);
+    const ElemMat fd = test::centralDifferenceTangent(*link, kin, rule);
+    EXPECT_LT((fd - k).cwiseAbs().maxCoeff(), 2e-7 * k.cwiseAbs().maxCoeff())
+        << "scheme " << static_cast<int>(scheme) << ", trial " << trial << "\nK =\n"
+        << k << "\nFD =\n"
+        << fd;
+  }
+  // Solved at once, in fewer evaluations of the innermost element; from the
+  // first-order start of a nearby state (a Newton iteration's next), in two:
+  // one step and the evaluation at the solution.
+  EXPECT_LT(linkCalls, evaluationsNested) << linkCalls << " evaluations, nested " << evaluationsNested;
+  ElementKinematics near = trialKinematics(gen, kind, 2);
+  ElemVec r;
+  ElemMat k;
+  ASSERT_TRUE(link->evaluate(near, rule, true, r, k).ok);
+  near.d += 1e-7 * test::randomVec(gen, 1.0);
+  const int before = evaluations;
+  ASSERT_TRUE(link->evaluate(near, rule, true, r, k).ok);
+  EXPECT_EQ(evaluations - before, 2);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    JointedElement, JointedElementLink,
+    ::testing::Combine(::testing::Values(Scheme::Static, Scheme::Newmark, Scheme::MidPoint),
+                       ::testing::Values(Inner::Reissner, Inner::Timoshenko)));
+
 // With friction Mr the moment on the master is the friction's reaction, at most
 // Mr, and the condensed tangent is still the derivative of the residual, when
 // the joint slides (w >> eps) and when it sticks (w ~ eps).

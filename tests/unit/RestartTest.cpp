@@ -385,6 +385,11 @@ TEST(Restart, TimeRestEndsWhereTheUninterruptedRunEnds) {
   expectSameTail(readText(whole.out / "whole_tplot.csv"), readText(first.out / "first_tplot.csv"),
                  readText(second.out / "second_tplot.csv"));
   expectSameState(whole.out / "whole_end.rst", second.out / "second_end.rst");
+  // The debris figures of the run, the peak ground force and the deepest node
+  // of the impact before the save included.
+  const std::string debris = readText(whole.out / "whole_debris.csv");
+  EXPECT_NE(debris.find("peak_time,deepest,deepest_time"), std::string::npos) << debris;
+  EXPECT_EQ(debris, readText(second.out / "second_debris.csv"));
 }
 
 TEST(Restart, BadFilesAreClearErrors) {

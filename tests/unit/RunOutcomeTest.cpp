@@ -272,6 +272,11 @@ TEST(RunOutcome, SummaryWordsTheEnergyErrorAndWarnsWhenTheBalanceDoesNotClose) {
   ASSERT_EQ(runWarnings(s).size(), 3u);
   EXPECT_TRUE(contains(runWarnings(s)[2], "warning: 1 member is bent through more than a quarter"))
       << runWarnings(s)[2];
+  // A node buried in the ground: a fourth.
+  s.sunk = 1;
+  ASSERT_EQ(runWarnings(s).size(), 4u);
+  EXPECT_TRUE(contains(runWarnings(s)[3], "warning: in this run a node went deeper into the ground"))
+      << runWarnings(s)[3];
 }
 
 }  // namespace
