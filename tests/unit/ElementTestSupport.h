@@ -38,6 +38,24 @@ inline MaterialSet resultantMaterial(Kinematics kin, bool shear = true,
   return m;
 }
 
+// A FINIte rod's set with the hinge laws: 10 kg/m, bilinear hardening to
+// Mu = 2.4 and softening Ks = -8 with the rupture rotation thetaR.
+inline MaterialSet hingedRodMaterial(double thetaR) {
+  MaterialSet m;
+  m.number = 1;
+  m.elementType = "FRAMe";
+  m.kinematics = Kinematics::Finite;
+  m.resEA = 1e6;
+  m.resGA = 5e5;
+  m.resEI = 1e3;
+  m.density = 1;
+  m.A = 10;
+  m.I = 1e-2;
+  m.hardening = HardeningData{1.0, 2.0, 400, 40};
+  m.softening = SofteningData{2.4, -8, thetaR};
+  return m;
+}
+
 // dr/dd by central differences with step h, each residual evaluated without tangent.
 inline ElemMat centralDifferenceTangent(Element& e, const ElementKinematics& kin,
                                         const StepRule& rule, double h = 1e-6) {

@@ -300,18 +300,7 @@ TEST(HingeToJoint, SoftenedCantileverBecomesAPendulumWithContinuousSectionForces
 // switch keeps the first joint's relative rotation and rates as the motion
 // left them, and the member's section forces and stored energy.
 TEST(JointFailedHinges, AMemberFailedTwiceBecomesALinkPinnedAtBothEnds) {
-  MaterialSet mat;
-  mat.number = 1;
-  mat.elementType = "FRAMe";
-  mat.kinematics = Kinematics::Finite;
-  mat.resEA = 1e6;
-  mat.resGA = 5e5;
-  mat.resEI = 1e3;
-  mat.density = 1;
-  mat.A = 10;
-  mat.I = 1e-2;
-  mat.hardening = HardeningData{1.0, 2.0, 400, 40};
-  mat.softening = SofteningData{2.4, -8, 0.6};
+  const MaterialSet mat = test::hingedRodMaterial(0.6);
   Model m;
   m.materials()[1] = mat;
   m.resizeNodes(4);

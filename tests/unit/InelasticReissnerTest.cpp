@@ -230,19 +230,7 @@ TEST(InelasticReissnerV2, EndMomentThroughFailureToOneRadian) {
 struct FlyingRod {
   Model m;
   explicit FlyingRod(double thetaR) {
-    MaterialSet mat;
-    mat.number = 1;
-    mat.elementType = "FRAMe";
-    mat.kinematics = Kinematics::Finite;
-    mat.resEA = 1e6;
-    mat.resGA = 5e5;
-    mat.resEI = 1e3;
-    mat.density = 1;
-    mat.A = 10;      // 10 kg/m
-    mat.I = 1e-2;
-    mat.hardening = HardeningData{1.0, 2.0, 400, 40};
-    mat.softening = SofteningData{2.4, -8, thetaR};
-    m.materials()[1] = mat;
+    m.materials()[1] = test::hingedRodMaterial(thetaR);
     m.gravity() = Vec2(0, -9.81);
     const int n = 4;
     m.resizeNodes(n + 1);
