@@ -78,7 +78,10 @@ std::vector<CreatedJoint> hingeToJoint(Model& model, State& state,
 // MemberLaws::Inelastic but for those elements only, so that the pieces can
 // fold freely. The state is continuous: positions and velocities of every node
 // are kept, the new joint starts with the jump as its relative rotation and zero
-// relative rates, and the element's section forces are unchanged. (Small
+// relative rates, and the element's section forces are unchanged; joints the
+// element already has keep their committed relative rotations and rates. An
+// element with a joint at one end gets the new one at its other end (a link
+// pinned at both ends); one with joints at both ends gets none. (Small
 // displacement elements keep their free embedded hinge: the failure phase of
 // the paper.) Returns the joints made.
 std::vector<CreatedJoint> jointFailedHinges(Model& model, State& state);

@@ -131,7 +131,11 @@ void ProblemRun::run() {
            << ", fully softened hinge, at node " << ev.master + 1
            << (ev.slave >= 0 ? " (slave node " + std::to_string(ev.slave + 1) + ")"
                              : " (a free end: the node's rotation)")
-           << ", relative rotation " << fmt("%.6e", ev.rotation) << "\n";
+           << ", relative rotation " << fmt("%.6e", ev.rotation);
+      // A member's second joint (elements/HingeToJoint.h): a link from now on.
+      const JointedElement* j = asJointed(&model_.element(ev.element));
+      if (j && asJointed(&j->inner())) log_ << "; its second: the member is a link pinned at both ends";
+      log_ << "\n";
     } else {
       ++jointsRuptured_;
       log_ << "  joint  ruptured at t = " << fmt("%.6e", t) << ": element " << ev.element + 1
