@@ -98,7 +98,8 @@ bool JointedElement::evaluateLink(JointedElement& j, const ElementKinematics& ki
   j.guessD_ = mid.d;
   j.guessSlope_ = -K.row(ki).transpose() / K(ki, ki);
   j.guessValid_ = true;
-  const double rateI = rule.rotationRate(in.d(ki) - in.dn(ki)) - rule.rotationRate(mid.d(ki) - mid.dn(ki));
+  const double rateI =
+      rule.rotationRate(in.d(ki) - in.dn(ki)) - rule.rotationRate(mid.d(ki) - mid.dn(ki));
   j.trial_.vel = rule.velocity(rateI, j.committed_.vel, j.committed_.acc);
   j.trial_.acc = rule.acceleration(rateI, j.committed_.vel, j.committed_.acc);
   j.slaveRotation_ = in.d(ki);
@@ -107,7 +108,8 @@ bool JointedElement::evaluateLink(JointedElement& j, const ElementKinematics& ki
   guessD_ = kin.d;
   guessSlope_ = -Ki.row(ko).transpose() / Ki(ko, ko);
   guessValid_ = true;
-  const double rateO = rule.rotationRate(mid.d(ko) - mid.dn(ko)) - rule.rotationRate(kin.d(ko) - kin.dn(ko));
+  const double rateO =
+      rule.rotationRate(mid.d(ko) - mid.dn(ko)) - rule.rotationRate(kin.d(ko) - kin.dn(ko));
   trial_.vel = rule.velocity(rateO, committed_.vel, committed_.acc);
   trial_.acc = rule.acceleration(rateO, committed_.vel, committed_.acc);
   slaveRotation_ = mid.d(ko);

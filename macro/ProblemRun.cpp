@@ -134,7 +134,8 @@ void ProblemRun::run() {
            << ", relative rotation " << fmt("%.6e", ev.rotation);
       // A member's second joint (elements/HingeToJoint.h): a link from now on.
       const JointedElement* j = asJointed(&model_.element(ev.element));
-      if (j && asJointed(&j->inner())) log_ << "; its second: the member is a link pinned at both ends";
+      if (j && asJointed(&j->inner()))
+        log_ << "; its second: the member is a link pinned at both ends";
       log_ << "\n";
     } else {
       ++jointsRuptured_;

@@ -160,7 +160,8 @@ TEST(Debris, ANodeDeeperThanHalfItsSectionIsBuriedAndWarned) {
   ASSERT_EQ(o.exitCode, 0) << o.message;
   EXPECT_EQ(o.total.sunk, 1);
   std::ifstream log(dir.path() / "soft_ground.out");
-  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  const std::string text((std::istreambuf_iterator<char>(log)),
+                         std::istreambuf_iterator<char>());
   const double L = 2, n = 4, h0 = 0.05, k = 1e2, g = 9.81, m = L;
   const double K = (n + 1) * k, v0 = std::sqrt(2 * g * h0);
   const double pen = m * g / K + std::sqrt(std::pow(m * g / K, 2) + m * v0 * v0 / K);

@@ -217,7 +217,8 @@ TEST_P(JointedElementLink, BothJointsSolvedAtOnceAsByTheNestedIteration) {
   // Solved at once, in fewer evaluations of the innermost element; from the
   // first-order start of a nearby state (a Newton iteration's next), in two:
   // one step and the evaluation at the solution.
-  EXPECT_LT(linkCalls, evaluationsNested) << linkCalls << " evaluations, nested " << evaluationsNested;
+  EXPECT_LT(linkCalls, evaluationsNested)
+      << linkCalls << " evaluations, nested " << evaluationsNested;
   ElementKinematics near = trialKinematics(gen, kind, 2);
   ElemVec r;
   ElemMat k;

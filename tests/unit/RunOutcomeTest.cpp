@@ -275,7 +275,8 @@ TEST(RunOutcome, SummaryWordsTheEnergyErrorAndWarnsWhenTheBalanceDoesNotClose) {
   // A node buried in the ground: a fourth.
   s.sunk = 1;
   ASSERT_EQ(runWarnings(s).size(), 4u);
-  EXPECT_TRUE(contains(runWarnings(s)[3], "warning: in this run a node went deeper into the ground"))
+  EXPECT_TRUE(
+      contains(runWarnings(s)[3], "warning: in this run a node went deeper into the ground"))
       << runWarnings(s)[3];
 }
 
