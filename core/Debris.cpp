@@ -131,17 +131,27 @@ DebrisFigures debrisFigures(const Model& model, const State& state) {
   return d;
 }
 
+namespace {
+
+// f(node, y) for every node in contact with the ground's model: the nodes
+// with equations of their own (a shared joint's slave moves with its master,
+// whose contact is its own), at their vertical position in the state.
+template <class F>
+void forEachGroundNode(const Model& model, const DofMap& dofs, const State& state, F&& f) {
+  for (int n = 0; n < model.numNodes() && n < dofs.numNodes(); ++n)
+    if (dofs.used(n) && !dofs.aliased(n)) f(n, model.coord(n).y() + state.u[n * kNodeDofs + 1]);
+}
+
+}  // namespace
+
 double groundForce(const Model& model, const DofMap& dofs, const State& state) {
   const auto& ground = model.ground();
   if (!ground) return 0;
   double f = 0;
-  for (int n = 0; n < model.numNodes() && n < dofs.numNodes(); ++n) {
-    // A shared joint's slave moves with its master: its contact is the master's.
-    if (!dofs.used(n) || dofs.aliased(n)) continue;
-    // The contact law's force at this state (a crushed node rests in its set).
-    const double y = model.coord(n).y() + state.u[n * kNodeDofs + 1];
+  // The contact law's force at this state (a crushed node rests in its set).
+  forEachGroundNode(model, dofs, state, [&](int n, double y) {
     f += groundContact(*ground, state.crush[n], y, y, StepRule{}).normal;
-  }
+  });
   return f;
 }
 
@@ -149,11 +159,10 @@ GroundDepth deepestNode(const Model& model, const DofMap& dofs, const State& sta
   GroundDepth d;
   const auto& ground = model.ground();
   if (!ground) return d;
-  for (int n = 0; n < model.numNodes() && n < dofs.numNodes(); ++n) {
-    if (!dofs.used(n) || dofs.aliased(n)) continue;  // as groundForce
-    const double depth = penetration(*ground, model.coord(n).y() + state.u[n * kNodeDofs + 1]);
+  forEachGroundNode(model, dofs, state, [&](int n, double y) {
+    const double depth = penetration(*ground, y);
     if (depth > 0 && (d.node < 0 || depth > d.depth)) d = GroundDepth{n, depth};
-  }
+  });
   return d;
 }
 

@@ -76,10 +76,11 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
     joint[e] = carrier && wantsJoint(el, carrier->hinge());
     if (!joint[e] && !rebuildAlways(el)) continue;
     rebuild[e] = 1;
-    // The innermost element at the joints' committed relative rotations and
-    // rates: they belong to the motion so far (a static solve of the joints
-    // would move them, and change the stored energy at the switch). Its end
-    // moments choose the joint's end; a joint's own end carries none.
+    // The innermost element at the joints' relative rotations and rates as
+    // committed (the call comes after a commit: trial and committed agree):
+    // they belong to the motion so far (a static solve of the joints would
+    // move them, and change the stored energy at the switch). Its end moments
+    // choose the joint's end; a joint's own end carries none.
     ElemVec r;
     ElemMat k;
     Element& in = innermost(el);
