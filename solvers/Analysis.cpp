@@ -7,14 +7,10 @@
 #include <string>
 
 #include "core/Checkpoint.h"
+#include "solvers/CheckedSolve.h"
 #include "solvers/LineSearch.h"
 
 namespace c2d {
-
-namespace {
-// Largest |K du - R| / |R| accepted from a fresh factorization (checkSolve).
-constexpr double kSingularResidual = 1e-6;
-}  // namespace
 
 Analysis::Analysis(Model& model)
     : model_(model), assembler_(model), hinges_(*this), removal_(*this) {
@@ -486,34 +482,40 @@ bool Analysis::cycling() const {
 }
 
 Status Analysis::checkSolve() {
-  // A pivoting LU of a singular tangent (a mechanism) finishes with pivots at
-  // round-off level: the correction is huge and does not solve K du = R. A
-  // backward-stable solve leaves |K du - R| at round-off of |K| |du|: at most
-  // 2e-10 of |R| over the regression decks (the arch with EI/EA = 1e-12 included).
-  const SparseMatrix& k = assembler_.tangent();
-  rho_.noalias() = k * du_;
-  rho_ -= R_;
-  const double bad = rho_.norm(), scale = R_.norm();
-  if (!(bad <= kSingularResidual * scale) && scale > 0) {
-    // The mechanism's motion: the largest component of the correction.
-    const DofMap& dofs = assembler_.dofs();
-    int node = -1, dof = -1;
-    double largest = -1;
-    for (int i = 0; i < dofs.numNodes() * kNodeDofs; ++i) {
-      const int eq = dofs.eq(i);
-      if (eq < 0 || eq >= du_.size() || !(std::abs(du_[eq]) > largest)) continue;
-      largest = std::abs(du_[eq]);
-      node = i / kNodeDofs;
-      dof = i % kNodeDofs;
-    }
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.2e", bad / scale);
-    return Status::failure("singular tangent: the solve leaves " + std::string(buf) +
-                           " of the residual unbalanced (a mechanism?); the correction is "
-                           "largest at node " + std::to_string(node + 1) + ", dof " +
-                           std::to_string(dof + 1));
+  // A mechanism's tangent leaves the residual unbalanced; an ill-conditioned
+  // one may too until refined or factored with pivoting (solvers/CheckedSolve).
+  CheckedSolve check;
+  if (check.check(*solver_, assembler_.tangent(), R_, du_, rho_, drho_)) return Status::success();
+  // The mechanism's motion: the largest component of the correction.
+  const DofMap& dofs = assembler_.dofs();
+  int node = -1, dof = -1;
+  double largest = -1;
+  for (int i = 0; i < dofs.numNodes() * kNodeDofs; ++i) {
+    const int eq = dofs.eq(i);
+    if (eq < 0 || eq >= du_.size() || !(std::abs(du_[eq]) > largest)) continue;
+    largest = std::abs(du_[eq]);
+    node = i / kNodeDofs;
+    dof = i % kNodeDofs;
   }
-  return Status::success();
+  char misfit[32], condition[32];
+  std::snprintf(misfit, sizeof misfit, "%.2e", check.misfit);
+  std::snprintf(condition, sizeof condition, "%.1e", check.condition);
+  const std::string where =
+      "; the correction is largest at node " + std::to_string(node + 1) + ", dof " +
+      std::to_string(dof + 1);
+  if (check.singular)
+    return Status::failure("singular tangent: the solve leaves " + std::string(misfit) +
+                           " of the residual unbalanced (a mechanism?" +
+                           (check.condition >= 0
+                                ? std::string("; condition number estimate ") + condition
+                                : std::string()) +
+                           ")" + where);
+  return Status::failure("ill-conditioned tangent (condition number estimate " +
+                         std::string(condition) +
+                         "): with pivoting and refinement the solve still leaves " + misfit +
+                         " of the residual unbalanced: stiffnesses that differ by too many "
+                         "orders of magnitude for double precision (RESUltant STIFfness)" +
+                         where);
 }
 
 bool Analysis::solveWithEarlierFactors() {

@@ -159,8 +159,10 @@ class Analysis {
   // du_ for the residual R_ and the tangent just assembled, with the factors of
   // an earlier tangent of the step; false when they are too far off.
   bool solveWithEarlierFactors();
-  // du_ from fresh factors solves K du = R: otherwise the tangent is singular
-  // (the failure names the node and dof where the correction is largest).
+  // du_ from fresh factors solves K du = R, refined or factored again with
+  // pivoting if need be (solvers/CheckedSolve); otherwise the tangent is
+  // singular or too ill-conditioned (the failure says which, and names the
+  // node and dof where the correction is largest).
   Status checkSolve();
   // The convergence tests for an iteration whose correction has this energy |du.R|.
   bool convergedAt(double energy, int iteration) const;

@@ -1,0 +1,36 @@
+#include "solvers/CheckedSolve.h"
+
+namespace c2d {
+
+bool CheckedSolve::refine(LinearSolver& solver, const SparseMatrix& K, const Eigen::VectorXd& R,
+                          Eigen::VectorXd& du, Eigen::VectorXd& rho, Eigen::VectorXd& drho) {
+  const double scale = R.norm();
+  for (int sweep = 0;; ++sweep) {
+    rho.noalias() = K * du;
+    rho = R - rho;
+    misfit = scale > 0 ? rho.norm() / scale : 0.0;
+    if (misfit <= kMaxMisfit) return true;
+    if (sweep == kRefinements || !(misfit == misfit)) return false;
+    if (drho.size() != du.size()) drho.resize(du.size());
+    if (!solver.solve(rho, drho)) return false;
+    du += drho;
+    ++refinements;
+  }
+}
+
+Status CheckedSolve::check(LinearSolver& solver, const SparseMatrix& K, const Eigen::VectorXd& R,
+                           Eigen::VectorXd& du, Eigen::VectorXd& rho, Eigen::VectorXd& drho) {
+  *this = CheckedSolve{};
+  if (rho.size() != du.size()) rho.resize(du.size());
+  if (refine(solver, K, R, du, rho, drho)) return Status::success();
+  if (solver.refactorWithPivoting(K)) {
+    pivoted = true;
+    if (solver.solve(R, du) && refine(solver, K, R, du, rho, drho)) return Status::success();
+  }
+  condition = solver.conditionEstimate(K);
+  // Without an estimate the solver's failure to balance R is taken as singular.
+  singular = !(condition >= 0 && condition < kSingularCondition);
+  return Status::failure("the solve leaves a misfit");
+}
+
+}  // namespace c2d
