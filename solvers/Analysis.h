@@ -37,8 +37,9 @@ struct IterationInfo {
   bool converged = false;
   int hingeActivated = -1;  // element index of a hinge activated at this iteration
   bool restarted = false;   // the step was started again from the committed state
-  // Plain Newton cycled (energy or residual repeating with period one or two):
-  // the step starts again from the committed state with the line search.
+  // Plain Newton cycled (energy or residual repeating with a period of one to
+  // six): the line search takes over (a static step starts again from the
+  // committed state).
   bool globalized = false;
 };
 
@@ -166,7 +167,7 @@ class Analysis {
   Status checkSolve();
   // The convergence tests for an iteration whose correction has this energy |du.R|.
   bool convergedAt(double energy, int iteration) const;
-  // The step's iterations repeat with period one or two (plain Newton cycling).
+  // The step's iterations repeat with a period of one to six (plain Newton cycling).
   bool cycling() const;
   void applyIncrement(const Eigen::VectorXd& du, double scale);
   // Under the Cayley rule a rotation's increment stays below pi in one step: a

@@ -1,5 +1,7 @@
 #include "solvers/CheckedSolve.h"
 
+#include <cstdio>
+
 namespace c2d {
 
 bool CheckedSolve::refine(LinearSolver& solver, const SparseMatrix& K, const Eigen::VectorXd& R,
@@ -31,6 +33,26 @@ Status CheckedSolve::check(LinearSolver& solver, const SparseMatrix& K, const Ei
   // Without an estimate the solver's failure to balance R is taken as singular.
   singular = !(condition >= 0 && condition < kSingularCondition);
   return Status::failure("the solve leaves a misfit");
+}
+
+std::string CheckedSolve::diagnosis() const {
+  char text[320];
+  if (singular) {
+    char estimate[64] = "";
+    if (condition >= 0) std::snprintf(estimate, sizeof estimate, "; condition number estimate %.1e", condition);
+    std::snprintf(text, sizeof text,
+                  "singular tangent: the solve leaves %.2e of the residual unbalanced (a "
+                  "mechanism?%s)",
+                  misfit, estimate);
+  } else {
+    std::snprintf(text, sizeof text,
+                  "ill-conditioned tangent (condition number estimate %.1e): with pivoting and "
+                  "refinement the solve still leaves %.2e of the residual unbalanced: "
+                  "stiffnesses that differ by too many orders of magnitude for double precision "
+                  "(RESUltant STIFfness)",
+                  condition, misfit);
+  }
+  return text;
 }
 
 }  // namespace c2d

@@ -19,6 +19,7 @@
 //      below kSingularCondition: the stiffnesses of the model span too many
 //      decades for double precision) from a singular one (a mechanism).
 #include <Eigen/Core>
+#include <string>
 
 #include "core/Error.h"
 #include "solvers/LinearSolver.h"
@@ -44,6 +45,10 @@ struct CheckedSolve {
   // work vectors (sized here only when they are not already).
   Status check(LinearSolver& solver, const SparseMatrix& K, const Eigen::VectorXd& R,
                Eigen::VectorXd& du, Eigen::VectorXd& rho, Eigen::VectorXd& drho);
+  // After a failed check: "singular tangent: the solve leaves ... (a
+  // mechanism?...)" or "ill-conditioned tangent (condition number estimate
+  // ...): ...".
+  std::string diagnosis() const;
 
  private:
   // Refines du with the solver's current factors until the check passes.

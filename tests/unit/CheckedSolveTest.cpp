@@ -126,6 +126,8 @@ TEST(CheckedSolve, AWellConditionedTangentThatStillMissesIsNotCalledSingular) {
   EXPECT_FALSE(r.check.singular);
   EXPECT_GT(r.check.condition, 1.0);
   EXPECT_LT(r.check.condition, 1e3);
+  EXPECT_EQ(r.check.diagnosis().rfind("ill-conditioned tangent (condition number estimate", 0), 0u)
+      << r.check.diagnosis();
 }
 
 TEST(CheckedSolve, ASingularTangentIsCalledSingular) {
@@ -152,6 +154,9 @@ TEST(CheckedSolve, ASingularTangentIsCalledSingular) {
   EXPECT_FALSE(check.pivoted);
   EXPECT_TRUE(check.singular);
   EXPECT_GE(check.condition, CheckedSolve::kSingularCondition);
+  EXPECT_EQ(check.diagnosis().rfind("singular tangent: the solve leaves", 0), 0u) << check.diagnosis();
+  EXPECT_NE(check.diagnosis().find("a mechanism?; condition number estimate"), std::string::npos)
+      << check.diagnosis();
 }
 
 TEST(CheckedSolve, TheAutoSolverFallsBackFromTheBlockLuToKluOnRequest) {
