@@ -41,7 +41,8 @@ void BM_SixStoryDemolition(benchmark::State& st) {
 // The main example as a copy whose member contact stiffness is kmem and whose
 // include is named by absolute path (the copy lives in a scratch directory).
 std::filesystem::path demolitionDeck(const std::string& kmem) {
-  const std::filesystem::path source = c2d::bench::sourceDeck("collapse", "six_story_demolition.inp");
+  const std::filesystem::path source =
+      std::filesystem::absolute(c2d::bench::sourceDeck("collapse", "six_story_demolition.inp"));
   std::ifstream in(source);
   std::stringstream text;
   text << in.rdbuf();
