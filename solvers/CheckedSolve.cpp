@@ -39,7 +39,8 @@ std::string CheckedSolve::diagnosis() const {
   char text[320];
   if (singular) {
     char estimate[64] = "";
-    if (condition >= 0) std::snprintf(estimate, sizeof estimate, "; condition number estimate %.1e", condition);
+    if (condition >= 0)
+      std::snprintf(estimate, sizeof estimate, "; condition number estimate %.1e", condition);
     std::snprintf(text, sizeof text,
                   "singular tangent: the solve leaves %.2e of the residual unbalanced (a "
                   "mechanism?%s)",

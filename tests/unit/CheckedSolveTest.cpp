@@ -40,7 +40,9 @@ class InexactSolver final : public LinearSolver {
  public:
   InexactSolver(double eta, bool canPivot) : eta_(eta), canPivot_(canPivot) {}
   std::string name() const override { return "inexact"; }
-  Status analyze(const SparseMatrix& A, bool symmetric) override { return klu_.analyze(A, symmetric); }
+  Status analyze(const SparseMatrix& A, bool symmetric) override {
+    return klu_.analyze(A, symmetric);
+  }
   Status factorize(const SparseMatrix& A) override {
     SparseMatrix B = A;
     std::mt19937 rng(7);
@@ -154,7 +156,8 @@ TEST(CheckedSolve, ASingularTangentIsCalledSingular) {
   EXPECT_FALSE(check.pivoted);
   EXPECT_TRUE(check.singular);
   EXPECT_GE(check.condition, CheckedSolve::kSingularCondition);
-  EXPECT_EQ(check.diagnosis().rfind("singular tangent: the solve leaves", 0), 0u) << check.diagnosis();
+  EXPECT_EQ(check.diagnosis().rfind("singular tangent: the solve leaves", 0), 0u)
+      << check.diagnosis();
   EXPECT_NE(check.diagnosis().find("a mechanism?; condition number estimate"), std::string::npos)
       << check.diagnosis();
 }
