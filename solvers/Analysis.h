@@ -37,8 +37,9 @@ struct IterationInfo {
   bool converged = false;
   int hingeActivated = -1;  // element index of a hinge activated at this iteration
   bool restarted = false;   // the step was started again from the committed state
-  // Plain Newton cycled (energy or residual repeating with period one or two):
-  // the step starts again from the committed state with the line search.
+  // Plain Newton cycled (energy or residual repeating with a period of one to
+  // six): the line search takes over (a static step starts again from the
+  // committed state).
   bool globalized = false;
 };
 
@@ -159,12 +160,14 @@ class Analysis {
   // du_ for the residual R_ and the tangent just assembled, with the factors of
   // an earlier tangent of the step; false when they are too far off.
   bool solveWithEarlierFactors();
-  // du_ from fresh factors solves K du = R: otherwise the tangent is singular
-  // (the failure names the node and dof where the correction is largest).
+  // du_ from fresh factors solves K du = R, refined or factored again with
+  // pivoting if need be (solvers/CheckedSolve); otherwise the tangent is
+  // singular or too ill-conditioned (the failure says which, and names the
+  // node and dof where the correction is largest).
   Status checkSolve();
   // The convergence tests for an iteration whose correction has this energy |du.R|.
   bool convergedAt(double energy, int iteration) const;
-  // The step's iterations repeat with period one or two (plain Newton cycling).
+  // The step's iterations repeat with a period of one to six (plain Newton cycling).
   bool cycling() const;
   void applyIncrement(const Eigen::VectorXd& du, double scale);
   // Under the Cayley rule a rotation's increment stays below pi in one step: a

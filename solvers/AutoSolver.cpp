@@ -63,6 +63,17 @@ Status AutoSolver::factorize(const SparseMatrix& A) {
   return Status::success();
 }
 
+bool AutoSolver::refactorWithPivoting(const SparseMatrix& A) {
+  if (!analyzed_) return false;
+  if (active_ == Kind::Klu) return lu_->refactorWithPivoting(A);
+  active_ = Kind::Klu;
+  return static_cast<bool>(factorizeLu(A));
+}
+
+double AutoSolver::conditionEstimate(const SparseMatrix& A) {
+  return analyzed_ && active_ == Kind::Klu ? lu_->conditionEstimate(A) : -1.0;
+}
+
 int AutoSolver::singularEquation() const {
   return active_ == Kind::Klu       ? lu_->singularEquation()
          : active_ == Kind::BlockLu ? blockLu_->singularEquation()

@@ -35,6 +35,13 @@ class AutoSolver final : public LinearSolver {
   Status factorize(const SparseMatrix& A) override;
   Status solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
   int singularEquation() const override;
+  // The block LU's or the Cholesky's factors of A solved it too inaccurately
+  // (an ill-conditioned tangent that needs pivoting between the nodes'
+  // blocks): KLU factors it, and stays for the rest of the pattern, as when
+  // the block LU meets a near-singular pivot block. KLU's own factors: a
+  // fresh pivot search.
+  bool refactorWithPivoting(const SparseMatrix& A) override;
+  double conditionEstimate(const SparseMatrix& A) override;
 
   // "cholmod", "block-lu" or "klu": the solver the next factorize() will use.
   std::string activeName() const;

@@ -16,15 +16,23 @@ bool ConvergenceTest::converged(const Figures& f) const {
          (!f.pathFollowing && f.largestResidual <= f.roundoff);
 }
 
-bool repeatsWithPeriod(const double* values, std::size_t n, int period, int matches) {
+bool repeatsWithPeriod(const double* values, std::size_t n, int period, int matches,
+                       double tolerance) {
   if (period < 1 || matches < 1 || n < static_cast<std::size_t>(matches + period)) return false;
   auto same = [&](std::size_t a, std::size_t b) {
     return std::abs(values[a] - values[b]) <=
-           1e-6 * std::max(std::abs(values[a]), std::abs(values[b]));
+           tolerance * std::max(std::abs(values[a]), std::abs(values[b]));
   };
   for (int k = 0; k < matches; ++k)
     if (!same(n - 1 - k, n - 1 - k - period)) return false;
   return true;
 }
 
+bool stopsProgressing(const double* values, std::size_t n, int maxPeriod, double tolerance) {
+  for (int p = 1; p <= maxPeriod; ++p)
+    if (repeatsWithPeriod(values, n, p, p, tolerance)) return true;
+  return false;
+}
+
 }  // namespace c2d
+

@@ -45,6 +45,15 @@ struct ConvergenceTest {
 // the iterates jump between the branches (period two) or come back to the
 // same residual (period one), and no later iteration converges.
 // values[0 .. n-1] in iteration order.
-bool repeatsWithPeriod(const double* values, std::size_t n, int period, int matches);
+bool repeatsWithPeriod(const double* values, std::size_t n, int period, int matches,
+                       double tolerance = 1e-6);
+
+// Newton's iterates have stopped making progress: for a period p from 1 to
+// maxPeriod, the last values repeat with period p to `tolerance` relative,
+// over a whole period (two values for p = 1). Contact laws with several
+// kinks (entering, crushing, unloading, sticking, sliding) send the iterates
+// round cycles of period three to six as well, and approach a cycle only
+// geometrically: at 1e-6 a cycle of period two took 15 iterations to be seen.
+bool stopsProgressing(const double* values, std::size_t n, int maxPeriod, double tolerance);
 
 }  // namespace c2d

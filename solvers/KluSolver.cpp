@@ -94,6 +94,21 @@ Status KluSolver::factorize(const SparseMatrix& A) {
   return freshFactor(p, i, x);
 }
 
+bool KluSolver::refactorWithPivoting(const SparseMatrix& A) {
+  if (!factored_ || !lastWasRefactor_ || !pattern_.check(A)) return false;
+  return static_cast<bool>(freshFactor(const_cast<int*>(A.outerIndexPtr()),
+                                       const_cast<int*>(A.innerIndexPtr()),
+                                       const_cast<double*>(A.valuePtr())));
+}
+
+double KluSolver::conditionEstimate(const SparseMatrix& A) {
+  if (!factored_ || !pattern_.check(A)) return -1;
+  if (!klu_condest(const_cast<int*>(A.outerIndexPtr()), const_cast<double*>(A.valuePtr()),
+                   symbolic_, numeric_, &common_))
+    return -1;
+  return common_.condest;
+}
+
 Status KluSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   if (!factored_) return Status::failure("klu: no valid factorization to solve with");
   const int n = pattern_.size();

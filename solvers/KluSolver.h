@@ -22,6 +22,9 @@ class KluSolver final : public LinearSolver {
   Status factorize(const SparseMatrix& A) override;
   Status solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
   int singularEquation() const override { return singular_; }
+  // A fresh pivot search when the factors reused an old pivot order.
+  bool refactorWithPivoting(const SparseMatrix& A) override;
+  double conditionEstimate(const SparseMatrix& A) override;
 
   // Whether the last successful factorize() reused the previous pivot order.
   bool lastWasRefactor() const { return lastWasRefactor_; }

@@ -34,6 +34,14 @@ class LinearSolver {
   // The equation (of A's numbering) whose pivot vanished when the last
   // factorize() failed for a singular matrix, or -1.
   virtual int singularEquation() const { return -1; }
+  // When a solve with the factors of A missed K x = b (solvers/CheckedSolve):
+  // factors A again with partial pivoting where the last factorization did
+  // not pivot, or reused an old pivot order. True when new factors are in
+  // place; false when there is nothing better to try.
+  virtual bool refactorWithPivoting(const SparseMatrix& /*A*/) { return false; }
+  // An estimate of the 1-norm condition number of A from the current factors
+  // of A, or -1 when the solver has none.
+  virtual double conditionEstimate(const SparseMatrix& /*A*/) { return -1; }
 };
 
 // Names: "auto" (default: the block LU when the equations are grouped, else

@@ -6,11 +6,17 @@
 //    (decks/paper/six_story_static_meshes.inp, its 288-element run only);
 //  - SixStoryDemolition: the main example, decks/collapse/six_story_demolition.inp
 //    (pushed to its mechanism, HINGe2joint,INELastic, released, falls onto a
-//    crushing ground with friction; target 2 s on the 2-core test machine).
+//    crushing ground with friction; target 2 s on the 2-core test machine);
+//  - SixStoryDemolitionMemberContact: the main example run twice back to
+//    back, as shipped (kmem = 0: ground contact only) and with member contact
+//    (kmem = 1e5), with the ratio of their CPU times (target: at most 1.5)
+//    and each run's steps, iterations, cuts, factorizations and CPU time per
+//    iteration (counters suffixed _ground and _members).
 // Counters: steps, Newton iterations, factorizations, seconds per iteration.
 // Run: build/tests/benchmarks --benchmark_filter=SixStory
 #include <benchmark/benchmark.h>
 
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -19,6 +25,9 @@
 
 namespace {
 
+using c2d::DeckOptions;
+using c2d::DeckOutcome;
+using c2d::SolutionCommands;
 using c2d::bench::runDeck;
 
 std::filesystem::path paperDeck(const char* name) { return c2d::bench::sourceDeck("paper", name); }
@@ -27,6 +36,63 @@ void BM_SixStoryWorkflow(benchmark::State& st) { runDeck(st, paperDeck("six_stor
 
 void BM_SixStoryDemolition(benchmark::State& st) {
   runDeck(st, c2d::bench::sourceDeck("collapse", "six_story_demolition.inp"));
+}
+
+// The main example as a copy whose member contact stiffness is kmem and whose
+// include is named by absolute path (the copy lives in a scratch directory).
+std::filesystem::path demolitionDeck(const std::string& kmem) {
+  const std::filesystem::path source =
+      std::filesystem::absolute(c2d::bench::sourceDeck("collapse", "six_story_demolition.inp"));
+  std::ifstream in(source);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string deck = text.str();
+  auto replaceLine = [&](const std::string& start, const std::string& by) {
+    const auto at = deck.find(start);
+    if (at == std::string::npos) return;
+    deck.replace(at, deck.find('\n', at) - at, by);
+  };
+  replaceLine("  kmem = ", "  kmem = " + kmem);
+  replaceLine("INCLude,six_story_fall.inc",
+              "INCLude," + (source.parent_path() / "six_story_fall.inc").string());
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("c2d_bench_kmem_" + kmem);
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path copy = dir / "six_story_demolition.inp";
+  std::ofstream(copy) << deck;
+  return copy;
+}
+
+void BM_SixStoryDemolitionMemberContact(benchmark::State& st) {
+  SolutionCommands commands;
+  double seconds[2] = {0, 0};
+  for (auto _ : st) {
+    int k = 0;
+    for (const char* kmem : {"0", "1e5"}) {
+      const std::filesystem::path deck = demolitionDeck(kmem);
+      DeckOptions opt;
+      opt.outDir = deck.parent_path() / "out";
+      opt.quiet = true;
+      std::ostringstream out;
+      const std::clock_t start = std::clock();
+      const DeckOutcome o = c2d::runDeck(deck.string(), opt, commands, out);
+      seconds[k] = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+      if (o.exitCode != 0) {
+        st.SkipWithError(o.message.c_str());
+        return;
+      }
+      const std::string suffix = k == 0 ? "_ground" : "_members";
+      st.counters["steps" + suffix] = o.total.steps;
+      st.counters["newton_its" + suffix] = o.total.iterations;
+      st.counters["cuts" + suffix] = o.total.cuts;
+      st.counters["factorizations" + suffix] = o.total.factorizations;
+      st.counters["cpu_s" + suffix] = seconds[k];
+      st.counters["us_per_it" + suffix] =
+          o.total.iterations > 0 ? 1e6 * seconds[k] / o.total.iterations : 0.0;
+      ++k;
+    }
+  }
+  st.counters["ratio"] = seconds[0] > 0 ? seconds[1] / seconds[0] : 0.0;
 }
 
 // The mesh study deck with its sweep cut down to the 288-element mesh and its
@@ -56,3 +122,4 @@ void BM_SixStoryStatic(benchmark::State& st) {
 BENCHMARK(BM_SixStoryWorkflow)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_SixStoryStatic)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_SixStoryDemolition)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_SixStoryDemolitionMemberContact)->Unit(benchmark::kMillisecond)->Iterations(1);

@@ -1,6 +1,8 @@
 // The convergence test and the cycle detection of the Newton driver.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "solvers/ConvergenceTest.h"
 
 namespace c2d {
@@ -57,6 +59,25 @@ TEST(ConvergenceTest, CyclesOfPeriodOneAndTwo) {
   EXPECT_FALSE(repeatsWithPeriod(converging, 4, 1, 1));
   EXPECT_FALSE(repeatsWithPeriod(converging, 4, 2, 2));
   EXPECT_FALSE(repeatsWithPeriod(converging, 1, 1, 1));  // too short
+}
+
+TEST(ConvergenceTest, NewtonStopsProgressingOnCyclesUpToPeriodSix) {
+  // Residuals of the main example with member contact: a two-cycle that
+  // Newton's iterates approach geometrically (seen at 1 % after two periods,
+  // at 1e-6 only after eight), and a three-cycle.
+  const double two[] = {2.9606e2, 7.0078e1, 5.674, 2.7683, 3.4595, 2.3031, 3.4241, 2.2933, 3.4173};
+  EXPECT_TRUE(stopsProgressing(two, 9, 6, 1e-2));
+  EXPECT_FALSE(stopsProgressing(two, 9, 6, 1e-6));
+  const double three[] = {9.0e2, 41.3, 17.2, 55.0, 41.2, 17.3, 55.1};
+  EXPECT_TRUE(stopsProgressing(three, 7, 6, 1e-2));
+  EXPECT_FALSE(stopsProgressing(three, 7, 2, 1e-2));
+  EXPECT_FALSE(stopsProgressing(three, 6, 6, 1e-2));  // not yet a whole period again
+  // Converging, quadratically or slowly (a tenth per iteration): never.
+  const double quadratic[] = {3.7e3, 8.1e2, 2.1e2, 1.5e1, 1.3e-1, 4.5e-5};
+  EXPECT_FALSE(stopsProgressing(quadratic, 6, 6, 1e-2));
+  double slow[12];
+  for (int k = 0; k < 12; ++k) slow[k] = std::pow(0.9, k);
+  EXPECT_FALSE(stopsProgressing(slow, 12, 6, 1e-2));
 }
 
 }  // namespace
