@@ -11,9 +11,7 @@
 #include <set>
 #include <sstream>
 
-#include "core/AtomicFile.h"
 #include "core/Checkpoint.h"
-#include "core/SvgDebris.h"
 #include "core/MemberCrossing.h"
 #include "elements/MemberFold.h"
 #include "elements/HingeToJoint.h"
@@ -162,6 +160,7 @@ void ProblemRun::run() {
            << " dissolved";
     log_ << "; energy removed " << fmt("%.6e", ev.energy) << "\n";
   };
+  cursor_.reset(batches_);
   for (const auto& batch : batches_)
     if (execList(batch, true) == Flow::Stop) break;
   const Status st = analysis_->commit();
@@ -221,45 +220,6 @@ void ProblemRun::reportFolds() {
          << ": more than a quarter turn, which no RC member bends whole\n";
 }
 
-DebrisFigures ProblemRun::debrisNow() const {
-  DebrisFigures d = debrisFigures(model_, analysis_->state());
-  d.peakGroundForce = peakGroundForce_;
-  d.peakTime = peakGroundTime_;
-  if (deepest_.node >= 0) {
-    d.deepestNode = deepest_.node;
-    d.deepest = deepest_.depth;
-    d.deepestTime = deepestTime_;
-    d.deepestLimit = halfSectionDepth(model_, deepest_.node);
-  }
-  return d;
-}
-
-void ProblemRun::reportDebris() {
-  // Where the debris ends up, against the footprint and the site: the log's lines,
-  // <stem>_debris.csv (one row), and the picture when PLOT,DEBRis asked for one.
-  const DebrisFigures d = debrisNow();
-  if (d.leftNode < 0) return;
-  debris_ = d;
-  log_ << "\n" << debrisLogLines(d);
-  const std::filesystem::path csv = options_.outDir / (options_.stem + "_debris.csv");
-  AtomicFile::write(csv, debrisCsvHeader() + "\n" + debrisCsvRow(d) + "\n");
-  log_ << "  debris: " << csv.filename().string() << "\n";
-  if (debrisPlot_) plotDebris();
-}
-
-void ProblemRun::plotDebris() {
-  State& s = analysis_->state();
-  if (!model_.joints().empty()) syncSlaveNodes(model_, s);
-  const DebrisFigures d = debrisNow();
-  std::string title = RunOutputs::displayTitle(problem_.title);
-  if (!options_.label.empty()) title += (title.empty() ? "" : ", ") + options_.label;
-  title += (title.empty() ? "" : ": ") + std::string("debris at t = ") + fmt("%.4g", s.t);
-  const std::filesystem::path path = options_.outDir / (options_.stem + "_debris.svg");
-  saveDebrisSvg(path, model_, s, d, title);
-  debrisPlot_ = true;
-  log_ << "  PLOT   debris: " << path.filename().string() << "\n";
-}
-
 RunSummary ProblemRun::summary() const {
   RunSummary s;
   if (!analysis_) return s;
@@ -310,8 +270,10 @@ void ProblemRun::safePoint() {
   }
 }
 
-Flow ProblemRun::execList(const std::vector<Macro>& list, bool topLevel) {
+Flow ProblemRun::execList(const std::vector<Macro>& list, bool topLevel, int pass, int passes) {
+  const RunCursor::Scope scope(cursor_, list, pass >= 0, pass, passes);
   for (const Macro& m : list) {
+    cursor_.at(static_cast<std::size_t>(&m - list.data()));
     safePoint();
     const Flow f = m.command->run(m, *this);
     // Outside any loop a converged iteration or a reached tmax has no loop to leave.
@@ -326,7 +288,7 @@ Flow ProblemRun::runLoop(const Macro& m) {
   diverged_ = stalled_ = false;
   lastFailure_.clear();
   for (int i = 0; i < n; ++i) {
-    const Flow f = execList(m.body);
+    const Flow f = execList(m.body, false, i, n);
     if (f == Flow::Stop) return f;
     if (f == Flow::ExitLoop || diverged_) break;
   }
@@ -418,7 +380,7 @@ Flow ProblemRun::retryWithCut(const Macro& loop, const std::string& why) {
     const int n = loop.has(0) ? loop.numbers[0].evalInt(params_, "loop count") : 1;
     diverged_ = stalled_ = false;
     for (int i = 0; i < n; ++i) {
-      const Flow f = execList(loop.body);
+      const Flow f = execList(loop.body, false, i, n);
       if (f == Flow::Stop) return f;
       if (f == Flow::ExitLoop || diverged_) break;
     }
@@ -515,7 +477,10 @@ Flow ProblemRun::solveOnly(const Macro& m) {
 
 Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::optional<Rest> rest) {
   State& s = analysis_->state();
-  if (tmax && s.t >= *tmax - 1e-10 * std::max(1.0, std::abs(*tmax))) return Flow::ExitLoop;
+  if (tmax && s.t >= *tmax - 1e-10 * std::max(1.0, std::abs(*tmax))) {
+    sample_.schedule(s, *tmax);
+    return Flow::ExitLoop;
+  }
   if (rest) {
     if (!analysis_->integrator().dynamic())
       fail(m, "TIME,REST needs a dynamic analysis (DYNAmic): a static one has no motion to come "
@@ -534,6 +499,7 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::op
              << " of its peak " << fmt("%.4e", peakKinetic_) << " since t = "
              << fmt("%.6e", lastMoving_) << "\n";
       restLogged_ = true;
+      restTime_ = s.t;
       return Flow::ExitLoop;
     }
   }
@@ -541,7 +507,9 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::op
     analysis_->setDt(std::min(2 * s.dt, dtNominal_));
     stepsSinceCut_ = 0;
   }
-  if (cutting_ && tmax && s.t + s.dt > *tmax) analysis_->setDt(*tmax - s.t);
+  // The last step of a phase ends on tmax; a picture loop's never (RunCursor.h).
+  if (cutting_ && tmax && s.t + s.dt > *tmax && RunCursor::lands(cursor_.afterLoop(params_)))
+    analysis_->setDt(*tmax - s.t);
   if (arcLengthFromDt_) {
     analysis_->setPathFollowing(PathFollowing::arcLength(s.dt));
     arcLengthFromDt_ = false;
