@@ -126,10 +126,8 @@ void ProblemRun::run() {
     if (ev.kind == TopologyEvent::Kind::JointFormed) {
       ++jointsFormed_;
       log_ << "  joint  formed at t = " << fmt("%.6e", t) << ": element " << ev.element + 1
-           << ", fully softened hinge, at node " << ev.master + 1
-           << (ev.slave >= 0 ? " (slave node " + std::to_string(ev.slave + 1) + ")"
-                             : " (a free end: the node's rotation)")
-           << ", relative rotation " << fmt("%.6e", ev.rotation);
+           << ", fully softened hinge, at node " << ev.master + 1 << " (slave node "
+           << ev.slave + 1 << "), relative rotation " << fmt("%.6e", ev.rotation);
       // A member's second joint (elements/HingeToJoint.h): a link from now on.
       const JointedElement* j = asJointed(&model_.element(ev.element));
       if (j && asJointed(&j->inner()))
@@ -839,10 +837,8 @@ void ProblemRun::hingesToJoints(const Macro& m, MemberLaws laws) {
        << (laws == MemberLaws::Elastic ? "elastic" : "keep their laws") << "; " << model_.numNodes()
        << " nodes, " << analysis_->assembler().dofs().numEquations() << " equations\n";
   for (const CreatedJoint& j : joints)
-    log_ << "    element " << j.element + 1 << ": joint master " << j.master + 1
-         << (j.slave >= 0 ? " slave " + std::to_string(j.slave + 1)
-                          : " (a free end: the node's rotation)")
-         << " (element end " << j.slaveEnd + 1 << "), relative rotation "
+    log_ << "    element " << j.element + 1 << ": joint master " << j.master + 1 << " slave "
+         << j.slave + 1 << " (element end " << j.slaveEnd + 1 << "), relative rotation "
          << fmt("%.6e", j.relativeRotation) << "\n";
 }
 
