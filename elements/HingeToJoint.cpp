@@ -64,7 +64,7 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
 
   // 1. Section forces (and end moments) of every element to be rebuilt, at the
   //    current displacements.
-  std::vector<char> rebuild(ne, 0), joint(ne, 0);
+  std::vector<char> rebuild(ne, 0), joint(ne, 0);  // rebuild: 2 always, 1 for its joint
   std::vector<SectionForces> forces(ne);
   std::vector<std::optional<HingedBendingState>> sections(ne);
   std::vector<ElemVec> endForces(ne, ElemVec::Zero());
@@ -74,8 +74,8 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
     Element& el = model.element(e);
     const auto* carrier = dynamic_cast<const HingeCarrier*>(&innermost(el));
     joint[e] = carrier && wantsJoint(el, carrier->hinge());
-    if (!joint[e] && !rebuildAlways(el)) continue;
-    rebuild[e] = 1;
+    rebuild[e] = rebuildAlways(el) ? 2 : joint[e];
+    if (!rebuild[e]) continue;
     // The innermost element at the joints' relative rotations and rates as
     // committed (the call comes after a commit: trial and committed agree):
     // they belong to the motion so far (a static solve of the joints would
@@ -99,11 +99,7 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
   // 2. A joint for every hinge that asks for one.
   std::vector<CreatedJoint> created;
   std::map<int, int> hingeEnd;  // element -> end that gets the slave
-  std::vector<int> attached(model.numNodes(), 0);
-  for (int e = 0; e < ne; ++e)
-    if (model.hasElement(e))
-      for (int node : model.element(e).nodes()) ++attached[node];
-  for (const Joint& j : model.joints()) attached[j.master] = attached[j.slave] = 2;
+  const std::vector<int> attached = nodeAttachments(model);
   for (int e = 0; e < ne; ++e) {
     if (!joint[e]) continue;
     const HingeInfo h = dynamic_cast<const HingeCarrier&>(innermost(model.element(e))).hinge();
@@ -116,30 +112,18 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
     }
     const std::array<bool, 2> taken = jointedEnds(model.element(e));
     const std::array<int, 2> ends = model.element(e).nodes();
-    // An end node that no other element uses and whose rotation is free needs
-    // no joint (a joint there would leave the node's rotation without any
-    // stiffness or inertia): the node's own rotation takes the jump.
-    auto freeEnd = [&](int a) {
-      return !taken[a] && attached[ends[a]] == 1 && model.bound(ends[a])[2] == 0;
+    // A member breaks where it carries a moment to the rest, never at a free
+    // end (elements/Joints.h). With no other end the hinge stays as it is (a
+    // failed one carries no moment).
+    auto breaks = [&](int a) {
+      return !taken[a] && !freeEnd(model, ends[a], attached[ends[a]]);
     };
-    if (freeEnd(end) || freeEnd(1 - end)) {
-      if (!freeEnd(end)) end = 1 - end;
-      const Eigen::Index rot = static_cast<Eigen::Index>(ends[end]) * kNodeDofs + 2;
-      const double shift = end == 0 ? h.jump : -h.jump;
-      state.u[rot] += shift;
-      state.un[rot] += shift;
-      CreatedJoint cj;
-      cj.element = e;
-      cj.slaveEnd = end;
-      cj.master = ends[end];
-      cj.position = h.position;
-      cj.jump = h.jump;
-      cj.relativeRotation = shift;
-      created.push_back(cj);  // slave -1: the node's own rotation is the free one
+    if (!breaks(end)) end = 1 - end;
+    if (!breaks(end)) {
+      joint[e] = 0;
+      if (rebuild[e] == 1) rebuild[e] = 0;  // nothing to rebuild it for
       continue;
     }
-    if (taken[end]) end = 1 - end;
-    if (taken[end]) fail(e, "both ends already carry a joint");
     CreatedJoint cj;
     cj.element = e;
     cj.slaveEnd = end;
@@ -163,7 +147,7 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
     std::array<int, 2> nodes = old->nodes();
     if (auto it = hingeEnd.find(e); it != hingeEnd.end()) {
       for (const CreatedJoint& cj : created)
-        if (cj.element == e && cj.slave >= 0) nodes[it->second] = cj.slave;
+        if (cj.element == e) nodes[it->second] = cj.slave;
     }
     const MaterialSet* source = model.material(old->materialNumber());
     if (!source) fail(e, "material set " + std::to_string(old->materialNumber()) + " is missing");
@@ -200,14 +184,15 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
         section.hingeActive = section.hingeFailed = false;
       }
       section.M = f.M;
-      kp = section.bulk.kp;
+      // A hinge kept (no end to break at) keeps its jump in the bulk curvature.
+      kp = section.bulk.kp + section.jump.alpha / frame->length();
       frame->setSection(section);
     }
     frame->setInitialStrain(frame->strains(d) - Vec3(f.N / c(0), f.V / c(1), kp + f.M / c(2)));
     model.elements()[e] = std::move(frame);
   }
   for (const CreatedJoint& cj : created)
-    if (cj.slave >= 0) model.joints().push_back(Joint{cj.master, cj.slave, JointForm::Condensed});
+    model.joints().push_back(Joint{cj.master, cj.slave, JointForm::Condensed});
 
   // 4. Wrap the slave ends, restore the relative states, write the slave nodes.
   installJoints(model);
@@ -235,7 +220,8 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
       fail(e, st.why);
     in.commit();
   }
-  if (std::find(rebuild.begin(), rebuild.end(), 1) != rebuild.end()) model.bumpTopology();
+  if (std::any_of(rebuild.begin(), rebuild.end(), [](char r) { return r != 0; }))
+    model.bumpTopology();
   return created;
 }
 
@@ -250,16 +236,25 @@ std::vector<CreatedJoint> hingeToJoint(Model& model, State& state, MemberLaws la
   return convert(model, state, laws, active, rebuild);
 }
 
+bool jointsWhenFailed(const Model& model, const std::vector<int>& attached, const Element& e) {
+  if (!asReissner(e)) return false;
+  const std::array<bool, 2> taken = jointedEnds(e);
+  const std::array<int, 2> ends = e.nodes();
+  for (int a = 0; a < 2; ++a)
+    if (!taken[a] && !freeEnd(model, ends[a], attached[ends[a]])) return true;
+  return false;
+}
+
 std::vector<CreatedJoint> jointFailedHinges(Model& model, State& state) {
   // Only geometrically exact elements: the failure phase keeps its embedded
   // hinges. An element that already carries a joint at one end gets the new
   // one at its other end (the end of the larger moment: the joint's moment is
   // zero): the member, failed twice, becomes a link pinned at both ends. An
-  // element with joints at both ends carries no moment and opens no hinge.
-  const auto failed = [](const Element& e, const HingeInfo& h) {
-    if (!h.active || !h.failed || !asReissner(e)) return false;
-    const std::array<bool, 2> ends = jointedEnds(e);
-    return !(ends[0] && ends[1]);
+  // element with no end left to break at (free ends, joints) keeps its
+  // failed hinge.
+  const std::vector<int> attached = nodeAttachments(model);
+  const auto failed = [&](const Element& e, const HingeInfo& h) {
+    return h.active && h.failed && jointsWhenFailed(model, attached, e);
   };
   bool any = false;
   for (int e = 0; e < model.numElements() && !any; ++e)

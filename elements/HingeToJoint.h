@@ -11,7 +11,11 @@
 //    one-point element) the end whose internal end moment (the rotation
 //    component of the element's residual f_int at the current state) is larger
 //    in magnitude, i.e. the end nearer the larger bending moment; a tie (equal
-//    within 1e-12 relative, a uniform moment) goes to end 1;
+//    within 1e-12 relative, a uniform moment) goes to end 1; never to a free
+//    end (elements/Joints.h freeEnd: no other member or joint there, which
+//    carries no moment) or an end that already has a joint: the other end
+//    then, and with neither no joint (the element keeps its hinge; a failed
+//    one carries no moment);
 //  - a slave node is added at the master's coordinates (free: no restraint, no
 //    load), the element's end is moved to it, and a Condensed joint is added;
 //  - the rotation jump alpha becomes the joint's relative rotation. In eq (20),
@@ -50,9 +54,7 @@ namespace c2d {
 
 struct CreatedJoint {
   int element = -1;             // 0-based element index
-  // 0-based node indices (slave: the new node; -1 when the element's end node is
-  // used by no other element and free to rotate: its own rotation took the jump)
-  int master = -1, slave = -1;
+  int master = -1, slave = -1;  // 0-based node indices (slave: the new node)
   int slaveEnd = 0;             // 0: element node 1, 1: element node 2
   double position = 0.5;        // hinge position s_d / l_e
   double jump = 0;              // rotation jump alpha of the hinge
@@ -81,9 +83,14 @@ std::vector<CreatedJoint> hingeToJoint(Model& model, State& state,
 // relative rates, and the element's section forces are unchanged; joints the
 // element already has keep their committed relative rotations and rates. An
 // element with a joint at one end gets the new one at its other end (a link
-// pinned at both ends); one with joints at both ends gets none. (Small
+// pinned at both ends); one with joints at both ends, or whose other end is
+// free, gets none: its failed hinge stays failed (no moment, never back at Mu). (Small
 // displacement elements keep their free embedded hinge: the failure phase of
 // the paper.) Returns the joints made.
 std::vector<CreatedJoint> jointFailedHinges(Model& model, State& state);
+// Whether a failed hinge of element e becomes a joint there: e is geometrically
+// exact and has an end that is neither a free end nor jointed already
+// (attached: nodeAttachments(model), elements/Joints.h).
+bool jointsWhenFailed(const Model& model, const std::vector<int>& attached, const Element& e);
 
 }  // namespace c2d

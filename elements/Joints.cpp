@@ -53,6 +53,19 @@ bool condensable(const Model& model, const Joint& joint) {
   return condensableWith(model, joint, attachedTo(model, joint.slave));
 }
 
+std::vector<int> nodeAttachments(const Model& model) {
+  std::vector<int> attached(model.numNodes(), 0);
+  for (int e = 0; e < model.numElements(); ++e)
+    if (model.hasElement(e))
+      for (int node : model.element(e).nodes()) ++attached[node];
+  for (const Joint& j : model.joints()) attached[j.master] = attached[j.slave] = 2;
+  return attached;
+}
+
+bool freeEnd(const Model& model, int node, int attachments) {
+  return attachments == 1 && model.bound(node)[2] == 0 && model.force(node)[2] == 0;
+}
+
 double jointFriction(const Model& model, int node) {
   double Mr = 0;
   for (int e = 0; e < model.numElements(); ++e) {

@@ -44,6 +44,13 @@ ElementKinematics innermostKinematics(const Element& e, const State& state);
 std::vector<JointedElement*> jointedElements(Model& model);
 std::vector<const JointedElement*> jointedElements(const Model& model);
 
+// Per node: the element ends at it, a joint's master and slave counting two.
+std::vector<int> nodeAttachments(const Model& model);
+// A free end: a node that one element end holds and no joint, its rotation
+// free and unloaded by a nodal moment (attachments: nodeAttachments' count).
+// It carries no moment: no member breaks there, and no joint forms at it.
+bool freeEnd(const Model& model, int node, int attachments);
+
 // A joint that ruptured: the two pieces separated at the slave node.
 struct RupturedJoint {
   int master = -1, slave = -1;  // 0-based nodes

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 
 #include "macro/ProblemRun.h"
 
@@ -66,6 +67,16 @@ std::string resolveColumn(const Record& rec, std::size_t i, const Parameters& pa
   return kind + "_" + std::to_string(n) + "_" + c.substr(last + 1);
 }
 
+// " at t = 3.5 (within step 421)" for an output of the motion between the
+// states of the step in progress (solvers/DenseOutput.h); "" for a computed state.
+std::string sampled(const State& shown, const State& computed) {
+  if (shown.t == computed.t) return {};
+  char buf[96];
+  std::snprintf(buf, sizeof buf, " at t = %.6g (within step %d, which ends at t = %.6g)", shown.t,
+                computed.step + 1, computed.t);
+  return buf;
+}
+
 std::string label(const std::string& text) {
   std::string s = text;
   std::replace(s.begin(), s.end(), '_', ' ');
@@ -81,7 +92,10 @@ class PlotCommand final : public SolutionCommand {
         "Headless pictures (SVG files, no display needed). PLOT,MESH: the undeformed mesh with "
         "supports and joints, <stem>_mesh.svg. PLOT,DEFOrmed,scale,chords: the deformed shape "
         "(displacements times scale; 0 or absent: automatic, 1 once they are large) with "
-        "active and failed hinges, joints and the ground, <stem>_deformed_<step>.svg; members "
+        "active and failed hinges, joints and the ground, <stem>_deformed_<step>.svg (after a "
+        "loop whose last step passed its tmax: the motion at tmax, see TIME; a state already "
+        "drawn, as in picture loops after the motion has come to rest, is not drawn again "
+        "and the log says so once); members "
         "are drawn as curves leaving each node at its rotation, or as straight chords with "
         "chords = 1 (bars whose nodal rotations mean nothing). "
         "PLOT,CURVe,sx,sy with one data record after END naming two TPLOt columns: the "
@@ -125,14 +139,21 @@ class PlotCommand final : public SolutionCommand {
 
   Flow run(const Macro& m, ProblemRun& r) const override {
     const std::string k = m.option.substr(0, 4);
-    State& state = r.analysis().state();
     if (k == "mesh") {
-      r.log() << "  PLOT   mesh: " << r.outputs().plotMesh(r.model(), state).filename().string() << "\n";
+      r.log() << "  PLOT   mesh: " << r.outputs().plotMesh(r.model()).filename().string() << "\n";
     } else if (k == "defo") {
       const double scale = value(m, 0, r.params(), 0.0);
       const bool chords = value(m, 1, r.params(), 0.0) != 0;
-      r.log() << "  PLOT   deformed shape: "
-              << r.outputs().plotDeformed(r.model(), state, scale, !chords).filename().string() << "\n";
+      RunOutputs& out = r.outputs();
+      const State& shown = r.outputState();
+      if (const auto path = out.plotDeformed(r.model(), shown, scale, !chords))
+        r.log() << "  PLOT   deformed shape: " << path->filename().string()
+                << sampled(shown, r.analysis().state()) << "\n";
+      else if (out.deformedSkipped() == 1)  // said once
+        r.log() << "  PLOT   deformed shape: no step since "
+                << out.lastDeformed().filename().string()
+                << (r.atRest() ? " (the motion is at rest)" : "")
+                << ": it is not drawn again, nor by the later pictures of this state\n";
     } else if (k == "debr") {
       r.plotDebris();
     } else if (k == "curv") {
@@ -168,7 +189,8 @@ class ParaViewCommand final : public SolutionCommand {
     CommandSpec s;
     s.name = "PVIEw";
     s.doc =
-        "ParaView output (VTK XML): PVIEw writes the current state as the next file "
+        "ParaView output (VTK XML): PVIEw writes the current state (the motion at tmax "
+        "after a loop whose last step passed it, see TIME) as the next file "
         "<stem>_NNNN.vtu of the collection <stem>.pvd (deformed nodes; displacement, rotation, "
         "velocity, joint; per element N, V, M, material, hinge state, jump and position). "
         "PVIEw,,inc also writes every inc committed steps from then on, and the final state, "
@@ -198,8 +220,11 @@ class ParaViewCommand final : public SolutionCommand {
                         : 0;
     if (inc < 0) fail(m, 2, "negative PVIEw increment");
     r.outputs().setViewInterval(inc);
-    const auto path = r.outputs().writeView(r.model(), r.analysis().state());
-    r.log() << "  PVIEw  " << (path ? path->filename().string() : std::string("state already written"));
+    const State& shown = r.outputState();
+    const auto path = r.outputs().writeView(r.model(), shown);
+    r.log() << "  PVIEw  "
+            << (path ? path->filename().string() : std::string("state already written"))
+            << sampled(shown, r.analysis().state());
     if (inc > 0) r.log() << ", then every " << inc << " steps";
     r.log() << "\n";
     return Flow::Next;

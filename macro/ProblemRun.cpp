@@ -11,9 +11,7 @@
 #include <set>
 #include <sstream>
 
-#include "core/AtomicFile.h"
 #include "core/Checkpoint.h"
-#include "core/SvgDebris.h"
 #include "core/MemberCrossing.h"
 #include "elements/MemberFold.h"
 #include "elements/HingeToJoint.h"
@@ -128,10 +126,8 @@ void ProblemRun::run() {
     if (ev.kind == TopologyEvent::Kind::JointFormed) {
       ++jointsFormed_;
       log_ << "  joint  formed at t = " << fmt("%.6e", t) << ": element " << ev.element + 1
-           << ", fully softened hinge, at node " << ev.master + 1
-           << (ev.slave >= 0 ? " (slave node " + std::to_string(ev.slave + 1) + ")"
-                             : " (a free end: the node's rotation)")
-           << ", relative rotation " << fmt("%.6e", ev.rotation);
+           << ", fully softened hinge, at node " << ev.master + 1 << " (slave node "
+           << ev.slave + 1 << "), relative rotation " << fmt("%.6e", ev.rotation);
       // A member's second joint (elements/HingeToJoint.h): a link from now on.
       const JointedElement* j = asJointed(&model_.element(ev.element));
       if (j && asJointed(&j->inner()))
@@ -162,6 +158,7 @@ void ProblemRun::run() {
            << " dissolved";
     log_ << "; energy removed " << fmt("%.6e", ev.energy) << "\n";
   };
+  cursor_.reset(batches_);
   for (const auto& batch : batches_)
     if (execList(batch, true) == Flow::Stop) break;
   const Status st = analysis_->commit();
@@ -221,45 +218,6 @@ void ProblemRun::reportFolds() {
          << ": more than a quarter turn, which no RC member bends whole\n";
 }
 
-DebrisFigures ProblemRun::debrisNow() const {
-  DebrisFigures d = debrisFigures(model_, analysis_->state());
-  d.peakGroundForce = peakGroundForce_;
-  d.peakTime = peakGroundTime_;
-  if (deepest_.node >= 0) {
-    d.deepestNode = deepest_.node;
-    d.deepest = deepest_.depth;
-    d.deepestTime = deepestTime_;
-    d.deepestLimit = halfSectionDepth(model_, deepest_.node);
-  }
-  return d;
-}
-
-void ProblemRun::reportDebris() {
-  // Where the debris ends up, against the footprint and the site: the log's lines,
-  // <stem>_debris.csv (one row), and the picture when PLOT,DEBRis asked for one.
-  const DebrisFigures d = debrisNow();
-  if (d.leftNode < 0) return;
-  debris_ = d;
-  log_ << "\n" << debrisLogLines(d);
-  const std::filesystem::path csv = options_.outDir / (options_.stem + "_debris.csv");
-  AtomicFile::write(csv, debrisCsvHeader() + "\n" + debrisCsvRow(d) + "\n");
-  log_ << "  debris: " << csv.filename().string() << "\n";
-  if (debrisPlot_) plotDebris();
-}
-
-void ProblemRun::plotDebris() {
-  State& s = analysis_->state();
-  if (!model_.joints().empty()) syncSlaveNodes(model_, s);
-  const DebrisFigures d = debrisNow();
-  std::string title = RunOutputs::displayTitle(problem_.title);
-  if (!options_.label.empty()) title += (title.empty() ? "" : ", ") + options_.label;
-  title += (title.empty() ? "" : ": ") + std::string("debris at t = ") + fmt("%.4g", s.t);
-  const std::filesystem::path path = options_.outDir / (options_.stem + "_debris.svg");
-  saveDebrisSvg(path, model_, s, d, title);
-  debrisPlot_ = true;
-  log_ << "  PLOT   debris: " << path.filename().string() << "\n";
-}
-
 RunSummary ProblemRun::summary() const {
   RunSummary s;
   if (!analysis_) return s;
@@ -310,8 +268,10 @@ void ProblemRun::safePoint() {
   }
 }
 
-Flow ProblemRun::execList(const std::vector<Macro>& list, bool topLevel) {
+Flow ProblemRun::execList(const std::vector<Macro>& list, bool topLevel, int pass, int passes) {
+  const RunCursor::Scope scope(cursor_, list, pass >= 0, pass, passes);
   for (const Macro& m : list) {
+    cursor_.at(static_cast<std::size_t>(&m - list.data()));
     safePoint();
     const Flow f = m.command->run(m, *this);
     // Outside any loop a converged iteration or a reached tmax has no loop to leave.
@@ -326,7 +286,7 @@ Flow ProblemRun::runLoop(const Macro& m) {
   diverged_ = stalled_ = false;
   lastFailure_.clear();
   for (int i = 0; i < n; ++i) {
-    const Flow f = execList(m.body);
+    const Flow f = execList(m.body, false, i, n);
     if (f == Flow::Stop) return f;
     if (f == Flow::ExitLoop || diverged_) break;
   }
@@ -418,7 +378,7 @@ Flow ProblemRun::retryWithCut(const Macro& loop, const std::string& why) {
     const int n = loop.has(0) ? loop.numbers[0].evalInt(params_, "loop count") : 1;
     diverged_ = stalled_ = false;
     for (int i = 0; i < n; ++i) {
-      const Flow f = execList(loop.body);
+      const Flow f = execList(loop.body, false, i, n);
       if (f == Flow::Stop) return f;
       if (f == Flow::ExitLoop || diverged_) break;
     }
@@ -515,7 +475,10 @@ Flow ProblemRun::solveOnly(const Macro& m) {
 
 Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::optional<Rest> rest) {
   State& s = analysis_->state();
-  if (tmax && s.t >= *tmax - 1e-10 * std::max(1.0, std::abs(*tmax))) return Flow::ExitLoop;
+  if (tmax && s.t >= *tmax - 1e-10 * std::max(1.0, std::abs(*tmax))) {
+    sample_.schedule(s, *tmax);
+    return Flow::ExitLoop;
+  }
   if (rest) {
     if (!analysis_->integrator().dynamic())
       fail(m, "TIME,REST needs a dynamic analysis (DYNAmic): a static one has no motion to come "
@@ -534,6 +497,7 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::op
              << " of its peak " << fmt("%.4e", peakKinetic_) << " since t = "
              << fmt("%.6e", lastMoving_) << "\n";
       restLogged_ = true;
+      restTime_ = s.t;
       return Flow::ExitLoop;
     }
   }
@@ -541,7 +505,9 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::op
     analysis_->setDt(std::min(2 * s.dt, dtNominal_));
     stepsSinceCut_ = 0;
   }
-  if (cutting_ && tmax && s.t + s.dt > *tmax) analysis_->setDt(*tmax - s.t);
+  // The last step of a phase ends on tmax; a picture loop's never (RunCursor.h).
+  if (cutting_ && tmax && s.t + s.dt > *tmax && RunCursor::lands(cursor_.afterLoop(params_)))
+    analysis_->setDt(*tmax - s.t);
   if (arcLengthFromDt_) {
     analysis_->setPathFollowing(PathFollowing::arcLength(s.dt));
     arcLengthFromDt_ = false;
@@ -871,10 +837,8 @@ void ProblemRun::hingesToJoints(const Macro& m, MemberLaws laws) {
        << (laws == MemberLaws::Elastic ? "elastic" : "keep their laws") << "; " << model_.numNodes()
        << " nodes, " << analysis_->assembler().dofs().numEquations() << " equations\n";
   for (const CreatedJoint& j : joints)
-    log_ << "    element " << j.element + 1 << ": joint master " << j.master + 1
-         << (j.slave >= 0 ? " slave " + std::to_string(j.slave + 1)
-                          : " (a free end: the node's rotation)")
-         << " (element end " << j.slaveEnd + 1 << "), relative rotation "
+    log_ << "    element " << j.element + 1 << ": joint master " << j.master + 1 << " slave "
+         << j.slave + 1 << " (element end " << j.slaveEnd + 1 << "), relative rotation "
          << fmt("%.6e", j.relativeRotation) << "\n";
 }
 

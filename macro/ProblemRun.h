@@ -14,12 +14,14 @@
 #include "core/Debris.h"
 #include "core/Model.h"
 #include "macro/Deck.h"
+#include "macro/RunCursor.h"
 #include "macro/RunOutputs.h"
 #include "macro/SolutionCommand.h"
 #include "macro/TimeHistory.h"
 #include "elements/HingeToJoint.h"
 #include "macro/Warnings.h"
 #include "solvers/Analysis.h"
+#include "solvers/DenseOutput.h"
 #include "solvers/ModelFingerprint.h"
 
 namespace c2d {
@@ -84,6 +86,13 @@ class ProblemRun {
   RunOutputs& outputs() { return *outputs_; }
   const RunOutputs& outputs() const { return *outputs_; }
   const TimeHistory* history() const { return history_.get(); }
+  // The state pictures and ParaView frames show: the analysis state, or the
+  // motion at the tmax of a loop whose last step passed it (solvers/DenseOutput.h).
+  const State& outputState() {
+    return sample_.outputState(model_, analysis_->state(), analysis_->integrator());
+  }
+  // TIME,REST ended a loop at rest and no step has been taken since.
+  bool atRest() const { return restLogged_ && analysis_->state().t == restTime_; }
 
   Flow runLoop(const Macro& m);
   Flow newtonIteration(const Macro& m, bool update, bool lineSearch, bool symmetric);
@@ -128,7 +137,9 @@ class ProblemRun {
   const std::optional<DebrisFigures>& debris() const { return debris_; }
 
  private:
-  Flow execList(const std::vector<Macro>& list, bool topLevel = false);
+  // pass (0-based) of passes: a loop's body (runLoop), else a BATCh block.
+  Flow execList(const std::vector<Macro>& list, bool topLevel = false, int pass = -1,
+                int passes = 1);
   void safePoint();
   Flow retryWithCut(const Macro& loop, const std::string& why);
   [[noreturn]] void fail(const Macro& m, const std::string& what) const;
@@ -138,10 +149,11 @@ class ProblemRun {
   std::string advice(const std::string& why, bool lineSearch, int iterations) const;
   std::vector<int> selection(const Macro& m, int count) const;
   void onCommit();
+  // The debris report (macro/DebrisReport.cpp).
   void reportDebris();
-  // The debris figures of the state now, with the run's peak ground force and
+  // The debris figures of the state s, with the run's peak ground force and
   // deepest node.
-  DebrisFigures debrisNow() const;
+  DebrisFigures debrisNow(const State& s) const;
   void reportCrossings();
   // RC members bent through more than a quarter turn at the end: log lines.
   void reportFolds();
@@ -194,6 +206,9 @@ class ProblemRun {
   // the last committed time at which the kinetic energy was above it.
   double peakKinetic_ = 0, restRatio_ = 0, lastMoving_ = 0;
   bool restLogged_ = false;
+  double restTime_ = 0;  // when TIME,REST last ended a loop at rest
+  RunCursor cursor_;    // where the run is in its commands (TIME,,tmax: land on it or not)
+  DenseOutput sample_;  // outputs at the tmax a picture loop's last step passed
   // Debris: the largest total ground force so far and its time; the figures at the end.
   double peakGroundForce_ = 0, peakGroundTime_ = 0;
   // The deepest any node went into the ground, and when.

@@ -6,7 +6,6 @@
 
 #include "core/SvgChart.h"
 #include "core/SvgFrame.h"
-#include "elements/Joints.h"
 
 namespace c2d {
 
@@ -57,8 +56,7 @@ std::string RunOutputs::heading() const {
   return h;
 }
 
-std::filesystem::path RunOutputs::plotMesh(const Model& model, State& state) const {
-  syncSlaveNodes(model, state);
+std::filesystem::path RunOutputs::plotMesh(const Model& model) const {
   // The reference configuration: no displacements at all.
   const State reference;
   const std::filesystem::path path = file("_mesh.svg");
@@ -78,13 +76,19 @@ double RunOutputs::automaticScale(const Model& model, const State& state) {
   return std::max(1.0, SvgChart::niceNumber(0.1 * extent / umax, true));
 }
 
-std::filesystem::path RunOutputs::plotDeformed(const Model& model, State& state, double scale,
-                                               bool curved) const {
-  syncSlaveNodes(model, state);
-  if (!(scale > 0) && !(scale < 0)) scale = automaticScale(model, state);
+std::optional<std::filesystem::path> RunOutputs::plotDeformed(const Model& model,
+                                                              const State& state, double scale,
+                                                              bool curved) {
   // The step being computed: once TIME has advanced past the last committed
   // step, a converged state belongs to the next one (the log counts the same way).
   const int step = state.step + (state.t > state.tn ? 1 : 0);
+  if (step == lastPicture_.step && state.t == lastPicture_.t && scale == lastPicture_.scale &&
+      curved == lastPicture_.curved) {
+    ++lastPicture_.skipped;
+    return std::nullopt;
+  }
+  const double asked = scale;
+  if (!(scale > 0) && !(scale < 0)) scale = automaticScale(model, state);
   char name[48];
   std::snprintf(name, sizeof name, "_deformed_%04d.svg", step);
   const std::filesystem::path path = file(name);
@@ -92,6 +96,7 @@ std::filesystem::path RunOutputs::plotDeformed(const Model& model, State& state,
   t += (t.empty() ? "" : ": ") + std::string("step ") + std::to_string(step) + ", t = " +
        shortNumber(state.t);
   SvgFrame().setTitle(t).setDisplacementScale(scale).setCurved(curved).save(path, model, state);
+  lastPicture_ = {path, step, state.t, asked, curved, 0};
   return path;
 }
 
@@ -139,20 +144,19 @@ std::vector<CurveData> RunOutputs::curves(const TimeHistory* history) const {
   return out;
 }
 
-std::optional<std::filesystem::path> RunOutputs::writeView(const Model& model, State& state) {
+std::optional<std::filesystem::path> RunOutputs::writeView(const Model& model, const State& state) {
   if (vtk_ && state.step == lastViewStep_ && state.t == lastViewTime_) return std::nullopt;
-  syncSlaveNodes(model, state);
   if (!vtk_) vtk_ = std::make_unique<VtkWriter>(outDir_ / stem_);
   lastViewStep_ = state.step;
   lastViewTime_ = state.t;
   return vtk_->write(model, state, state.t);
 }
 
-void RunOutputs::onCommit(const Model& model, State& state) {
+void RunOutputs::onCommit(const Model& model, const State& state) {
   if (viewEvery_ > 0 && state.step % viewEvery_ == 0) writeView(model, state);
 }
 
-void RunOutputs::finish(const Model& model, State& state, const TimeHistory* history) {
+void RunOutputs::finish(const Model& model, const State& state, const TimeHistory* history) {
   if (viewEvery_ > 0) writeView(model, state);
   if (vtk_) vtk_->finish();
   if (!history) return;

@@ -6,7 +6,8 @@
 //   <stem>_mesh.svg   <stem>_deformed_0042.svg (step 42)
 //   <stem>_<y>_vs_<x>.svg (TPLOt column names)   <stem>_0000.vtu ... <stem>.pvd
 // Nodal pictures need every node's values, the slaves of condensed joints
-// included: they are filled in (syncSlaveNodes) before each picture or file.
+// included: the states given are filled in (syncSlaveNodes, as
+// ProblemRun::outputState and every commit do).
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -52,29 +53,35 @@ class RunOutputs {
   RunOutputs(std::filesystem::path outDir, std::string stem, std::string title, std::string label);
 
   // PLOT,MESH: the undeformed mesh with supports and joints.
-  std::filesystem::path plotMesh(const Model& model, State& state) const;
+  std::filesystem::path plotMesh(const Model& model) const;
   // PLOT,DEFOrmed: the deformed shape; scale 0 chooses one (automaticScale);
   // curved: members leave each node at its rotation (else straight chords).
-  std::filesystem::path plotDeformed(const Model& model, State& state, double scale,
-                                     bool curved = true) const;
+  // Nothing when the last picture drew the same state (step and time) the same
+  // way: a picture loop after the motion has come to rest.
+  std::optional<std::filesystem::path> plotDeformed(const Model& model, const State& state,
+                                                    double scale, bool curved = true);
+  // The last deformed shape drawn, and how many pictures of its state were
+  // skipped since.
+  const std::filesystem::path& lastDeformed() const { return lastPicture_.path; }
+  int deformedSkipped() const { return lastPicture_.skipped; }
   // PLOT,CURVe: remembers the curve (finish() writes it again, complete) and
   // writes it now from the history so far; nothing now without a history.
   std::optional<std::filesystem::path> plotCurve(const CurveSpec& spec, const TimeHistory* history);
 
   // PVIEw: writes the current state as the next .vtu of the collection;
   // nothing when that state (same step and time) was the last one written.
-  std::optional<std::filesystem::path> writeView(const Model& model, State& state);
+  std::optional<std::filesystem::path> writeView(const Model& model, const State& state);
   // Automatic PVIEw output every `every` committed steps (0: off).
   void setViewInterval(int every) { viewEvery_ = every < 0 ? 0 : every; }
   int viewInterval() const { return viewEvery_; }
   int viewsWritten() const { return vtk_ ? vtk_->numWritten() : 0; }
 
   // After each committed step (automatic PVIEw output).
-  void onCommit(const Model& model, State& state);
+  void onCommit(const Model& model, const State& state);
   // End of a run that completed: every curve written again from the whole
   // history; with automatic PVIEw output on, the final state is the last .vtu
   // (whatever the interval); the collection becomes <stem>.pvd.
-  void finish(const Model& model, State& state, const TimeHistory* history);
+  void finish(const Model& model, const State& state, const TimeHistory* history);
   // A run that failed or was interrupted: the collection so far kept under its
   // tagged name (<stem>.failed.pvd). Returns the files kept.
   std::vector<std::filesystem::path> keep(std::string_view tag);
@@ -108,6 +115,13 @@ class RunOutputs {
   int viewEvery_ = 0;
   int lastViewStep_ = -1;  // the state last written, so that PVIEw and the interval never repeat it
   double lastViewTime_ = 0;
+  struct Picture {
+    std::filesystem::path path;
+    int step = -1;
+    double t = 0, scale = 0;
+    bool curved = true;
+    int skipped = 0;
+  } lastPicture_;
 };
 
 }  // namespace c2d

@@ -274,10 +274,19 @@ class TimeCommand final : public SolutionCommand {
   CommandSpec spec() const override {
     return solution("TIME",
                     "Commit the converged step and advance the time by dt; with tmax the "
-                    "enclosing loop ends once the time has reached tmax. TIME,REST,tmax,ratio,"
-                    "hold: the loop also ends (without a step) once the motion has come to rest: "
-                    "the kinetic energy at most ratio of its peak for the last hold time units "
-                    "(the log says when).",
+                    "enclosing loop ends once the time has reached tmax. Under step cutting "
+                    "(AUTO,CUT) the loop's last step is shortened to end on tmax when the loop "
+                    "ends a phase: when the first command after it, outputs (PLOT, PVIEw, "
+                    "TPLOt, DISP, VELO, ACCE, REAC, STRE, PARA) passed over, changes the model "
+                    "or the analysis (MESH, HINGe2joint, REMOve, DYNAmic, DT, ...), or the run "
+                    "ends there. Before another TIME (a picture loop's next pass) or a SAVE it "
+                    "is not: the loop ends with the step that passes tmax, and the pictures and "
+                    "ParaView frames until the next step show the motion at tmax, interpolated "
+                    "between the step's states (printed tables stay those of the computed "
+                    "step); so the number and times of the pictures never change the steps. "
+                    "TIME,REST,tmax,ratio,hold: the loop also ends (without a "
+                    "step) once the motion has come to rest: the kinetic energy at most ratio "
+                    "of its peak for the last hold time units (the log says when).",
                     {word("option", "REST: end the loop at rest"),
                      num("tmax", "end time (optional)"),
                      num("ratio", "REST: kinetic energy over its peak", "1e-5"),

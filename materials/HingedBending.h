@@ -24,7 +24,9 @@
 // or a fully softened hinge during the run) is closed again with a fresh
 // capacity: the joint is the broken section, and the rest of the element,
 // whose bulk goes on with the hardening law from its history, can still open
-// a hinge of its own at Mu (no member carries more than its capacity).
+// a hinge of its own at Mu (no member carries more than its capacity). A
+// failed hinge with no end to put its joint at (a free end carries no moment:
+// elements/HingeToJoint.h) stays failed.
 #include <istream>
 #include <optional>
 #include <ostream>

@@ -13,10 +13,11 @@ void TopologyEvents::index(const Model& model) {
   if (indexedModel_ == &model && indexedVersion_ == model.topologyVersion()) return;
   carriers_.clear();
   wrappers_.clear();
+  const std::vector<int> attached = nodeAttachments(model);
   for (int e = 0; e < model.numElements(); ++e) {
     if (!model.hasElement(e)) continue;
-    if (const auto* c = dynamic_cast<const HingeCarrier*>(&innermost(model.element(e))))
-      carriers_.push_back(c);
+    const auto* c = dynamic_cast<const HingeCarrier*>(&innermost(model.element(e)));
+    if (c && jointsWhenFailed(model, attached, model.element(e))) carriers_.push_back(c);
   }
   for (const JointedElement* j : jointedElements(model)) wrappers_.push_back(j);
   indexedModel_ = &model;
@@ -24,8 +25,8 @@ void TopologyEvents::index(const Model& model) {
 }
 
 bool TopologyEvents::anyFailedHinge() const {
-  // The condition of jointFailedHinges without its element kinds: when no
-  // hinge has failed it makes no joint.
+  // The condition of jointFailedHinges: when no hinge that can become a
+  // joint has failed it makes none.
   for (const HingeCarrier* c : carriers_) {
     const HingeInfo h = c->hinge();
     if (h.active && h.failed) return true;

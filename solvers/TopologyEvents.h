@@ -45,6 +45,7 @@ class TopologyEvents {
 
   const Model* indexedModel_ = nullptr;
   int indexedVersion_ = -1;
+  // The carriers of the elements whose failed hinge becomes a joint (jointsWhenFailed).
   std::vector<const HingeCarrier*> carriers_;
   std::vector<const JointedElement*> wrappers_;
 };

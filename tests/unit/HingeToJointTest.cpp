@@ -379,5 +379,66 @@ TEST(JointFailedHinges, AMemberFailedTwiceBecomesALinkPinnedAtBothEnds) {
   EXPECT_EQ(m.topologyVersion(), version);
 }
 
+// A member breaks where it carries a moment to the rest of the model, never
+// at a free end: in a free piece of two elements whose end element's hinge
+// has failed, the joint goes to the middle node, not to the free end (no
+// joint, nor a jump taken by the free node's rotation), and the piece becomes
+// two pinned there. The other element then breaks at the pin too when its
+// hinge fails; the first one, pinned and free, has no end left: a failed hinge
+// of its own stays as it is, with no fresh capacity.
+TEST(JointFailedHinges, AFreePieceBreaksWhereItCarriesAMomentNeverAtAFreeEnd) {
+  const MaterialSet mat = test::hingedRodMaterial(0.6);
+  Model m;
+  m.materials()[1] = mat;
+  m.resizeNodes(3);
+  for (int i = 0; i < 3; ++i) m.setCoord(i, Vec2(1.0 * i, 0.1 * i));
+  for (int e = 0; e < 2; ++e)
+    m.setElement(e, std::make_unique<ReissnerFrame>(mat, std::array{e, e + 1}, m.coord(e),
+                                                    m.coord(e + 1)));
+  HingedBendingState failed;
+  failed.hingeActive = failed.hingeFailed = true;
+  failed.jump.alpha = failed.jump.xi = 0.4;
+  dynamic_cast<ReissnerFrame&>(m.element(0)).setSection(failed);
+  State s;
+  s.resize(m.numNodes());
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.02, 0.02);
+  for (Eigen::Index i = 0; i < s.u.size(); ++i) s.u[i] = u(rng);
+  s.un = s.u;
+  const std::vector<CreatedJoint> created = jointFailedHinges(m, s);
+  ASSERT_EQ(created.size(), 1u);
+  EXPECT_EQ(created[0].element, 0);
+  EXPECT_EQ(created[0].master, 1);  // the middle node, not the free end 0
+  EXPECT_EQ(created[0].slaveEnd, 1);
+  EXPECT_EQ(created[0].slave, 3);
+  EXPECT_EQ(created[0].relativeRotation, -created[0].jump);
+  EXPECT_EQ(s.u[2], s.un[2]);  // the free end's rotation as it was
+  EXPECT_FALSE(dynamic_cast<const HingeCarrier&>(innermost(m.element(0))).hinge().active);
+
+  // Element 1, at the pin and at the free end 2: a joint at the pin.
+  dynamic_cast<ReissnerFrame&>(m.element(1)).setSection(failed);
+  const std::vector<CreatedJoint> second = jointFailedHinges(m, s);
+  ASSERT_EQ(second.size(), 1u);
+  EXPECT_EQ(second[0].element, 1);
+  EXPECT_EQ(second[0].master, 1);
+  EXPECT_EQ(second[0].slaveEnd, 0);
+  // Element 0: its end 1 has its joint, its end 0 is free.
+  dynamic_cast<ReissnerFrame&>(innermost(m.element(0))).setSection(failed);
+  const int version = m.topologyVersion();
+  EXPECT_TRUE(jointFailedHinges(m, s).empty());
+  EXPECT_EQ(m.topologyVersion(), version);
+  const HingeInfo kept = dynamic_cast<const HingeCarrier&>(innermost(m.element(0))).hinge();
+  EXPECT_TRUE(kept.active && kept.failed);
+  // Restrained, or loaded by a moment, a node carries one with one member.
+  const std::vector<int> attached = nodeAttachments(m);
+  EXPECT_EQ(attached, (std::vector<int>{1, 2, 1, 2, 2}));
+  EXPECT_TRUE(freeEnd(m, 2, attached[2]));
+  m.force(2)[2] = 1;
+  EXPECT_FALSE(freeEnd(m, 2, attached[2]));
+  m.force(2)[2] = 0;
+  m.bound(2)[2] = 1;
+  EXPECT_FALSE(freeEnd(m, 2, attached[2]));
+}
+
 }  // namespace
 }  // namespace c2d
