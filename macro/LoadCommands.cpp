@@ -8,6 +8,7 @@
 
 #include "macro/Expression.h"
 #include "macro/MeshCommands.h"
+#include "macro/NumberRanges.h"
 
 namespace c2d {
 
@@ -46,7 +47,7 @@ void applyElementLoads(MeshContext& ctx, const MeshCommand& cmd) {
       if (asMass && c.model.gravity().norm() == 0)
         failAt(r, 5, "QLOAd with MASS needs GRAVity: the mass is |q|/|g|",
                "give GRAVity,,gx,gy in the mesh input");
-      for (int e = n1; e <= n2; e += inc) {
+      for (int e : steppedRange(n1, n2, inc)) {
         if (e > c.model.numElements() || !c.model.elements()[e - 1])
           failAt(r, e == n1 ? 0 : 1, "QLOAd: element " + std::to_string(e) + " is not defined");
         c.model.elementLoads().push_back(ElementLoad{e - 1, q, asMass});
@@ -84,13 +85,7 @@ void applyNodalMasses(MeshContext& ctx, const MeshCommand& cmd) {
     if (l > 0)
       for (int i = 0; i < kNodeDofs; ++i) vl[i] = ctx.model.nodalMass(l - 1)[i];
     set(n, v);
-    if (lg != 0 && l != 0) {
-      const int step = (n - l < 0 ? -1 : 1) * std::abs(lg);
-      const int count = (std::abs(n - l + step) - 1) / std::abs(step);
-      int j = 1;
-      for (int k = l + step; (n - k) * step > 0; k += step, ++j)
-        set(k, vl + (v - vl) * (static_cast<double>(j) / count));
-    }
+    generateBetween(l, lg, n, vl, v, [&](int k, const V3& x) { set(k, x); });
     ctx.referencedNodes.emplace(n, r);
     l = n;
     lg = ng;

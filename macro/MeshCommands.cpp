@@ -16,6 +16,7 @@
 #include "macro/Limits.h"
 #include "macro/BlastCommand.h"
 #include "macro/LoadCommands.h"
+#include "macro/NumberRanges.h"
 
 namespace c2d {
 
@@ -136,27 +137,6 @@ Mode readMode(const Record& head, Mode dflt) {
 // ---------------------------------------------------------------------------
 // COORdinates: node ng x y. ng on the earlier of two records generates the nodes
 // between them (n1, n1+ng, ...) by linear interpolation (FEAP genvec).
-
-// The numbers l+s, l+2s, ... strictly between l and n, s = sign(n - l) |ng|
-// (none when l or ng is 0): FEAP's generation between two records, used by
-// every generating command. 64-bit arithmetic, so that an increment near 2^31
-// generates nothing instead of overflowing.
-std::vector<int> generatedBetween(int l, int n, int ng) {
-  std::vector<int> out;
-  if (l == 0 || ng == 0) return out;
-  const long long step = (n >= l ? 1 : -1) * std::llabs(static_cast<long long>(ng));
-  for (long long k = l + step; step > 0 ? k < n : k > n; k += step)
-    out.push_back(static_cast<int>(k));
-  return out;
-}
-
-template <class Assign, class Value>
-void generateBetween(int l, int lg, int n, const Value& xl, const Value& xn, Assign assign) {
-  const std::vector<int> ks = generatedBetween(l, n, lg);
-  const double count = static_cast<double>(ks.size() + 1);
-  for (std::size_t j = 0; j < ks.size(); ++j)
-    assign(ks[j], xl + (xn - xl) * (static_cast<double>(j + 1) / count));
-}
 
 void applyCoordinates(MeshContext& ctx, const MeshCommand& cmd) {
   std::set<int> touched;

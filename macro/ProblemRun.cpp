@@ -23,6 +23,7 @@
 #include "macro/Interrupt.h"
 #include "macro/MeshBinder.h"
 #include "macro/MeshCommands.h"
+#include "macro/NumberRanges.h"
 #include "macro/OutputCommands.h"
 #include "macro/Report.h"
 #include "solvers/ConvergenceTest.h"
@@ -820,9 +821,7 @@ std::vector<int> ProblemRun::selection(const Macro& m, int count) const {
       m.has(1) && !m.record.text(3).empty() ? m.numbers[1].evalInt(params_, "last number") : n1;
   int inc = m.has(2) && !m.record.text(4).empty() ? m.numbers[2].evalInt(params_, "increment") : 1;
   if (inc <= 0) inc = 1;
-  n2 = std::min(n2, count);
-  // 64 bits: an increment near 2^31 must end the range, not wrap around.
-  for (long long i = std::max(n1, 1); i <= n2; i += inc) out.push_back(static_cast<int>(i - 1));
+  for (int i : steppedRange(std::max(n1, 1), std::min(n2, count), inc)) out.push_back(i - 1);
   return out;
 }
 

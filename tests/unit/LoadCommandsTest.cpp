@@ -2,6 +2,7 @@
 // their deck errors at file:line:col.
 #include <gtest/gtest.h>
 
+#include <climits>
 #include <sstream>
 
 #include "elements/ModelCheckpoint.h"
@@ -63,6 +64,24 @@ TEST(LoadCommands, QloadMassAndSiteEnterTheModel) {
 
   const Model g = build(kBeam + "MASS\n 1 1 1 1 0\n 4 0 4 4 0\n\n");
   for (int n = 0; n < 4; ++n) EXPECT_DOUBLE_EQ(g.nodalMass(n)[1], n + 1.0);  // linear generation
+}
+
+// An increment near 2^31 ends the range (it overflowed the loop counter and
+// crashed): QLOAd loads element 1 only, MASS generates nothing between its records.
+TEST(LoadCommands, IncrementsNearIntMaxEndTheRange) {
+  const std::string big = std::to_string(INT_MAX);
+  const Model m = build(kBeam + "QLOAd\n 1 3 " + big + " 0 -5\n\n" +
+                        "MASS\n 1 " + big + " 1 1 0\n 4 0 2 2 0\n\n");
+  ASSERT_EQ(m.elementLoads().size(), 1u);
+  EXPECT_EQ(m.elementLoads()[0].element, 0);
+  EXPECT_EQ(m.nodalMass(0)[0], 1);
+  EXPECT_EQ(m.nodalMass(1)[0], 0);
+  EXPECT_EQ(m.nodalMass(2)[0], 0);
+  EXPECT_EQ(m.nodalMass(3)[0], 2);
+  const Model down = build(kBeam + "MASS\n 4 -" + big + " 1 1 0\n 1 0 2 2 0\n\n");
+  EXPECT_EQ(down.nodalMass(3)[0], 1);
+  EXPECT_EQ(down.nodalMass(2)[0], 0);
+  EXPECT_EQ(down.nodalMass(0)[0], 2);
 }
 
 // A restart file keeps the floor loads, the nodal masses and the site.
