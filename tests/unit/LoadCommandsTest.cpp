@@ -8,6 +8,7 @@
 #include "elements/ModelCheckpoint.h"
 #include "macro/DeckParser.h"
 #include "macro/MeshBinder.h"
+#include "solvers/ModelFingerprint.h"
 #include "tests/unit/DeckTestSupport.h"
 
 namespace c2d {
@@ -98,6 +99,24 @@ TEST(LoadCommands, RestartKeepsThem) {
   EXPECT_EQ(r.nodalMass(3)[2], 3);
   ASSERT_TRUE(r.site().has_value());
   EXPECT_EQ(r.site()->xmax, 4);
+}
+
+// REST refuses a restart file of a deck whose floor loads, masses or site
+// differ (the restored model would bring the saved ones back silently).
+TEST(LoadCommands, TheRestartFingerprintSeesThem) {
+  const std::string grav = "GRAV,,0,-10\n";
+  const auto print = [&](const std::string& mesh) {
+    return ModelFingerprint::of(build(kBeam + grav + mesh));
+  };
+  const ModelFingerprint base = print("QLOAd\n 1 0 0 0 -5\n\nSITE,,-1,4\n");
+  EXPECT_EQ(base.differences(print("QLOAd\n 1 0 0 0 -5\n\nSITE,,-1,4\n")), "");
+  EXPECT_EQ(base.differences(print("QLOAd\n 1 0 0 0 -10\n\nSITE,,-1,4\n")),
+            "loads (forces, prescribed values, load tables, floor loads, gravity, contact)");
+  EXPECT_EQ(base.differences(print("QLOAd\n 1 0 0 0 -5 MASS\n\nSITE,,-1,4\n")),
+            "masses (MASS, floor loads carried as mass)");
+  EXPECT_EQ(base.differences(print("QLOAd\n 1 0 0 0 -5\n\nMASS\n 2 0 1 1 0\n\nSITE,,-1,4\n")),
+            "masses (MASS, floor loads carried as mass)");
+  EXPECT_EQ(base.differences(print("QLOAd\n 1 0 0 0 -5\n\nSITE,,-1,5\n")), "site (SITE)");
 }
 
 TEST(LoadCommands, Errors) {
