@@ -178,10 +178,10 @@ std::vector<std::string> runWarnings(const RunSummary& s) {
   }
   if (s.blastsNotMade > 0) {
     std::snprintf(buf, sizeof buf,
-                  "warning: %d blast%s of the BLASt plan did not happen: the run ended before "
-                  "%s time (listed in the log)",
+                  "warning: %d blast%s of the BLASt plan did not happen (listed in the log): "
+                  "the run ended before %s time, or %s elements were removed before",
                   s.blastsNotMade, s.blastsNotMade == 1 ? "" : "s",
-                  s.blastsNotMade == 1 ? "its" : "their");
+                  s.blastsNotMade == 1 ? "its" : "their", s.blastsNotMade == 1 ? "its" : "their");
     out.push_back(buf);
   }
   return out;

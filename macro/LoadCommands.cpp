@@ -111,6 +111,12 @@ void applySite(MeshContext& ctx, const MeshCommand& cmd) {
     failAt(h, h.size() < 4 ? h.size() : 3, "SITE needs xmin and xmax", "write SITE,,xmin,xmax");
   const Site s{ctx.number(h, 2), ctx.number(h, 3)};
   if (!(s.xmax > s.xmin)) failAt(h, 3, "xmax must be greater than xmin");
+  // One site per mesh input (a MESH re-entry may give a new one).
+  if (!ctx.siteOrigin.blank())
+    failAt(h, 0,
+           "a second SITE (the first is on line " + std::to_string(ctx.siteOrigin.loc.line) + ")",
+           "give one SITE,,xmin,xmax");
+  ctx.siteOrigin = h;
   ctx.model.site() = s;
   if (auto* os = ctx.out()) {
     title(*os, "S i t e");

@@ -852,10 +852,12 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
       std::string hint = "the records are 'GROUnd,,y0,k[,alpha[,mu[,e]]]' and 'MEMBers,,k[,alpha[,r[,mu[,e]]]]'";
       failAt(r, 0, "unknown contact type '" + r.text(0) + "'", hint);
     }
-    if (previous)
+    // One ground per mesh input, in one CONTact command or several (a MESH
+    // re-entry may give a new one).
+    if (!ctx.groundOrigin.blank())
       failAt(r, 0,
-             "a second GROUnd record (the first is on line " + std::to_string(previous->loc.line) +
-                 ")");
+             "a second GROUnd record (the first is on line " +
+                 std::to_string(ctx.groundOrigin.loc.line) + ")");
     ctx.maxFields(r, 7, "GROUnd,,y0,k[,alpha[,mu[,e]]]");
     if (!r.text(1).empty())
       failAt(r, 1, "GROUnd takes no option word (its second field is empty)",

@@ -13,11 +13,11 @@
 
 #include "core/AtomicFile.h"
 #include "core/Checkpoint.h"
-#include "core/SvgDebris.h"
 #include "core/MemberCrossing.h"
-#include "elements/MemberFold.h"
+#include "core/SvgDebris.h"
 #include "elements/HingeToJoint.h"
 #include "elements/Joints.h"
+#include "elements/MemberFold.h"
 #include "macro/DeckParser.h"
 #include "macro/DeckReader.h"
 #include "macro/Interrupt.h"
@@ -25,6 +25,7 @@
 #include "macro/MeshCommands.h"
 #include "macro/NumberRanges.h"
 #include "macro/OutputCommands.h"
+#include "macro/RemovalLog.h"
 #include "macro/Report.h"
 #include "solvers/ConvergenceTest.h"
 #include "solvers/ProportionalLoad.h"
@@ -33,20 +34,6 @@
 namespace c2d {
 
 namespace {
-
-// 0-based numbers as the deck's, ranges of consecutive ones joined: "3, 5-7".
-std::string numberList(const std::vector<int>& numbers) {
-  std::string out;
-  for (std::size_t i = 0; i < numbers.size();) {
-    std::size_t j = i;
-    while (j + 1 < numbers.size() && numbers[j + 1] == numbers[j] + 1) ++j;
-    if (!out.empty()) out += ", ";
-    out += std::to_string(numbers[i] + 1);
-    if (j > i) out += (j == i + 1 ? ", " : "-") + std::to_string(numbers[j] + 1);
-    i = j + 1;
-  }
-  return out;
-}
 
 std::string fmt(const char* f, double v) {
   char buf[64];
@@ -148,20 +135,9 @@ void ProblemRun::run() {
   };
   analysis_->removals().onEvent = [this](const RemovalEvent& ev) {
     removed_ += static_cast<int>(ev.elements.size());
-    log_ << "  " << (ev.scheduled ? "blast " : "remove") << " at t = " << fmt("%.6e", ev.time)
-         << ": element" << (ev.elements.size() == 1 ? " " : "s ") << numberList(ev.elements)
-         << " removed, ";
-    if (ev.release > 0)
-      log_ << "forces released over td = " << fmt("%.4e", ev.release);
-    else
-      log_ << "at once";
-    if (!ev.nodesLeaving.empty())
-      log_ << "; node" << (ev.nodesLeaving.size() == 1 ? " " : "s ") << numberList(ev.nodesLeaving)
-           << " leave" << (ev.nodesLeaving.size() == 1 ? "s" : "") << " the model";
-    if (ev.jointsDissolved > 0)
-      log_ << "; " << ev.jointsDissolved << " joint" << (ev.jointsDissolved == 1 ? "" : "s")
-           << " dissolved";
-    log_ << "; energy removed " << fmt("%.6e", ev.energy) << "\n";
+    const RemovalLog line = removalLog(ev);
+    blastsNotMade_ += line.warning ? 1 : 0;
+    log_ << line.text;
   };
   for (const auto& batch : batches_)
     if (execList(batch, true) == Flow::Stop) break;

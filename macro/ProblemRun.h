@@ -51,7 +51,9 @@ struct RunSummary {
   int folded = 0;     // RC members bent through more than a quarter turn at the end
   int sunk = 0;       // runs in which a node went deeper into the ground than half its section
   bool memberContact = false;  // the crossing members had member contact (CONTact MEMBers)
-  int blastsNotMade = 0;  // BLASt records whose time the run never reached
+  // BLASt records whose time the run never reached, or whose elements had all
+  // been removed before (REMOve): they removed nothing.
+  int blastsNotMade = 0;
   // Runs that ended with ground contact (debris figures), and those of them whose
   // debris left the site (SITE).
   int debrisRuns = 0, outsideRuns = 0;

@@ -129,6 +129,10 @@ TEST(LoadCommands, Errors) {
   expectError(kBeam + "SITE,,5\n", 15, 8, "SITE needs xmin and xmax");
   expectError(kBeam + "SITE,1,5\n", 15, 6, "SITE takes no option word");
   expectError(kBeam + "SITE,X,1,5\n", 15, 6, "SITE takes no option word");
+  // A second site or ground in one mesh input would silently replace the first.
+  expectError(kBeam + "SITE,,-1,4\nSITE,,0,5\n", 16, 1, "a second SITE (the first is on line 15)");
+  expectError(kBeam + "CONTact\n GROUnd,,0,1e5\n\nCONTact\n GROUnd,,-1,1e5\n\n", 19, 2,
+              "a second GROUnd record (the first is on line 16)");
 }
 
 }  // namespace
