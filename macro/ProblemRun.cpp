@@ -570,13 +570,23 @@ void ProblemRun::setStepCutting(bool on, double dtMin, bool cutDivergingPredicti
        << (cutPrediction_ ? ", a diverging predicted start cuts the step" : "") << "\n";
 }
 
-void ProblemRun::setIntegrator(const TimeIntegrator& ti) {
+void ProblemRun::setIntegrator(const Macro& m, const TimeIntegrator& ti) {
   // A converged step ends under the rule it was solved with (its energy, the
-  // forces a blast at its time releases), not under the new one.
-  const Status st = analysis_->commit();
-  if (!st) throw AnalysisError("DYNAmic: committing the last step: " + st.why);
+  // forces a blast at its time releases), not under the new one. A step that
+  // TIME began and no iteration has solved yet (DYNAmic inside the time loop)
+  // is no state to commit: it begins again under the new rule.
+  const State& s = analysis_->state();
+  const bool begun = s.t > s.tn && analysis_->stepHistory().empty();
+  if (begun) {
+    analysis_->back();
+  } else if (const Status st = analysis_->commit(); !st) {
+    fail(m, "committing the last step: " + st.why);
+  }
   analysis_->setIntegrator(ti);
   log_ << "  DYNA   " << ti.describe() << "\n";
+  if (!begun) return;
+  if (const Status st = analysis_->advance(); !st) fail(m, st.why);
+  log_ << "  DYNA   the step to t = " << fmt("%.6e", s.t) << " begins again under it\n";
 }
 
 void ProblemRun::setProportionalLoad(const Macro& m) {

@@ -102,7 +102,7 @@ class ProblemRun {
   // Under step cutting the path-following increment follows dt / nominal dt.
   void scalePathIncrement();
   void setProportionalLoad(const Macro& m);
-  void setIntegrator(const TimeIntegrator& ti);
+  void setIntegrator(const Macro& m, const TimeIntegrator& ti);
   // AUTO,CUT,dtmin,pred: with pred a dynamic step whose predicted start
   // diverges is cut (dt halved, from the prediction again) rather than started
   // again from the committed state.

@@ -400,7 +400,9 @@ class DynaCommand final : public SolutionCommand {
     return solution("DYNAmic",
                     "Time integrator: DYNA,NEWMark,beta,gamma (default 0.25, 0.5); "
                     "DYNA,ENERgy,alpha,beta: energy conserving (0, 0) or decaying (alpha, beta in "
-                    "(0, 1/2]) mid-point scheme; DYNA,OFF: static.",
+                    "(0, 1/2]) mid-point scheme; DYNA,OFF: static. A converged step is "
+                    "committed under the rule it was solved with; a step that TIME began and no "
+                    "iteration solved yet begins again under the new one.",
                     {word("scheme", "NEWMark, ENERgy or OFF"), num("p1", "beta / alpha"),
                      num("p2", "gamma / beta")});
   }
@@ -428,7 +430,7 @@ class DynaCommand final : public SolutionCommand {
       ti = TimeIntegrator::midPoint(value(0, 0.0), value(1, 0.0));
     else
       ti = TimeIntegrator::newmark(value(0, 0.25), value(1, 0.5));
-    r.setIntegrator(ti);
+    r.setIntegrator(m, ti);
     return Flow::Next;
   }
 
