@@ -1,6 +1,7 @@
 #include "macro/MeshBinder.h"
 
 #include <array>
+#include <cstdio>
 #include <iomanip>
 #include <map>
 #include <ostream>
@@ -139,6 +140,39 @@ std::string nodeList(const std::vector<int>& nodes) {
   return s;
 }
 
+// Nodes below the ground line y0 at their coordinates plus u (null: none),
+// by more than 1e-3 of the mesh size (a node resting on the ground at its
+// penalty penetration W/k, far below that, starts at rest): they would be
+// thrown out of the ground by the penalty force. With u, only the nodes that
+// elements hold (a node a removal left is out of the model). The message
+// names them and the deepest; empty when there are none.
+std::string nodesInsideGround(const Model& model, double y0, const Eigen::VectorXd* u,
+                              const std::string& when) {
+  const double tol = 1e-3 * model.characteristicLength();
+  std::vector<char> held(static_cast<std::size_t>(model.numNodes()), u ? 0 : 1);
+  if (u)
+    for (const auto& el : model.elements())
+      if (el)
+        for (int n : el->nodes()) held[static_cast<std::size_t>(n)] = 1;
+  auto y = [&](int n) {
+    const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs + 1;
+    return model.coord(n).y() + (u && i < u->size() ? (*u)[i] : 0.0);
+  };
+  std::vector<int> below;
+  int deepest = -1;
+  for (int n = 0; n < model.numNodes(); ++n) {
+    if (!held[static_cast<std::size_t>(n)] || !model.hasCoord(n) || y(n) >= y0 - tol) continue;
+    below.push_back(n + 1);
+    if (deepest < 0 || y(n) < y(deepest)) deepest = n;
+  }
+  if (below.empty()) return {};
+  std::ostringstream msg;
+  msg << (below.size() == 1 ? "node " : "nodes ") << nodeList(below)
+      << (below.size() == 1 ? " lies" : " lie") << " inside the ground y0 = " << y0 << " " << when
+      << " (the deepest, node " << deepest + 1 << ", " << y0 - y(deepest) << " below it)";
+  return msg.str();
+}
+
 }  // namespace
 
 void MeshBinder::checkInitialMesh() {
@@ -148,25 +182,10 @@ void MeshBinder::checkInitialMesh() {
   };
 
   if (const auto& g = model.ground(); g && !ctx_.groundOrigin.blank()) {
-    // Nodes below y0 at t = 0 would be thrown out of the ground by the penalty
-    // force; a node resting on the ground at its penalty penetration (W/k, far
-    // below 1e-3 of the mesh size) is a deck that starts at rest.
-    const double tol = 1e-3 * model.characteristicLength();
-    std::vector<int> below;
-    int deepest = -1;
-    for (int n = 0; n < model.numNodes(); ++n) {
-      if (!model.hasCoord(n) || model.coord(n).y() >= g->y0 - tol) continue;
-      below.push_back(n + 1);
-      if (deepest < 0 || model.coord(n).y() < model.coord(deepest).y()) deepest = n;
-    }
-    if (!below.empty()) {
-      std::ostringstream msg;
-      msg << (below.size() == 1 ? "node " : "nodes ") << nodeList(below)
-          << (below.size() == 1 ? " lies" : " lie") << " inside the ground y0 = " << g->y0
-          << " at the start (the deepest, node " << deepest + 1 << ", "
-          << g->y0 - model.coord(deepest).y() << " below it)";
+    const std::string inside = nodesInsideGround(model, g->y0, nullptr, "at the start");
+    if (!inside.empty()) {
       const Record& r = ctx_.groundOrigin;
-      throw DeckError(r.fieldLoc(2), msg.str(), r.excerpt(r.fieldLoc(2)),
+      throw DeckError(r.fieldLoc(2), inside, r.excerpt(r.fieldLoc(2)),
                       "put the ground at or below the lowest node");
     }
   }
@@ -234,8 +253,25 @@ Model buildModel(const Problem& problem, Parameters& params, std::ostream* echo,
   return model;
 }
 
+void MeshBinder::checkGroundReentry(const std::optional<Ground>& before, const State* state) {
+  const Model& model = ctx_.model;
+  const auto& g = model.ground();
+  if (!g || ctx_.groundOrigin.blank()) return;
+  // The same ground or a lower one keeps the nodes that rest in it where they are.
+  const double tol = 1e-3 * model.characteristicLength();
+  if (before && g->y0 <= before->y0 + tol) return;
+  char when[64];
+  std::snprintf(when, sizeof when, "at the MESH re-entry (t = %.6e)", state ? state->t : 0.0);
+  const std::string inside = nodesInsideGround(model, g->y0, state ? &state->u : nullptr, when);
+  if (inside.empty()) return;
+  const Record& r = ctx_.groundOrigin;
+  throw AnalysisError(r.fieldLoc(2).str() + ": error: " + inside +
+                      "\n    put the ground at or below the lowest node");
+}
+
 void applyMesh(const std::vector<MeshItem>& items, Parameters& params, Model& model,
                std::ostream* echo, const Record* end, const State* state) {
+  const std::optional<Ground> ground = model.ground();
   MeshBinder binder(model, params, echo);
   binder.setState(state);
   binder.apply(items);
@@ -251,6 +287,7 @@ void applyMesh(const std::vector<MeshItem>& items, Parameters& params, Model& mo
     text = last.lineText();
   }
   binder.finish(where, text);
+  binder.checkGroundReentry(ground, state);
 }
 
 }  // namespace c2d
