@@ -157,7 +157,8 @@ std::vector<MeshCommandEntry> loadCommandTable() {
   t.push_back(
       {meshSpec("SITE",
                 "The zone xmin <= x <= xmax the debris must stay in: the debris CSV, "
-                "PLOT,DEBRis and the run's summary say whether it did. No data records.",
+                "PLOT,DEBRis and the run's summary say whether it did. No data records; one "
+                "SITE per mesh input.",
                 {text("", "empty"), expr("xmin", "left limit"), expr("xmax", "right limit")}),
        applySite});
   return t;

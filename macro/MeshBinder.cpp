@@ -1,8 +1,10 @@
 #include "macro/MeshBinder.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <ostream>
 #include <set>
@@ -189,6 +191,33 @@ void MeshBinder::checkInitialMesh() {
                       "put the ground at or below the lowest node");
     }
   }
+
+  // A contact penalty no step resolves: beyond 1/eps times the members' largest
+  // axial stiffness EA/L, their stiffness drowns in the round-off of the
+  // contact's in every tangent (static or dynamic: k + m/(beta dt^2) + EA/L),
+  // and the contact's period 2 pi sqrt(m/k) is below any step that resolves
+  // the members (penetrations and energies of round-off size, forces that
+  // overflow).
+  double stiffest = 0;
+  for (const auto& el : model.elements())
+    if (el)
+      if (const MaterialSet* m = model.material(el->materialNumber())) {
+        const auto n = el->nodes();
+        const double l = (model.coord(n[1]) - model.coord(n[0])).norm();
+        if (l > 0) stiffest = std::max(stiffest, m->EA() / l);
+      }
+  auto checkPenalty = [&](const Record& r, std::size_t field, double k) {
+    const double limit = stiffest / std::numeric_limits<double>::epsilon();
+    if (r.blank() || !(stiffest > 0) || k <= limit) return;
+    std::ostringstream msg;
+    msg << "the penalty k = " << k << " is " << k / stiffest
+        << " times the members' largest axial stiffness EA/L = " << stiffest
+        << ", more than double precision resolves (" << 1 / std::numeric_limits<double>::epsilon()
+        << "): no step resolves the contact and the members together";
+    warn(r, field, msg.str());
+  };
+  if (const auto& g = model.ground()) checkPenalty(ctx_.groundOrigin, 3, g->k);
+  if (const auto& c = model.memberContact()) checkPenalty(ctx_.membersOrigin, 2, c->k);
 
   if (model.gravity() != Vec2::Zero() && !ctx_.gravityOrigin.blank()) {
     std::set<int> without;

@@ -818,6 +818,7 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
       c.mu = optional(r, 5, 0.0, "the friction coefficient mu", "0 or absent: frictionless");
       c.restitution = restitution(r, 6);
       previousMembers = &r;
+      ctx.membersOrigin = r;
       ctx.topologyChanged = true;  // contact pairs enter or leave the sparsity pattern
       if (c.k == 0) {  // a study's switch: no member contact
         ctx.model.memberContact().reset();
@@ -1115,36 +1116,38 @@ std::vector<MeshCommandEntry> meshCommandTable() {
                         {}, "master slave", {expr("master", "node"), expr("slave", "node")}),
                applyJoints});
   t.push_back(
-      {meshSpec("CONTact",
-                "Penalty contact. GROUnd: rigid ground y = y0 for every node, penalty stiffness "
-                "k; alpha: dissipation of the contact force (absent: the integrator's); mu: "
-                "Coulomb friction, elastic-plastic: each node held by a horizontal spring of "
-                "stiffness k anchored where it last slid, sliding when the spring force reaches "
-                "mu N (N the normal force; no creep at rest); e: restitution of an impact "
-                "(below 1 the contact crushes: loading with k beyond the largest penetration q "
-                "since the node touched down, unloading and reloading with k/e^2 below it, so "
-                "that a node strikes with speed v and leaves with e v; the work k(p^2 - "
-                "q^2)(1 - e^2)/2 is dissipated). The run reports the deepest any node went "
-                "into the ground and warns when it is deeper than half its members' section "
-                "depth sqrt(3 I/A) (k too soft for the impact). "
-                "MEMBers,,k[,alpha[,r[,mu[,e]]]]: "
-                "contact of every node with every element it is not part of "
-                "(nor tied to by a joint), at the distance r_node + r_element with "
-                "r = sqrt(3 I/A), half the section depth (r: the radius of members whose "
-                "material has no A and I, default 1e-3 of the shortest element); mu and e: "
-                "the ground's friction (along the member) and crushing law, per pair; k = 0: "
-                "no member contact (a study's switch). Pairs already that close in the "
-                "reference configuration do not contact while the members between them hold; "
-                "a joint that ruptures sets them free, and pieces inside each other's contact "
-                "distance then start at zero force, their full distance returning as they "
-                "separate.",
-                {}, "GROUnd,,y0,k[,alpha[,mu[,e]]] and/or MEMBers,,k[,alpha[,r[,mu[,e]]]]",
-                {text("GROUnd", "contact type (or MEMBers)"), text("", "empty"),
-                 expr("y0", "ground level (MEMBers: k)"),
-                 expr("k", "penalty stiffness (MEMBers: alpha)"),
-                 expr("alpha", "dissipation (MEMBers: r)", "integrator's"),
-                 expr("mu", "friction coefficient", "0"),
-                 expr("e", "restitution of an impact", "1")}),
+      {meshSpec(
+           "CONTact",
+           "Penalty contact. GROUnd: rigid ground y = y0 for every node, penalty stiffness "
+           "k; alpha: dissipation of the contact force (absent: the integrator's); mu: "
+           "Coulomb friction, elastic-plastic: each node held by a horizontal spring of "
+           "stiffness k anchored where it last slid, sliding when the spring force reaches "
+           "mu N (N the normal force; no creep at rest); e: restitution of an impact "
+           "(below 1 the contact crushes: loading with k beyond the largest penetration q "
+           "since the node touched down, unloading and reloading with k/e^2 below it, so "
+           "that a node strikes with speed v and leaves with e v; the work k(p^2 - "
+           "q^2)(1 - e^2)/2 is dissipated). The run reports the deepest any node went "
+           "into the ground and warns when it is deeper than half its members' section "
+           "depth sqrt(3 I/A) (k too soft for the impact). "
+           "MEMBers,,k[,alpha[,r[,mu[,e]]]]: "
+           "contact of every node with every element it is not part of "
+           "(nor tied to by a joint), at the distance r_node + r_element with "
+           "r = sqrt(3 I/A), half the section depth (r: the radius of members whose "
+           "material has no A and I, default 1e-3 of the shortest element); mu and e: "
+           "the ground's friction (along the member) and crushing law, per pair; k = 0: "
+           "no member contact (a study's switch). Pairs already that close in the "
+           "reference configuration do not contact while the members between them hold; "
+           "a joint that ruptures sets them free, and pieces inside each other's contact "
+           "distance then start at zero force, their full distance returning as they "
+           "separate. One GROUnd per mesh input (a MESH re-entry may give another, not "
+           "above the nodes); a k beyond 1/eps = 4.5e15 times the members' largest "
+           "EA/L is warned: no step resolves the contact and the members together.",
+           {}, "GROUnd,,y0,k[,alpha[,mu[,e]]] and/or MEMBers,,k[,alpha[,r[,mu[,e]]]]",
+           {text("GROUnd", "contact type (or MEMBers)"), text("", "empty"),
+            expr("y0", "ground level (MEMBers: k)"),
+            expr("k", "penalty stiffness (MEMBers: alpha)"),
+            expr("alpha", "dissipation (MEMBers: r)", "integrator's"),
+            expr("mu", "friction coefficient", "0"), expr("e", "restitution of an impact", "1")}),
        applyContact});
   t.push_back({meshSpec("GRAVity",
                         "Self-weight of every element with a density: acceleration (gx, gy), "

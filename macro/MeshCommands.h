@@ -72,8 +72,9 @@ struct MeshContext {
   // outlive the context), for messages about nodes.
   std::vector<const Record*> coordOrigin;
   void setCoordOrigin(int n, const Record& r);
-  // The GROUnd record of CONTact, the GRAVity and SITE records, blank when not given.
-  Record groundOrigin, gravityOrigin, siteOrigin;
+  // The GROUnd and MEMBers records of CONTact, the GRAVity and SITE records,
+  // blank when not given.
+  Record groundOrigin, membersOrigin, gravityOrigin, siteOrigin;
   Warnings* warnings = nullptr;  // null: warnings are dropped
   // SHIFt: the origin of POLAr; the nodes POLAr converted (each only once, as FEAP).
   Vec2 polarOrigin = Vec2::Zero();

@@ -28,6 +28,7 @@
 #include "macro/RemovalLog.h"
 #include "macro/Report.h"
 #include "solvers/ConvergenceTest.h"
+#include "solvers/FiniteResults.h"
 #include "solvers/ProportionalLoad.h"
 #include "solvers/RestartFile.h"
 
@@ -290,6 +291,7 @@ void ProblemRun::safePoint() {
 Flow ProblemRun::execList(const std::vector<Macro>& list, bool topLevel) {
   for (const Macro& m : list) {
     safePoint();
+    current_ = &m;
     const Flow f = m.command->run(m, *this);
     // Outside any loop a converged iteration or a reached tmax has no loop to leave.
     if (f == Flow::Stop || (f == Flow::ExitLoop && !topLevel)) return f;
@@ -407,6 +409,15 @@ void ProblemRun::fail(const Macro& m, const std::string& what) const {
   const State& s = analysis_->state();
   throw AnalysisError(m.record.fieldLoc(0).str() + ": error: " + m.record.text(0) + " in step " +
                       std::to_string(s.step + 1) + " (t = " + fmt("%.6e", s.t) + "): " + what);
+}
+
+void ProblemRun::failAtCommit(const std::string& what) const {
+  const State& s = analysis_->state();
+  const std::string where =
+      current_ ? current_->record.fieldLoc(0).str() + ": error: " + current_->record.text(0)
+               : std::string("error:");
+  throw AnalysisError(where + " at the commit of step " + std::to_string(s.step) +
+                      " (t = " + fmt("%.6e", s.t) + "): " + what);
 }
 
 Flow ProblemRun::newtonIteration(const Macro& m, bool update, bool lineSearch, bool symmetric) {
@@ -964,6 +975,11 @@ void ProblemRun::restoreRestart(const Macro& m) {
 void ProblemRun::onCommit() {
   if (!model_.joints().empty()) syncSlaveNodes(model_, analysis_->state());
   const State& s = analysis_->state();
+  const Energy en = analysis_->energy();
+  if (const std::string bad =
+          nonFiniteResult(model_, s, analysis_->assembler().nodalResidual(), en);
+      !bad.empty())
+    failAtCommit("a result is not a finite number: " + bad);
   for (const auto& [e, h] : analysis_->hingeCarriers()) {
     if (hingeStep_[e] != 0) continue;
     const HingeInfo info = h->hinge();
@@ -993,7 +1009,6 @@ void ProblemRun::onCommit() {
   }
   dynamicSeen_ = dynamicSeen_ || analysis_->integrator().dynamic();
   {
-    const Energy en = analysis_->energy();
     const double scale = std::abs(en.kinetic) + std::abs(en.strain) + std::abs(en.contact) +
                          std::abs(en.external) + std::abs(en.dissipated);
     if (!energyStarted_) {

@@ -134,6 +134,8 @@ class ProblemRun {
   void safePoint();
   Flow retryWithCut(const Macro& loop, const std::string& why);
   [[noreturn]] void fail(const Macro& m, const std::string& what) const;
+  // At a commit: the command that made it (current_), the step and time.
+  [[noreturn]] void failAtCommit(const std::string& what) const;
   std::string historyText() const;
   // What to try after a failed Newton loop (the reason, whether it used the
   // line search, its iteration count when it ran out of iterations).
@@ -163,6 +165,7 @@ class ProblemRun {
   Parameters boundParams_;
   std::unique_ptr<Analysis> analysis_;
   std::vector<std::vector<Macro>> batches_;
+  const Macro* current_ = nullptr;  // the solution command running
   std::unique_ptr<TimeHistory> history_;
   std::unique_ptr<RunOutputs> outputs_;  // PLOT and PVIEw files
 
