@@ -7,12 +7,13 @@
 #include <set>
 #include <sstream>
 
-#include "macro/CurveOverlay.h"
 #include "core/AtomicFile.h"
+#include "macro/CurveOverlay.h"
 #include "macro/DeckParser.h"
+#include "macro/Interrupt.h"
 #include "macro/Limits.h"
 #include "macro/PlanTable.h"
-#include "macro/Interrupt.h"
+#include "macro/StaleOutputs.h"
 #include "macro/Sweep.h"
 
 namespace c2d {
@@ -424,6 +425,7 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
         options.outDir.empty() ? std::filesystem::path(".") : options.outDir;
     std::filesystem::create_directories(dir);
     const std::string partStem = shardStem(stem, options);
+    removeStaleOutputs(dir, partStem);  // an earlier failed or interrupted run's log
     log = std::make_unique<AtomicFile>(dir /
                                        (options.logName.empty() ? partStem + ".out" : options.logName));
     log->stream() << "  collapse2d  " << path << "\n";

@@ -27,6 +27,7 @@
 #include "macro/OutputCommands.h"
 #include "macro/RemovalLog.h"
 #include "macro/Report.h"
+#include "macro/StaleOutputs.h"
 #include "solvers/ConvergenceTest.h"
 #include "solvers/FiniteResults.h"
 #include "solvers/ProportionalLoad.h"
@@ -100,6 +101,7 @@ void ProblemRun::bind(bool echo) {
 
 void ProblemRun::run() {
   start_ = lastProgress_ = std::chrono::steady_clock::now();
+  removeStaleOutputs(options_.outDir, options_.stem);
   analysis_ = std::make_unique<Analysis>(model_);
   if (!analysis_->setLinearSolver(options_.solver))
     throw AnalysisError("unknown linear solver '" + options_.solver + "'");
