@@ -12,6 +12,7 @@
 #include "macro/DeckParser.h"
 #include "macro/Interrupt.h"
 #include "macro/Limits.h"
+#include "macro/ParameterNote.h"
 #include "macro/PlanTable.h"
 #include "macro/StaleOutputs.h"
 #include "macro/Sweep.h"
@@ -230,14 +231,18 @@ class Walker {
           sweep_.clear();
           for (const SweepVariable& v : sweep->variables) {
             const double x = v.values[i].eval(params);
-            params.set(toLower(v.name), x);
+            params.set(toLower(v.name), x, v.record.fieldLoc(0));
             sweep_.emplace_back(v.name, x);
           }
           walk(sweep->body, params);
           sweep_.clear();
         }
       } else {
-        runProblem(std::get<Problem>(item), params);
+        try {
+          runProblem(std::get<Problem>(item), params);
+        } catch (const DeckError& e) {
+          throw noteParameters(e, params);
+        }
       }
     }
   }
@@ -337,8 +342,9 @@ class Walker {
     for (const std::string& w : warnings) log_ << "  " << w << "\n";
     if (console_ && !options_.quiet && plans_.size() > 1)
       *console_ << "  " << ro.stem << ": " << runSummaryText(s) << "\n" << std::flush;
+    // Warnings go where the deck's warnings go (standard error), not with the summaries.
     if (console_)
-      for (const std::string& w : warnings) *console_ << ro.stem << ": " << w << "\n" << std::flush;
+      for (const std::string& w : warnings) std::cerr << ro.stem << ": " << w << "\n" << std::flush;
     overlay_.add(plan.label, p.title, run.outputs().curves(run.history()));
   }
 

@@ -137,7 +137,8 @@ std::vector<MeshCommandEntry> loadCommandTable() {
                 "by the proportional load), qL/2 to each end node, no nodal moments. MASS: the "
                 "load is a weight, |q|/|g| is also mass per length (lumped at the end nodes' "
                 "translations; needs GRAVity, which does not load it again). Loads add up; "
-                "checked when the mesh is complete.",
+                "checked when the mesh is complete. A QLOAd without MASS in a dynamic run is "
+                "warned (its weight acts without its mass).",
                 {}, "n1 n2 inc qx qy [MASS]",
                 {expr("n1", "first element"), expr("n2", "last element", "n1"),
                  expr("inc", "element step", "1"), expr("qx", "load per length, x"),

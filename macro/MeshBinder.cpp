@@ -108,7 +108,7 @@ void MeshBinder::apply(const std::vector<MeshItem>& items) {
     if (const auto* block = std::get_if<ParamBlock>(&item)) {
       for (const auto& a : block->assigns) {
         const double value = a.value.eval(ctx_.params);
-        ctx_.params.set(a.name, value);
+        ctx_.params.set(a.name, value, a.record.fieldLoc(0));
         if (auto* os = ctx_.out())
           *os << "      Parameter " << a.name << " = " << std::setprecision(10) << value << "\n";
       }

@@ -21,6 +21,7 @@
 #include "macro/DeckParser.h"
 #include "macro/DeckReader.h"
 #include "macro/Interrupt.h"
+#include "macro/MasslessLoads.h"
 #include "macro/MeshBinder.h"
 #include "macro/MeshCommands.h"
 #include "macro/NumberRanges.h"
@@ -78,6 +79,7 @@ void ProblemRun::bind(bool echo) {
   for (const BatchBlock& b : problem_.batches)
     batches_.push_back(bindBatch(b.commands, b.data, table_, boundParams_, &facts));
   checkPlotColumns(batches_, boundParams_);
+  warnMasslessFloorLoads(problem_, batches_, options_.warnings);
   // A table that no PROP defines would silently stay at 1 (a restart file brings its own).
   for (const auto& [table, ref] : mesh.loadTables)
     if (!facts.restart && !facts.loadTables.count(table)) {
