@@ -1347,7 +1347,7 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
 
   const int expected = ctx.maxElements > 0 ? ctx.maxElements : model.numElements();
   for (int e = 0; e < expected; ++e)
-    if (e >= model.numElements() || !model.elements()[e])
+    if (e >= model.numElements() || (!model.elements()[e] && e >= ctx.elementsBefore))
       throw DeckError(
           where,
           "element " + std::to_string(e + 1) + " is not defined" +

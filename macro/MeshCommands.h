@@ -35,11 +35,16 @@ CommandSpec meshSpec(std::string name, std::string doc, std::vector<FieldSpec> f
 // for the parts FEAP applies at the end of the mesh input (elements, edge and
 // coordinate commands, joints).
 struct MeshContext {
-  MeshContext(Model& m, Parameters& p, std::ostream* e) : model(m), params(p), echo(e) {}
+  MeshContext(Model& m, Parameters& p, std::ostream* e)
+      : model(m), params(p), echo(e), elementsBefore(m.numElements()) {}
 
   Model& model;
   Parameters& params;
   std::ostream* echo;  // mesh echo, null for none
+  // The element slots the model had before this mesh input (a MESH re-entry):
+  // the mesh input that made them had no gaps, so an empty one was removed
+  // (BLASt, REMOve) and stays empty.
+  int elementsBefore = 0;
   bool print = true;   // PRINt / NOPRint
 
   // Limits from the control record; 0: count them (the model grows as needed).

@@ -276,6 +276,22 @@ TEST(MemberRemoval, ABlastOfElementsRemovedBeforeIsWarned) {
   EXPECT_EQ(r.log.find("blast  at t"), std::string::npos) << r.log;
 }
 
+TEST(MemberRemoval, AMeshReentryAfterARemovalKeepsTheEmptySlots) {
+  // The column removed, then MESH gives a load again: the removed element's
+  // slot stays empty (it was refused as "element 11 is not defined ...
+  // element numbers must run from 1 without gaps").
+  DeckTempDir dir;
+  const std::string batch =
+      "  DT,,1\n  TIME\n  LOOP,,3\n    TANG,,1\n  NEXT\n"
+      "  REMOve,ELEMents,11\n  MESH\n  TIME\n  LOOP,,3\n    TANG,,1\n"
+      "  NEXT\n";
+  // The re-entry's records follow the BATCh END (frame's last argument).
+  const auto r =
+      runDeckText(dir, "reentry.inp", frame(kColumn, batch, "FORCe\n  8 0 0 -2*W 0\n\nEND\n"));
+  ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
+  EXPECT_NE(r.log.find("MESH   re-entered"), std::string::npos) << r.log;
+}
+
 TEST(MemberRemoval, RemovingEveryElementIsAnAnalysisError) {
   // Nothing would be left to compute (the linear solver's symbolic analysis
   // of an empty matrix failed instead).
