@@ -194,10 +194,11 @@ void MeshBinder::checkInitialMesh() {
 
   // A contact penalty no step resolves: beyond 1/eps times the members' largest
   // axial stiffness EA/L, their stiffness drowns in the round-off of the
-  // contact's in every tangent (static or dynamic: k + m/(beta dt^2) + EA/L),
-  // and the contact's period 2 pi sqrt(m/k) is below any step that resolves
-  // the members (penetrations and energies of round-off size, forces that
-  // overflow).
+  // contact's in every tangent, static or dynamic (k + m/(beta dt^2) + EA/L:
+  // a step short enough for the contact's period 2 pi sqrt(m/k), which is
+  // then sqrt(eps) of the members', makes the inertia term drown it too). The
+  // penetrations are of round-off size and the contact's forces and energies
+  // overflow.
   double stiffest = 0;
   for (const auto& el : model.elements())
     if (el)
