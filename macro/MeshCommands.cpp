@@ -204,7 +204,7 @@ void applyElements(MeshContext& ctx, const MeshCommand& cmd) {
       ctx.elements[k] = g;
       given.push_back(k);
     }
-    prev = {mat, {n1, n2}, r, false};
+    prev = {mat, {n1, n2}, &r, false};
     prevRec = &r;
     ctx.elements[e] = prev;
     given.push_back(e);
@@ -750,7 +750,7 @@ void applyBlock(MeshContext& ctx, const MeshCommand& cmd) {
                        master[0] + (master[1] - master[0]) * (static_cast<double>(i) / nr));
     ctx.setCoordOrigin(ni + i, t);
   }
-  for (int e = 0; e < nr; ++e) ctx.elements[ne + e] = {ma, {ni + e, ni + e + 1}, t, true};
+  for (int e = 0; e < nr; ++e) ctx.elements[ne + e] = {ma, {ni + e, ni + e + 1}, &t, true};
 
   ctx.highestNode = std::max(ctx.highestNode, lastNode);
   ctx.highestElement = std::max(ctx.highestElement, lastElem);
@@ -1262,7 +1262,7 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
   Model& model = ctx.model;
 
   for (const auto& [num, pe] : ctx.elements) {
-    const Record& r = pe.origin;
+    const Record& r = *pe.origin;
     const std::string what =
         "element " + std::to_string(num) + (pe.generated ? " (generated from this record)" : "");
     const std::size_t matField = r.is("CARTesian") ? 5 : 2;
