@@ -4,6 +4,8 @@
 #include <iomanip>
 #include <ostream>
 
+#include "macro/NumberRanges.h"
+
 namespace c2d {
 
 using namespace meshspec;
@@ -36,8 +38,8 @@ void applyBlasts(MeshContext& ctx, const MeshCommand& cmd) {
       Blast b;
       b.time = t;
       b.release = td;
-      for (long long e = n1; e <= n2; e += inc) {
-        if (e > c.model.numElements() || !c.model.hasElement(static_cast<int>(e - 1)))
+      for (int e : steppedRange(n1, n2, inc)) {
+        if (e > c.model.numElements() || !c.model.hasElement(e - 1))
           failAt(r, e == n1 ? 1 : 2, "BLASt: element " + std::to_string(e) + " is not defined");
         for (const Blast& other : c.model.blasts())
           for (int o : other.elements)
@@ -45,7 +47,7 @@ void applyBlasts(MeshContext& ctx, const MeshCommand& cmd) {
               failAt(r, e == n1 ? 1 : 2,
                      "BLASt: element " + std::to_string(e) + " is already removed by an earlier "
                      "record (at t = " + std::to_string(other.time) + ")");
-        b.elements.push_back(static_cast<int>(e - 1));
+        b.elements.push_back(e - 1);
       }
       if (auto* os = c.out()) {
         *os << "      BLASt  t = " << std::setw(13) << std::scientific << std::setprecision(4) << t

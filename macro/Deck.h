@@ -31,7 +31,7 @@ struct ParamBlock {
 
   // Evaluates the assignments in order (a later one may use an earlier one).
   void apply(Parameters& params) const {
-    for (const auto& a : assigns) params.set(a.name, a.value.eval(params));
+    for (const auto& a : assigns) params.set(a.name, a.value.eval(params), a.record.fieldLoc(0));
   }
 };
 

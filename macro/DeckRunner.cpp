@@ -7,12 +7,14 @@
 #include <set>
 #include <sstream>
 
-#include "macro/CurveOverlay.h"
 #include "core/AtomicFile.h"
+#include "macro/CurveOverlay.h"
 #include "macro/DeckParser.h"
-#include "macro/Limits.h"
-#include "macro/PlanTable.h"
 #include "macro/Interrupt.h"
+#include "macro/Limits.h"
+#include "macro/ParameterNote.h"
+#include "macro/PlanTable.h"
+#include "macro/StaleOutputs.h"
 #include "macro/Sweep.h"
 
 namespace c2d {
@@ -178,10 +180,10 @@ std::vector<std::string> runWarnings(const RunSummary& s) {
   }
   if (s.blastsNotMade > 0) {
     std::snprintf(buf, sizeof buf,
-                  "warning: %d blast%s of the BLASt plan did not happen: the run ended before "
-                  "%s time (listed in the log)",
+                  "warning: %d blast%s of the BLASt plan did not happen (listed in the log): "
+                  "the run ended before %s time, or %s elements were removed before",
                   s.blastsNotMade, s.blastsNotMade == 1 ? "" : "s",
-                  s.blastsNotMade == 1 ? "its" : "their");
+                  s.blastsNotMade == 1 ? "its" : "their", s.blastsNotMade == 1 ? "its" : "their");
     out.push_back(buf);
   }
   return out;
@@ -229,14 +231,18 @@ class Walker {
           sweep_.clear();
           for (const SweepVariable& v : sweep->variables) {
             const double x = v.values[i].eval(params);
-            params.set(toLower(v.name), x);
+            params.set(toLower(v.name), x, v.record.fieldLoc(0));
             sweep_.emplace_back(v.name, x);
           }
           walk(sweep->body, params);
           sweep_.clear();
         }
       } else {
-        runProblem(std::get<Problem>(item), params);
+        try {
+          runProblem(std::get<Problem>(item), params);
+        } catch (const DeckError& e) {
+          throw noteParameters(e, params);
+        }
       }
     }
   }
@@ -336,8 +342,9 @@ class Walker {
     for (const std::string& w : warnings) log_ << "  " << w << "\n";
     if (console_ && !options_.quiet && plans_.size() > 1)
       *console_ << "  " << ro.stem << ": " << runSummaryText(s) << "\n" << std::flush;
+    // Warnings go where the deck's warnings go (standard error), not with the summaries.
     if (console_)
-      for (const std::string& w : warnings) *console_ << ro.stem << ": " << w << "\n" << std::flush;
+      for (const std::string& w : warnings) std::cerr << ro.stem << ": " << w << "\n" << std::flush;
     overlay_.add(plan.label, p.title, run.outputs().curves(run.history()));
   }
 
@@ -424,6 +431,7 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
         options.outDir.empty() ? std::filesystem::path(".") : options.outDir;
     std::filesystem::create_directories(dir);
     const std::string partStem = shardStem(stem, options);
+    removeStaleOutputs(dir, partStem);  // an earlier failed or interrupted run's log
     log = std::make_unique<AtomicFile>(dir /
                                        (options.logName.empty() ? partStem + ".out" : options.logName));
     log->stream() << "  collapse2d  " << path << "\n";

@@ -8,6 +8,7 @@
 
 #include "macro/Expression.h"
 #include "macro/MeshCommands.h"
+#include "macro/NumberRanges.h"
 
 namespace c2d {
 
@@ -46,7 +47,7 @@ void applyElementLoads(MeshContext& ctx, const MeshCommand& cmd) {
       if (asMass && c.model.gravity().norm() == 0)
         failAt(r, 5, "QLOAd with MASS needs GRAVity: the mass is |q|/|g|",
                "give GRAVity,,gx,gy in the mesh input");
-      for (int e = n1; e <= n2; e += inc) {
+      for (int e : steppedRange(n1, n2, inc)) {
         if (e > c.model.numElements() || !c.model.elements()[e - 1])
           failAt(r, e == n1 ? 0 : 1, "QLOAd: element " + std::to_string(e) + " is not defined");
         c.model.elementLoads().push_back(ElementLoad{e - 1, q, asMass});
@@ -84,13 +85,7 @@ void applyNodalMasses(MeshContext& ctx, const MeshCommand& cmd) {
     if (l > 0)
       for (int i = 0; i < kNodeDofs; ++i) vl[i] = ctx.model.nodalMass(l - 1)[i];
     set(n, v);
-    if (lg != 0 && l != 0) {
-      const int step = (n - l < 0 ? -1 : 1) * std::abs(lg);
-      const int count = (std::abs(n - l + step) - 1) / std::abs(step);
-      int j = 1;
-      for (int k = l + step; (n - k) * step > 0; k += step, ++j)
-        set(k, vl + (v - vl) * (static_cast<double>(j) / count));
-    }
+    generateBetween(l, lg, n, vl, v, [&](int k, const V3& x) { set(k, x); });
     ctx.referencedNodes.emplace(n, r);
     l = n;
     lg = ng;
@@ -116,6 +111,12 @@ void applySite(MeshContext& ctx, const MeshCommand& cmd) {
     failAt(h, h.size() < 4 ? h.size() : 3, "SITE needs xmin and xmax", "write SITE,,xmin,xmax");
   const Site s{ctx.number(h, 2), ctx.number(h, 3)};
   if (!(s.xmax > s.xmin)) failAt(h, 3, "xmax must be greater than xmin");
+  // One site per mesh input (a MESH re-entry may give a new one).
+  if (!ctx.siteOrigin.blank())
+    failAt(h, 0,
+           "a second SITE (the first is on line " + std::to_string(ctx.siteOrigin.loc.line) + ")",
+           "give one SITE,,xmin,xmax");
+  ctx.siteOrigin = h;
   ctx.model.site() = s;
   if (auto* os = ctx.out()) {
     title(*os, "S i t e");
@@ -136,7 +137,8 @@ std::vector<MeshCommandEntry> loadCommandTable() {
                 "by the proportional load), qL/2 to each end node, no nodal moments. MASS: the "
                 "load is a weight, |q|/|g| is also mass per length (lumped at the end nodes' "
                 "translations; needs GRAVity, which does not load it again). Loads add up; "
-                "checked when the mesh is complete.",
+                "checked when the mesh is complete. A QLOAd without MASS in a dynamic run is "
+                "warned (its weight acts without its mass).",
                 {}, "n1 n2 inc qx qy [MASS]",
                 {expr("n1", "first element"), expr("n2", "last element", "n1"),
                  expr("inc", "element step", "1"), expr("qx", "load per length, x"),
@@ -156,7 +158,8 @@ std::vector<MeshCommandEntry> loadCommandTable() {
   t.push_back(
       {meshSpec("SITE",
                 "The zone xmin <= x <= xmax the debris must stay in: the debris CSV, "
-                "PLOT,DEBRis and the run's summary say whether it did. No data records.",
+                "PLOT,DEBRis and the run's summary say whether it did. No data records; one "
+                "SITE per mesh input.",
                 {text("", "empty"), expr("xmin", "left limit"), expr("xmax", "right limit")}),
        applySite});
   return t;

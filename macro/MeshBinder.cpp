@@ -1,7 +1,10 @@
 #include "macro/MeshBinder.h"
 
+#include <algorithm>
 #include <array>
+#include <cstdio>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <ostream>
 #include <set>
@@ -105,7 +108,7 @@ void MeshBinder::apply(const std::vector<MeshItem>& items) {
     if (const auto* block = std::get_if<ParamBlock>(&item)) {
       for (const auto& a : block->assigns) {
         const double value = a.value.eval(ctx_.params);
-        ctx_.params.set(a.name, value);
+        ctx_.params.set(a.name, value, a.record.fieldLoc(0));
         if (auto* os = ctx_.out())
           *os << "      Parameter " << a.name << " = " << std::setprecision(10) << value << "\n";
       }
@@ -139,6 +142,39 @@ std::string nodeList(const std::vector<int>& nodes) {
   return s;
 }
 
+// Nodes below the ground line y0 at their coordinates plus u (null: none),
+// by more than 1e-3 of the mesh size (a node resting on the ground at its
+// penalty penetration W/k, far below that, starts at rest): they would be
+// thrown out of the ground by the penalty force. With u, only the nodes that
+// elements hold (a node a removal left is out of the model). The message
+// names them and the deepest; empty when there are none.
+std::string nodesInsideGround(const Model& model, double y0, const Eigen::VectorXd* u,
+                              const std::string& when) {
+  const double tol = 1e-3 * model.characteristicLength();
+  std::vector<char> held(static_cast<std::size_t>(model.numNodes()), u ? 0 : 1);
+  if (u)
+    for (const auto& el : model.elements())
+      if (el)
+        for (int n : el->nodes()) held[static_cast<std::size_t>(n)] = 1;
+  auto y = [&](int n) {
+    const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs + 1;
+    return model.coord(n).y() + (u && i < u->size() ? (*u)[i] : 0.0);
+  };
+  std::vector<int> below;
+  int deepest = -1;
+  for (int n = 0; n < model.numNodes(); ++n) {
+    if (!held[static_cast<std::size_t>(n)] || !model.hasCoord(n) || y(n) >= y0 - tol) continue;
+    below.push_back(n + 1);
+    if (deepest < 0 || y(n) < y(deepest)) deepest = n;
+  }
+  if (below.empty()) return {};
+  std::ostringstream msg;
+  msg << (below.size() == 1 ? "node " : "nodes ") << nodeList(below)
+      << (below.size() == 1 ? " lies" : " lie") << " inside the ground y0 = " << y0 << " " << when
+      << " (the deepest, node " << deepest + 1 << ", " << y0 - y(deepest) << " below it)";
+  return msg.str();
+}
+
 }  // namespace
 
 void MeshBinder::checkInitialMesh() {
@@ -148,28 +184,41 @@ void MeshBinder::checkInitialMesh() {
   };
 
   if (const auto& g = model.ground(); g && !ctx_.groundOrigin.blank()) {
-    // Nodes below y0 at t = 0 would be thrown out of the ground by the penalty
-    // force; a node resting on the ground at its penalty penetration (W/k, far
-    // below 1e-3 of the mesh size) is a deck that starts at rest.
-    const double tol = 1e-3 * model.characteristicLength();
-    std::vector<int> below;
-    int deepest = -1;
-    for (int n = 0; n < model.numNodes(); ++n) {
-      if (!model.hasCoord(n) || model.coord(n).y() >= g->y0 - tol) continue;
-      below.push_back(n + 1);
-      if (deepest < 0 || model.coord(n).y() < model.coord(deepest).y()) deepest = n;
-    }
-    if (!below.empty()) {
-      std::ostringstream msg;
-      msg << (below.size() == 1 ? "node " : "nodes ") << nodeList(below)
-          << (below.size() == 1 ? " lies" : " lie") << " inside the ground y0 = " << g->y0
-          << " at the start (the deepest, node " << deepest + 1 << ", "
-          << g->y0 - model.coord(deepest).y() << " below it)";
+    const std::string inside = nodesInsideGround(model, g->y0, nullptr, "at the start");
+    if (!inside.empty()) {
       const Record& r = ctx_.groundOrigin;
-      throw DeckError(r.fieldLoc(2), msg.str(), r.excerpt(r.fieldLoc(2)),
+      throw DeckError(r.fieldLoc(2), inside, r.excerpt(r.fieldLoc(2)),
                       "put the ground at or below the lowest node");
     }
   }
+
+  // A contact penalty no step resolves: beyond 1/eps times the members' largest
+  // axial stiffness EA/L, their stiffness drowns in the round-off of the
+  // contact's in every tangent, static or dynamic (k + m/(beta dt^2) + EA/L:
+  // a step short enough for the contact's period 2 pi sqrt(m/k), which is
+  // then sqrt(eps) of the members', makes the inertia term drown it too). The
+  // penetrations are of round-off size and the contact's forces and energies
+  // overflow.
+  double stiffest = 0;
+  for (const auto& el : model.elements())
+    if (el)
+      if (const MaterialSet* m = model.material(el->materialNumber())) {
+        const auto n = el->nodes();
+        const double l = (model.coord(n[1]) - model.coord(n[0])).norm();
+        if (l > 0) stiffest = std::max(stiffest, m->EA() / l);
+      }
+  auto checkPenalty = [&](const Record& r, std::size_t field, double k) {
+    const double limit = stiffest / std::numeric_limits<double>::epsilon();
+    if (r.blank() || !(stiffest > 0) || k <= limit) return;
+    std::ostringstream msg;
+    msg << "the penalty k = " << k << " is " << k / stiffest
+        << " times the members' largest axial stiffness EA/L = " << stiffest
+        << ", more than double precision resolves (" << 1 / std::numeric_limits<double>::epsilon()
+        << "): no step resolves the contact and the members together";
+    warn(r, field, msg.str());
+  };
+  if (const auto& g = model.ground()) checkPenalty(ctx_.groundOrigin, 3, g->k);
+  if (const auto& c = model.memberContact()) checkPenalty(ctx_.membersOrigin, 2, c->k);
 
   if (model.gravity() != Vec2::Zero() && !ctx_.gravityOrigin.blank()) {
     std::set<int> without;
@@ -234,8 +283,25 @@ Model buildModel(const Problem& problem, Parameters& params, std::ostream* echo,
   return model;
 }
 
+void MeshBinder::checkGroundReentry(const std::optional<Ground>& before, const State* state) {
+  const Model& model = ctx_.model;
+  const auto& g = model.ground();
+  if (!g || ctx_.groundOrigin.blank()) return;
+  // The same ground or a lower one keeps the nodes that rest in it where they are.
+  const double tol = 1e-3 * model.characteristicLength();
+  if (before && g->y0 <= before->y0 + tol) return;
+  char when[64];
+  std::snprintf(when, sizeof when, "at the MESH re-entry (t = %.6e)", state ? state->t : 0.0);
+  const std::string inside = nodesInsideGround(model, g->y0, state ? &state->u : nullptr, when);
+  if (inside.empty()) return;
+  const Record& r = ctx_.groundOrigin;
+  throw AnalysisError(r.fieldLoc(2).str() + ": error: " + inside +
+                      "\n    put the ground at or below the lowest node");
+}
+
 void applyMesh(const std::vector<MeshItem>& items, Parameters& params, Model& model,
                std::ostream* echo, const Record* end, const State* state) {
+  const std::optional<Ground> ground = model.ground();
   MeshBinder binder(model, params, echo);
   binder.setState(state);
   binder.apply(items);
@@ -251,6 +317,7 @@ void applyMesh(const std::vector<MeshItem>& items, Parameters& params, Model& mo
     text = last.lineText();
   }
   binder.finish(where, text);
+  binder.checkGroundReentry(ground, state);
 }
 
 }  // namespace c2d

@@ -6,6 +6,7 @@
 #include <array>
 #include <iosfwd>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -52,6 +53,11 @@ class MeshBinder {
   // gravity only with densities (an error when no element has one, a warning for
   // the material sets without), a warning for nodes that no element uses.
   void checkInitialMesh();
+  // Checks of a MESH re-entry that gave a GROUnd (before: the ground the model
+  // had): a ground raised into the structure at its positions now (state; null:
+  // at its coordinates) is refused, an AnalysisError at the GROUnd record, as in
+  // the mesh input.
+  void checkGroundReentry(const std::optional<Ground>& before, const State* state);
   const std::map<int, std::pair<Record, std::size_t>>& loadTableRefs() const {
     return ctx_.tableRefs;
   }

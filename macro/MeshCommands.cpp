@@ -16,6 +16,7 @@
 #include "macro/Limits.h"
 #include "macro/BlastCommand.h"
 #include "macro/LoadCommands.h"
+#include "macro/NumberRanges.h"
 
 namespace c2d {
 
@@ -137,27 +138,6 @@ Mode readMode(const Record& head, Mode dflt) {
 // COORdinates: node ng x y. ng on the earlier of two records generates the nodes
 // between them (n1, n1+ng, ...) by linear interpolation (FEAP genvec).
 
-// The numbers l+s, l+2s, ... strictly between l and n, s = sign(n - l) |ng|
-// (none when l or ng is 0): FEAP's generation between two records, used by
-// every generating command. 64-bit arithmetic, so that an increment near 2^31
-// generates nothing instead of overflowing.
-std::vector<int> generatedBetween(int l, int n, int ng) {
-  std::vector<int> out;
-  if (l == 0 || ng == 0) return out;
-  const long long step = (n >= l ? 1 : -1) * std::llabs(static_cast<long long>(ng));
-  for (long long k = l + step; step > 0 ? k < n : k > n; k += step)
-    out.push_back(static_cast<int>(k));
-  return out;
-}
-
-template <class Assign, class Value>
-void generateBetween(int l, int lg, int n, const Value& xl, const Value& xn, Assign assign) {
-  const std::vector<int> ks = generatedBetween(l, n, lg);
-  const double count = static_cast<double>(ks.size() + 1);
-  for (std::size_t j = 0; j < ks.size(); ++j)
-    assign(ks[j], xl + (xn - xl) * (static_cast<double>(j + 1) / count));
-}
-
 void applyCoordinates(MeshContext& ctx, const MeshCommand& cmd) {
   std::set<int> touched;
   int l = 0, lg = 0;
@@ -224,7 +204,7 @@ void applyElements(MeshContext& ctx, const MeshCommand& cmd) {
       ctx.elements[k] = g;
       given.push_back(k);
     }
-    prev = {mat, {n1, n2}, r, false};
+    prev = {mat, {n1, n2}, &r, false};
     prevRec = &r;
     ctx.elements[e] = prev;
     given.push_back(e);
@@ -770,7 +750,7 @@ void applyBlock(MeshContext& ctx, const MeshCommand& cmd) {
                        master[0] + (master[1] - master[0]) * (static_cast<double>(i) / nr));
     ctx.setCoordOrigin(ni + i, t);
   }
-  for (int e = 0; e < nr; ++e) ctx.elements[ne + e] = {ma, {ni + e, ni + e + 1}, t, true};
+  for (int e = 0; e < nr; ++e) ctx.elements[ne + e] = {ma, {ni + e, ni + e + 1}, &t, true};
 
   ctx.highestNode = std::max(ctx.highestNode, lastNode);
   ctx.highestElement = std::max(ctx.highestElement, lastElem);
@@ -838,6 +818,7 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
       c.mu = optional(r, 5, 0.0, "the friction coefficient mu", "0 or absent: frictionless");
       c.restitution = restitution(r, 6);
       previousMembers = &r;
+      ctx.membersOrigin = r;
       ctx.topologyChanged = true;  // contact pairs enter or leave the sparsity pattern
       if (c.k == 0) {  // a study's switch: no member contact
         ctx.model.memberContact().reset();
@@ -872,10 +853,12 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
       std::string hint = "the records are 'GROUnd,,y0,k[,alpha[,mu[,e]]]' and 'MEMBers,,k[,alpha[,r[,mu[,e]]]]'";
       failAt(r, 0, "unknown contact type '" + r.text(0) + "'", hint);
     }
-    if (previous)
+    // One ground per mesh input, in one CONTact command or several (a MESH
+    // re-entry may give a new one).
+    if (!ctx.groundOrigin.blank())
       failAt(r, 0,
-             "a second GROUnd record (the first is on line " + std::to_string(previous->loc.line) +
-                 ")");
+             "a second GROUnd record (the first is on line " +
+                 std::to_string(ctx.groundOrigin.loc.line) + ")");
     ctx.maxFields(r, 7, "GROUnd,,y0,k[,alpha[,mu[,e]]]");
     if (!r.text(1).empty())
       failAt(r, 1, "GROUnd takes no option word (its second field is empty)",
@@ -1133,36 +1116,38 @@ std::vector<MeshCommandEntry> meshCommandTable() {
                         {}, "master slave", {expr("master", "node"), expr("slave", "node")}),
                applyJoints});
   t.push_back(
-      {meshSpec("CONTact",
-                "Penalty contact. GROUnd: rigid ground y = y0 for every node, penalty stiffness "
-                "k; alpha: dissipation of the contact force (absent: the integrator's); mu: "
-                "Coulomb friction, elastic-plastic: each node held by a horizontal spring of "
-                "stiffness k anchored where it last slid, sliding when the spring force reaches "
-                "mu N (N the normal force; no creep at rest); e: restitution of an impact "
-                "(below 1 the contact crushes: loading with k beyond the largest penetration q "
-                "since the node touched down, unloading and reloading with k/e^2 below it, so "
-                "that a node strikes with speed v and leaves with e v; the work k(p^2 - "
-                "q^2)(1 - e^2)/2 is dissipated). The run reports the deepest any node went "
-                "into the ground and warns when it is deeper than half its members' section "
-                "depth sqrt(3 I/A) (k too soft for the impact). "
-                "MEMBers,,k[,alpha[,r[,mu[,e]]]]: "
-                "contact of every node with every element it is not part of "
-                "(nor tied to by a joint), at the distance r_node + r_element with "
-                "r = sqrt(3 I/A), half the section depth (r: the radius of members whose "
-                "material has no A and I, default 1e-3 of the shortest element); mu and e: "
-                "the ground's friction (along the member) and crushing law, per pair; k = 0: "
-                "no member contact (a study's switch). Pairs already that close in the "
-                "reference configuration do not contact while the members between them hold; "
-                "a joint that ruptures sets them free, and pieces inside each other's contact "
-                "distance then start at zero force, their full distance returning as they "
-                "separate.",
-                {}, "GROUnd,,y0,k[,alpha[,mu[,e]]] and/or MEMBers,,k[,alpha[,r[,mu[,e]]]]",
-                {text("GROUnd", "contact type (or MEMBers)"), text("", "empty"),
-                 expr("y0", "ground level (MEMBers: k)"),
-                 expr("k", "penalty stiffness (MEMBers: alpha)"),
-                 expr("alpha", "dissipation (MEMBers: r)", "integrator's"),
-                 expr("mu", "friction coefficient", "0"),
-                 expr("e", "restitution of an impact", "1")}),
+      {meshSpec(
+           "CONTact",
+           "Penalty contact. GROUnd: rigid ground y = y0 for every node, penalty stiffness "
+           "k; alpha: dissipation of the contact force (absent: the integrator's); mu: "
+           "Coulomb friction, elastic-plastic: each node held by a horizontal spring of "
+           "stiffness k anchored where it last slid, sliding when the spring force reaches "
+           "mu N (N the normal force; no creep at rest); e: restitution of an impact "
+           "(below 1 the contact crushes: loading with k beyond the largest penetration q "
+           "since the node touched down, unloading and reloading with k/e^2 below it, so "
+           "that a node strikes with speed v and leaves with e v; the work k(p^2 - "
+           "q^2)(1 - e^2)/2 is dissipated). The run reports the deepest any node went "
+           "into the ground and warns when it is deeper than half its members' section "
+           "depth sqrt(3 I/A) (k too soft for the impact). "
+           "MEMBers,,k[,alpha[,r[,mu[,e]]]]: "
+           "contact of every node with every element it is not part of "
+           "(nor tied to by a joint), at the distance r_node + r_element with "
+           "r = sqrt(3 I/A), half the section depth (r: the radius of members whose "
+           "material has no A and I, default 1e-3 of the shortest element); mu and e: "
+           "the ground's friction (along the member) and crushing law, per pair; k = 0: "
+           "no member contact (a study's switch). Pairs already that close in the "
+           "reference configuration do not contact while the members between them hold; "
+           "a joint that ruptures sets them free, and pieces inside each other's contact "
+           "distance then start at zero force, their full distance returning as they "
+           "separate. One GROUnd per mesh input (a MESH re-entry may give another, not "
+           "above the nodes); a k beyond 1/eps = 4.5e15 times the members' largest "
+           "EA/L is warned: no step resolves the contact and the members together.",
+           {}, "GROUnd,,y0,k[,alpha[,mu[,e]]] and/or MEMBers,,k[,alpha[,r[,mu[,e]]]]",
+           {text("GROUnd", "contact type (or MEMBers)"), text("", "empty"),
+            expr("y0", "ground level (MEMBers: k)"),
+            expr("k", "penalty stiffness (MEMBers: alpha)"),
+            expr("alpha", "dissipation (MEMBers: r)", "integrator's"),
+            expr("mu", "friction coefficient", "0"), expr("e", "restitution of an impact", "1")}),
        applyContact});
   t.push_back({meshSpec("GRAVity",
                         "Self-weight of every element with a density: acceleration (gx, gy), "
@@ -1277,7 +1262,7 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
   Model& model = ctx.model;
 
   for (const auto& [num, pe] : ctx.elements) {
-    const Record& r = pe.origin;
+    const Record& r = *pe.origin;
     const std::string what =
         "element " + std::to_string(num) + (pe.generated ? " (generated from this record)" : "");
     const std::size_t matField = r.is("CARTesian") ? 5 : 2;
@@ -1362,7 +1347,7 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
 
   const int expected = ctx.maxElements > 0 ? ctx.maxElements : model.numElements();
   for (int e = 0; e < expected; ++e)
-    if (e >= model.numElements() || !model.elements()[e])
+    if (e >= model.numElements() || (!model.elements()[e] && e >= ctx.elementsBefore))
       throw DeckError(
           where,
           "element " + std::to_string(e + 1) + " is not defined" +

@@ -7,7 +7,20 @@
 
 namespace c2d {
 
-void Parameters::set(std::string_view name, double value) { values_[toLower(name)] = value; }
+void Parameters::set(std::string_view name, double value, const SourceLoc& where) {
+  const std::string key = toLower(name);
+  values_[key] = value;
+  if (where.file.empty())
+    origins_.erase(key);
+  else
+    origins_[key] = where;
+}
+
+std::optional<SourceLoc> Parameters::origin(std::string_view name) const {
+  auto it = origins_.find(toLower(name));
+  if (it == origins_.end()) return std::nullopt;
+  return it->second;
+}
 
 bool Parameters::has(std::string_view name) const { return values_.count(toLower(name)) != 0; }
 

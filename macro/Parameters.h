@@ -1,31 +1,42 @@
 #pragma once
 // The parameter table of a run: case-insensitive names to values. PARAmeter
 // blocks fill it in deck order; expressions read it when they are evaluated.
+// Each name keeps where it was last set (the record of its assignment or
+// sweep), so that an error about a value a parameter gave can say where.
 #include <map>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "core/Error.h"
+
 namespace c2d {
 
 class Parameters {
  public:
-  void set(std::string_view name, double value);
+  // where: the assignment's location (none: an empty file name).
+  void set(std::string_view name, double value, const SourceLoc& where = {});
   bool has(std::string_view name) const;
   // The value of a defined name; std::out_of_range when it is not defined.
   double get(std::string_view name) const;
   std::optional<double> find(std::string_view name) const;
+  // Where a defined name was last set; nullopt when unknown or not defined.
+  std::optional<SourceLoc> origin(std::string_view name) const;
   // Defined names (lower case, sorted), e.g. for "did you mean" hints.
   std::vector<std::string> names() const;
   std::size_t size() const { return values_.size(); }
-  void clear() { values_.clear(); }
+  void clear() {
+    values_.clear();
+    origins_.clear();
+  }
 
   // A valid name: a letter or '_', then letters, digits or '_'.
   static bool validName(std::string_view name);
 
  private:
-  std::map<std::string, double> values_;  // keys in lower case
+  std::map<std::string, double> values_;      // keys in lower case
+  std::map<std::string, SourceLoc> origins_;  // of the names set with a location
 };
 
 }  // namespace c2d

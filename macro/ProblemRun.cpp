@@ -13,37 +13,29 @@
 
 #include "core/Checkpoint.h"
 #include "core/MemberCrossing.h"
-#include "elements/MemberFold.h"
+#include "core/SvgDebris.h"
 #include "elements/HingeToJoint.h"
 #include "elements/Joints.h"
+#include "elements/MemberFold.h"
 #include "macro/DeckParser.h"
 #include "macro/DeckReader.h"
 #include "macro/Interrupt.h"
+#include "macro/MasslessLoads.h"
 #include "macro/MeshBinder.h"
 #include "macro/MeshCommands.h"
+#include "macro/NumberRanges.h"
 #include "macro/OutputCommands.h"
+#include "macro/RemovalLog.h"
 #include "macro/Report.h"
+#include "macro/StaleOutputs.h"
 #include "solvers/ConvergenceTest.h"
+#include "solvers/FiniteResults.h"
 #include "solvers/ProportionalLoad.h"
 #include "solvers/RestartFile.h"
 
 namespace c2d {
 
 namespace {
-
-// 0-based numbers as the deck's, ranges of consecutive ones joined: "3, 5-7".
-std::string numberList(const std::vector<int>& numbers) {
-  std::string out;
-  for (std::size_t i = 0; i < numbers.size();) {
-    std::size_t j = i;
-    while (j + 1 < numbers.size() && numbers[j + 1] == numbers[j] + 1) ++j;
-    if (!out.empty()) out += ", ";
-    out += std::to_string(numbers[i] + 1);
-    if (j > i) out += (j == i + 1 ? ", " : "-") + std::to_string(numbers[j] + 1);
-    i = j + 1;
-  }
-  return out;
-}
 
 std::string fmt(const char* f, double v) {
   char buf[64];
@@ -86,6 +78,7 @@ void ProblemRun::bind(bool echo) {
   for (const BatchBlock& b : problem_.batches)
     batches_.push_back(bindBatch(b.commands, b.data, table_, boundParams_, &facts));
   checkPlotColumns(batches_, boundParams_);
+  warnMasslessFloorLoads(problem_, batches_, options_.warnings);
   // A table that no PROP defines would silently stay at 1 (a restart file brings its own).
   for (const auto& [table, ref] : mesh.loadTables)
     if (!facts.restart && !facts.loadTables.count(table)) {
@@ -109,6 +102,7 @@ void ProblemRun::bind(bool echo) {
 
 void ProblemRun::run() {
   start_ = lastProgress_ = std::chrono::steady_clock::now();
+  removeStaleOutputs(options_.outDir, options_.stem);
   analysis_ = std::make_unique<Analysis>(model_);
   if (!analysis_->setLinearSolver(options_.solver))
     throw AnalysisError("unknown linear solver '" + options_.solver + "'");
@@ -143,20 +137,9 @@ void ProblemRun::run() {
   };
   analysis_->removals().onEvent = [this](const RemovalEvent& ev) {
     removed_ += static_cast<int>(ev.elements.size());
-    log_ << "  " << (ev.scheduled ? "blast " : "remove") << " at t = " << fmt("%.6e", ev.time)
-         << ": element" << (ev.elements.size() == 1 ? " " : "s ") << numberList(ev.elements)
-         << " removed, ";
-    if (ev.release > 0)
-      log_ << "forces released over td = " << fmt("%.4e", ev.release);
-    else
-      log_ << "at once";
-    if (!ev.nodesLeaving.empty())
-      log_ << "; node" << (ev.nodesLeaving.size() == 1 ? " " : "s ") << numberList(ev.nodesLeaving)
-           << " leave" << (ev.nodesLeaving.size() == 1 ? "s" : "") << " the model";
-    if (ev.jointsDissolved > 0)
-      log_ << "; " << ev.jointsDissolved << " joint" << (ev.jointsDissolved == 1 ? "" : "s")
-           << " dissolved";
-    log_ << "; energy removed " << fmt("%.6e", ev.energy) << "\n";
+    const RemovalLog line = removalLog(ev);
+    blastsNotMade_ += line.warning ? 1 : 0;
+    log_ << line.text;
   };
   cursor_.reset(batches_);
   for (const auto& batch : batches_)
@@ -273,6 +256,7 @@ Flow ProblemRun::execList(const std::vector<Macro>& list, bool topLevel, int pas
   for (const Macro& m : list) {
     cursor_.at(static_cast<std::size_t>(&m - list.data()));
     safePoint();
+    current_ = &m;
     const Flow f = m.command->run(m, *this);
     // Outside any loop a converged iteration or a reached tmax has no loop to leave.
     if (f == Flow::Stop || (f == Flow::ExitLoop && !topLevel)) return f;
@@ -390,6 +374,15 @@ void ProblemRun::fail(const Macro& m, const std::string& what) const {
   const State& s = analysis_->state();
   throw AnalysisError(m.record.fieldLoc(0).str() + ": error: " + m.record.text(0) + " in step " +
                       std::to_string(s.step + 1) + " (t = " + fmt("%.6e", s.t) + "): " + what);
+}
+
+void ProblemRun::failAtCommit(const std::string& what) const {
+  const State& s = analysis_->state();
+  const std::string where =
+      current_ ? current_->record.fieldLoc(0).str() + ": error: " + current_->record.text(0)
+               : std::string("error:");
+  throw AnalysisError(where + " at the commit of step " + std::to_string(s.step) +
+                      " (t = " + fmt("%.6e", s.t) + "): " + what);
 }
 
 Flow ProblemRun::newtonIteration(const Macro& m, bool update, bool lineSearch, bool symmetric) {
@@ -559,13 +552,23 @@ void ProblemRun::setStepCutting(bool on, double dtMin, bool cutDivergingPredicti
        << (cutPrediction_ ? ", a diverging predicted start cuts the step" : "") << "\n";
 }
 
-void ProblemRun::setIntegrator(const TimeIntegrator& ti) {
+void ProblemRun::setIntegrator(const Macro& m, const TimeIntegrator& ti) {
   // A converged step ends under the rule it was solved with (its energy, the
-  // forces a blast at its time releases), not under the new one.
-  const Status st = analysis_->commit();
-  if (!st) throw AnalysisError("DYNAmic: committing the last step: " + st.why);
+  // forces a blast at its time releases), not under the new one. A step that
+  // TIME began and no iteration has solved yet (DYNAmic inside the time loop)
+  // is no state to commit: it begins again under the new rule.
+  const State& s = analysis_->state();
+  const bool begun = s.t > s.tn && analysis_->stepHistory().empty();
+  if (begun) {
+    analysis_->back();
+  } else if (const Status st = analysis_->commit(); !st) {
+    fail(m, "committing the last step: " + st.why);
+  }
   analysis_->setIntegrator(ti);
   log_ << "  DYNA   " << ti.describe() << "\n";
+  if (!begun) return;
+  if (const Status st = analysis_->advance(); !st) fail(m, st.why);
+  log_ << "  DYNA   the step to t = " << fmt("%.6e", s.t) << " begins again under it\n";
 }
 
 void ProblemRun::setProportionalLoad(const Macro& m) {
@@ -786,9 +789,7 @@ std::vector<int> ProblemRun::selection(const Macro& m, int count) const {
       m.has(1) && !m.record.text(3).empty() ? m.numbers[1].evalInt(params_, "last number") : n1;
   int inc = m.has(2) && !m.record.text(4).empty() ? m.numbers[2].evalInt(params_, "increment") : 1;
   if (inc <= 0) inc = 1;
-  n2 = std::min(n2, count);
-  // 64 bits: an increment near 2^31 must end the range, not wrap around.
-  for (long long i = std::max(n1, 1); i <= n2; i += inc) out.push_back(static_cast<int>(i - 1));
+  for (int i : steppedRange(std::max(n1, 1), std::min(n2, count), inc)) out.push_back(i - 1);
   return out;
 }
 
@@ -943,6 +944,11 @@ void ProblemRun::restoreRestart(const Macro& m) {
 void ProblemRun::onCommit() {
   if (!model_.joints().empty()) syncSlaveNodes(model_, analysis_->state());
   const State& s = analysis_->state();
+  const Energy en = analysis_->energy();
+  if (const std::string bad =
+          nonFiniteResult(model_, s, analysis_->assembler().nodalResidual(), en);
+      !bad.empty())
+    failAtCommit("a result is not a finite number: " + bad);
   for (const auto& [e, h] : analysis_->hingeCarriers()) {
     if (hingeStep_[e] != 0) continue;
     const HingeInfo info = h->hinge();
@@ -972,7 +978,6 @@ void ProblemRun::onCommit() {
   }
   dynamicSeen_ = dynamicSeen_ || analysis_->integrator().dynamic();
   {
-    const Energy en = analysis_->energy();
     const double scale = std::abs(en.kinetic) + std::abs(en.strain) + std::abs(en.contact) +
                          std::abs(en.external) + std::abs(en.dissipated);
     if (!energyStarted_) {

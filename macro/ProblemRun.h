@@ -53,7 +53,9 @@ struct RunSummary {
   int folded = 0;     // RC members bent through more than a quarter turn at the end
   int sunk = 0;       // runs in which a node went deeper into the ground than half its section
   bool memberContact = false;  // the crossing members had member contact (CONTact MEMBers)
-  int blastsNotMade = 0;  // BLASt records whose time the run never reached
+  // BLASt records whose time the run never reached, or whose elements had all
+  // been removed before (REMOve): they removed nothing.
+  int blastsNotMade = 0;
   // Runs that ended with ground contact (debris figures), and those of them whose
   // debris left the site (SITE).
   int debrisRuns = 0, outsideRuns = 0;
@@ -109,7 +111,7 @@ class ProblemRun {
   // Under step cutting the path-following increment follows dt / nominal dt.
   void scalePathIncrement();
   void setProportionalLoad(const Macro& m);
-  void setIntegrator(const TimeIntegrator& ti);
+  void setIntegrator(const Macro& m, const TimeIntegrator& ti);
   // AUTO,CUT,dtmin,pred: with pred a dynamic step whose predicted start
   // diverges is cut (dt halved, from the prediction again) rather than started
   // again from the committed state.
@@ -143,6 +145,8 @@ class ProblemRun {
   void safePoint();
   Flow retryWithCut(const Macro& loop, const std::string& why);
   [[noreturn]] void fail(const Macro& m, const std::string& what) const;
+  // At a commit: the command that made it (current_), the step and time.
+  [[noreturn]] void failAtCommit(const std::string& what) const;
   std::string historyText() const;
   // What to try after a failed Newton loop (the reason, whether it used the
   // line search, its iteration count when it ran out of iterations).
@@ -173,6 +177,7 @@ class ProblemRun {
   Parameters boundParams_;
   std::unique_ptr<Analysis> analysis_;
   std::vector<std::vector<Macro>> batches_;
+  const Macro* current_ = nullptr;  // the solution command running
   std::unique_ptr<TimeHistory> history_;
   std::unique_ptr<RunOutputs> outputs_;  // PLOT and PVIEw files
 

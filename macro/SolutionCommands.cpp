@@ -115,12 +115,12 @@ class ParaCommand final : public SolutionCommand {
  private:
   static void apply(const Macro& m, Parameters& p) {
     if (!m.optionText.empty()) {
-      p.set(toLower(m.optionText), m.has(0) ? m.numbers[0].eval(p) : 0.0);
+      p.set(toLower(m.optionText), m.has(0) ? m.numbers[0].eval(p) : 0.0, m.record.fieldLoc(1));
       return;
     }
     for (const Record& rec : m.data) {
       const ParamAssign a = DeckParser::parseAssignment(rec);
-      p.set(a.name, a.value.eval(p));
+      p.set(a.name, a.value.eval(p), rec.fieldLoc(0));
     }
   }
 };
@@ -409,7 +409,9 @@ class DynaCommand final : public SolutionCommand {
     return solution("DYNAmic",
                     "Time integrator: DYNA,NEWMark,beta,gamma (default 0.25, 0.5); "
                     "DYNA,ENERgy,alpha,beta: energy conserving (0, 0) or decaying (alpha, beta in "
-                    "(0, 1/2]) mid-point scheme; DYNA,OFF: static.",
+                    "(0, 1/2]) mid-point scheme; DYNA,OFF: static. A converged step is "
+                    "committed under the rule it was solved with; a step that TIME began and no "
+                    "iteration solved yet begins again under the new one.",
                     {word("scheme", "NEWMark, ENERgy or OFF"), num("p1", "beta / alpha"),
                      num("p2", "gamma / beta")});
   }
@@ -437,7 +439,7 @@ class DynaCommand final : public SolutionCommand {
       ti = TimeIntegrator::midPoint(value(0, 0.0), value(1, 0.0));
     else
       ti = TimeIntegrator::newmark(value(0, 0.25), value(1, 0.5));
-    r.setIntegrator(ti);
+    r.setIntegrator(m, ti);
     return Flow::Next;
   }
 

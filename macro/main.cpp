@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -13,8 +14,9 @@
 #include "macro/BatchRunner.h"
 #include "macro/DeckRunner.h"
 #include "macro/Help.h"
-#include "macro/Shard.h"
 #include "macro/Interrupt.h"
+#include "macro/Shard.h"
+#include "macro/Suggest.h"
 #include "solvers/LinearSolver.h"
 
 namespace {
@@ -89,6 +91,17 @@ bool deckArgument(const std::string& a, const char* program, std::vector<std::st
   return true;
 }
 
+// A first word that names no file but is close to a subcommand (mrege): a
+// typo, reported with the subcommand meant, not read as a deck name.
+bool mistypedSubcommand(const std::string& word) {
+  if (word.empty() || word[0] == '-' || std::filesystem::exists(word)) return false;
+  const std::string hint = c2d::didYouMean(word, {"run", "merge"});
+  if (hint.empty()) return false;
+  std::cerr << "collapse2d: '" << word << "' is no deck and no command: " << hint
+            << " (collapse2d --help)\n";
+  return true;
+}
+
 // collapse2d run [options] [-j N] DECK...
 int batchMain(int argc, char** argv, const c2d::SolutionCommands& commands) {
   c2d::BatchOptions options;
@@ -157,6 +170,7 @@ int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "run") return batchMain(argc, argv, commands);
   if (argc > 1 && std::string(argv[1]) == "merge")
     return c2d::mergeParts(argc > 2 ? argv[2] : ".", std::cout, std::cerr);
+  if (argc > 1 && mistypedSubcommand(argv[1])) return c2d::kExitUsage;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--help" || a == "-h") {

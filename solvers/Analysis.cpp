@@ -655,7 +655,8 @@ Status Analysis::afterCommitEvents() {
   const bool hadMembers = members != nullptr;
   const double membersBefore = hadMembers ? members->committedEnergy(model_, state_) : 0.0;
   for (int pass = 0; pass < 16; ++pass) {
-    const bool r = removal_.afterCommit();
+    bool r = false;
+    if (Status st = removal_.afterCommit(r); !st) return st;
     const bool j = topology_.afterCommit(model_, state_);
     if (!r && !j) break;
     removed = removed || r;

@@ -51,10 +51,19 @@ class EnergyAccount {
   // Node count changed (nodes appended): keeps the values of the existing nodes.
   void resize(int numNodes);
   // After a topology change at a committed state (a joint formed or ruptured):
-  // the stored energy the next step starts from is the one of the new model,
-  // so that a jump the change made shows in the balance instead of being
-  // taken back as dissipation in the next step.
-  void restartFrom(const Energy& now) { storedN_ = now.kinetic + now.strain + now.contact; }
+  // the stored energy the next step starts from is the one of the new model.
+  // What the change released at the committed positions is booked as
+  // dissipated, as a fracture's: a joint formed in statics solves its relative
+  // rotation for a zero end moment, and the moment the one-point element
+  // carried there (its shear times half its length, the hinge's moment being
+  // zero at the midpoint) is released with its energy. A change that stored
+  // energy instead would be a fault: it stays in the balance, not taken back
+  // as dissipation in the next step.
+  void restartFrom(const Energy& now) {
+    const double stored = now.kinetic + now.strain + now.contact;
+    if (stored < storedN_) dissipated_ += storedN_ - stored;
+    storedN_ = stored;
+  }
   // Stored energy the commit released without work (a member contact whose
   // node was pushed past the centre line of the member: core/MemberContact.h).
   void released(double energy) {

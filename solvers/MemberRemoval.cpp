@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -23,11 +24,24 @@ double MemberRemoval::nextLanding(double t) const {
   return next;
 }
 
-bool MemberRemoval::afterCommit() {
+std::string MemberRemoval::leavesNothing(const std::vector<int>& elements) const {
+  const Model& model = an_.model_;
+  int left = 0;
+  for (int e = 0; e < model.numElements(); ++e) left += model.hasElement(e) ? 1 : 0;
+  int removed = 0;
+  for (int e : elements) removed += model.hasElement(e) ? 1 : 0;
+  if (left == 0 || removed < left) return {};
+  return "no element would be left: " +
+         std::string(left == 1 ? "the model's last element is"
+                               : "every element of the model (" + std::to_string(left) + ") is") +
+         " in the list";
+}
+
+Status MemberRemoval::afterCommit(bool& changed) {
   Model& model = an_.model_;
   const double t = an_.state_.tn;
   const double eps = tolerance(an_.state_.dt);
-  bool changed = false;
+  changed = false;
   // Released forces that ended at or before t_n are zero from now on.
   auto& released = model.releasedForces();
   const auto ended = std::remove_if(released.begin(), released.end(), [&](const ReleasedForce& f) {
@@ -41,15 +55,28 @@ bool MemberRemoval::afterCommit() {
     Blast& b = model.blasts()[k];
     if (b.done || b.time > t + eps) continue;
     b.done = true;
-    std::vector<int> present;
+    std::vector<int> present, gone;
     for (int e : b.elements)
-      if (e < model.numElements() && model.hasElement(e)) present.push_back(e);
+      (e < model.numElements() && model.hasElement(e) ? present : gone).push_back(e);
+    if (const std::string why = leavesNothing(present); !why.empty()) {
+      char when[64];
+      std::snprintf(when, sizeof when, "the blast at t = %.6e: ", b.time);
+      return Status::failure(when + why);
+    }
     const double release = b.release;  // b may move: remove() does not touch the blast list
-    const RemovalEvent ev = remove(present, release, true);
+    RemovalEvent ev;
+    if (present.empty()) {  // nothing left to blast: the model stays as it is
+      ev.time = t;
+      ev.release = release;
+      ev.scheduled = true;
+    } else {
+      ev = remove(present, release, true);
+      changed = true;
+    }
+    ev.goneBefore = std::move(gone);
     if (onEvent) onEvent(ev);
-    changed = true;
   }
-  return changed;
+  return Status::success();
 }
 
 Status MemberRemoval::removeNow(const std::vector<int>& elements, double release) {
@@ -58,6 +85,7 @@ Status MemberRemoval::removeNow(const std::vector<int>& elements, double release
     if (e < 0 || e >= model.numElements() || !model.hasElement(e))
       return Status::failure("element " + std::to_string(e + 1) + " is not in the model" +
                              (e >= 0 && e < model.numElements() ? " (removed before)" : ""));
+  if (const std::string why = leavesNothing(elements); !why.empty()) return Status::failure(why);
   const RemovalEvent ev = remove(elements, release, false);
   if (onEvent) onEvent(ev);
   return Status::success();

@@ -24,6 +24,7 @@
 // the model), so the balance stays closed; the work of the released forces is
 // external work.
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "core/Error.h"
@@ -35,6 +36,10 @@ class Analysis;
 struct RemovalEvent {
   double time = 0;
   std::vector<int> elements;     // 0-based, removed now
+  // A blast's elements that had left the model before it (REMOve, an earlier
+  // BLASt record of the same elements): a blast of none of its elements
+  // removes nothing.
+  std::vector<int> goneBefore;
   double release = 0;            // td: the release time of their forces
   std::vector<int> nodesLeaving;  // 0-based nodes that no element holds any more
   int jointsDissolved = 0;
@@ -56,13 +61,18 @@ class MemberRemoval {
   static double tolerance(double dt);
 
   // After a commit: the blasts due at the committed time are made, and the
-  // released forces that ended are dropped. True when the model changed.
-  bool afterCommit();
+  // released forces that ended are dropped; `changed` tells whether the model
+  // changed. Fails when a blast would leave no element in the model.
+  Status afterCommit(bool& changed);
   // REMOve: removes these elements (0-based) now, releasing their forces over
-  // `release`. The state must be committed. Fails for an element not in the model.
+  // `release`. The state must be committed. Fails for an element not in the
+  // model, and when no element would be left.
   Status removeNow(const std::vector<int>& elements, double release);
 
  private:
+  // A removal of these elements that would leave the model without any:
+  // the failure to report (what is asked, with the element count); empty if not.
+  std::string leavesNothing(const std::vector<int>& elements) const;
   // Removes the elements at the committed time; returns what happened.
   RemovalEvent remove(const std::vector<int>& elements, double release, bool scheduled);
 

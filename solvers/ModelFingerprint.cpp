@@ -36,7 +36,7 @@ class Hash {
 }  // namespace
 
 ModelFingerprint ModelFingerprint::of(const Model& model) {
-  Hash coords, elements, materials, boundary, loads;
+  Hash coords, elements, materials, boundary, loads, masses, site;
   coords.add(model.numNodes());
   for (int n = 0; n < model.numNodes(); ++n) {
     coords.add(model.hasCoord(n));
@@ -44,6 +44,7 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
     for (int d = 0; d < kNodeDofs; ++d) {
       boundary.add(model.bound(n)[d] != 0);
       loads.add(model.force(n)[d]).add(model.disp(n)[d]).add(model.loadTable(n)[d]);
+      masses.add(model.nodalMass(n)[d]);
     }
   }
   elements.add(model.numElements());
@@ -83,13 +84,23 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
   loads.add(model.memberContact().has_value());
   if (const auto& c = model.memberContact())
     loads.add(c->k).add(c->alpha).add(c->radius).add(c->restitution).add(c->mu);
+  // Floor loads (QLOAd): their load, and their mass when they carry it.
+  loads.add(model.elementLoads().size());
+  for (const ElementLoad& q : model.elementLoads()) {
+    loads.add(q.element).add(q.q.x()).add(q.q.y());
+    masses.add(q.asMass);
+    if (q.asMass) masses.add(q.element).add(q.q.x()).add(q.q.y());
+  }
+  site.add(model.site().has_value());
+  if (model.site()) site.add(model.site()->xmin).add(model.site()->xmax);
   // The blast plan: element sets, times, release times.
   elements.add(model.blasts().size());
   for (const Blast& b : model.blasts()) {
     elements.add(b.time).add(b.release).add(b.elements.size());
     for (int e : b.elements) elements.add(e);
   }
-  return {coords.value(), elements.value(), materials.value(), boundary.value(), loads.value()};
+  return {coords.value(), elements.value(), materials.value(), boundary.value(),
+          loads.value(),  masses.value(),   site.value()};
 }
 
 std::string ModelFingerprint::differences(const ModelFingerprint& o) const {
@@ -103,21 +114,26 @@ std::string ModelFingerprint::differences(const ModelFingerprint& o) const {
   note(elements != o.elements, "element connectivity, material numbers or blasts");
   note(materials != o.materials, "material data");
   note(boundary != o.boundary, "boundary codes or joints");
-  note(loads != o.loads, "loads (forces, prescribed values, load tables, gravity, contact)");
+  note(loads != o.loads,
+       "loads (forces, prescribed values, load tables, floor loads, gravity, contact)");
+  note(masses != o.masses, "masses (MASS, floor loads carried as mass)");
+  note(site != o.site, "site (SITE)");
   return out;
 }
 
 void ModelFingerprint::write(std::ostream& out) const {
   using namespace checkpoint;
   putTag(out, "FPRT");
-  for (std::uint64_t x : {coordinates, elements, materials, boundary, loads}) put(out, x);
+  for (std::uint64_t x : {coordinates, elements, materials, boundary, loads, masses, site})
+    put(out, x);
 }
 
 ModelFingerprint ModelFingerprint::read(std::istream& in) {
   using namespace checkpoint;
   expectTag(in, "FPRT");
   ModelFingerprint f;
-  for (std::uint64_t* x : {&f.coordinates, &f.elements, &f.materials, &f.boundary, &f.loads})
+  for (std::uint64_t* x :
+       {&f.coordinates, &f.elements, &f.materials, &f.boundary, &f.loads, &f.masses, &f.site})
     *x = get<std::uint64_t>(in);
   return f;
 }

@@ -17,7 +17,9 @@ struct ModelFingerprint {
   std::uint64_t elements = 0;     // element count, nodes and material numbers
   std::uint64_t materials = 0;    // every material set's data
   std::uint64_t boundary = 0;     // restraint codes and joints
-  std::uint64_t loads = 0;        // forces, prescribed values, load tables, gravity, ground
+  std::uint64_t loads = 0;  // forces, prescribed values, load tables, floor loads, gravity, contact
+  std::uint64_t masses = 0;  // nodal masses (MASS) and floor loads carried as mass
+  std::uint64_t site = 0;    // the debris site (SITE)
 
   static ModelFingerprint of(const Model& model);
   // The parts that differ, e.g. "node coordinates, nodal loads"; empty if none.

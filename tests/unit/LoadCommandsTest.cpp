@@ -2,11 +2,13 @@
 // their deck errors at file:line:col.
 #include <gtest/gtest.h>
 
+#include <climits>
 #include <sstream>
 
 #include "elements/ModelCheckpoint.h"
 #include "macro/DeckParser.h"
 #include "macro/MeshBinder.h"
+#include "solvers/ModelFingerprint.h"
 #include "tests/unit/DeckTestSupport.h"
 
 namespace c2d {
@@ -65,6 +67,24 @@ TEST(LoadCommands, QloadMassAndSiteEnterTheModel) {
   for (int n = 0; n < 4; ++n) EXPECT_DOUBLE_EQ(g.nodalMass(n)[1], n + 1.0);  // linear generation
 }
 
+// An increment near 2^31 ends the range (it overflowed the loop counter and
+// crashed): QLOAd loads element 1 only, MASS generates nothing between its records.
+TEST(LoadCommands, IncrementsNearIntMaxEndTheRange) {
+  const std::string big = std::to_string(INT_MAX);
+  const Model m = build(kBeam + "QLOAd\n 1 3 " + big + " 0 -5\n\n" +
+                        "MASS\n 1 " + big + " 1 1 0\n 4 0 2 2 0\n\n");
+  ASSERT_EQ(m.elementLoads().size(), 1u);
+  EXPECT_EQ(m.elementLoads()[0].element, 0);
+  EXPECT_EQ(m.nodalMass(0)[0], 1);
+  EXPECT_EQ(m.nodalMass(1)[0], 0);
+  EXPECT_EQ(m.nodalMass(2)[0], 0);
+  EXPECT_EQ(m.nodalMass(3)[0], 2);
+  const Model down = build(kBeam + "MASS\n 4 -" + big + " 1 1 0\n 1 0 2 2 0\n\n");
+  EXPECT_EQ(down.nodalMass(3)[0], 1);
+  EXPECT_EQ(down.nodalMass(2)[0], 0);
+  EXPECT_EQ(down.nodalMass(0)[0], 2);
+}
+
 // A restart file keeps the floor loads, the nodal masses and the site.
 TEST(LoadCommands, RestartKeepsThem) {
   const Model m =
@@ -81,6 +101,24 @@ TEST(LoadCommands, RestartKeepsThem) {
   EXPECT_EQ(r.site()->xmax, 4);
 }
 
+// REST refuses a restart file of a deck whose floor loads, masses or site
+// differ (the restored model would bring the saved ones back silently).
+TEST(LoadCommands, TheRestartFingerprintSeesThem) {
+  const std::string grav = "GRAV,,0,-10\n";
+  const auto print = [&](const std::string& mesh) {
+    return ModelFingerprint::of(build(kBeam + grav + mesh));
+  };
+  const ModelFingerprint base = print("QLOAd\n 1 0 0 0 -5\n\nSITE,,-1,4\n");
+  EXPECT_EQ(base.differences(print("QLOAd\n 1 0 0 0 -5\n\nSITE,,-1,4\n")), "");
+  EXPECT_EQ(base.differences(print("QLOAd\n 1 0 0 0 -10\n\nSITE,,-1,4\n")),
+            "loads (forces, prescribed values, load tables, floor loads, gravity, contact)");
+  EXPECT_EQ(base.differences(print("QLOAd\n 1 0 0 0 -5 MASS\n\nSITE,,-1,4\n")),
+            "masses (MASS, floor loads carried as mass)");
+  EXPECT_EQ(base.differences(print("QLOAd\n 1 0 0 0 -5\n\nMASS\n 2 0 1 1 0\n\nSITE,,-1,4\n")),
+            "masses (MASS, floor loads carried as mass)");
+  EXPECT_EQ(base.differences(print("QLOAd\n 1 0 0 0 -5\n\nSITE,,-1,5\n")), "site (SITE)");
+}
+
 TEST(LoadCommands, Errors) {
   expectError(kBeam + "QLOAd\n 1 3 1 0 -5 WEIGHT\n\n", 16, 13, "unknown option 'WEIGHT'");
   expectError(kBeam + "QLOAd\n 2 5 1 0 -5\n\n", 16, 4, "QLOAd: element 4 is not defined");
@@ -91,6 +129,10 @@ TEST(LoadCommands, Errors) {
   expectError(kBeam + "SITE,,5\n", 15, 8, "SITE needs xmin and xmax");
   expectError(kBeam + "SITE,1,5\n", 15, 6, "SITE takes no option word");
   expectError(kBeam + "SITE,X,1,5\n", 15, 6, "SITE takes no option word");
+  // A second site or ground in one mesh input would silently replace the first.
+  expectError(kBeam + "SITE,,-1,4\nSITE,,0,5\n", 16, 1, "a second SITE (the first is on line 15)");
+  expectError(kBeam + "CONTact\n GROUnd,,0,1e5\n\nCONTact\n GROUnd,,-1,1e5\n\n", 19, 2,
+              "a second GROUnd record (the first is on line 16)");
 }
 
 }  // namespace

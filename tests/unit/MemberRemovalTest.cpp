@@ -257,6 +257,64 @@ TEST(MemberRemoval, ABlastTheRunNeverReachesIsWarned) {
       << r.log;
 }
 
+TEST(MemberRemoval, ABlastOfElementsRemovedBeforeIsWarned) {
+  // REMOve takes the column at t = 1, the plan blasts it at t = 2: that blast
+  // removes nothing (it logged a blast of an empty list, without a warning).
+  DeckTempDir dir;
+  const std::string batch =
+      "  DT,,1\n  TIME\n  LOOP,,3\n    TANG,,1\n  NEXT\n"
+      "  REMOve,ELEMents,11\n  LOOP,,2\n    TIME\n    LOOP,,3\n"
+      "      TANG,,1\n    NEXT\n  NEXT\n";
+  const auto r = runDeckText(dir, "again.inp", frame(kColumn + "BLASt\n  2 11\n\n", batch, ""));
+  ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
+  EXPECT_NE(r.log.find("warning: the blast at t = 2.000000e+00 removes nothing: its element 11 "
+                       "was removed before"),
+            std::string::npos)
+      << r.log;
+  EXPECT_NE(r.log.find("warning: 1 blast of the BLASt plan did not happen"), std::string::npos)
+      << r.log;
+  EXPECT_EQ(r.log.find("blast  at t"), std::string::npos) << r.log;
+}
+
+TEST(MemberRemoval, AMeshReentryAfterARemovalKeepsTheEmptySlots) {
+  // The column removed, then MESH gives a load again: the removed element's
+  // slot stays empty (it was refused as "element 11 is not defined ...
+  // element numbers must run from 1 without gaps").
+  DeckTempDir dir;
+  const std::string batch =
+      "  DT,,1\n  TIME\n  LOOP,,3\n    TANG,,1\n  NEXT\n"
+      "  REMOve,ELEMents,11\n  MESH\n  TIME\n  LOOP,,3\n    TANG,,1\n"
+      "  NEXT\n";
+  // The re-entry's records follow the BATCh END (frame's last argument).
+  const auto r =
+      runDeckText(dir, "reentry.inp", frame(kColumn, batch, "FORCe\n  8 0 0 -2*W 0\n\nEND\n"));
+  ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
+  EXPECT_NE(r.log.find("MESH   re-entered"), std::string::npos) << r.log;
+}
+
+TEST(MemberRemoval, RemovingEveryElementIsAnAnalysisError) {
+  // Nothing would be left to compute (the linear solver's symbolic analysis
+  // of an empty matrix failed instead).
+  DeckTempDir dir;
+  const std::string solved = "  DT,,1\n  TIME\n  LOOP,,3\n    TANG,,1\n  NEXT\n";
+  auto r = runDeckText(dir, "all.inp", frame(kColumn, solved + "  REMOve,ELEMents,1,11\n", ""));
+  EXPECT_EQ(r.outcome.exitCode, 2);
+  EXPECT_NE(r.outcome.message.find("no element would be left: every element of the model (11) "
+                                   "is in the list"),
+            std::string::npos)
+      << r.outcome.message;
+  // The last elements by a blast, after REMOve took the others.
+  const std::string later = solved +
+                            "  REMOve,ELEMents,1,10\n  TIME\n  LOOP,,3\n    TANG,,1\n"
+                            "  NEXT\n";
+  r = runDeckText(dir, "last.inp", frame(kColumn + "BLASt\n  2 11\n\n", later, ""));
+  EXPECT_EQ(r.outcome.exitCode, 2);
+  EXPECT_NE(r.outcome.message.find("the blast at t = 2.000000e+00: no element would be left: the "
+                                   "model's last element is in the list"),
+            std::string::npos)
+      << r.outcome.message;
+}
+
 TEST(MemberRemoval, RemovalInAStepNotSolvedIsAnAnalysisError) {
   // TIME begins a step; REMOve before its Newton loop converged has no state to act on.
   DeckTempDir dir;

@@ -1,0 +1,19 @@
+#pragma once
+// The log's lines of a member removal (solvers/MemberRemoval.h): a blast at
+// its time or a REMOve, the elements and nodes that left, the joints
+// dissolved, the energy removed; a blast whose elements had all left before
+// (REMOve, an earlier blast) removes nothing and is a warning.
+#include <string>
+
+#include "solvers/MemberRemoval.h"
+
+namespace c2d {
+
+struct RemovalLog {
+  std::string text;      // whole lines, each ending in '\n'
+  bool warning = false;  // the blast removed nothing
+};
+
+RemovalLog removalLog(const RemovalEvent& ev);
+
+}  // namespace c2d
