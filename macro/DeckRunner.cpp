@@ -105,6 +105,11 @@ std::string runSummaryText(const RunSummary& s) {
     out += s.debrisRuns == 1 ? std::string(", debris OUTSIDE the site")
                              : ", debris OUTSIDE the site in " + std::to_string(s.outsideRuns) +
                                    " of " + std::to_string(s.debrisRuns) + " runs";
+  if (s.movingRuns > 0)
+    out += s.debrisRuns == 1 ? std::string(", debris STILL MOVING at the end")
+                             : ", debris STILL MOVING at the end in " +
+                                   std::to_string(s.movingRuns) + " of " +
+                                   std::to_string(s.debrisRuns) + " runs";
   if (s.maxMomentRatio > 0) {
     std::snprintf(buf, sizeof buf, ", max |M|/Mu %.4f", s.maxMomentRatio);
     out += buf;
@@ -174,6 +179,15 @@ std::vector<std::string> runWarnings(const RunSummary& s) {
                   "of its members (the log's debris lines): the ground is too soft for the "
                   "impact (GROUnd's k)",
                   s.sunk == 1 ? "in this run" : (std::to_string(s.sunk) + " runs:").c_str());
+    out.push_back(buf);
+  }
+  if (s.movingRuns > 0) {
+    std::snprintf(buf, sizeof buf,
+                  "warning: %s the debris was still moving at the end (kinetic energy %.2e of "
+                  "its peak): its figures are not final; run longer, or end the run at rest "
+                  "with TIME,REST",
+                  s.movingRuns == 1 ? "in this run" : (std::to_string(s.movingRuns) + " runs:").c_str(),
+                  s.kineticRatio);
     out.push_back(buf);
   }
   if (s.blastsNotMade > 0) {
@@ -330,6 +344,8 @@ class Walker {
     total_.blastsNotMade += s.blastsNotMade;
     total_.debrisRuns += s.debrisRuns;
     total_.outsideRuns += s.outsideRuns;
+    total_.movingRuns += s.movingRuns;
+    total_.kineticRatio = std::max(total_.kineticRatio, s.kineticRatio);
     if (!row.ok) return;
     log_ << "\n  summary: " << runSummaryText(s) << "\n";
     const std::vector<std::string> warnings = runWarnings(s);

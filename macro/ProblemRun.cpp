@@ -221,10 +221,12 @@ void ProblemRun::reportFolds() {
          << ": more than a quarter turn, which no RC member bends whole\n";
 }
 
-DebrisFigures ProblemRun::debrisNow() const {
+DebrisFigures ProblemRun::debrisNow() {
   DebrisFigures d = debrisFigures(model_, analysis_->state());
   d.peakGroundForce = peakGroundForce_;
   d.peakTime = peakGroundTime_;
+  d.kineticRatio = peakKinetic_ > 0 ? analysis_->kineticEnergy() / peakKinetic_ : 0.0;
+  d.restRatio = restRatio_ > 0 ? restRatio_ : Rest{}.ratio;
   if (deepest_.node >= 0) {
     d.deepestNode = deepest_.node;
     d.deepest = deepest_.depth;
@@ -282,6 +284,8 @@ RunSummary ProblemRun::summary() const {
   s.blastsNotMade = blastsNotMade_;
   s.debrisRuns = debris_ ? 1 : 0;
   s.outsideRuns = debris_ && debris_->outside() ? 1 : 0;
+  s.movingRuns = debris_ && !debris_->atRest() ? 1 : 0;
+  if (debris_) s.kineticRatio = debris_->kineticRatio;
   return s;
 }
 

@@ -55,6 +55,10 @@ struct RunSummary {
   // Runs that ended with ground contact (debris figures), and those of them whose
   // debris left the site (SITE).
   int debrisRuns = 0, outsideRuns = 0;
+  // Runs whose debris was still moving at the end (its kinetic energy above
+  // TIME,REST's ratio of its peak), and the largest such ratio.
+  int movingRuns = 0;
+  double kineticRatio = 0;
 };
 
 class ProblemRun {
@@ -141,7 +145,7 @@ class ProblemRun {
   void reportDebris();
   // The debris figures of the state now, with the run's peak ground force and
   // deepest node.
-  DebrisFigures debrisNow() const;
+  DebrisFigures debrisNow();
   void reportCrossings();
   // RC members bent through more than a quarter turn at the end: log lines.
   void reportFolds();
