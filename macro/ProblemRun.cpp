@@ -71,7 +71,9 @@ ProblemRun::ProblemRun(const Problem& problem, Parameters& params, const Solutio
       options_(std::move(options)),
       log_(log),
       outputs_(std::make_unique<RunOutputs>(options_.outDir, options_.stem, problem_.title,
-                                            options_.label)) {}
+                                            options_.label)) {
+  outputs_->setPictures(options_.pictures);
+}
 
 // A run that ends by an exception leaves no progress line for the message to run into.
 ProblemRun::~ProblemRun() { progress(true); }
@@ -79,7 +81,14 @@ ProblemRun::~ProblemRun() { progress(true); }
 void ProblemRun::bind(bool echo) {
   MeshFacts mesh;
   mesh.warnings = options_.warnings;
+  const SampleDraws* sample = options_.sample;
+  if (sample && sample->jitter)
+    mesh.beforeElements = [sample](Model& m) {
+      jitterNodes(m, *sample->jitter, sample->seed, sample->sample);
+    };
   model_ = buildModel(problem_, params_, echo ? &log_ : nullptr, &mesh);
+  if (sample && sample->detonators)
+    drawnBlastTimes_ = scatterBlasts(model_, *sample->detonators, sample->seed, sample->sample);
   installJoints(model_);
   boundParams_ = params_;
   batches_.clear();
@@ -257,7 +266,7 @@ void ProblemRun::plotDebris() {
   if (!options_.label.empty()) title += (title.empty() ? "" : ", ") + options_.label;
   title += (title.empty() ? "" : ": ") + std::string("debris at t = ") + fmt("%.4g", s.t);
   const std::filesystem::path path = options_.outDir / (options_.stem + "_debris.svg");
-  saveDebrisSvg(path, model_, s, d, title);
+  if (options_.pictures) saveDebrisSvg(path, model_, s, d, title);
   debrisPlot_ = true;
   log_ << "  PLOT   debris: " << path.filename().string() << "\n";
 }
@@ -583,6 +592,7 @@ void ProblemRun::scalePathIncrement() {
 }
 
 void ProblemRun::setDt(double dt) {
+  if (options_.sample) dt *= options_.sample->stepFactor;
   analysis_->setDt(dt);
   dtNominal_ = dt;
 }

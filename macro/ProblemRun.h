@@ -19,6 +19,7 @@
 #include "macro/TimeHistory.h"
 #include "elements/HingeToJoint.h"
 #include "macro/Warnings.h"
+#include "macro/studies/Ensemble.h"
 #include "solvers/Analysis.h"
 #include "solvers/ModelFingerprint.h"
 
@@ -34,6 +35,13 @@ struct RunOptions {
   // Called at every safe point of the run (between two solution commands), e.g.
   // to check that the log is still being written.
   std::function<void()> safePoint;
+  // A sample of an ENSEmble (macro/studies/Ensemble.h): its nodes jittered
+  // before the elements are built, its time steps scaled, its blast times
+  // scattered. Null outside an ensemble.
+  const SampleDraws* sample = nullptr;
+  // Pictures and ParaView files (PLOT, PVIEw) are written (an ensemble's
+  // samples after the first write their tables only).
+  bool pictures = true;
 };
 
 struct RunSummary {
@@ -130,6 +138,8 @@ class ProblemRun {
   void plotDebris();
   // The debris figures of a run that ended with ground contact.
   const std::optional<DebrisFigures>& debris() const { return debris_; }
+  // The BLASt times of an ensemble's sample with DETOnators (one per record).
+  const std::vector<double>& drawnBlastTimes() const { return drawnBlastTimes_; }
 
  private:
   Flow execList(const std::vector<Macro>& list, bool topLevel = false);
@@ -205,6 +215,7 @@ class ProblemRun {
   double deepestTime_ = 0;
   std::optional<DebrisFigures> debris_;
   bool debrisPlot_ = false;
+  std::vector<double> drawnBlastTimes_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point lastProgress_;
   bool progressShown_ = false;

@@ -14,6 +14,7 @@
 #include "macro/DeckRunner.h"
 #include "macro/Help.h"
 #include "macro/Shard.h"
+#include "macro/studies/Merge.h"
 #include "macro/Interrupt.h"
 #include "solvers/LinearSolver.h"
 
