@@ -501,6 +501,19 @@ std::string fileList(const std::vector<std::filesystem::path>& files) {
 
 }  // namespace
 
+DeckPlan planDeck(const std::string& path, const SolutionCommands& commands) {
+  const Deck deck = parseDeck(path);
+  std::ostringstream discard;
+  Parameters params;
+  const DeckOptions options;
+  Walker check(commands, options, discard, nullptr, {});
+  check.walk(deck.items, params);
+  DeckPlan plan;
+  plan.runs = check.runs();
+  for (const RunInfo& r : check.infos()) plan.study = plan.study || !r.sweep.empty() || r.sample > 0;
+  return plan;
+}
+
 DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
                     const SolutionCommands& commands, std::ostream& out) {
   DeckOutcome outcome;
@@ -569,6 +582,7 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     std::string studySummary;
     try {
       if (!plans.empty()) runner.walk(deck.items, params);
+      if (options.shards > 1) log->stream() << "\n" << kEndOfRuns << "\n";
       // A shard's overlays are drawn by `collapse2d merge` from the parts' curves.
       if (options.shards > 1 && runner.overlay().numRuns() > 0)
         AtomicFile::write(dir / (partStem + "_curves.csv"), runner.overlay().csv());

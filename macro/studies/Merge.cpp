@@ -113,7 +113,8 @@ struct StudyFiles {
 
 // One deck's study; false when refused (message on err).
 bool mergeStudy(const fs::path& dir, const std::string& stem, int n, const StudyFiles& files,
-                std::ostream& out, std::ostream& err) {
+                std::ostream& out, std::ostream& err, std::string* log) {
+  std::ostringstream logText;
   const std::string set = stem + "_part<i>of" + std::to_string(n);
   if (const std::string missing = missingParts(files.parts(), n); !missing.empty()) {
     err << "collapse2d merge: " << set << ": part" << (missing.find(',') == std::string::npos ? " " : "s ")
@@ -215,15 +216,23 @@ bool mergeStudy(const fs::path& dir, const std::string& stem, int n, const Study
     for (const auto& [run, line] : rows) failed += splitCsv(line)[status] == "failed";
     out << joined.filename().string() << ": " << rows.size() << " plans from " << n << " parts, " << failed
         << " failed\n";
+    logText << "  plans: " << joined.filename().string() << " (" << rows.size() << " runs, " << failed
+            << " failed)\n";
   } else {
     const EnsembleStudyReport report =
         writeEnsembleStudy(dir, stem, readEnsembleTable(text, first.swept.size()), first.title);
     out << joined.filename().string() << ": " << rows.size() << " runs from " << n << " parts\n"
         << report.summary;
     for (const auto& f : report.files) out << "  " << f.filename().string() << "\n";
+    logText << "  ensemble: " << joined.filename().string() << " (" << rows.size() << " runs)\n\n"
+            << report.text;
   }
   overlay.sortByRun();
-  for (const auto& f : overlay.write(dir, stem)) out << "  overlay of the runs: " << f.filename().string() << "\n";
+  for (const auto& f : overlay.write(dir, stem)) {
+    out << "  overlay of the runs: " << f.filename().string() << "\n";
+    logText << "  overlay of the runs: " << f.filename().string() << "\n";
+  }
+  if (log) *log = logText.str();
   return true;
 }
 
@@ -285,28 +294,36 @@ bool mergeBatch(const fs::path& dir, int n, const std::map<int, fs::path>& parts
   return true;
 }
 
+// The files of the studies in dir, by (stem, n).
+std::map<std::pair<std::string, int>, StudyFiles> studyFiles(const fs::path& dir) {
+  std::map<std::pair<std::string, int>, StudyFiles> studies;
+  const std::regex part(R"((.+)_part([0-9]+)of([0-9]+)_(manifest|plans|ensemble|curves)\.csv)");
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    std::smatch m;
+    if (!std::regex_match(name, m, part)) continue;
+    StudyFiles& s = studies[{m[1].str(), std::stoi(m[3])}];
+    const int i = std::stoi(m[2]);
+    if (m[4] == "manifest")
+      s.manifests[i] = entry.path();
+    else
+      s.tables[i][m[4].str()] = entry.path();
+  }
+  return studies;
+}
+
 int mergeAll(const fs::path& dir, std::ostream& out, std::ostream& err) {
   if (!fs::is_directory(dir)) {
     err << "collapse2d merge: no directory '" << dir.string() << "'\n";
     return 1;
   }
-  std::map<std::pair<std::string, int>, StudyFiles> studies;
+  const auto studies = studyFiles(dir);
   std::map<int, std::map<int, fs::path>> batches;
-  const std::regex part(R"((.+)_part([0-9]+)of([0-9]+)_(manifest|plans|ensemble|curves)\.csv)");
   const std::regex batch(R"(batch_part([0-9]+)of([0-9]+)\.csv)");
   for (const auto& entry : fs::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
     std::smatch m;
-    if (std::regex_match(name, m, part)) {
-      StudyFiles& s = studies[{m[1].str(), std::stoi(m[3])}];
-      const int i = std::stoi(m[2]);
-      if (m[4] == "manifest")
-        s.manifests[i] = entry.path();
-      else
-        s.tables[i][m[4].str()] = entry.path();
-    } else if (std::regex_match(name, m, batch)) {
-      batches[std::stoi(m[2])][std::stoi(m[1])] = entry.path();
-    }
+    if (std::regex_match(name, m, batch)) batches[std::stoi(m[2])][std::stoi(m[1])] = entry.path();
   }
   if (studies.empty() && batches.empty()) {
     err << "collapse2d merge: no parts (*_part<i>of<n>_*.csv, batch_part<i>of<n>.csv) in '" << dir.string()
@@ -315,13 +332,20 @@ int mergeAll(const fs::path& dir, std::ostream& out, std::ostream& err) {
   }
   int status = 0;
   for (const auto& [key, files] : studies)
-    if (!mergeStudy(dir, key.first, key.second, files, out, err)) status = 1;
+    if (!mergeStudy(dir, key.first, key.second, files, out, err, nullptr)) status = 1;
   for (const auto& [n, parts] : batches)
     if (!mergeBatch(dir, n, parts, out, err)) status = 1;
   return status;
 }
 
 }  // namespace
+
+bool mergeStudyParts(const fs::path& dir, const std::string& stem, int n, std::ostream& out,
+                     std::ostream& err, std::string* log) {
+  const auto studies = studyFiles(dir);
+  const auto it = studies.find({stem, n});
+  return mergeStudy(dir, stem, n, it == studies.end() ? StudyFiles{} : it->second, out, err, log);
+}
 
 int mergeParts(const fs::path& dir, std::ostream& out, std::ostream& err) {
   try {

@@ -18,11 +18,18 @@
 // text in a number column.
 #include <filesystem>
 #include <ostream>
+#include <string>
 
 namespace c2d {
 
 // 0 when every set found was merged, 1 when a set was refused (messages on
 // err), 3 when a file cannot be read or written.
 int mergeParts(const std::filesystem::path& dir, std::ostream& out, std::ostream& err);
+
+// The parts of one deck's study alone, <stem>_part<i>of<n>_* in dir: true when
+// merged; log (when given) receives what the deck's log says of the study.
+// Throws IoError when a file cannot be read or written.
+bool mergeStudyParts(const std::filesystem::path& dir, const std::string& stem, int n,
+                     std::ostream& out, std::ostream& err, std::string* log = nullptr);
 
 }  // namespace c2d
