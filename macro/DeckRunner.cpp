@@ -613,7 +613,7 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
         writeShardManifest(dir, partStem,
                            {path, deckFingerprint(path), options.shard, options.shards,
                             static_cast<int>(plans.size()), runner.ensembleTable() ? "ensemble" : "plans",
-                            swept, runner.title()});
+                            swept, runner.title(), runner.overlay().numRuns()});
     } catch (...) {
       kept = runner.kept();
       throw;

@@ -12,7 +12,7 @@ void Parameters::set(std::string_view name, double value) { values_[toLower(name
 void Parameters::assign(std::string_view name, double value, const Field& at) {
   if (const std::string* by = protectedBy(name))
     throw DeckError(at.loc,
-                    "'" + std::string(name) + "' is " + *by +
+                    "'" + (at.text.empty() ? std::string(name) : at.text) + "' is " + *by +
                         ": a PARAmeter record may not set it again (every run would take this "
                         "value while the tables, file names and log show the study's)",
                     at.excerpt(), "give this value another name");
