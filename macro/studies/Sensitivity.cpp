@@ -79,8 +79,14 @@ std::string sensitivityText(const EnsembleData& data) {
       "  sensitivity: Spearman's rank correlation of each drawn value with the debris figures\n";
   char buf[256];
   for (const PlanCorrelations& c : correlations(data)) {
+    if (c.runs < 3) {
+      std::snprintf(buf, sizeof buf, "    plan %d (%d run%s): too few for a correlation\n", c.plan,
+                    c.runs, c.runs == 1 ? "" : "s");
+      out += buf;
+      continue;
+    }
     std::snprintf(buf, sizeof buf, "    plan %d (%d runs; |rho| above %.2f stands out of the noise):\n",
-                  c.plan, c.runs, c.runs > 0 ? 2 / std::sqrt(static_cast<double>(c.runs)) : 1.0);
+                  c.plan, c.runs, 2 / std::sqrt(static_cast<double>(c.runs)));
     out += buf;
     std::vector<std::size_t> order(data.drawn.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
