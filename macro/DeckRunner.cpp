@@ -329,7 +329,19 @@ class Walker {
       }
       sample_ = &draws;
       samples_ = spec.samples;
-      walk(e.body, params);
+      try {
+        walk(e.body, params);
+      } catch (const DeckError& err) {
+        // A value that only some draws make bad: say which sample drew what.
+        std::string drawn;
+        for (const auto& [name, v] : draws.values)
+          drawn += (drawn.empty() ? "" : ", ") + name + " = " + formatSweepValue(v);
+        throw DeckError(err.loc(),
+                        err.message() + " (in sample " + std::to_string(k) + " of the ENSEmble of line " +
+                            std::to_string(e.head.loc.line) + (drawn.empty() ? "" : ", which drew " + drawn) +
+                            ")",
+                        err.text(), err.hint());
+      }
       sample_ = nullptr;
     }
     params = base;

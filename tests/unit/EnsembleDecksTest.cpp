@@ -101,6 +101,29 @@ TEST(EnsembleDecks, TheBlockParsesBeforeOrAfterTheSweep) {
                   "the number of samples of an ensemble is between 1");
 }
 
+// A value only some draws make bad is a deck error before anything runs, at
+// its record, naming the sample and its draws.
+TEST(EnsembleDecks, ADrawThatMakesTheDeckBadIsReportedWithItsSample) {
+  testing::DeckTempDir dir;
+  const std::string deck = dir.write("bad.inp",
+                                     "ENSEmble,,20,1\n  h = NORMal 0.01 0.01\n\n"
+                                     "FEAP * * t\n  0 0 0 2 3 2\nCOORdinates\n  1 0 0 0\n  2 0 1 0\n\n"
+                                     "ELEMents\n  1 0 1 1 2\n\nMATErial,1\n  FRAMe\n"
+                                     "    RESUltant STIFfness 1 1 1\n\nBOUNdary\n  1 0 1 1 1\n\nEND\n"
+                                     "BATCh\n  DT,,h\nEND\nSTOP\n");
+  DeckOptions o;
+  o.outDir = dir.path() / "out";
+  o.quiet = true;
+  const SolutionCommands commands;
+  std::ostringstream console;
+  const DeckOutcome r = runDeck(deck, o, commands, console);
+  EXPECT_EQ(r.exitCode, kExitDeckError);
+  EXPECT_NE(r.message.find("bad.inp:22:7: error: the time step must be positive"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("(in sample "), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("of the ENSEmble of line 1, which drew h = -"), std::string::npos) << r.message;
+  EXPECT_FALSE(fs::exists(dir.path() / "out" / "bad_ensemble.csv"));
+}
+
 // V16: right = x1 + v0^2 / (2 mu g), x1 = a g t1^2 / 2, v0 = a g t1, for its own mu.
 TEST(EnsembleDecks, SlidingBlockReachesItsOwnClosedForm) {
   testing::DeckTempDir dir;
