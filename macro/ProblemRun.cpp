@@ -592,7 +592,9 @@ void ProblemRun::scalePathIncrement() {
 }
 
 void ProblemRun::setDt(double dt) {
-  if (options_.sample) dt *= options_.sample->stepFactor;
+  // An ensemble's JITTer scales the steps of the motion; a static path is a
+  // load path (its steps reach the deck's load levels), not a motion.
+  if (options_.sample && analysis_->integrator().dynamic()) dt *= options_.sample->stepFactor;
   analysis_->setDt(dt);
   dtNominal_ = dt;
 }

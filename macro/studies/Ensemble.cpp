@@ -148,7 +148,7 @@ void registerEnsembleBlock(CommandRegistry& registry) {
       "UNIForm lo hi': a parameter drawn per sample, set after the sweep's values and before "
       "the PARAmeter blocks that follow (which may use it, not set it); 'JITTer,,dx,fdt': every "
       "node moved by a random offset of at most dx (default 1e-6, coincident nodes together) and "
-      "every time step scaled by a factor in 1 +- fdt (default 0.01); 'DETOnators,,sd,cov': "
+      "every time step of a dynamic analysis scaled by a factor in 1 +- fdt (default 0.01); 'DETOnators,,sd,cov': "
       "every BLASt time t scattered by a normal number of standard deviation sqrt(sd^2 + (cov "
       "t)^2) (DETOnators,ELECtronic: sd = 1 ms; DETOnators,PYROtechnic: cov = 3 %). Outputs: "
       "<stem>_ensemble.csv (a row per run), <stem>_plans.csv (a row per plan: quantiles of the "
