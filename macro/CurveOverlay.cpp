@@ -12,7 +12,8 @@ namespace c2d {
 
 namespace {
 
-const char* kCurvesHeader = "run,label,title,written,x_column,y_column,x_label,y_label,x_scale,y_scale,x,y";
+const char* kCurvesHeader =
+    "run,label,title,written,x_column,y_column,x_label,y_label,x_scale,y_scale,x,y";
 
 }  // namespace
 
@@ -84,21 +85,28 @@ void CurveOverlay::addCsv(const std::string& text) {
   std::istringstream in(text);
   std::string line;
   if (!std::getline(in, line) || line != kCurvesHeader)
-    throw std::runtime_error("its header is not a curves table's (" + std::string(kCurvesHeader) + ")");
+    throw std::runtime_error("its header is not a curves table's (" + std::string(kCurvesHeader) +
+                             ")");
   if (text.back() != '\n') throw std::runtime_error("it ends in the middle of a row");
   int lineNo = 1;
   while (std::getline(in, line)) {
     ++lineNo;
     if (line.empty()) continue;
     const std::vector<std::string> c = splitCsv(line);
-    const auto run = integerCell(c.size() == 12 ? c[0] : std::string());
-    const auto sx = c.size() == 12 ? numberCell(c[8]) : std::nullopt;
-    const auto sy = c.size() == 12 ? numberCell(c[9]) : std::nullopt;
-    const auto x = c.size() == 12 ? numberCell(c[10]) : std::nullopt;
-    const auto y = c.size() == 12 ? numberCell(c[11]) : std::nullopt;
-    const bool noPoint = c.size() == 12 && c[10].empty() && c[11].empty();
-    if (!run || !sx || !sy || (!noPoint && (!x || !y)))
-      throw std::runtime_error("line " + std::to_string(lineNo) + " is not a curve point");
+    const std::string bad = "line " + std::to_string(lineNo) + " is not a curve point";
+    if (c.size() != 12) throw std::runtime_error(bad);
+    const auto run = integerCell(c[0]);
+    const auto sx = numberCell(c[8]), sy = numberCell(c[9]);
+    // A curve without points keeps one row with empty x, y.
+    const bool noPoint = c[10].empty() && c[11].empty();
+    double x = 0, y = 0;
+    if (!noPoint) {
+      const auto px = numberCell(c[10]), py = numberCell(c[11]);
+      if (!px || !py) throw std::runtime_error(bad);
+      x = *px;
+      y = *py;
+    }
+    if (!run || !sx || !sy) throw std::runtime_error(bad);
     CurveSpec spec;
     spec.written = c[3];
     spec.xColumn = c[4];
@@ -111,14 +119,16 @@ void CurveOverlay::addCsv(const std::string& text) {
       runs_.push_back({static_cast<int>(*run), c[1], c[2], {}});
     Run& r = runs_.back();
     if (r.curves.empty() || !r.curves.back().spec.sameAs(spec) ||
-        r.curves.back().spec.xColumn != spec.xColumn || r.curves.back().spec.yColumn != spec.yColumn)
+        r.curves.back().spec.xColumn != spec.xColumn ||
+        r.curves.back().spec.yColumn != spec.yColumn)
       r.curves.push_back({spec, {}});
-    if (!noPoint) r.curves.back().points.emplace_back(*x, *y);
+    if (!noPoint) r.curves.back().points.emplace_back(x, y);
   }
 }
 
 void CurveOverlay::sortByRun() {
-  std::stable_sort(runs_.begin(), runs_.end(), [](const Run& a, const Run& b) { return a.run < b.run; });
+  std::stable_sort(runs_.begin(), runs_.end(),
+                   [](const Run& a, const Run& b) { return a.run < b.run; });
 }
 
 }  // namespace c2d

@@ -23,7 +23,8 @@ class CurveOverlay {
   void add(int run, const std::string& runLabel, const std::string& title,
            const std::vector<CurveData>& curves);
   // Writes every curve that at least two runs drew; returns the files written.
-  std::vector<std::filesystem::path> write(const std::filesystem::path& outDir, const std::string& stem) const;
+  std::vector<std::filesystem::path> write(const std::filesystem::path& outDir,
+                                           const std::string& stem) const;
   int numRuns() const { return static_cast<int>(runs_.size()); }
 
   // The runs' curves as CSV: run,label,title,written,x_column,y_column,x_label,

@@ -377,7 +377,7 @@ class Walker {
     // A count that depends on what ran (PARA inside a BATCh loop) may give more
     // runs than the check pass planned: they are numbered on.
     if (static_cast<std::size_t>(runs_) > plans_.size())
-      plans_.push_back({stem_ + "_" + std::to_string(runs_), "run " + std::to_string(runs_)});
+      plans_.push_back({stem_ + "_" + std::to_string(runs_), "run " + std::to_string(runs_), 0, 0, {}});
     // A shard runs every n-th run only (runs k with k mod n == i - 1, k from 0).
     if (options_.shards > 1 && (runs_ - 1) % options_.shards != options_.shard - 1) return;
     const RunPlan plan = plans_.at(static_cast<std::size_t>(runs_ - 1));

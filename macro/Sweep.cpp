@@ -164,10 +164,13 @@ void registerDeckBlocks(CommandRegistry& registry) {
   s.name = "SWEEp";
   s.doc =
       "[ext] Parameter sweep, a top-level block before a problem: records 'name = v1 v2 ...' "
-      "(values are expressions without blanks; several names are zipped and need the same "
-      "number of values), ended by a blank record. The next problem (with the PARAmeter blocks "
-      "between the sweep and it, evaluated after the sweep values are set) runs once per value "
-      "set; each run's outputs are tagged with its values, <stem>_ks=-393_tplot.csv, and every "
+      "(values are expressions without blanks, or ranges lo:step:hi giving lo, lo + step, ... up "
+      "to hi; a record without 'name =' continues the values of the one before; several names "
+      "are zipped and need the same number of values), ended by a blank record. The next problem "
+      "(with the PARAmeter blocks between the sweep and it, evaluated after the sweep values are "
+      "set; they may use a swept name, not set it) runs once per value set (n times with an "
+      "ENSEmble before or after the sweep); each run's outputs are tagged with its values, "
+      "<stem>_ks=-393_tplot.csv, and every "
       "PLOT,CURVe of the runs is overlaid at the end of the deck in <stem>_<y>_vs_<x>.svg with "
       "one legend entry per run ('ks = -393'). FEAP's LOOP,,n ... NEXT around a problem with a "
       "PARAmeter block inside still works; its runs are <stem>_1, <stem>_2, ... "
@@ -175,10 +178,11 @@ void registerDeckBlocks(CommandRegistry& registry) {
       "parameters): a run that fails is reported and the others run (exit status 2 if any "
       "failed), and the study ends with <stem>_plans.csv, one row per run: run number, stem, "
       "swept values, status (ok/failed) and reason, the debris figures. collapse2d run "
-      "--shard i/n runs the i-th of n interleaved parts; collapse2d merge joins the parts.";
+      "--shard i/n runs the i-th of n interleaved parts; collapse2d merge checks and joins the "
+      "parts (tables and overlays); collapse2d run -j N runs the runs in N processes.";
   s.section = CommandSection::Mesh;
   s.data = DataForm::Records;
-  s.dataSyntax = "name = v1 v2 ...";
+  s.dataSyntax = "name = v1 v2 ... (a value, or a range lo:step:hi); v3 v4 ... (continued)";
   s.dataFields = {{"name", FieldKind::Text, {}, "parameter name"},
                   {"v1 v2 ...", FieldKind::Expression, {}, "its value in each run"}};
   registry.add(std::move(s));

@@ -30,7 +30,7 @@ void usage(std::ostream& os) {
         "       collapse2d run --shard i/n [options] DECK...\n"
         "                                     (the i-th of n interleaved parts of the decks,\n"
         "                                     or of one deck's runs; batch_part<i>of<n>.csv)\n"
-        "       collapse2d merge [DIR]        (join the parts' plan tables and batch tables)\n"
+        "       collapse2d merge [DIR]        (check and join the parts' tables and overlays)\n"
         "       collapse2d -iIname            (FEAP's form: deck Iname, log Oname)\n"
         "       collapse2d --help [COMMAND]   (every command, or one command's fields)\n"
         "options:\n"
@@ -56,7 +56,9 @@ void usage(std::ostream& os) {
         "                             ! (a blank record ends the block)\n"
         "  FEAP * * ...\n"
         "  outputs <stem>_ks=-393_tplot.csv, ...; the curves of PLOT,CURVe overlaid in\n"
-        "  <stem>_<y>_vs_<x>.svg with a legend entry per run (see --help SWEEp)\n";
+        "  <stem>_<y>_vs_<x>.svg with a legend entry per run (see --help SWEEp); ranges\n"
+        "  x = 0:0.01:1; an ENSEmble,,n,seed block runs every plan n times with drawn\n"
+        "  values (see --help ENSEmble)\n";
 }
 
 // The options of both modes: -o DIR, -q, --solver NAME. Returns 1 when argv[i]

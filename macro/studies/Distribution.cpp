@@ -35,22 +35,27 @@ double normalQuantile(double p) {
 
 double Distribution::quantile(double u) const {
   switch (law) {
-    case Law::Normal: return a + b * normalQuantile(u);
-    case Law::LogNormal: return a * std::exp(std::sqrt(std::log1p(b * b)) * normalQuantile(u));
-    case Law::Uniform: break;
+    case Law::Normal:
+      return a + b * normalQuantile(u);
+    case Law::LogNormal:
+      return a * std::exp(std::sqrt(std::log1p(b * b)) * normalQuantile(u));
+    case Law::Uniform:
+      break;
   }
   return a + (b - a) * u;
 }
 
 double Distribution::cdf(double x) const {
   switch (law) {
-    case Law::Normal: return b > 0 ? normalCdf((x - a) / b) : (x >= a ? 1.0 : 0.0);
+    case Law::Normal:
+      return b > 0 ? normalCdf((x - a) / b) : (x >= a ? 1.0 : 0.0);
     case Law::LogNormal: {
       const double s = std::sqrt(std::log1p(b * b));
       if (x <= 0) return 0;
       return s > 0 ? normalCdf(std::log(x / a) / s) : (x >= a ? 1.0 : 0.0);
     }
-    case Law::Uniform: break;
+    case Law::Uniform:
+      break;
   }
   if (b <= a) return x >= a ? 1.0 : 0.0;
   return x <= a ? 0.0 : x >= b ? 1.0 : (x - a) / (b - a);
@@ -58,7 +63,9 @@ double Distribution::cdf(double x) const {
 
 std::string Distribution::text() const {
   char buf[96];
-  const char* name = law == Law::Normal ? "NORMal" : law == Law::LogNormal ? "LOGNormal" : "UNIForm";
+  const char* name = law == Law::Normal      ? "NORMal"
+                     : law == Law::LogNormal ? "LOGNormal"
+                                             : "UNIForm";
   std::snprintf(buf, sizeof buf, "%s %g %g", name, a, b);
   return buf;
 }

@@ -27,7 +27,10 @@ void addEnsembleRecord(TopEnsemble& e, const Record& r, bool assignment) {
     const bool jitter = r.is("JITTer");
     if (jitter ? e.jitter.has_value() : e.detonators.has_value())
       failAt(r, 0, std::string(jitter ? "JITTer" : "DETOnators") + " is given twice in this block");
-    if (r.size() > 4) failAt(r, 4, "too many fields: " + std::string(jitter ? "JITTer,,dx,fdt" : "DETOnators,kind,sd,cov"));
+    if (r.size() > 4)
+      failAt(
+          r, 4,
+          "too many fields: " + std::string(jitter ? "JITTer,,dx,fdt" : "DETOnators,kind,sd,cov"));
     if (jitter && written(r, 1))
       failAt(r, 1, "JITTer takes numbers only: JITTer,,dx,fdt", "e.g. JITTer,,1e-6,0.01");
     if (!jitter && written(r, 1) && !keywordMatches(r[1].text, "PYROtechnic") &&
@@ -40,7 +43,8 @@ void addEnsembleRecord(TopEnsemble& e, const Record& r, bool assignment) {
     return;
   }
   if (!assignment || !Parameters::validName(r[0].text))
-    failAt(r, 0, "expected a drawn parameter '" + std::string(kDrawSyntax) + "', JITTer or DETOnators");
+    failAt(r, 0,
+           "expected a drawn parameter '" + std::string(kDrawSyntax) + "', JITTer or DETOnators");
   const std::string name = r[0].text;
   if (r.size() < 2 || !written(r, 1)) failAt(r, 1, "'" + name + "' needs a law: " + kDrawSyntax);
   DrawRecord d;
@@ -61,7 +65,8 @@ void addEnsembleRecord(TopEnsemble& e, const Record& r, bool assignment) {
   d.b = Expression::parse(r[3]);
   for (const DrawRecord& o : e.draws)
     if (toLower(o.name) == toLower(name))
-      failAt(r, 0, "'" + name + "' is drawn twice (line " + std::to_string(o.record.loc.line) + ")");
+      failAt(r, 0,
+             "'" + name + "' is drawn twice (line " + std::to_string(o.record.loc.line) + ")");
   e.draws.push_back(std::move(d));
 }
 
@@ -83,13 +88,16 @@ EnsembleSpec evaluateEnsemble(const TopEnsemble& e, const Parameters& p) {
     NamedDraw nd{d.name, {}};
     const double a = value(d.a, p), b = value(d.b, p);
     if (!std::isfinite(a) || !std::isfinite(b))
-      failAt(d.record, std::isfinite(a) ? 3 : 2, "the law of '" + d.name + "' needs finite numbers");
+      failAt(d.record, std::isfinite(a) ? 3 : 2,
+             "the law of '" + d.name + "' needs finite numbers");
     if (d.law == "norm") {
       if (b < 0) failAt(d.record, 3, "the standard deviation of '" + d.name + "' is negative");
       nd.law = {Law::Normal, a, b};
     } else if (d.law == "logn") {
-      if (a <= 0) failAt(d.record, 2, "the median of a LOGNormal '" + d.name + "' must be positive");
-      if (b < 0) failAt(d.record, 3, "the coefficient of variation of '" + d.name + "' is negative");
+      if (a <= 0)
+        failAt(d.record, 2, "the median of a LOGNormal '" + d.name + "' must be positive");
+      if (b < 0)
+        failAt(d.record, 3, "the coefficient of variation of '" + d.name + "' is negative");
       nd.law = {Law::LogNormal, a, b};
     } else {
       if (b < a) failAt(d.record, 3, "UNIForm lo hi of '" + d.name + "' has hi below lo");
@@ -109,8 +117,10 @@ EnsembleSpec evaluateEnsemble(const TopEnsemble& e, const Parameters& p) {
   if (e.detonators) {
     const Record& r = *e.detonators;
     DetonatorSpec d;
-    if (written(r, 1) && keywordMatches(r[1].text, "ELECtronic")) d.sd = DetonatorSpec::kElectronicSd;
-    if (written(r, 1) && keywordMatches(r[1].text, "PYROtechnic")) d.cov = DetonatorSpec::kPyrotechnicCov;
+    if (written(r, 1) && keywordMatches(r[1].text, "ELECtronic"))
+      d.sd = DetonatorSpec::kElectronicSd;
+    if (written(r, 1) && keywordMatches(r[1].text, "PYROtechnic"))
+      d.cov = DetonatorSpec::kPyrotechnicCov;
     if (written(r, 2)) d.sd = Expression::parse(r[2]).eval(p);
     if (written(r, 3)) d.cov = Expression::parse(r[3]).eval(p);
     if (!written(r, 1) && !written(r, 2) && !written(r, 3))
@@ -128,9 +138,9 @@ SampleDraws drawSample(const EnsembleSpec& spec, int sample) {
   d.sample = sample;
   d.seed = spec.seed;
   for (const NamedDraw& nd : spec.draws)
-    d.values.emplace_back(nd.name,
-                          nd.law.quantile(counterUniform(spec.seed, static_cast<std::uint64_t>(sample),
-                                                         streamOf(nd.name), 0)));
+    d.values.emplace_back(
+        nd.name, nd.law.quantile(counterUniform(spec.seed, static_cast<std::uint64_t>(sample),
+                                                streamOf(nd.name), 0)));
   d.jitter = spec.jitter;
   d.detonators = spec.detonators;
   if (spec.jitter) d.stepFactor = stepFactor(*spec.jitter, spec.seed, sample);
@@ -148,7 +158,8 @@ void registerEnsembleBlock(CommandRegistry& registry) {
       "UNIForm lo hi': a parameter drawn per sample, set after the sweep's values and before "
       "the PARAmeter blocks that follow (which may use it, not set it); 'JITTer,,dx,fdt': every "
       "node moved by a random offset of at most dx (default 1e-6, coincident nodes together) and "
-      "every time step of a dynamic analysis scaled by a factor in 1 +- fdt (default 0.01); 'DETOnators,,sd,cov': "
+      "every time step of a dynamic analysis scaled by a factor in 1 +- fdt (default 0.01); "
+      "'DETOnators,,sd,cov': "
       "every BLASt time t scattered by a normal number of standard deviation sqrt(sd^2 + (cov "
       "t)^2) (DETOnators,ELECtronic: sd = 1 ms; DETOnators,PYROtechnic: cov = 3 %). Outputs: "
       "<stem>_ensemble.csv (a row per run), <stem>_plans.csv (a row per plan: quantiles of the "
@@ -162,8 +173,9 @@ void registerEnsembleBlock(CommandRegistry& registry) {
               {"seed", FieldKind::Expression, "1", "seed of the draws (0 or more)"}};
   s.section = CommandSection::Mesh;
   s.data = DataForm::Records;
-  s.dataSyntax = "name = NORMal mean sd | LOGNormal median cov | UNIForm lo hi; JITTer,,dx,fdt; "
-                 "DETOnators,,sd,cov | DETOnators,PYROtechnic | DETOnators,ELECtronic";
+  s.dataSyntax =
+      "name = NORMal mean sd | LOGNormal median cov | UNIForm lo hi; JITTer,,dx,fdt; "
+      "DETOnators,,sd,cov | DETOnators,PYROtechnic | DETOnators,ELECtronic";
   registry.add(std::move(s));
 }
 

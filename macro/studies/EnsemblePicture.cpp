@@ -80,7 +80,9 @@ std::string ensembleSvg(const EnsembleData& data, const std::vector<PlanStats>& 
       for (const EnsembleRun* r : runs) {
         const double left = r->figure("footprint_xmin") - r->figure("left");
         const double right = r->figure("footprint_xmax") + r->figure("right");
-        past += x >= r->figure("footprint_xmax") ? (right > x) : x <= r->figure("footprint_xmin") ? (left < x) : 1;
+        past += x >= r->figure("footprint_xmax")   ? (right > x)
+                : x <= r->figure("footprint_xmin") ? (left < x)
+                                                   : 1;
         at += std::any_of(r->cover.begin(), r->cover.end(),
                           [x](const auto& c) { return x >= c.first && x <= c.second; });
       }

@@ -15,8 +15,8 @@
 namespace c2d {
 
 struct EnsembleStudyReport {
-  std::string text;  // the log's lines (each starting with two blanks)
-  std::string summary;  // the console's: the plans' table and the best plan
+  std::string text;                          // the log's lines (each starting with two blanks)
+  std::string summary;                       // the console's: the plans' table and the best plan
   std::vector<std::filesystem::path> files;  // written
 };
 

@@ -31,7 +31,8 @@ std::string exactNumber(double v) {
 }
 
 int EnsembleTable::failed() const {
-  return static_cast<int>(std::count_if(rows_.begin(), rows_.end(), [](const EnsembleRow& r) { return !r.ok; }));
+  return static_cast<int>(
+      std::count_if(rows_.begin(), rows_.end(), [](const EnsembleRow& r) { return !r.ok; }));
 }
 
 std::string EnsembleTable::header() const {
@@ -45,7 +46,8 @@ std::string EnsembleTable::header() const {
 
 std::string EnsembleTable::csv() const {
   const std::string debrisHeader = debrisCsvHeader();
-  const std::string noDebris(static_cast<std::size_t>(std::count(debrisHeader.begin(), debrisHeader.end(), ',')), ',');
+  const std::string noDebris(
+      static_cast<std::size_t>(std::count(debrisHeader.begin(), debrisHeader.end(), ',')), ',');
   std::string out = header() + "\n";
   for (const EnsembleRow& r : rows_) {
     out += std::to_string(r.run);
@@ -91,18 +93,22 @@ EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount) 
   data.header = line;
   const std::vector<std::string> head = splitCsv(line);
   const auto status = std::find(head.begin(), head.end(), "status");
-  if (head.size() < 6 || head[0] != "run" || head[1] != "plan" || head[2] != "sample" || head[3] != "stem" ||
-      status == head.end() || status + 1 == head.end() || *(status + 1) != "reason" || head.back() != "cover")
-    throw std::runtime_error("its header is not an ensemble table's (run,plan,sample,stem,...,status,reason,...,cover)");
+  if (head.size() < 6 || head[0] != "run" || head[1] != "plan" || head[2] != "sample" ||
+      head[3] != "stem" || status == head.end() || status + 1 == head.end() ||
+      *(status + 1) != "reason" || head.back() != "cover")
+    throw std::runtime_error(
+        "its header is not an ensemble table's (run,plan,sample,stem,...,status,reason,...,cover)");
   const auto firstDebris = static_cast<std::size_t>(status - head.begin()) + 2;
   const std::size_t values = static_cast<std::size_t>(status - head.begin()) - 4;
-  if (sweptCount > values) throw std::runtime_error("its header has fewer value columns than swept names");
+  if (sweptCount > values)
+    throw std::runtime_error("its header has fewer value columns than swept names");
   data.swept.assign(head.begin() + 4, head.begin() + 4 + static_cast<long>(sweptCount));
   data.drawn.assign(head.begin() + 4 + static_cast<long>(sweptCount), status);
   const std::string debrisHeader = debrisCsvHeader();
   const std::vector<std::string> debrisNames = splitCsv(debrisHeader);
   if (head.size() != firstDebris + debrisNames.size() + 1 ||
-      !std::equal(debrisNames.begin(), debrisNames.end(), head.begin() + static_cast<long>(firstDebris)))
+      !std::equal(debrisNames.begin(), debrisNames.end(),
+                  head.begin() + static_cast<long>(firstDebris)))
     throw std::runtime_error("its debris columns are not this program's (" + debrisHeader + ")");
   if (text.back() != '\n')
     throw std::runtime_error("it ends in the middle of a row (no line end after its last line)");
@@ -113,11 +119,12 @@ EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount) 
     if (line.empty()) continue;
     const std::vector<std::string> c = splitCsv(line);
     auto bad = [&](std::size_t col, const std::string& why) {
-      throw std::runtime_error("line " + std::to_string(lineNo) + (col < head.size() ? ", column " + head[col] : "") +
-                               ": " + why);
+      throw std::runtime_error("line " + std::to_string(lineNo) +
+                               (col < head.size() ? ", column " + head[col] : "") + ": " + why);
     };
     if (c.size() != head.size())
-      bad(head.size(), std::to_string(c.size()) + " cells where the header has " + std::to_string(head.size()));
+      bad(head.size(),
+          std::to_string(c.size()) + " cells where the header has " + std::to_string(head.size()));
     EnsembleRun r;
     const auto run = integerCell(c[0]), plan = integerCell(c[1]), sample = integerCell(c[2]);
     if (!run || *run < 1) bad(0, "'" + c[0] + "' is not a run number");
@@ -133,7 +140,8 @@ EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount) 
       (i < 4 + sweptCount ? r.swept : r.drawn).push_back(*v);
     }
     const std::string& st = c[firstDebris - 2];
-    if (st != "ok" && st != "failed") bad(firstDebris - 2, "the status is '" + st + "', not ok or failed");
+    if (st != "ok" && st != "failed")
+      bad(firstDebris - 2, "the status is '" + st + "', not ok or failed");
     r.ok = st == "ok";
     r.reason = c[firstDebris - 1];
     r.debris = !c[firstDebris].empty();
@@ -142,10 +150,12 @@ EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount) 
         const std::string& name = debrisNames[k];
         const std::string& cell = c[firstDebris + k];
         if (name == "site") {
-          if (cell != "inside" && cell != "outside" && cell != "none") bad(firstDebris + k, "the site status is '" + cell + "'");
+          if (cell != "inside" && cell != "outside" && cell != "none")
+            bad(firstDebris + k, "the site status is '" + cell + "'");
           r.site = cell;
         } else if (name == "at_rest") {
-          if (cell != "yes" && cell != "no") bad(firstDebris + k, "at_rest is '" + cell + "', not yes or no");
+          if (cell != "yes" && cell != "no")
+            bad(firstDebris + k, "at_rest is '" + cell + "', not yes or no");
           r.atRest = cell == "yes";
         } else if (!cell.empty() || (name != "site_xmin" && name != "site_xmax")) {
           const auto v = numberCell(cell);
@@ -160,8 +170,10 @@ EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount) 
         if (e == std::string::npos) e = cover.size();
         const std::string span = cover.substr(p, e - p);
         const std::size_t colon = span.find(':');
-        const auto a = colon == std::string::npos ? std::nullopt : numberCell(span.substr(0, colon));
-        const auto b = colon == std::string::npos ? std::nullopt : numberCell(span.substr(colon + 1));
+        const auto a =
+            colon == std::string::npos ? std::nullopt : numberCell(span.substr(0, colon));
+        const auto b =
+            colon == std::string::npos ? std::nullopt : numberCell(span.substr(colon + 1));
         if (!a || !b) bad(head.size() - 1, "'" + span + "' is not an interval x0:x1");
         r.cover.emplace_back(*a, *b);
         p = e + 1;

@@ -65,9 +65,9 @@ struct EnsembleRun {
   std::vector<double> swept, drawn;  // in the header's order
   bool ok = false;
   std::string reason;
-  bool debris = false;                // debris figures present
+  bool debris = false;                    // debris figures present
   std::map<std::string, double> figures;  // the numeric debris columns by name
-  std::string site;                   // "inside", "outside", "none"
+  std::string site;                       // "inside", "outside", "none"
   bool atRest = true;
   std::vector<std::pair<double, double>> cover;
 

@@ -5,9 +5,9 @@
 // elements are built (their reference geometry is the moved one), and scales
 // every time step the deck sets (DT, BACK) in a dynamic analysis by a factor
 // uniform in [1 - fdt, 1 + fdt] (a static analysis's steps are a load path
-// whose step counts reach the deck's load levels: they are kept). Coincident nodes (a joint's master and slave, within
-// 1e-9 of the mesh size) move together, by the offset of the lowest-numbered.
-// Defaults: dx = 1e-6 (1 um in a deck in metres: round-off's size, far below any
+// whose step counts reach the deck's load levels: they are kept). Coincident nodes (a joint's
+// master and slave, within 1e-9 of the mesh size) move together, by the offset of the
+// lowest-numbered. Defaults: dx = 1e-6 (1 um in a deck in metres: round-off's size, far below any
 // tolerance), fdt = 0.01 (steps 1 % longer or shorter: a change of the
 // discretization error's order that leaves the run's convergence alone).
 #include <cstdint>

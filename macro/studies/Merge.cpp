@@ -45,7 +45,8 @@ std::string missingParts(const std::set<int>& parts, int n) {
 // "2, 4, 6, ... (50 runs)".
 std::string runList(const std::vector<int>& runs) {
   std::string s;
-  for (std::size_t i = 0; i < runs.size() && i < 6; ++i) s += (i ? ", " : "") + std::to_string(runs[i]);
+  for (std::size_t i = 0; i < runs.size() && i < 6; ++i)
+    s += (i ? ", " : "") + std::to_string(runs[i]);
   if (runs.size() > 6) s += ", ...";
   if (runs.empty()) s = "none";
   return s + " (" + std::to_string(runs.size()) + " run" + (runs.size() == 1 ? "" : "s") + ")";
@@ -54,13 +55,15 @@ std::string runList(const std::vector<int>& runs) {
 // The plans table's columns that hold text; the others hold numbers (or are
 // empty: a failed run's debris, the site limits without a site).
 bool textColumn(const std::string& name) {
-  return name == "stem" || name == "status" || name == "reason" || name == "site" || name == "at_rest";
+  return name == "stem" || name == "status" || name == "reason" || name == "site" ||
+         name == "at_rest";
 }
 
 // The rows of a part's plans table (run number, line), every cell checked.
 std::vector<std::pair<int, std::string>> planRows(const std::string& text, std::string& header) {
   if (text.empty()) throw Refused("it is empty (no header)");
-  if (text.back() != '\n') throw Refused("it ends in the middle of a row (no line end after its last line)");
+  if (text.back() != '\n')
+    throw Refused("it ends in the middle of a row (no line end after its last line)");
   std::istringstream in(text);
   std::string line;
   std::getline(in, line);
@@ -79,7 +82,8 @@ std::vector<std::pair<int, std::string>> planRows(const std::string& text, std::
     const std::vector<std::string> c = splitCsv(line);
     const std::string at = "line " + std::to_string(lineNo) + ": ";
     if (c.size() != head.size())
-      throw Refused(at + std::to_string(c.size()) + " cells where the header has " + std::to_string(head.size()));
+      throw Refused(at + std::to_string(c.size()) + " cells where the header has " +
+                    std::to_string(head.size()));
     const auto run = integerCell(c[0]);
     if (!run || *run < 1) throw Refused(at + "'" + c[0] + "' is not a run number");
     const auto status = std::find(head.begin(), head.end(), "status") - head.begin();
@@ -117,8 +121,9 @@ bool mergeStudy(const fs::path& dir, const std::string& stem, int n, const Study
   std::ostringstream logText;
   const std::string set = stem + "_part<i>of" + std::to_string(n);
   if (const std::string missing = missingParts(files.parts(), n); !missing.empty()) {
-    err << "collapse2d merge: " << set << ": part" << (missing.find(',') == std::string::npos ? " " : "s ")
-        << missing << " of " << n << " missing; not merged\n";
+    err << "collapse2d merge: " << set << ": part"
+        << (missing.find(',') == std::string::npos ? " " : "s ") << missing << " of " << n
+        << " missing; not merged\n";
     return false;
   }
   ShardManifest first;
@@ -130,8 +135,9 @@ bool mergeStudy(const fs::path& dir, const std::string& stem, int n, const Study
     fs::path file = dir / (stem + tag + "_manifest.csv");
     try {
       if (!files.manifests.count(i))
-        throw Refused("missing: the part was not written by `collapse2d run --shard " + std::to_string(i) + "/" +
-                      std::to_string(n) + "` of this program, or its run did not end");
+        throw Refused("missing: the part was not written by `collapse2d run --shard " +
+                      std::to_string(i) + "/" + std::to_string(n) +
+                      "` of this program, or its run did not end");
       ShardManifest m;
       try {
         m = readShardManifest(slurp(file));
@@ -144,11 +150,12 @@ bool mergeStudy(const fs::path& dir, const std::string& stem, int n, const Study
                       ": it was copied from another part");
       if (i == 1) {
         first = m;
-      } else if (m.fingerprint != first.fingerprint || m.runs != first.runs || m.table != first.table ||
-                 m.swept != first.swept) {
-        throw Refused("it was written by another deck than part 1 (" + m.deck + ", fingerprint " + m.fingerprint +
-                      ", " + std::to_string(m.runs) + " runs; part 1: " + first.deck + ", fingerprint " +
-                      first.fingerprint + ", " + std::to_string(first.runs) + " runs)");
+      } else if (m.fingerprint != first.fingerprint || m.runs != first.runs ||
+                 m.table != first.table || m.swept != first.swept) {
+        throw Refused("it was written by another deck than part 1 (" + m.deck + ", fingerprint " +
+                      m.fingerprint + ", " + std::to_string(m.runs) +
+                      " runs; part 1: " + first.deck + ", fingerprint " + first.fingerprint + ", " +
+                      std::to_string(first.runs) + " runs)");
       }
       const auto kinds = files.tables.find(i);
       const auto table = kinds == files.tables.end() ? nullptr : [&]() -> const fs::path* {
@@ -171,7 +178,8 @@ bool mergeStudy(const fs::path& dir, const std::string& stem, int n, const Study
         } catch (const std::runtime_error& e) {
           throw Refused(e.what());
         }
-        if (!header.empty() && d.header != header) throw Refused("its columns differ from part 1's");
+        if (!header.empty() && d.header != header)
+          throw Refused("its columns differ from part 1's");
         header = d.header;
         std::istringstream in(text);
         std::string line;
@@ -186,25 +194,28 @@ bool mergeStudy(const fs::path& dir, const std::string& stem, int n, const Study
       }
       const std::vector<int> expected = shardRuns(i, n, m.runs);
       if (runs != expected)
-        throw Refused("it holds runs " + runList(runs) + ", where part " + std::to_string(i) + " of " +
-                      std::to_string(n) + " of this deck (" + std::to_string(m.runs) + " runs) holds runs " +
-                      runList(expected));
+        throw Refused("it holds runs " + runList(runs) + ", where part " + std::to_string(i) +
+                      " of " + std::to_string(n) + " of this deck (" + std::to_string(m.runs) +
+                      " runs) holds runs " + runList(expected));
       if (m.curves > 0) {
         file = dir / (stem + tag + "_curves.csv");
         try {
           overlay.addCsv(slurp(file));
         } catch (const IoError&) {
-          throw Refused("missing (the part's manifest counts " + std::to_string(m.curves) + " runs' curves)");
+          throw Refused("missing (the part's manifest counts " + std::to_string(m.curves) +
+                        " runs' curves)");
         } catch (const std::runtime_error& e) {
           throw Refused(e.what());
         }
       }
     } catch (const Refused& e) {
-      err << "collapse2d merge: " << file.string() << ": " << e.what() << "; " << set << " is not merged\n";
+      err << "collapse2d merge: " << file.string() << ": " << e.what() << "; " << set
+          << " is not merged\n";
       return false;
     }
   }
-  std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
   std::string text = header + "\n";
   for (const auto& [run, line] : rows) text += line + "\n";
   const fs::path joined = dir / (stem + "_" + first.table + ".csv");
@@ -214,10 +225,10 @@ bool mergeStudy(const fs::path& dir, const std::string& stem, int n, const Study
     const auto head = splitCsv(header);
     const auto status = std::find(head.begin(), head.end(), "status") - head.begin();
     for (const auto& [run, line] : rows) failed += splitCsv(line)[status] == "failed";
-    out << joined.filename().string() << ": " << rows.size() << " plans from " << n << " parts, " << failed
-        << " failed\n";
-    logText << "  plans: " << joined.filename().string() << " (" << rows.size() << " runs, " << failed
-            << " failed)\n";
+    out << joined.filename().string() << ": " << rows.size() << " plans from " << n << " parts, "
+        << failed << " failed\n";
+    logText << "  plans: " << joined.filename().string() << " (" << rows.size() << " runs, "
+            << failed << " failed)\n";
   } else {
     const EnsembleStudyReport report =
         writeEnsembleStudy(dir, stem, readEnsembleTable(text, first.swept.size()), first.title);
@@ -241,8 +252,9 @@ bool mergeBatch(const fs::path& dir, int n, const std::map<int, fs::path>& parts
   std::set<int> present;
   for (const auto& [i, f] : parts) present.insert(i);
   if (const std::string missing = missingParts(present, n); !missing.empty()) {
-    err << "collapse2d merge: batch.csv: part" << (missing.find(',') == std::string::npos ? " " : "s ")
-        << missing << " of " << n << " missing; not merged\n";
+    err << "collapse2d merge: batch.csv: part"
+        << (missing.find(',') == std::string::npos ? " " : "s ") << missing << " of " << n
+        << " missing; not merged\n";
     return false;
   }
   std::vector<std::vector<BatchResult>> tables;
@@ -252,7 +264,8 @@ bool mergeBatch(const fs::path& dir, int n, const std::map<int, fs::path>& parts
     } catch (const IoError&) {
       throw;
     } catch (const std::runtime_error& e) {
-      err << "collapse2d merge: " << file.string() << ": " << e.what() << "; batch.csv is not merged\n";
+      err << "collapse2d merge: " << file.string() << ": " << e.what()
+          << "; batch.csv is not merged\n";
       return false;
     }
   }
@@ -261,18 +274,20 @@ bool mergeBatch(const fs::path& dir, int n, const std::map<int, fs::path>& parts
   for (std::size_t i = 0; i < tables.size(); ++i)
     for (const BatchResult& r : tables[i]) where[r.deck].push_back(static_cast<int>(i) + 1);
   for (const auto& [deck, in] : where) {
-    const bool split = in.size() == static_cast<std::size_t>(n) &&
-                       std::all_of(tables.begin(), tables.end(), [](const auto& t) { return t.size() == 1; });
+    const bool split =
+        in.size() == static_cast<std::size_t>(n) &&
+        std::all_of(tables.begin(), tables.end(), [](const auto& t) { return t.size() == 1; });
     if (in.size() > 1 && !split) {
-      err << "collapse2d merge: " << parts.at(in[1]).string() << ": deck " << deck << " is in part " << in[0]
-          << " too (a part copied over another?); batch.csv is not merged\n";
+      err << "collapse2d merge: " << parts.at(in[1]).string() << ": deck " << deck << " is in part "
+          << in[0] << " too (a part copied over another?); batch.csv is not merged\n";
       return false;
     }
   }
   std::vector<BatchResult> merged;
   for (const auto& rows : tables)
     for (const BatchResult& r : rows) {
-      auto it = std::find_if(merged.begin(), merged.end(), [&](const BatchResult& m) { return m.deck == r.deck; });
+      auto it = std::find_if(merged.begin(), merged.end(),
+                             [&](const BatchResult& m) { return m.deck == r.deck; });
       if (it == merged.end()) {
         merged.push_back(r);
         continue;
@@ -289,7 +304,8 @@ bool mergeBatch(const fs::path& dir, int n, const std::map<int, fs::path>& parts
       it->outsideRuns += r.outsideRuns;
     }
   AtomicFile::write(dir / "batch.csv", batchCsv(merged));
-  out << "batch.csv: " << merged.size() << " deck" << (merged.size() == 1 ? "" : "s") << " from " << n << " parts\n";
+  out << "batch.csv: " << merged.size() << " deck" << (merged.size() == 1 ? "" : "s") << " from "
+      << n << " parts\n";
   printBatchTable(out, merged);
   return true;
 }
@@ -326,8 +342,8 @@ int mergeAll(const fs::path& dir, std::ostream& out, std::ostream& err) {
     if (std::regex_match(name, m, batch)) batches[std::stoi(m[2])][std::stoi(m[1])] = entry.path();
   }
   if (studies.empty() && batches.empty()) {
-    err << "collapse2d merge: no parts (*_part<i>of<n>_*.csv, batch_part<i>of<n>.csv) in '" << dir.string()
-        << "'\n";
+    err << "collapse2d merge: no parts (*_part<i>of<n>_*.csv, batch_part<i>of<n>.csv) in '"
+        << dir.string() << "'\n";
     return 1;
   }
   int status = 0;

@@ -44,9 +44,8 @@ double betaFraction(double a, double b, double x) {
 double incompleteBeta(double a, double b, double x) {
   if (x <= 0) return 0;
   if (x >= 1) return 1;
-  const double front =
-      std::exp(std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) +
-               b * std::log1p(-x));
+  const double front = std::exp(std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) +
+                                a * std::log(x) + b * std::log1p(-x));
   if (x < (a + 1) / (a + b + 2)) return front * betaFraction(a, b, x) / a;
   return 1 - front * betaFraction(b, a, 1 - x) / b;
 }
@@ -77,8 +76,8 @@ PairedTest pairedTTest(std::span<const double> d) {
   }
   r.statistic = mean / (sd / std::sqrt(m));
   r.p = d.size() > 1 ? 2 * (1 - studentTCdf(std::abs(r.statistic), m - 1)) : 1.0;
-  r.samplesNeeded = mean == 0 ? std::numeric_limits<double>::infinity()
-                              : std::pow((kZ975 + kZ80) * sd / mean, 2);
+  r.samplesNeeded =
+      mean == 0 ? std::numeric_limits<double>::infinity() : std::pow((kZ975 + kZ80) * sd / mean, 2);
   return r;
 }
 

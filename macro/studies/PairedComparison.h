@@ -19,9 +19,9 @@ namespace c2d {
 
 struct PairedTest {
   int pairs = 0;
-  double effect = 0;   // mean difference (t test), (c - b)/m (McNemar)
-  double statistic = 0;  // t, or b (McNemar)
-  double p = 1;          // two-sided
+  double effect = 0;         // mean difference (t test), (c - b)/m (McNemar)
+  double statistic = 0;      // t, or b (McNemar)
+  double p = 1;              // two-sided
   double samplesNeeded = 0;  // per plan, for 80 % power at 5 % (inf: no lead at all)
   bool significant() const { return p < 0.05; }
 };

@@ -42,7 +42,8 @@ std::string joinPartLogs(const std::vector<std::string>& partLogs, const std::st
         end = i;
         break;
       }
-      if (i + 1 < l.size() && l[i].rfind("  collapse2d  ", 0) == 0 && std::regex_match(l[i + 1], m, runLine))
+      if (i + 1 < l.size() && l[i].rfind("  collapse2d  ", 0) == 0 &&
+          std::regex_match(l[i + 1], m, runLine))
         starts.emplace_back(i, std::stoi(m[1]));
     }
     auto text = [&](std::size_t from, std::size_t to) {
@@ -52,9 +53,11 @@ std::string joinPartLogs(const std::vector<std::string>& partLogs, const std::st
       return t;
     };
     if (p == 0) header = text(0, starts.empty() ? end : starts.front().first);
-    for (std::size_t k = 0; k < starts.size(); ++k)
-      sections[starts[k].second] =
-          "\n" + text(starts[k].first, k + 1 < starts.size() ? starts[k + 1].first : end);
+    for (std::size_t k = 0; k < starts.size(); ++k) {
+      std::string& section = sections[starts[k].second];
+      section = "\n";
+      section += text(starts[k].first, k + 1 < starts.size() ? starts[k + 1].first : end);
+    }
   }
   std::string out = header;
   out += "  its runs in " + std::to_string(partLogs.size()) + " processes (collapse2d run -j " +
@@ -103,7 +106,8 @@ int runDeckInParallel(const std::string& deck, const BatchOptions& options,
     if (!mergeStudyParts(dir, stem, n, out, err, &study)) return 1;
     std::vector<std::string> logs;
     for (int i = 1; i <= n; ++i) {
-      std::ifstream in(dir / (stem + "_part" + std::to_string(i) + "of" + std::to_string(n) + ".out"));
+      std::ifstream in(dir /
+                       (stem + "_part" + std::to_string(i) + "of" + std::to_string(n) + ".out"));
       std::ostringstream s;
       s << in.rdbuf();
       logs.push_back(s.str());
@@ -111,7 +115,8 @@ int runDeckInParallel(const std::string& deck, const BatchOptions& options,
     AtomicFile::write(dir / (stem + ".out"), joinPartLogs(logs, study));
     for (int i = 1; i <= n; ++i) {
       const std::string part = stem + "_part" + std::to_string(i) + "of" + std::to_string(n);
-      for (const char* suffix : {".out", "_manifest.csv", "_plans.csv", "_ensemble.csv", "_curves.csv"})
+      for (const char* suffix :
+           {".out", "_manifest.csv", "_plans.csv", "_ensemble.csv", "_curves.csv"})
         fs::remove(dir / (part + suffix));
     }
   } catch (const IoError& e) {

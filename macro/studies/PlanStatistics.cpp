@@ -95,7 +95,8 @@ std::string plansCsv(const EnsembleData& data, const std::vector<PlanStats>& pla
     for (const auto& q : s.quantiles)
       for (double v : q) appendCell(out, num(v));
     const bool known = s.site && s.debrisRuns > 0;
-    for (double v : {s.pOutside, s.pOutsideLo, s.pOutsideHi}) appendCell(out, known ? share(v) : "");
+    for (double v : {s.pOutside, s.pOutsideLo, s.pOutsideHi})
+      appendCell(out, known ? share(v) : "");
     appendCell(out, s.debrisRuns > 0 ? share(s.pMoving) : "");
     out += '\n';
   }
@@ -136,7 +137,8 @@ std::string bestPlanText(const EnsembleData& data, const std::vector<PlanStats>&
   for (const PlanStats& s : plans)
     if (s.debrisRuns > 0) ranked.push_back(&s);
   if (ranked.empty()) return {};
-  const bool site = std::any_of(ranked.begin(), ranked.end(), [](const PlanStats* s) { return s->site; });
+  const bool site =
+      std::any_of(ranked.begin(), ranked.end(), [](const PlanStats* s) { return s->site; });
   std::stable_sort(ranked.begin(), ranked.end(), [&](const PlanStats* a, const PlanStats* b) {
     if (site && a->pOutside != b->pOutside) return a->pOutside < b->pOutside;
     return a->medianReach95 < b->medianReach95;
@@ -194,7 +196,8 @@ std::string bestPlanText(const EnsembleData& data, const std::vector<PlanStats>&
   } else if (!std::isfinite(t.samplesNeeded)) {
     out += ": not significant; the two cannot be told apart on these runs\n";
   } else {
-    std::snprintf(buf, sizeof buf, ": not significant; about %.0f samples per plan would tell them apart\n",
+    std::snprintf(buf, sizeof buf,
+                  ": not significant; about %.0f samples per plan would tell them apart\n",
                   std::ceil(std::max(t.samplesNeeded, static_cast<double>(m) + 1)));
     out += buf;
   }

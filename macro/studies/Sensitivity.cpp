@@ -85,8 +85,9 @@ std::string sensitivityText(const EnsembleData& data) {
       out += buf;
       continue;
     }
-    std::snprintf(buf, sizeof buf, "    plan %d (%d runs; |rho| above %.2f stands out of the noise):\n",
-                  c.plan, c.runs, 2 / std::sqrt(static_cast<double>(c.runs)));
+    std::snprintf(buf, sizeof buf,
+                  "    plan %d (%d runs; |rho| above %.2f stands out of the noise):\n", c.plan,
+                  c.runs, 2 / std::sqrt(static_cast<double>(c.runs)));
     out += buf;
     std::vector<std::size_t> order(data.drawn.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;

@@ -17,7 +17,8 @@
 namespace {
 
 void BM_FellingEnsembleTwoProcesses(benchmark::State& st) {
-  const std::filesystem::path deck = c2d::bench::sourceDeck("demolition", "felling_ensemble_short.inp");
+  const std::filesystem::path deck =
+      c2d::bench::sourceDeck("demolition", "felling_ensemble_short.inp");
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "c2d_bench_ensemble";
   std::filesystem::remove_all(dir);
   c2d::BatchOptions options;

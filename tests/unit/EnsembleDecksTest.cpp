@@ -47,10 +47,8 @@ DeckOutcome run(const std::string& name, const fs::path& out, int shard = 1, int
   return runDeck(deckPath(name), o, commands, console);
 }
 
-EnsembleData table(const fs::path& csv, std::size_t swept) { return readEnsembleTable(slurp(csv), swept); }
-
-std::size_t column(const std::vector<std::string>& names, const std::string& name) {
-  return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+EnsembleData table(const fs::path& csv, std::size_t swept) {
+  return readEnsembleTable(slurp(csv), swept);
 }
 
 // The KS statistic of values against a distribution function.
@@ -65,7 +63,8 @@ double ks(std::vector<double> x, double (*cdf)(double)) {
 
 TEST(EnsembleDecks, TheBlockParsesBeforeOrAfterTheSweep) {
   const std::string problem = "FEAP * * t\n  0 0 0 2 3 2\nEND\nBATCh\nEND\nSTOP\n";
-  const std::string ens = "ENSEmble,,4,2\n  mu = NORMal 0.5 0.1\n  JITTer,,1e-6\n  DETOnators,PYROtechnic\n\n";
+  const std::string ens =
+      "ENSEmble,,4,2\n  mu = NORMal 0.5 0.1\n  JITTer,,1e-6\n  DETOnators,PYROtechnic\n\n";
   const std::string sweep = "SWEEp\n  a = 1 2\n\n";
   for (const std::string& text : {ens + sweep + problem, sweep + ens + problem}) {
     const Deck d = parseDeckText(text, "e.inp");
@@ -85,14 +84,15 @@ TEST(EnsembleDecks, TheBlockParsesBeforeOrAfterTheSweep) {
   using testing::expectDeckError;
   expectDeckError([&] { parseDeckText("ENSEmble\n\n" + problem, "e.inp"); }, "e.inp", 1, 9,
                   "ENSEmble needs the number of samples");
-  expectDeckError([&] { parseDeckText("ENSEmble,,3\n  JITTer,ON\n\n" + problem, "e.inp"); }, "e.inp", 2, 10,
-                  "JITTer takes numbers only");
-  expectDeckError([&] { parseDeckText("ENSEmble,,3\n  DETOnators,NONEl\n\n" + problem, "e.inp"); }, "e.inp", 2,
-                  14, "unknown kind of detonator");
-  expectDeckError([&] { parseDeckText("ENSEmble,,3\n  mu = UNIForm 1\n\n" + problem, "e.inp"); }, "e.inp", 2,
-                  17, "'mu' needs two numbers");
-  expectDeckError([&] { parseDeckText("ENSEmble,,3\n  a = UNIForm 1 2\n\n" + sweep + problem, "e.inp"); },
-                  "e.inp", 2, 3, "'a' is both drawn and swept");
+  expectDeckError([&] { parseDeckText("ENSEmble,,3\n  JITTer,ON\n\n" + problem, "e.inp"); },
+                  "e.inp", 2, 10, "JITTer takes numbers only");
+  expectDeckError([&] { parseDeckText("ENSEmble,,3\n  DETOnators,NONEl\n\n" + problem, "e.inp"); },
+                  "e.inp", 2, 14, "unknown kind of detonator");
+  expectDeckError([&] { parseDeckText("ENSEmble,,3\n  mu = UNIForm 1\n\n" + problem, "e.inp"); },
+                  "e.inp", 2, 17, "'mu' needs two numbers");
+  expectDeckError(
+      [&] { parseDeckText("ENSEmble,,3\n  a = UNIForm 1 2\n\n" + sweep + problem, "e.inp"); },
+      "e.inp", 2, 3, "'a' is both drawn and swept");
   expectDeckError([&] { parseDeckText(ens + sweep + ens + problem, "e.inp"); }, "e.inp", 9, 1,
                   "a second ENSEmble for the same problem");
   const Deck bad = parseDeckText("ENSEmble,,0\n  mu = UNIForm 2 1\n\n" + problem, "e.inp");
@@ -105,12 +105,13 @@ TEST(EnsembleDecks, TheBlockParsesBeforeOrAfterTheSweep) {
 // its record, naming the sample and its draws.
 TEST(EnsembleDecks, ADrawThatMakesTheDeckBadIsReportedWithItsSample) {
   testing::DeckTempDir dir;
-  const std::string deck = dir.write("bad.inp",
-                                     "ENSEmble,,20,1\n  h = NORMal 0.01 0.01\n\n"
-                                     "FEAP * * t\n  0 0 0 2 3 2\nCOORdinates\n  1 0 0 0\n  2 0 1 0\n\n"
-                                     "ELEMents\n  1 0 1 1 2\n\nMATErial,1\n  FRAMe\n"
-                                     "    RESUltant STIFfness 1 1 1\n\nBOUNdary\n  1 0 1 1 1\n\nEND\n"
-                                     "BATCh\n  DT,,h\nEND\nSTOP\n");
+  const std::string deck =
+      dir.write("bad.inp",
+                "ENSEmble,,20,1\n  h = NORMal 0.01 0.01\n\n"
+                "FEAP * * t\n  0 0 0 2 3 2\nCOORdinates\n  1 0 0 0\n  2 0 1 0\n\n"
+                "ELEMents\n  1 0 1 1 2\n\nMATErial,1\n  FRAMe\n"
+                "    RESUltant STIFfness 1 1 1\n\nBOUNdary\n  1 0 1 1 1\n\nEND\n"
+                "BATCh\n  DT,,h\nEND\nSTOP\n");
   DeckOptions o;
   o.outDir = dir.path() / "out";
   o.quiet = true;
@@ -118,9 +119,12 @@ TEST(EnsembleDecks, ADrawThatMakesTheDeckBadIsReportedWithItsSample) {
   std::ostringstream console;
   const DeckOutcome r = runDeck(deck, o, commands, console);
   EXPECT_EQ(r.exitCode, kExitDeckError);
-  EXPECT_NE(r.message.find("bad.inp:22:7: error: the time step must be positive"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("bad.inp:22:7: error: the time step must be positive"),
+            std::string::npos)
+      << r.message;
   EXPECT_NE(r.message.find("(in sample "), std::string::npos) << r.message;
-  EXPECT_NE(r.message.find("of the ENSEmble of line 1, which drew h = -"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("of the ENSEmble of line 1, which drew h = -"), std::string::npos)
+      << r.message;
   EXPECT_FALSE(fs::exists(dir.path() / "out" / "bad_ensemble.csv"));
 }
 
@@ -138,10 +142,12 @@ TEST(EnsembleDecks, SlidingBlockReachesItsOwnClosedForm) {
     ASSERT_TRUE(r.ok && r.debris) << r.reason;
     EXPECT_TRUE(r.atRest);
     mu.push_back(r.drawn[0]);
-    EXPECT_NEAR(r.figure("right"), x1 + v0 * v0 / (2 * r.drawn[0] * g), 1e-3) << "mu = " << r.drawn[0];
+    EXPECT_NEAR(r.figure("right"), x1 + v0 * v0 / (2 * r.drawn[0] * g), 1e-3)
+        << "mu = " << r.drawn[0];
   }
   // The drawn mu against UNIForm 0.2 0.6 (the 1 % critical value 1.628/sqrt(n)).
-  EXPECT_LT(ks(mu, [](double x) { return std::clamp((x - 0.2) / 0.4, 0.0, 1.0); }), 1.628 / std::sqrt(20.0));
+  EXPECT_LT(ks(mu, [](double x) { return std::clamp((x - 0.2) / 0.4, 0.0, 1.0); }),
+            1.628 / std::sqrt(20.0));
 }
 
 // V17: each run falls to the side its jittered mass leans to; p_outside and its interval.

@@ -81,7 +81,8 @@ TEST(EnsembleSamplers, NormalQuantileByHand) {
   EXPECT_NEAR(normalQuantile(0.001), -3.090232306167813, 1e-13);
   EXPECT_NEAR(normalQuantile(1e-10), -6.361340902404056, 1e-12);
   EXPECT_NEAR(normalQuantile(0.5), 0, 1e-16);
-  for (double p : {1e-300, 1e-6, 0.2, 0.7, 1 - 1e-9}) EXPECT_NEAR(normalCdf(normalQuantile(p)) / p, 1, 1e-12);
+  for (double p : {1e-300, 1e-6, 0.2, 0.7, 1 - 1e-9})
+    EXPECT_NEAR(normalCdf(normalQuantile(p)) / p, 1, 1e-12);
 }
 
 TEST(EnsembleDraws, DependOnSeedAndSampleAlone) {
@@ -121,7 +122,8 @@ TEST(EnsembleDraws, JitterMovesCoincidentNodesTogether) {
   mat.resEA = mat.resGA = 1e6;
   mat.resEI = 1e4;
   m.materials()[1] = mat;
-  for (const Vec2& x : {Vec2(0, 0), Vec2(1, 0), Vec2(1, 0), Vec2(2, 0), Vec2(1, 1e-12)}) m.addNode(x);
+  for (const Vec2& x : {Vec2(0, 0), Vec2(1, 0), Vec2(1, 0), Vec2(2, 0), Vec2(1, 1e-12)})
+    m.addNode(x);
   std::vector<Vec2> before;
   for (int n = 0; n < m.numNodes(); ++n) before.push_back(m.coord(n));
   jitterNodes(m, JitterSpec{1e-3, 0}, 5, 2);
@@ -155,7 +157,9 @@ TEST(EnsembleDraws, DetonatorsScatterEachBlastTime) {
       m.blasts().push_back({t, {1}, 0, false});
       const std::vector<double> drawn = scatterBlasts(m, spec, 1, k);
       EXPECT_EQ(drawn.size(), 2u);
-      if (drawn[0] > 0) EXPECT_NE(drawn[0], drawn[1]);  // each record its own detonator
+      if (drawn[0] > 0) {
+        EXPECT_NE(drawn[0], drawn[1]);  // each record its own detonator
+      }
       EXPECT_EQ(m.blasts()[0].time, drawn[0]);
       times.push_back(drawn[0]);
     }
@@ -198,15 +202,19 @@ TEST(EnsembleStatistics, WilsonIntervalByHand) {
 
 TEST(EnsembleStatistics, RankCorrelationByHand) {
   // Ties get their mean rank: y's ranks 1, 2, 3.5, 5, 3.5.
-  EXPECT_NEAR(rankCorrelation(std::vector<double>{1, 2, 3, 4, 5}, std::vector<double>{5, 6, 7, 8, 7}),
-              0.8207826816681233, 1e-14);
+  EXPECT_NEAR(
+      rankCorrelation(std::vector<double>{1, 2, 3, 4, 5}, std::vector<double>{5, 6, 7, 8, 7}),
+      0.8207826816681233, 1e-14);
   // Without ties, 1 - 6 sum d^2 / (n (n^2 - 1)) = 1 - 6 * 16 / 210.
   EXPECT_NEAR(rankCorrelation(std::vector<double>{0.3, 0.1, 0.2, 0.5, 0.4, 0.6},
                               std::vector<double>{2.0, 1.0, 1.5, 1.2, 3.0, 2.5}),
               1 - 6.0 * 16 / 210, 1e-14);
-  EXPECT_NEAR(rankCorrelation(std::vector<double>{1, 2, 3}, std::vector<double>{1, 8, 27}), 1, 1e-15);
-  EXPECT_NEAR(rankCorrelation(std::vector<double>{1, 2, 3}, std::vector<double>{3, 2, 1}), -1, 1e-15);
-  EXPECT_TRUE(std::isnan(rankCorrelation(std::vector<double>{1, 2, 3}, std::vector<double>{4, 4, 4})));
+  EXPECT_NEAR(rankCorrelation(std::vector<double>{1, 2, 3}, std::vector<double>{1, 8, 27}), 1,
+              1e-15);
+  EXPECT_NEAR(rankCorrelation(std::vector<double>{1, 2, 3}, std::vector<double>{3, 2, 1}), -1,
+              1e-15);
+  EXPECT_TRUE(
+      std::isnan(rankCorrelation(std::vector<double>{1, 2, 3}, std::vector<double>{4, 4, 4})));
 }
 
 TEST(EnsembleStatistics, PairedTestsByHand) {

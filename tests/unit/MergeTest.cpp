@@ -25,7 +25,9 @@ std::string slurp(const fs::path& p) {
   return ss.str();
 }
 
-void spit(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+void spit(const fs::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
 
 // The two parts of a deck's study in dir/parts (and the batch parts).
 void runParts(const std::string& deck, const fs::path& dir) {
@@ -91,7 +93,8 @@ TEST(Merge, RefusesAPartMissingItsLastRow) {
         t.pop_back();
         spit(f, t.substr(0, t.rfind('\n') + 1));
       },
-      "plan_study_part1of2_plans.csv", "holds runs 1 (1 run), where part 1 of 2 of this deck (3 runs) holds runs 1, 3");
+      "plan_study_part1of2_plans.csv",
+      "holds runs 1 (1 run), where part 1 of 2 of this deck (3 runs) holds runs 1, 3");
 }
 
 TEST(Merge, RefusesAnEmptyPart) {
@@ -110,7 +113,8 @@ TEST(Merge, RefusesPartOneCopiedOverPartTwo) {
   expectRefused(
       [](const fs::path& d) {
         for (const char* f : {"_manifest.csv", "_plans.csv"})
-          fs::copy_file(d / (std::string("plan_study_part1of2") + f), d / (std::string("plan_study_part2of2") + f),
+          fs::copy_file(d / (std::string("plan_study_part1of2") + f),
+                        d / (std::string("plan_study_part2of2") + f),
                         fs::copy_options::overwrite_existing);
       },
       "plan_study_part2of2_manifest.csv", "it says part 1 of 2");
@@ -159,7 +163,8 @@ TEST(Merge, RefusesABadBatchPart) {
   spit(f, t);
   std::ostringstream out, err;
   EXPECT_EQ(mergeParts(dir.path(), out, err), 1);
-  EXPECT_NE(err.str().find("batch_part2of2.csv: line 2: 'x' in column outside_runs is not a whole number"),
+  EXPECT_NE(err.str().find(
+                "batch_part2of2.csv: line 2: 'x' in column outside_runs is not a whole number"),
             std::string::npos)
       << err.str();
   EXPECT_FALSE(fs::exists(dir.path() / "batch.csv"));
@@ -188,7 +193,8 @@ TEST(Merge, RefusesABadEnsemblePart) {
   spit(f, t);
   std::ostringstream out, err;
   EXPECT_EQ(mergeParts(dir.path(), out, err), 1);
-  EXPECT_NE(err.str().find("sliding_plans_part2of2_ensemble.csv: line 2, column status: the status is 'OK'"),
+  EXPECT_NE(err.str().find(
+                "sliding_plans_part2of2_ensemble.csv: line 2, column status: the status is 'OK'"),
             std::string::npos)
       << err.str();
   EXPECT_FALSE(fs::exists(dir.path() / "sliding_plans_plans.csv"));
@@ -198,7 +204,8 @@ TEST(Merge, RefusesABadEnsemblePart) {
   fs::remove(dir.path() / "sliding_plans_part1of2_curves.csv");
   std::ostringstream out2, err2;
   EXPECT_EQ(mergeParts(dir.path(), out2, err2), 1);
-  EXPECT_NE(err2.str().find("sliding_plans_part1of2_curves.csv: missing"), std::string::npos) << err2.str();
+  EXPECT_NE(err2.str().find("sliding_plans_part1of2_curves.csv: missing"), std::string::npos)
+      << err2.str();
 }
 
 }  // namespace
