@@ -22,7 +22,12 @@ EnsembleStudyReport writeEnsembleStudy(const std::filesystem::path& dir, const s
     AtomicFile::write(f, sensitivityCsv(data));
     r.files.push_back(f);
   }
-  if (const std::string svg = ensembleSvg(data, plans, title); !svg.empty()) {
+  std::set<int> sampleSet;
+  for (const EnsembleRun& run : data.runs) sampleSet.insert(run.sample);
+  const std::string heading = title + (title.empty() ? "" : ": ") + std::to_string(plans.size()) +
+                              (plans.size() == 1 ? " plan" : " plans") + " x " +
+                              std::to_string(sampleSet.size()) + " samples";
+  if (const std::string svg = ensembleSvg(data, plans, heading); !svg.empty()) {
     const std::filesystem::path f = dir / (stem + "_ensemble.svg");
     AtomicFile::write(f, svg);
     r.files.push_back(f);

@@ -175,32 +175,39 @@ std::string bestPlanText(const EnsembleData& data, const std::vector<PlanStats>&
     onlyNext += !ra->outside() && it->second->outside();
   }
   const int m = static_cast<int>(diff.size());
-  const bool onShare = site && best.pOutside < next.pOutside;
-  const PairedTest t = onShare ? mcNemarTest(onlyBest, onlyNext, m) : pairedTTest(diff);
-  std::snprintf(buf, sizeof buf, "  its lead over plan %d (%s) on %d paired runs: ", next.plan,
+  std::snprintf(buf, sizeof buf, "  its lead over plan %d (%s) on %d paired runs:\n", next.plan,
                 next.label.c_str(), m);
   out += buf;
-  if (onShare)
-    std::snprintf(buf, sizeof buf,
-                  "p_outside %.3f against %.3f (outside in one plan only: %d and %d runs; "
-                  "McNemar p = %.2g)",
-                  best.pOutside, next.pOutside, onlyBest, onlyNext, t.p);
-  else
-    std::snprintf(buf, sizeof buf, "reach95 %.3g m less on average (paired t = %.3g, p = %.2g)",
-                  t.effect, t.statistic, t.p);
-  out += buf;
-  if (m < 2) {
-    out += ": too few pairs to judge\n";
-  } else if (t.significant()) {
-    out += ": significant\n";
-  } else if (!std::isfinite(t.samplesNeeded)) {
-    out += ": not significant; the two cannot be told apart on these runs\n";
-  } else {
-    std::snprintf(buf, sizeof buf,
+  // The verdict of a test: significant, or the samples that would tell.
+  auto verdict = [&](const PairedTest& t) {
+    if (m < 2) return std::string(": too few pairs to judge\n");
+    if (t.significant()) return std::string(": significant\n");
+    // A lead far below the scatter (or none): more samples would not tell.
+    if (!std::isfinite(t.samplesNeeded) || t.samplesNeeded > 100.0 * m)
+      return std::string(": not significant; the two cannot be told apart (the difference is far "
+                         "below the scatter)\n");
+    char more[96];
+    std::snprintf(more, sizeof more,
                   ": not significant; about %.0f samples per plan would tell them apart\n",
                   std::ceil(std::max(t.samplesNeeded, static_cast<double>(m) + 1)));
+    return std::string(more);
+  };
+  // The share outside decides first; the reach is compared in every case.
+  if (site && best.pOutside < next.pOutside) {
+    const PairedTest share = mcNemarTest(onlyBest, onlyNext, m);
+    std::snprintf(buf, sizeof buf,
+                  "    p_outside %.3f against %.3f (outside in one plan only: %d and %d runs; "
+                  "McNemar p = %.2g)",
+                  best.pOutside, next.pOutside, onlyBest, onlyNext, share.p);
     out += buf;
+    out += verdict(share);
   }
+  const PairedTest reach = pairedTTest(diff);
+  std::snprintf(buf, sizeof buf, "    reach95 %.3g m %s on average (paired t = %.3g, p = %.2g)",
+                std::abs(reach.effect), reach.effect >= 0 ? "less" : "more", reach.statistic,
+                reach.p);
+  out += buf;
+  out += verdict(reach);
   return out;
 }
 
