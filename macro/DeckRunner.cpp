@@ -595,8 +595,10 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     try {
       if (!plans.empty()) runner.walk(deck.items, params);
       if (options.shards > 1) log->stream() << "\n" << kEndOfRuns << "\n";
-      // A shard's overlays are drawn by `collapse2d merge` from the parts' curves.
-      if (options.shards > 1 && runner.overlay().numRuns() > 0)
+      // A shard of a study: its overlays are drawn by `collapse2d merge` from
+      // the parts' curves (a part without a study's table draws its own).
+      const bool studyPart = options.shards > 1 && (runner.planTable() || runner.ensembleTable());
+      if (studyPart && runner.overlay().numRuns() > 0)
         AtomicFile::write(dir / (partStem + "_curves.csv"), runner.overlay().csv());
       else
         for (const auto& f : runner.overlay().write(dir, partStem))
