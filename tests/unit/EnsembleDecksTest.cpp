@@ -128,6 +128,23 @@ TEST(EnsembleDecks, ADrawThatMakesTheDeckBadIsReportedWithItsSample) {
   EXPECT_FALSE(fs::exists(dir.path() / "out" / "bad_ensemble.csv"));
 }
 
+// The example ensembles (no references: minutes each) bind as decks: every
+// run of their check pass, with its draws.
+TEST(EnsembleDecks, TheExampleEnsemblesBind) {
+  const SolutionCommands commands;
+  const std::string src = std::string(C2D_SOURCE_DIR) + "/decks/";
+  for (const auto& [deck, runs] : std::vector<std::pair<std::string, int>>{
+           {"demolition/felling_ensemble.inp", 60},
+           {"demolition/implosion_ensemble.inp", 20},
+           {"collapse/six_story_demolition_ensemble.inp", 20},
+           {"collapse/six_story_fall_ensemble.inp", 20},
+           {"paper/six_story_collapse_ensemble.inp", 20}}) {
+    const DeckPlan plan = planDeck(src + deck, commands);
+    EXPECT_EQ(plan.runs, runs) << deck;
+    EXPECT_TRUE(plan.study) << deck;
+  }
+}
+
 // V16: right = x1 + v0^2 / (2 mu g), x1 = a g t1^2 / 2, v0 = a g t1, for its own mu.
 TEST(EnsembleDecks, SlidingBlockReachesItsOwnClosedForm) {
   testing::DeckTempDir dir;
