@@ -134,8 +134,9 @@ EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount) 
     r.plan = static_cast<int>(*plan);
     r.sample = static_cast<int>(*sample);
     r.stem = c[3];
+    // A value a run does not have (a plan with fewer BLASt records) is empty: NaN.
     for (std::size_t i = 4; i < 4 + values; ++i) {
-      const auto v = numberCell(c[i]);
+      const auto v = c[i].empty() ? std::optional<double>(NAN) : numberCell(c[i]);
       if (!v) bad(i, "'" + c[i] + "' is not a number");
       (i < 4 + sweptCount ? r.swept : r.drawn).push_back(*v);
     }

@@ -32,12 +32,16 @@ std::vector<PlanCorrelations> correlations(const EnsembleData& data) {
     c.swept = runs.front()->swept;
     c.runs = static_cast<int>(runs.size());
     for (std::size_t i = 0; i < data.drawn.size(); ++i) {
-      std::vector<double> x;
-      for (const EnsembleRun* r : runs) x.push_back(i < r->drawn.size() ? r->drawn[i] : NAN);
       std::vector<double> row;
       for (const std::string& f : kPlanFigures) {
-        std::vector<double> y;
-        for (const EnsembleRun* r : runs) y.push_back(r->figure(f));
+        // The runs that have both values (a drawn value may be absent: NaN).
+        std::vector<double> x, y;
+        for (const EnsembleRun* r : runs) {
+          const double xi = i < r->drawn.size() ? r->drawn[i] : NAN, yi = r->figure(f);
+          if (std::isnan(xi) || std::isnan(yi)) continue;
+          x.push_back(xi);
+          y.push_back(yi);
+        }
         row.push_back(rankCorrelation(x, y));
       }
       c.rho.push_back(std::move(row));
