@@ -37,6 +37,23 @@ struct DebrisFigures {
   // (0: they give no section), deeper than which it lies buried in the pictures.
   int deepestNode = -1;
   double deepest = 0, deepestTime = 0, deepestLimit = 0;
+  // Robust figures of where the mass lies (a chaotic collapse moves the
+  // furthest point by metres with one thrown piece; these move little):
+  // the x of the mass centroid now and its shift since the start (the same
+  // mass at its reference positions); how far beyond the footprint's edges the
+  // debris reaches once the outermost 5 % of its mass on that side is left out
+  // (0 inside). leftPieceMass, rightPieceMass: the mass of the piece (members
+  // connected through their nodes and joints, with their nodal masses) that
+  // holds the node at xmin, xmax.
+  double centroid = 0, centroidShift = 0, left95 = 0, right95 = 0;
+  double leftPieceMass = 0, rightPieceMass = 0;
+  // The x-intervals [x0, x1] that debris occupies now (the union of the
+  // members' chords and the nodal masses' points), left to right.
+  std::vector<std::pair<double, double>> cover;
+  // The kinetic energy at the end over its peak in the run's dynamic analysis
+  // (0 in a static run), and the ratio at or below which the debris is at rest
+  // (TIME,REST's, else its default): the caller's to fill.
+  double kineticRatio = 0, restRatio = 1e-5;
 
   // Some node lies outside the site (false without one).
   bool outside() const;
@@ -45,6 +62,8 @@ struct DebrisFigures {
   // A node went deeper into the ground than half its members' section depth:
   // the ground's penalty is too soft for the impact.
   bool sunk() const { return deepestLimit > 0 && deepest > deepestLimit; }
+  // The debris has come to rest: its figures are final.
+  bool atRest() const { return kineticRatio <= restRatio; }
 };
 
 // The figures of the state (peakGroundForce/peakTime are the caller's to fill).
@@ -54,6 +73,15 @@ DebrisFigures debrisFigures(const Model& model, const State& state);
 std::vector<MassPiece> massPieces(const Model& model, const State& state);
 // The part of the pieces' mass outside [site.xmin, site.xmax].
 double massOutside(const std::vector<MassPiece>& pieces, const Site& site);
+// The x below which the share q (0..1) of the pieces' mass lies (each piece
+// spread uniformly over its interval, a point mass at its point).
+double massQuantile(const std::vector<MassPiece>& pieces, double q);
+// The union of the pieces' intervals, left to right.
+std::vector<std::pair<double, double>> massCover(const std::vector<MassPiece>& pieces);
+// The mass of the piece holding each node: members connected through shared
+// nodes and joints, with the nodal masses at their nodes (0 for a node no
+// element holds).
+std::vector<double> pieceMassAtNodes(const Model& model);
 // Mass per bin of width `width` from x = x0 (bins values; a piece counts in
 // proportion to its overlap with each bin).
 std::vector<double> massHistogram(const std::vector<MassPiece>& pieces, double x0, double width,

@@ -51,8 +51,7 @@ double secondsSince(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-[[noreturn]] void runChild(const std::string& deck, const BatchOptions& options,
-                           const SolutionCommands& commands, const Child& c) {
+[[noreturn]] void runChild(const BatchJob& job, const SolutionCommands& commands, const Child& c) {
   // A group of its own: a terminal's Ctrl-C reaches the batch alone, which passes
   // it on once. The child ends with the batch, even one killed outright.
   ::setpgid(0, 0);
@@ -63,10 +62,10 @@ double secondsSince(Clock::time_point t) {
   installInterruptHandlers();
   ::dup2(fileno(c.output), STDOUT_FILENO);
   ::dup2(fileno(c.output), STDERR_FILENO);
-  DeckOptions o = options.deck;
+  DeckOptions o = job.options;
   o.progress = false;
   o.logName.clear();
-  const DeckOutcome r = runDeck(deck, o, commands, std::cout);
+  const DeckOutcome r = runDeck(job.deck, o, commands, std::cout);
   if (r.exitCode != 0) std::cerr << r.message << "\n";
   std::cout.flush();
   std::cerr.flush();
@@ -130,6 +129,15 @@ std::string batchStemClash(const std::vector<std::string>& decks) {
 
 std::vector<BatchResult> runBatch(const std::vector<std::string>& decks, const BatchOptions& options,
                                   const SolutionCommands& commands, std::ostream& out) {
+  std::vector<BatchJob> jobs;
+  for (const std::string& d : decks) jobs.push_back({d, options.deck});
+  return runBatch(jobs, options, commands, out);
+}
+
+std::vector<BatchResult> runBatch(const std::vector<BatchJob>& batchJobs, const BatchOptions& options,
+                                  const SolutionCommands& commands, std::ostream& out) {
+  std::vector<std::string> decks;
+  for (const BatchJob& j : batchJobs) decks.push_back(j.deck);
   std::vector<BatchResult> results(decks.size());
   const std::size_t jobs = options.jobs < 1 ? 1 : static_cast<std::size_t>(options.jobs);
   std::map<pid_t, Child> running;
@@ -159,7 +167,7 @@ std::vector<BatchResult> runBatch(const std::vector<std::string>& decks, const B
       c.start = std::chrono::steady_clock::now();
       c.pid = ::fork();
       if (c.pid < 0) throw std::runtime_error("fork failed for " + decks[next]);
-      if (c.pid == 0) runChild(decks[next], options, commands, c);
+      if (c.pid == 0) runChild(batchJobs[next], commands, c);
       running.emplace(c.pid, c);
       ++next;
     }

@@ -52,6 +52,14 @@ struct BatchResult {
 // written to `out` as the child ends.
 std::vector<BatchResult> runBatch(const std::vector<std::string>& decks, const BatchOptions& options,
                                   const SolutionCommands& commands, std::ostream& out);
+// The same for decks each run with options of its own (options.deck unused):
+// the parts of one deck's runs (macro/studies/ParallelRuns.h).
+struct BatchJob {
+  std::string deck;
+  DeckOptions options;
+};
+std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const BatchOptions& options,
+                                  const SolutionCommands& commands, std::ostream& out);
 
 void printBatchTable(std::ostream& os, const std::vector<BatchResult>& results);
 

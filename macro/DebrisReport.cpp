@@ -23,6 +23,8 @@ DebrisFigures ProblemRun::debrisNow(const State& s) const {
   DebrisFigures d = debrisFigures(model_, s);
   d.peakGroundForce = peakGroundForce_;
   d.peakTime = peakGroundTime_;
+  d.kineticRatio = peakKinetic_ > 0 ? analysis_->kineticEnergy() / peakKinetic_ : 0.0;
+  d.restRatio = restRatio_ > 0 ? restRatio_ : Rest{}.ratio;
   if (deepest_.node >= 0) {
     d.deepestNode = deepest_.node;
     d.deepest = deepest_.depth;
@@ -52,7 +54,7 @@ void ProblemRun::plotDebris() {
   if (!options_.label.empty()) title += (title.empty() ? "" : ", ") + options_.label;
   title += (title.empty() ? "" : ": ") + std::string("debris at t = ") + shortTime(s.t);
   const std::filesystem::path path = options_.outDir / (options_.stem + "_debris.svg");
-  saveDebrisSvg(path, model_, s, d, title);
+  if (options_.pictures) saveDebrisSvg(path, model_, s, d, title);
   debrisPlot_ = true;
   log_ << "  PLOT   debris: " << path.filename().string() << "\n";
 }

@@ -29,9 +29,10 @@ struct ParamBlock {
   Record head;
   std::vector<ParamAssign> assigns;
 
-  // Evaluates the assignments in order (a later one may use an earlier one).
+  // Evaluates the assignments in order (a later one may use an earlier one); a
+  // name a study sets for each run (Parameters::protect) is a DeckError there.
   void apply(Parameters& params) const {
-    for (const auto& a : assigns) params.set(a.name, a.value.eval(params), a.record.fieldLoc(0));
+    for (const auto& a : assigns) params.assign(a.name, a.value.eval(params), a.record[0]);
   }
 };
 
@@ -67,7 +68,8 @@ struct Problem {
 
 struct TopLoop;
 struct TopSweep;
-using TopItem = std::variant<ParamBlock, Problem, TopLoop, TopSweep>;
+struct TopEnsemble;
+using TopItem = std::variant<ParamBlock, Problem, TopLoop, TopSweep, TopEnsemble>;
 
 // LOOP,,n ... NEXT around whole problems: FEAP's parameter study.
 struct TopLoop {
@@ -77,11 +79,27 @@ struct TopLoop {
   Record next;
 };
 
-// One record of a SWEEp block: name = v1 v2 ... (each value an expression).
+
+// One value of a sweep (an expression), or a range lo:step:hi: lo, lo + step,
+// ... up to hi (macro/Sweep.h sweepValues).
+struct SweepItem {
+  Expression value;  // the value, or a range's lo
+  std::optional<Expression> step, last;
+  bool range() const { return step.has_value(); }
+};
+
+// One record of a SWEEp block, name = v1 v2 ..., with the records that continue
+// its list of values (records without 'name =').
 struct SweepVariable {
   std::string name;  // as written (tags and legends keep its case)
-  std::vector<Expression> values;
+  std::vector<SweepItem> items;
   Record record;
+  // The number of values when no item is a range (known before evaluating).
+  std::optional<std::size_t> fixedCount() const {
+    for (const SweepItem& i : items)
+      if (i.range()) return std::nullopt;
+    return items.size();
+  }
 };
 
 // [ext] SWEEp: records 'name = v1 v2 ...' (several names zipped: the same number
@@ -91,8 +109,28 @@ struct SweepVariable {
 struct TopSweep {
   Record head;
   std::vector<SweepVariable> variables;
+  std::vector<TopItem> body;  // PARAmeter blocks (an ENSEmble), then the problem
+};
+
+// [ext] One drawn parameter of an ENSEmble: name = NORMal mean sd | LOGNormal
+// median cov | UNIForm lo hi (macro/studies/Distribution.h).
+struct DrawRecord {
+  std::string name;  // as written
+  std::string law;   // "norm", "logn" or "unif"
+  Expression a, b;
+  Record record;
+};
+
+// [ext] ENSEmble,,n,seed: every plan (every value set of a SWEEp, or the lone
+// problem) runs n times, sample k with the draws of (seed, k)
+// (macro/studies/Ensemble.h). Records: drawn parameters, JITTer,,dx,fdt and
+// DETOnators (,,sd,cov | ,PYROtechnic | ,ELECtronic), ended by a blank record.
+struct TopEnsemble {
+  Record head;
+  Expression samples, seed;
+  std::vector<DrawRecord> draws;
+  std::optional<Record> jitter, detonators;
   std::vector<TopItem> body;  // PARAmeter blocks, then the problem
-  std::size_t runs() const { return variables.empty() ? 0 : variables.front().values.size(); }
 };
 
 struct Deck {

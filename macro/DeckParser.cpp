@@ -7,6 +7,8 @@
 #include "macro/Limits.h"
 #include "macro/MeshCommands.h"
 #include "macro/Parameters.h"
+#include "macro/Sweep.h"
+#include "macro/studies/Ensemble.h"
 
 namespace c2d {
 
@@ -16,10 +18,38 @@ namespace {
 // of a mesh command.
 bool isStructural(const Record& r) {
   return r.is("FEAP") || r.is("BATCh") || r.is("STOP") || r.is("END") || r.is("LOOP") ||
-         r.is("NEXT") || r.is("SWEEp");
+         r.is("NEXT") || r.is("SWEEp") || r.is("ENSEmble");
 }
 
 bool isParamHead(const Record& r) { return r.is("PARAmeter") || r.is("CONStant"); }
+
+// Variables whose numbers of values are known (no ranges) are zipped: the last
+// one has as many as the first such.
+void checkSweepCounts(const std::vector<SweepVariable>& vars) {
+  const SweepVariable& v = vars.back();
+  const auto n = v.fixedCount();
+  if (!n) return;
+  for (const SweepVariable& w : vars) {
+    const auto m = w.fixedCount();
+    if (&w == &v || !m || *m == *n) continue;
+    throw DeckError(v.record[0].loc,
+                    "'" + v.name + "' has " + std::to_string(*n) + " values and '" + w.name +
+                        "' (line " + std::to_string(w.record.loc.line) + ") " + std::to_string(*m) +
+                        ": the variables of a sweep are zipped, one value of each per run",
+                    v.record.excerpt(v.record[0].loc));
+  }
+}
+
+// A name both swept and drawn would give its runs two values.
+void checkDrawsNotSwept(const TopEnsemble& e, const TopSweep& sw) {
+  for (const DrawRecord& d : e.draws)
+    for (const SweepVariable& v : sw.variables)
+      if (toLower(d.name) == toLower(v.name))
+        throw DeckError(d.record[0].loc,
+                        "'" + d.name + "' is both drawn and swept (line " +
+                            std::to_string(v.record.loc.line) + ")",
+                        d.record.excerpt(d.record[0].loc), "draw or sweep it, not both");
+}
 
 }  // namespace
 
@@ -85,6 +115,7 @@ bool holdsProblem(const std::vector<TopItem>& items) {
       return true;
     if (const auto* sweep = std::get_if<TopSweep>(&item); sweep && holdsProblem(sweep->body))
       return true;
+    if (const auto* e = std::get_if<TopEnsemble>(&item); e && holdsProblem(e->body)) return true;
   }
   return false;
 }
@@ -205,6 +236,10 @@ std::vector<TopItem> DeckParser::parseTopItems(const Record* loopHead) {
       items.emplace_back(parseSweep());
       continue;
     }
+    if (r.is("ENSEmble")) {
+      items.emplace_back(parseEnsemble(false));
+      continue;
+    }
     if (r.is("FEAP")) {
       items.emplace_back(parseProblem());
       continue;
@@ -220,7 +255,8 @@ std::vector<TopItem> DeckParser::parseTopItems(const Record* loopHead) {
       hint = "a problem starts with a record 'FEAP * * title'";
     throw DeckError(
         r[0].loc,
-        "unexpected record '" + r[0].text + "': expected FEAP, PARAmeter, LOOP, NEXT, SWEEp or STOP",
+        "unexpected record '" + r[0].text +
+            "': expected FEAP, PARAmeter, LOOP, NEXT, SWEEp, ENSEmble or STOP",
         r.excerpt(r[0].loc), hint);
   }
 }
@@ -242,6 +278,18 @@ TopSweep DeckParser::parseSweep() {
       throw DeckError(r[0].loc, "SWEEp block (" + where(sw.head) + ") is not ended by a blank record",
                       r.excerpt(r[0].loc), "insert a blank record before this one");
     const Record& rec = next();
+    // A record without 'name =' continues the values of the variable before it
+    // (a record holds at most 256 characters).
+    if (!hasEquals(rec)) {
+      if (sw.variables.empty())
+        throw DeckError(rec[0].loc, "expected 'name = v1 v2 ...'", rec.excerpt(rec[0].loc),
+                        "a record without 'name =' continues the values of the record before "
+                        "it");
+      SweepVariable& v = sw.variables.back();
+      for (SweepItem& item : parseSweepItems(rec, 0)) v.items.push_back(std::move(item));
+      continue;
+    }
+    if (!sw.variables.empty()) checkSweepCounts(sw.variables);
     if (!Parameters::validName(rec[0].text))
       throw DeckError(rec[0].loc, "expected 'name = v1 v2 ...', and '" + rec[0].text +
                                       "' is not a parameter name",
@@ -249,51 +297,101 @@ TopSweep DeckParser::parseSweep() {
     SweepVariable v;
     v.name = rec[0].text;
     v.record = rec;
-    for (std::size_t i = 1; i < rec.size(); ++i) {
-      if (rec[i].text.empty())
-        throw DeckError(rec[i].loc, "empty value in the sweep of '" + v.name + "'",
-                        rec.excerpt(rec[i].loc));
-      v.values.push_back(Expression::parse(rec[i]));
-    }
-    if (v.values.empty())
+    v.items = parseSweepItems(rec, 1);
+    if (v.items.empty())
       throw DeckError(rec.fieldLoc(1), "sweep variable '" + v.name + "' has no values",
                       rec.excerpt(rec.fieldLoc(1)), "write " + v.name + " = v1 v2 ...");
-    for (const SweepVariable& w : sw.variables) {
+    for (const SweepVariable& w : sw.variables)
       if (toLower(w.name) == toLower(v.name))
         throw DeckError(rec[0].loc, "'" + v.name + "' is swept twice (" + where(w.record) + ")",
                         rec.excerpt(rec[0].loc));
-      if (w.values.size() != v.values.size())
-        throw DeckError(rec[0].loc,
-                        "'" + v.name + "' has " + std::to_string(v.values.size()) + " values and '" +
-                            w.name + "' (" + where(w.record) + ") " +
-                            std::to_string(w.values.size()) +
-                            ": the variables of a sweep are zipped, one value of each per run",
-                        rec.excerpt(rec[0].loc));
-    }
     sw.variables.push_back(std::move(v));
   }
   if (sw.variables.empty())
     throw DeckError(at.loc, "SWEEp block without variables", sw.head.excerpt(at.loc),
                     "write records 'name = v1 v2 ...' ended by a blank record");
-  // The sweep applies to the next problem; PARAmeter blocks before it go with it.
+  checkSweepCounts(sw.variables);
+  // The sweep applies to the next problem; PARAmeter blocks before it go with
+  // it, and an ENSEmble between them runs each of its plans n times.
+  parseStudyBody(sw.body, sw.head, "SWEEp");
+  if (!sw.body.empty())
+    if (const auto* e = std::get_if<TopEnsemble>(&sw.body.back())) checkDrawsNotSwept(*e, sw);
+  return sw;
+}
+
+void DeckParser::parseStudyBody(std::vector<TopItem>& body, const Record& head, const char* what) {
+  const Field& at = head[0];
   while (true) {
     skipBlanks();
-    if (atEnd() || !(isParamHead(peek()) || peek().is("FEAP"))) {
+    const bool ensemble = !atEnd() && peek().is("ENSEmble") && std::string(what) == "SWEEp";
+    if (atEnd() || !(isParamHead(peek()) || peek().is("FEAP") || ensemble)) {
       const bool eof = atEnd();
       throw DeckError(eof ? at.loc : peek()[0].loc,
-                      "SWEEp (" + where(sw.head) + ") must be followed by the problem it applies to" +
+                      std::string(what) + " (" + where(head) +
+                          ") must be followed by the problem it applies to" +
                           (eof ? std::string(" (end of file)") : ", found '" + peek()[0].text + "'"),
-                      eof ? sw.head.excerpt(at.loc) : peek().excerpt(peek()[0].loc),
-                      "a sweep applies to the next FEAP problem (PARAmeter blocks may stand "
-                      "between them)");
+                      eof ? head.excerpt(at.loc) : peek().excerpt(peek()[0].loc),
+                      std::string("a ") + (std::string(what) == "SWEEp" ? "sweep" : "ensemble") +
+                          " applies to the next FEAP problem (PARAmeter blocks may stand "
+                          "between them)");
     }
     if (isParamHead(peek())) {
-      sw.body.emplace_back(parseParams());
+      body.emplace_back(parseParams());
       continue;
     }
-    sw.body.emplace_back(parseProblem());
+    if (ensemble) {
+      body.emplace_back(parseEnsemble(true));
+      return;
+    }
+    body.emplace_back(parseProblem());
+    return;
+  }
+}
+
+TopItem DeckParser::parseEnsemble(bool inSweep) {
+  TopEnsemble e;
+  e.head = next();
+  const Record& h = e.head;
+  if (h.size() > 4)
+    throw DeckError(h[4].loc, "too many fields: ENSEmble,,n,seed", h.excerpt(h[4].loc));
+  if (h.size() < 3 || h[2].text.empty())
+    throw DeckError(h.fieldLoc(2), "ENSEmble needs the number of samples: ENSEmble,,n,seed",
+                    h.excerpt(h.fieldLoc(2)), "e.g. ENSEmble,,20,1");
+  if (!h[1].text.empty())
+    throw DeckError(h[1].loc, "ENSEmble takes numbers only: ENSEmble,,n,seed", h.excerpt(h[1].loc));
+  e.samples = Expression::parse(h[2]);
+  if (h.size() > 3 && !h[3].text.empty()) e.seed = Expression::parse(h[3]);
+  while (true) {
+    if (atEnd())
+      throw DeckError(h[0].loc, "ENSEmble block is not ended by a blank record (end of file)",
+                      h.excerpt(h[0].loc), "end the block with a blank record");
+    const Record& r = peek();
+    if (r.blank()) {
+      ++pos_;
+      break;
+    }
+    if (!hasEquals(r) && (isStructural(r) || isParamHead(r) || mesh_.find(r[0].text)))
+      throw DeckError(r[0].loc, "ENSEmble block (" + where(h) + ") is not ended by a blank record",
+                      r.excerpt(r[0].loc), "insert a blank record before this one");
+    addEnsembleRecord(e, next(), hasEquals(r));
+  }
+  skipBlanks();
+  if (!inSweep && !atEnd() && peek().is("SWEEp")) {
+    // ENSEmble, then SWEEp: the same as the ensemble inside the sweep.
+    TopSweep sw = parseSweep();
+    for (const TopItem& item : sw.body)
+      if (std::holds_alternative<TopEnsemble>(item))
+        throw DeckError(std::get<TopEnsemble>(item).head[0].loc,
+                        "a second ENSEmble for the same problem (the first at " + where(h) + ")",
+                        std::get<TopEnsemble>(item).head.excerpt(std::get<TopEnsemble>(item).head[0].loc));
+    e.body = std::move(sw.body);
+    sw.body.clear();
+    checkDrawsNotSwept(e, sw);
+    sw.body.emplace_back(std::move(e));
     return sw;
   }
+  parseStudyBody(e.body, h, "ENSEmble");
+  return e;
 }
 
 Problem DeckParser::parseProblem() {
@@ -357,7 +455,7 @@ void DeckParser::parseBatches(Problem& p) {
       continue;
     }
     if (r.is("FEAP") || r.is("STOP") || r.is("LOOP") || r.is("NEXT") || r.is("SWEEp") ||
-        isParamHead(r))
+        r.is("ENSEmble") || isParamHead(r))
       break;
     throw DeckError(r[0].loc,
                     "expected BATCh after the END of the mesh input, found '" + r[0].text + "'",
@@ -492,14 +590,15 @@ bool DeckParser::topLevelParamsAhead() const {
   // A parameter block belongs to the top level when the next item is a problem, a
   // loop, the end of a loop or of the input.
   return p >= records_.size() || records_[p].is("FEAP") || records_[p].is("LOOP") ||
-         records_[p].is("NEXT") || records_[p].is("STOP") || records_[p].is("SWEEp");
+         records_[p].is("NEXT") || records_[p].is("STOP") || records_[p].is("SWEEp") ||
+         records_[p].is("ENSEmble");
 }
 
 bool DeckParser::endsBatchData() const {
   const Record& r = peek();
   if (r.blank()) return false;
   if (r.is("BATCh") || r.is("FEAP") || r.is("STOP") || r.is("LOOP") || r.is("NEXT") ||
-      r.is("SWEEp"))
+      r.is("SWEEp") || r.is("ENSEmble"))
     return true;
   return isParamHead(r) && topLevelParamsAhead();
 }

@@ -43,6 +43,8 @@ class DeckParser {
   std::vector<TopItem> parseTopItems(const Record* loopHead);
   ParamBlock parseParams();
   TopSweep parseSweep();
+  TopItem parseEnsemble(bool inSweep);
+  void parseStudyBody(std::vector<TopItem>& body, const Record& head, const char* what);
   Problem parseProblem();
   void parseMesh(Problem& p);
   void parseBatches(Problem& p);

@@ -16,6 +16,9 @@
 #include "macro/PlanTable.h"
 #include "macro/StaleOutputs.h"
 #include "macro/Sweep.h"
+#include "macro/Shard.h"
+#include "macro/studies/EnsembleStudy.h"
+#include "macro/studies/EnsembleTable.h"
 
 namespace c2d {
 
@@ -25,12 +28,24 @@ namespace {
 struct RunInfo {
   SweepValues sweep;                     // empty outside a SWEEp
   std::map<std::string, double> params;  // the parameter table as the problem starts
+  int plan = 0;                          // an ensemble's plan (1-based), 0 outside one
+  int sample = 0, samples = 0;           // its sample 1..samples, 0 outside an ensemble
+  DrawnValues drawn;                     // the sample's drawn values
 };
 
-// Output stem and legend label of each run.
+// Output stem and legend label of each run, and what an ensemble's table says of it.
 struct RunPlan {
   std::string stem, label;
+  int plan = 0, sample = 0;
+  DrawnValues drawn;
 };
+
+// "_s07" for sample 7 of 20 (as many digits as the count).
+std::string sampleTag(int sample, int samples) {
+  std::string k = std::to_string(sample);
+  const std::size_t width = std::to_string(samples).size();
+  return "_s" + std::string(width > k.size() ? width - k.size() : 0, '0') + k;
+}
 
 std::string paramLabel(const std::vector<std::string>& names, const RunInfo& run) {
   std::string label;
@@ -54,15 +69,21 @@ std::vector<RunPlan> planRuns(const std::vector<RunInfo>& runs, const std::strin
   std::map<std::string, int> uses;
   for (std::size_t k = 0; k < n; ++k) {
     const RunInfo& r = runs[k];
-    plans[k].stem = fitFileStem(!r.sweep.empty() ? stem + "_" + sweepTag(r.sweep)
-                                : n > 1          ? stem + "_" + std::to_string(k + 1)
-                                                 : stem);
+    const std::string sample = r.sample > 0 ? sampleTag(r.sample, r.samples) : std::string();
+    plans[k].stem = fitFileStem(!r.sweep.empty()       ? stem + "_" + sweepTag(r.sweep) + sample
+                                : r.sample > 0         ? stem + sample
+                                : n > 1                ? stem + "_" + std::to_string(k + 1)
+                                                       : stem);
+    plans[k].plan = r.plan;
+    plans[k].sample = r.sample;
+    plans[k].drawn = r.drawn;
     ++uses[plans[k].stem];
   }
   for (std::size_t k = 0; k < n; ++k)
-    if (!runs[k].sweep.empty() && uses[plans[k].stem] > 1)
-      plans[k].stem =
-          fitFileStem(stem + "_" + std::to_string(k + 1) + "_" + sweepTag(runs[k].sweep));
+    if ((!runs[k].sweep.empty() || runs[k].sample > 0) && uses[plans[k].stem] > 1)
+      plans[k].stem = fitFileStem(stem + "_" + std::to_string(k + 1) +
+                                  (runs[k].sweep.empty() ? "" : "_" + sweepTag(runs[k].sweep)) +
+                                  (runs[k].sample > 0 ? sampleTag(runs[k].sample, runs[k].samples) : ""));
 
   std::set<std::string> names;
   for (const RunInfo& r : runs)
@@ -72,7 +93,7 @@ std::vector<RunPlan> planRuns(const std::vector<RunInfo>& runs, const std::strin
     std::set<double> values;
     bool missing = false;
     for (const RunInfo& r : runs) {
-      if (!r.sweep.empty()) continue;
+      if (!r.sweep.empty() || r.sample > 0) continue;
       const auto it = r.params.find(name);
       if (it == r.params.end())
         missing = true;
@@ -83,7 +104,11 @@ std::vector<RunPlan> planRuns(const std::vector<RunInfo>& runs, const std::strin
   }
   for (std::size_t k = 0; k < n; ++k) {
     plans[k].label =
-        !runs[k].sweep.empty() ? sweepLabel(runs[k].sweep) : paramLabel(differing, runs[k]);
+        !runs[k].sweep.empty() ? sweepLabel(runs[k].sweep)
+        : runs[k].sample > 0   ? std::string()
+                               : paramLabel(differing, runs[k]);
+    if (runs[k].sample > 0)
+      plans[k].label += (plans[k].label.empty() ? "sample " : ", sample ") + std::to_string(runs[k].sample);
     if (plans[k].label.empty() && n > 1) plans[k].label = "run " + std::to_string(k + 1);
   }
   return plans;
@@ -107,6 +132,11 @@ std::string runSummaryText(const RunSummary& s) {
     out += s.debrisRuns == 1 ? std::string(", debris OUTSIDE the site")
                              : ", debris OUTSIDE the site in " + std::to_string(s.outsideRuns) +
                                    " of " + std::to_string(s.debrisRuns) + " runs";
+  if (s.movingRuns > 0)
+    out += s.debrisRuns == 1 ? std::string(", debris STILL MOVING at the end")
+                             : ", debris STILL MOVING at the end in " +
+                                   std::to_string(s.movingRuns) + " of " +
+                                   std::to_string(s.debrisRuns) + " runs";
   if (s.maxMomentRatio > 0) {
     std::snprintf(buf, sizeof buf, ", max |M|/Mu %.4f", s.maxMomentRatio);
     out += buf;
@@ -129,6 +159,15 @@ std::string failureReason(const std::string& what) {
     if (slash != std::string::npos) r = r.substr(slash + 1);
   }
   return r;
+}
+
+// The drawn names of the deck's ensemble in order of first appearance.
+std::vector<std::string> drawnNames(const std::vector<RunInfo>& runs) {
+  std::vector<std::string> names;
+  for (const RunInfo& r : runs)
+    for (const auto& [name, v] : r.drawn)
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  return names;
 }
 
 // The swept names of the deck in order of first appearance (the plans table's columns).
@@ -176,6 +215,15 @@ std::vector<std::string> runWarnings(const RunSummary& s) {
                   "of its members (the log's debris lines): the ground is too soft for the "
                   "impact (GROUnd's k)",
                   s.sunk == 1 ? "in this run" : (std::to_string(s.sunk) + " runs:").c_str());
+    out.push_back(buf);
+  }
+  if (s.movingRuns > 0) {
+    std::snprintf(buf, sizeof buf,
+                  "warning: %s the debris was still moving at the end (kinetic energy %.2e of "
+                  "its peak): its figures are not final; run longer, or end the run at rest "
+                  "with TIME,REST",
+                  s.movingRuns == 1 ? "in this run" : (std::to_string(s.movingRuns) + " runs:").c_str(),
+                  s.kineticRatio);
     out.push_back(buf);
   }
   if (s.blastsNotMade > 0) {
@@ -227,16 +275,21 @@ class Walker {
         }
         for (int i = 0; i < n; ++i) walk(loop->body, params);
       } else if (const auto* sweep = std::get_if<TopSweep>(&item)) {
-        for (std::size_t i = 0; i < sweep->runs(); ++i) {
-          sweep_.clear();
-          for (const SweepVariable& v : sweep->variables) {
-            const double x = v.values[i].eval(params);
-            params.set(toLower(v.name), x, v.record.fieldLoc(0));
-            sweep_.emplace_back(v.name, x);
+        // The swept names may not be set again by the deck (Parameters::protect).
+        const std::vector<SweepValues> sets = sweepRuns(*sweep, params);
+        const std::string by = "swept by the SWEEp of line " + std::to_string(sweep->head.loc.line);
+        for (const SweepValues& set : sets) {
+          sweep_ = set;
+          for (const auto& [name, x] : sweep_) {
+            params.set(name, x);
+            params.protect(name, by);
           }
           walk(sweep->body, params);
-          sweep_.clear();
         }
+        for (const SweepVariable& v : sweep->variables) params.unprotect(v.name);
+        sweep_.clear();
+      } else if (const auto* e = std::get_if<TopEnsemble>(&item)) {
+        walkEnsemble(*e, params);
       } else {
         try {
           runProblem(std::get<Problem>(item), params);
@@ -256,21 +309,72 @@ class Walker {
   const std::optional<PlanTable>& planTable() const { return planTable_; }
   // The outputs a failed or interrupted run kept (tagged names).
   const std::vector<std::filesystem::path>& kept() const { return kept_; }
+  // The ensemble's table: set before walking when the deck has an ENSEmble.
+  void setEnsembleTable(EnsembleTable table) { ensembleTable_ = std::move(table); }
+  const std::optional<EnsembleTable>& ensembleTable() const { return ensembleTable_; }
+  // The first ENSEmble record walked, if any.
+  const Record* ensembleHead() const { return ensembleHead_; }
+  // The title of the last problem walked.
+  const std::string& title() const { return title_; }
 
  private:
+  // Every sample of the ensemble runs the body (PARAmeter blocks, the problem)
+  // from the same parameter table, with its drawn values set (and protected).
+  void walkEnsemble(const TopEnsemble& e, Parameters& params) {
+    if (!ensembleHead_) ensembleHead_ = &e.head;
+    const EnsembleSpec spec = evaluateEnsemble(e, params);
+    const Parameters base = params;
+    const std::string by = "drawn by the ENSEmble of line " + std::to_string(e.head.loc.line);
+    ++plan_;
+    for (int k = 1; k <= spec.samples; ++k) {
+      params = base;
+      const SampleDraws draws = drawSample(spec, k);
+      for (const auto& [name, v] : draws.values) {
+        params.set(name, v);
+        params.protect(name, by);
+      }
+      sample_ = &draws;
+      samples_ = spec.samples;
+      try {
+        walk(e.body, params);
+      } catch (const DeckError& err) {
+        // A value that only some draws make bad: say which sample drew what.
+        std::string drawn;
+        for (const auto& [name, v] : draws.values)
+          drawn += (drawn.empty() ? "" : ", ") + name + " = " + formatSweepValue(v);
+        throw DeckError(err.loc(),
+                        err.message() + " (in sample " + std::to_string(k) + " of the ENSEmble of line " +
+                            std::to_string(e.head.loc.line) + (drawn.empty() ? "" : ", which drew " + drawn) +
+                            ")",
+                        err.text(), err.hint());
+      }
+      sample_ = nullptr;
+    }
+    params = base;
+  }
+
   void runProblem(const Problem& p, Parameters& params) {
     ++runs_;
+    title_ = RunOutputs::displayTitle(p.title);
     RunOptions ro;
     ro.outDir = options_.outDir.empty() ? std::filesystem::path(".") : options_.outDir;
     ro.progress = options_.progress && !options_.quiet;
     ro.solver = options_.solver;
+    ro.sample = sample_;
     if (!execute_) {
-      RunInfo info{sweep_, {}};
+      RunInfo info{sweep_, {}, sample_ ? plan_ : 0, sample_ ? sample_->sample : 0, samples_, {}};
       for (const std::string& n : params.names()) info.params[n] = params.get(n);
-      infos_.push_back(std::move(info));
       ro.warnings = warnings_;
       ProblemRun run(p, params, commands_, ro, log_);
       run.bind(false);
+      if (sample_) {
+        info.drawn = sample_->values;
+        if (sample_->jitter) info.drawn.emplace_back("dt_factor", sample_->stepFactor);
+        const std::vector<double>& blasts = run.drawnBlastTimes();
+        for (std::size_t i = 0; i < blasts.size(); ++i)
+          info.drawn.emplace_back("blast_" + std::to_string(i + 1), blasts[i]);
+      }
+      infos_.push_back(std::move(info));
       // PARA commands in the BATCh blocks change the table for what follows (a
       // later top-level LOOP count), as they will when the problem runs.
       params = run.boundParams();
@@ -279,7 +383,7 @@ class Walker {
     // A count that depends on what ran (PARA inside a BATCh loop) may give more
     // runs than the check pass planned: they are numbered on.
     if (static_cast<std::size_t>(runs_) > plans_.size())
-      plans_.push_back({stem_ + "_" + std::to_string(runs_), "run " + std::to_string(runs_)});
+      plans_.push_back({stem_ + "_" + std::to_string(runs_), "run " + std::to_string(runs_), 0, 0, {}});
     // A shard runs every n-th run only (runs k with k mod n == i - 1, k from 0).
     if (options_.shards > 1 && (runs_ - 1) % options_.shards != options_.shard - 1) return;
     const RunPlan plan = plans_.at(static_cast<std::size_t>(runs_ - 1));
@@ -287,11 +391,26 @@ class Walker {
     ro.label = plan.label;
     log_ << "\n  collapse2d  " << p.title << "\n";
     log_ << "  run " << runs_ << " of " << plans_.size() << ", outputs " << ro.stem
-         << (plan.label.empty() ? "" : " (" + plan.label + ")") << "\n\n";
+         << (plan.label.empty() ? "" : " (" + plan.label + ")") << "\n";
+    if (!plan.drawn.empty()) {
+      log_ << "  drawn:";
+      for (std::size_t i = 0; i < plan.drawn.size(); ++i)
+        log_ << (i ? ", " : " ") << plan.drawn[i].first << " = " << exactNumber(plan.drawn[i].second);
+      log_ << "\n";
+    }
+    // The samples after an ensemble plan's first keep their tables (time
+    // history, debris) and a short log: a study of hundreds of runs would
+    // otherwise write gigabytes of pictures, animations and Newton lines.
+    const bool brief = sample_ && sample_->sample > 1;
+    ro.pictures = !brief;
+    if (brief) log_ << "  (the log of a sample after the first: its summary and debris)\n";
+    log_ << "\n";
     ro.safePoint = options_.safePoint;
-    ProblemRun run(p, params, commands_, ro, log_);
-    // A run of a study (SWEEp) that fails is reported and the study goes on;
-    // elsewhere a failure ends the deck.
+    std::ostream discard(nullptr);
+    ProblemRun run(p, params, commands_, ro, brief ? discard : log_);
+    // A run of a study (SWEEp, ENSEmble) that fails is reported and the study
+    // goes on; elsewhere a failure ends the deck.
+    const bool inStudy = (!sweep_.empty() && planTable_) || (sample_ && ensembleTable_);
     PlanRow row{runs_, ro.stem, sweep_, true, {}, {}};
     try {
       run.bind(true);
@@ -306,7 +425,7 @@ class Walker {
       }
     } catch (const std::runtime_error& e) {
       const bool expected = dynamic_cast<const AnalysisError*>(&e) || dynamic_cast<const DeckError*>(&e);
-      if (sweep_.empty() || !planTable_ || !expected) throw;
+      if (!inStudy || !expected) throw;
       row.ok = false;
       row.reason = failureReason(e.what());
       ++failed_;
@@ -315,7 +434,10 @@ class Walker {
         *console_ << "  " << ro.stem << ": FAILED: " << row.reason << "\n" << std::flush;
     }
     row.debris = run.debris();
-    if (planTable_) planTable_->add(row);
+    if (planTable_ && !sample_) planTable_->add(row);
+    if (ensembleTable_ && sample_)
+      ensembleTable_->add(
+          {runs_, plan.plan, plan.sample, ro.stem, sweep_, plan.drawn, row.ok, row.reason, row.debris});
     const RunSummary s = run.summary();
     total_.steps += s.steps;
     total_.iterations += s.iterations;
@@ -336,7 +458,10 @@ class Walker {
     total_.blastsNotMade += s.blastsNotMade;
     total_.debrisRuns += s.debrisRuns;
     total_.outsideRuns += s.outsideRuns;
+    total_.movingRuns += s.movingRuns;
+    total_.kineticRatio = std::max(total_.kineticRatio, s.kineticRatio);
     if (!row.ok) return;
+    if (brief && row.debris) log_ << debrisLogLines(*row.debris);
     log_ << "\n  summary: " << runSummaryText(s) << "\n";
     const std::vector<std::string> warnings = runWarnings(s);
     for (const std::string& w : warnings) log_ << "  " << w << "\n";
@@ -345,7 +470,10 @@ class Walker {
     // Warnings go where the deck's warnings go (standard error), not with the summaries.
     if (console_)
       for (const std::string& w : warnings) std::cerr << ro.stem << ": " << w << "\n" << std::flush;
-    overlay_.add(plan.label, p.title, run.outputs().curves(run.history()));
+    // An ensemble's plans are overlaid by their first sample.
+    if (!brief)
+      overlay_.add(runs_, sample_ ? sweepLabel(sweep_) : plan.label, p.title,
+                   run.outputs().curves(run.history()));
   }
 
   const SolutionCommands& commands_;
@@ -358,6 +486,11 @@ class Walker {
   Warnings* warnings_;
   std::vector<RunInfo> infos_;
   SweepValues sweep_;
+  const SampleDraws* sample_ = nullptr;  // the ensemble's sample being walked
+  int samples_ = 0, plan_ = 0;           // its sample count; the ensemble plans walked
+  std::optional<EnsembleTable> ensembleTable_;
+  const Record* ensembleHead_ = nullptr;
+  std::string title_;
   int runs_ = 0;
   RunSummary total_;
   CurveOverlay overlay_;
@@ -386,6 +519,19 @@ std::string fileList(const std::vector<std::filesystem::path>& files) {
 }
 
 }  // namespace
+
+DeckPlan planDeck(const std::string& path, const SolutionCommands& commands) {
+  const Deck deck = parseDeck(path);
+  std::ostringstream discard;
+  Parameters params;
+  const DeckOptions options;
+  Walker check(commands, options, discard, nullptr, {});
+  check.walk(deck.items, params);
+  DeckPlan plan;
+  plan.runs = check.runs();
+  for (const RunInfo& r : check.infos()) plan.study = plan.study || !r.sweep.empty() || r.sample > 0;
+  return plan;
+}
 
 DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
                     const SolutionCommands& commands, std::ostream& out) {
@@ -424,6 +570,14 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     Walker check(commands, options, discard, nullptr, {}, stem, &warnings);
     check.walk(deck.items, checkParams);
     const std::vector<RunPlan> plans = planRuns(check.infos(), stem);
+    const auto& infos = check.infos();
+    const bool ensemble =
+        std::any_of(infos.begin(), infos.end(), [](const RunInfo& r) { return r.sample > 0; });
+    if (ensemble && std::any_of(infos.begin(), infos.end(), [](const RunInfo& r) { return r.sample == 0; })) {
+      const Record& h = *check.ensembleHead();
+      throw DeckError(h[0].loc, "a deck with an ENSEmble runs its study alone: another problem of this deck runs outside it",
+                      h.excerpt(h[0].loc), "put the other problems in decks of their own");
+    }
     printWarnings();
     throwIfInterrupted("the start");
 
@@ -441,17 +595,47 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     Parameters params;
     Walker runner(commands, runOptions, log->stream(), &out, plans, stem);
     const std::vector<std::string> swept = sweptNames(check.infos());
-    if (!swept.empty()) runner.setPlanTable(PlanTable(swept));
+    if (ensemble)
+      runner.setEnsembleTable(EnsembleTable(swept, drawnNames(check.infos())));
+    else if (!swept.empty())
+      runner.setPlanTable(PlanTable(swept));
+    std::string studySummary;
     try {
       if (!plans.empty()) runner.walk(deck.items, params);
-      for (const auto& f : runner.overlay().write(dir, partStem))
-        log->stream() << "\n  overlay of the runs: " << f.filename().string() << "\n";
+      if (options.shards > 1) log->stream() << "\n" << kEndOfRuns << "\n";
+      // A shard of a study: its overlays are drawn by `collapse2d merge` from
+      // the parts' curves (a part without a study's table draws its own).
+      const bool studyPart = options.shards > 1 && (runner.planTable() || runner.ensembleTable());
+      if (studyPart && runner.overlay().numRuns() > 0)
+        AtomicFile::write(dir / (partStem + "_curves.csv"), runner.overlay().csv());
+      else
+        for (const auto& f : runner.overlay().write(dir, partStem))
+          log->stream() << "\n  overlay of the runs: " << f.filename().string() << "\n";
       if (const auto& table = runner.planTable()) {
         const std::filesystem::path file = dir / (partStem + "_plans.csv");
         table->write(file);
         log->stream() << "\n  plans: " << file.filename().string() << " (" << table->rows().size()
                       << " runs, " << table->failed() << " failed)\n";
       }
+      if (const auto& table = runner.ensembleTable()) {
+        const std::string text = table->csv();
+        const std::filesystem::path file = dir / (partStem + "_ensemble.csv");
+        AtomicFile::write(file, text);
+        log->stream() << "\n  ensemble: " << file.filename().string() << " (" << table->rows().size()
+                      << " runs, " << table->failed() << " failed)\n";
+        // A shard's table is a part: `collapse2d merge` makes the study of the whole.
+        if (options.shards <= 1) {
+          const EnsembleStudyReport report =
+              writeEnsembleStudy(dir, stem, readEnsembleTable(text, swept.size()), runner.title());
+          log->stream() << "\n" << report.text;
+          studySummary = report.summary;
+        }
+      }
+      if (options.shards > 1 && (runner.planTable() || runner.ensembleTable()))
+        writeShardManifest(dir, partStem,
+                           {path, deckFingerprint(path), options.shard, options.shards,
+                            static_cast<int>(plans.size()), runner.ensembleTable() ? "ensemble" : "plans",
+                            swept, runner.title(), runner.overlay().numRuns()});
     } catch (...) {
       kept = runner.kept();
       throw;
@@ -470,7 +654,7 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
       outcome.exitCode = kExitAnalysisFailed;
       outcome.message = path + ": " + std::to_string(outcome.failedRuns) + " of " +
                         std::to_string(executed) + " runs of the study failed (see " +
-                        partStem + "_plans.csv and the log)";
+                        partStem + (ensemble ? "_ensemble.csv" : "_plans.csv") + " and the log)";
     } else {
       log->stream() << "\n  run complete\n";
     }
@@ -478,7 +662,8 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     if (!options.quiet)
       out << path << ": " << (executed == 1 ? "" : std::to_string(executed) + " runs, ")
           << (outcome.failedRuns ? std::to_string(outcome.failedRuns) + " failed, " : "")
-          << runSummaryText(outcome.total) << "\n";
+          << runSummaryText(outcome.total) << "\n"
+          << studySummary;
   } catch (const DeckError& e) {
     printWarnings();
     outcome.exitCode = kExitDeckError;

@@ -67,4 +67,17 @@ std::vector<std::string> runWarnings(const RunSummary& s);
 DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
                     const SolutionCommands& commands, std::ostream& out);
 
+// The runs a deck makes and whether it ends with a study's table (a SWEEp or
+// an ENSEmble): its check pass alone (parsed and bound, nothing computed).
+// Throws DeckError.
+struct DeckPlan {
+  int runs = 0;
+  bool study = false;
+};
+DeckPlan planDeck(const std::string& path, const SolutionCommands& commands);
+
+// The log line after a shard's last run (macro/studies/ParallelRuns.h joins the
+// logs of the parts at it).
+constexpr const char* kEndOfRuns = "  end of the runs";
+
 }  // namespace c2d

@@ -4,6 +4,7 @@
 
 #include "macro/MeshCommands.h"
 #include "macro/Sweep.h"
+#include "macro/studies/Ensemble.h"
 
 namespace c2d {
 
@@ -59,6 +60,7 @@ void printAllHelp(std::ostream& os, const SolutionCommands& solution) {
   registerMaterialSubRecords(sub);
   CommandRegistry blocks("Top-level blocks (before a problem)");
   registerDeckBlocks(blocks);
+  registerEnsembleBlock(blocks);
   for (const CommandRegistry* r : {static_cast<const CommandRegistry*>(&mesh), static_cast<const CommandRegistry*>(&sub), static_cast<const CommandRegistry*>(&blocks), &solution.registry()}) {
     os << r->title() << "\n";
     for (const CommandSpec& s : r->specs()) printSpec(os, s);
@@ -72,6 +74,7 @@ bool printCommandHelp(std::ostream& os, const SolutionCommands& solution, const 
   registerMaterialSubRecords(sub);
   CommandRegistry blocks("Top-level blocks (before a problem)");
   registerDeckBlocks(blocks);
+  registerEnsembleBlock(blocks);
   bool found = false;
   for (const CommandRegistry* r : {static_cast<const CommandRegistry*>(&mesh), static_cast<const CommandRegistry*>(&sub), static_cast<const CommandRegistry*>(&blocks), &solution.registry()}) {
     if (const CommandSpec* s = r->find(word)) {

@@ -108,7 +108,7 @@ void MeshBinder::apply(const std::vector<MeshItem>& items) {
     if (const auto* block = std::get_if<ParamBlock>(&item)) {
       for (const auto& a : block->assigns) {
         const double value = a.value.eval(ctx_.params);
-        ctx_.params.set(a.name, value, a.record.fieldLoc(0));
+        ctx_.params.assign(a.name, value, a.record[0]);
         if (auto* os = ctx_.out())
           *os << "      Parameter " << a.name << " = " << std::setprecision(10) << value << "\n";
       }
@@ -269,6 +269,7 @@ Model buildModel(const Problem& problem, Parameters& params, std::ostream* echo,
   Model model;
   if (echo) *echo << "\n   " << problem.title << "\n";
   MeshBinder binder(model, params, echo, facts ? facts->warnings : nullptr);
+  if (facts) binder.setBeforeElements(facts->beforeElements);
   if (problem.controlKeywords.empty())
     binder.setControl(problem.control);
   else

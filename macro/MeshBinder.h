@@ -4,6 +4,7 @@
 // come) and an optional mesh echo. Used for a problem's initial mesh and again
 // for MESH re-entry on an existing model.
 #include <array>
+#include <functional>
 #include <iosfwd>
 #include <map>
 #include <optional>
@@ -33,6 +34,9 @@ struct MeshFacts {
   // out: the proportional load tables above 1 that FPROportional names, with the
   // record and field naming each first.
   std::map<int, std::pair<Record, std::size_t>> loadTables;
+  // in: called once every node has its coordinates, before the elements are
+  // built (MeshContext::beforeElements); may be empty.
+  std::function<void(Model&)> beforeElements;
 };
 
 class MeshBinder {
@@ -65,6 +69,7 @@ class MeshBinder {
   const CommandRegistry& registry() const { return registry_; }
   // The analysis state a MESH re-entry starts from (material sets given again).
   void setState(const State* state) { ctx_.state = state; }
+  void setBeforeElements(std::function<void(Model&)> f) { ctx_.beforeElements = std::move(f); }
 
  private:
   struct ControlField {

@@ -1260,6 +1260,7 @@ void refuseKinematicsChange(const Record& r, int m, Kinematics before) {
 
 void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whereText) {
   Model& model = ctx.model;
+  if (ctx.beforeElements) ctx.beforeElements(model);
 
   for (const auto& [num, pe] : ctx.elements) {
     const Record& r = *pe.origin;

@@ -83,6 +83,9 @@ struct MeshContext {
   // blank when not given.
   Record groundOrigin, membersOrigin, gravityOrigin, siteOrigin;
   Warnings* warnings = nullptr;  // null: warnings are dropped
+  // Called with the model once every node has its coordinates, before the
+  // elements are built from them (an ensemble's node jitter); may be empty.
+  std::function<void(Model&)> beforeElements;
   // SHIFt: the origin of POLAr; the nodes POLAr converted (each only once, as FEAP).
   Vec2 polarOrigin = Vec2::Zero();
   std::map<int, int> polarConverted;  // node -> line of the POLAr record

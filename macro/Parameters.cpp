@@ -22,6 +22,27 @@ std::optional<SourceLoc> Parameters::origin(std::string_view name) const {
   return it->second;
 }
 
+void Parameters::assign(std::string_view name, double value, const Field& at) {
+  if (const std::string* by = protectedBy(name))
+    throw DeckError(at.loc,
+                    "'" + (at.text.empty() ? std::string(name) : at.text) + "' is " + *by +
+                        ": a PARAmeter record may not set it again (every run would take this "
+                        "value while the tables, file names and log show the study's)",
+                    at.excerpt(), "give this value another name");
+  set(name, value, at.loc);
+}
+
+void Parameters::protect(std::string_view name, std::string by) {
+  protected_[toLower(name)] = std::move(by);
+}
+
+void Parameters::unprotect(std::string_view name) { protected_.erase(toLower(name)); }
+
+const std::string* Parameters::protectedBy(std::string_view name) const {
+  const auto it = protected_.find(toLower(name));
+  return it == protected_.end() ? nullptr : &it->second;
+}
+
 bool Parameters::has(std::string_view name) const { return values_.count(toLower(name)) != 0; }
 
 double Parameters::get(std::string_view name) const {

@@ -13,10 +13,22 @@
 
 namespace c2d {
 
+struct Field;
+
 class Parameters {
  public:
   // where: the assignment's location (none: an empty file name).
   void set(std::string_view name, double value, const SourceLoc& where = {});
+  // set() for a name a deck record assigns (PARAmeter blocks, PARA): a name a
+  // study sets for each run is a DeckError at `at`, which the deck may not
+  // change (every plan would run with the new value while the tables, file
+  // names and log show the study's).
+  void assign(std::string_view name, double value, const Field& at);
+  // Names a study sets for each run (SWEEp, ENSEmble): `by` says how
+  // ("swept by the SWEEp of line 3"). unprotect() when the study's runs end.
+  void protect(std::string_view name, std::string by);
+  void unprotect(std::string_view name);
+  const std::string* protectedBy(std::string_view name) const;
   bool has(std::string_view name) const;
   // The value of a defined name; std::out_of_range when it is not defined.
   double get(std::string_view name) const;
@@ -37,6 +49,7 @@ class Parameters {
  private:
   std::map<std::string, double> values_;      // keys in lower case
   std::map<std::string, SourceLoc> origins_;  // of the names set with a location
+  std::map<std::string, std::string> protected_;  // keys in lower case
 };
 
 }  // namespace c2d

@@ -6,16 +6,6 @@
 
 namespace c2d {
 
-std::string csvCell(const std::string& text) {
-  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
-}
-
 int PlanTable::failed() const {
   return static_cast<int>(
       std::count_if(rows_.begin(), rows_.end(), [](const PlanRow& r) { return !r.ok; }));

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/Debris.h"
+#include "macro/Csv.h"
 #include "macro/Sweep.h"
 
 namespace c2d {
@@ -42,8 +43,5 @@ class PlanTable {
   std::vector<std::string> names_;
   std::vector<PlanRow> rows_;
 };
-
-// A CSV cell: quoted when it holds a comma, a quote or a line break.
-std::string csvCell(const std::string& text);
 
 }  // namespace c2d

@@ -61,7 +61,9 @@ ProblemRun::ProblemRun(const Problem& problem, Parameters& params, const Solutio
       options_(std::move(options)),
       log_(log),
       outputs_(std::make_unique<RunOutputs>(options_.outDir, options_.stem, problem_.title,
-                                            options_.label)) {}
+                                            options_.label)) {
+  outputs_->setPictures(options_.pictures);
+}
 
 // A run that ends by an exception leaves no progress line for the message to run into.
 ProblemRun::~ProblemRun() { progress(true); }
@@ -69,7 +71,14 @@ ProblemRun::~ProblemRun() { progress(true); }
 void ProblemRun::bind(bool echo) {
   MeshFacts mesh;
   mesh.warnings = options_.warnings;
+  const SampleDraws* sample = options_.sample;
+  if (sample && sample->jitter)
+    mesh.beforeElements = [sample](Model& m) {
+      jitterNodes(m, *sample->jitter, sample->seed, sample->sample);
+    };
   model_ = buildModel(problem_, params_, echo ? &log_ : nullptr, &mesh);
+  if (sample && sample->detonators)
+    drawnBlastTimes_ = scatterBlasts(model_, *sample->detonators, sample->seed, sample->sample);
   installJoints(model_);
   boundParams_ = params_;
   batches_.clear();
@@ -223,6 +232,8 @@ RunSummary ProblemRun::summary() const {
   s.blastsNotMade = blastsNotMade_;
   s.debrisRuns = debris_ ? 1 : 0;
   s.outsideRuns = debris_ && debris_->outside() ? 1 : 0;
+  s.movingRuns = debris_ && !debris_->atRest() ? 1 : 0;
+  if (debris_) s.kineticRatio = debris_->kineticRatio;
   return s;
 }
 
@@ -538,6 +549,9 @@ void ProblemRun::scalePathIncrement() {
 }
 
 void ProblemRun::setDt(double dt) {
+  // An ensemble's JITTer scales the steps of the motion; a static path is a
+  // load path (its steps reach the deck's load levels), not a motion.
+  if (options_.sample && analysis_->integrator().dynamic()) dt *= options_.sample->stepFactor;
   analysis_->setDt(dt);
   dtNominal_ = dt;
 }

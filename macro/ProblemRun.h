@@ -20,6 +20,7 @@
 #include "macro/TimeHistory.h"
 #include "elements/HingeToJoint.h"
 #include "macro/Warnings.h"
+#include "macro/studies/Ensemble.h"
 #include "solvers/Analysis.h"
 #include "solvers/DenseOutput.h"
 #include "solvers/ModelFingerprint.h"
@@ -36,6 +37,13 @@ struct RunOptions {
   // Called at every safe point of the run (between two solution commands), e.g.
   // to check that the log is still being written.
   std::function<void()> safePoint;
+  // A sample of an ENSEmble (macro/studies/Ensemble.h): its nodes jittered
+  // before the elements are built, its time steps scaled, its blast times
+  // scattered. Null outside an ensemble.
+  const SampleDraws* sample = nullptr;
+  // Pictures and ParaView files (PLOT, PVIEw) are written (an ensemble's
+  // samples after the first write their tables only).
+  bool pictures = true;
 };
 
 struct RunSummary {
@@ -59,6 +67,10 @@ struct RunSummary {
   // Runs that ended with ground contact (debris figures), and those of them whose
   // debris left the site (SITE).
   int debrisRuns = 0, outsideRuns = 0;
+  // Runs whose debris was still moving at the end (its kinetic energy above
+  // TIME,REST's ratio of its peak), and the largest such ratio.
+  int movingRuns = 0;
+  double kineticRatio = 0;
 };
 
 class ProblemRun {
@@ -137,6 +149,8 @@ class ProblemRun {
   void plotDebris();
   // The debris figures of a run that ended with ground contact.
   const std::optional<DebrisFigures>& debris() const { return debris_; }
+  // The BLASt times of an ensemble's sample with DETOnators (one per record).
+  const std::vector<double>& drawnBlastTimes() const { return drawnBlastTimes_; }
 
  private:
   // pass (0-based) of passes: a loop's body (runLoop), else a BATCh block.
@@ -221,6 +235,7 @@ class ProblemRun {
   double deepestTime_ = 0;
   std::optional<DebrisFigures> debris_;
   bool debrisPlot_ = false;
+  std::vector<double> drawnBlastTimes_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point lastProgress_;
   bool progressShown_ = false;

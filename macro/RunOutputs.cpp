@@ -60,6 +60,7 @@ std::filesystem::path RunOutputs::plotMesh(const Model& model) const {
   // The reference configuration: no displacements at all.
   const State reference;
   const std::filesystem::path path = file("_mesh.svg");
+  if (!pictures_) return path;
   SvgFrame().setTitle(heading()).setShowUndeformed(false).setShowNodes(true).save(path, model, reference);
   return path;
 }
@@ -95,6 +96,7 @@ std::optional<std::filesystem::path> RunOutputs::plotDeformed(const Model& model
   std::string t = heading();
   t += (t.empty() ? "" : ": ") + std::string("step ") + std::to_string(step) + ", t = " +
        shortNumber(state.t);
+  if (!pictures_) return path;
   SvgFrame().setTitle(t).setDisplacementScale(scale).setCurved(curved).save(path, model, state);
   lastPicture_ = {path, step, state.t, asked, curved, 0};
   return path;
@@ -133,6 +135,7 @@ std::optional<std::filesystem::path> RunOutputs::plotCurve(const CurveSpec& spec
     curves_.push_back(spec);
   if (!history) return std::nullopt;
   const std::filesystem::path path = file('_' + spec.fileName() + ".svg");
+  if (!pictures_) return path;
   AtomicFile::write(path, curveSvg(heading(), spec, {{std::string(), curvePoints(spec, *history)}}));
   return path;
 }
@@ -145,6 +148,7 @@ std::vector<CurveData> RunOutputs::curves(const TimeHistory* history) const {
 }
 
 std::optional<std::filesystem::path> RunOutputs::writeView(const Model& model, const State& state) {
+  if (!pictures_) return std::nullopt;
   if (vtk_ && state.step == lastViewStep_ && state.t == lastViewTime_) return std::nullopt;
   if (!vtk_) vtk_ = std::make_unique<VtkWriter>(outDir_ / stem_);
   lastViewStep_ = state.step;

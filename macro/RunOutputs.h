@@ -52,6 +52,10 @@ class RunOutputs {
   // title: the problem's title; label: what tells this run apart (sweep values), or "".
   RunOutputs(std::filesystem::path outDir, std::string stem, std::string title, std::string label);
 
+  // Off: no picture and no ParaView file is written (the methods still say
+  // which file they stand for); the curves are kept for the overlays.
+  void setPictures(bool on) { pictures_ = on; }
+
   // PLOT,MESH: the undeformed mesh with supports and joints.
   std::filesystem::path plotMesh(const Model& model) const;
   // PLOT,DEFOrmed: the deformed shape; scale 0 chooses one (automaticScale);
@@ -113,6 +117,7 @@ class RunOutputs {
   std::vector<CurveSpec> curves_;
   std::unique_ptr<VtkWriter> vtk_;
   int viewEvery_ = 0;
+  bool pictures_ = true;
   int lastViewStep_ = -1;  // the state last written, so that PVIEw and the interval never repeat it
   double lastViewTime_ = 0;
   struct Picture {

@@ -2,64 +2,96 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <map>
-#include <regex>
 #include <sstream>
 
 #include "core/AtomicFile.h"
-#include "macro/PlanTable.h"
+#include "macro/Csv.h"
+#include "macro/DeckReader.h"
 
 namespace c2d {
 
 namespace {
 
-// Cells of one CSV line (quoted cells may hold commas and doubled quotes).
-std::vector<std::string> splitCsv(const std::string& line) {
-  std::vector<std::string> cells(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        cells.back() += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        cells.back() += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      cells.emplace_back();
-    } else if (c != '\r') {
-      cells.back() += c;
-    }
-  }
-  return cells;
-}
+}  // namespace
 
-std::vector<std::string> readLines(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::vector<std::string> lines;
-  for (std::string l; std::getline(in, l);)
-    if (!l.empty() && l != "\r") lines.push_back(l);
-  return lines;
-}
-
-const char* kBatchHeader =
+const char* const kBatchHeader =
     "deck,status,exit,signal,runs,steps,iterations,wall_s,debris_runs,outside_runs";
 
-// A complete set of parts 1..n, or the message naming the missing ones.
-std::string missingParts(const std::map<int, std::filesystem::path>& parts, int n) {
-  std::string missing;
-  for (int i = 1; i <= n; ++i)
-    if (!parts.count(i)) missing += (missing.empty() ? "" : ", ") + std::to_string(i);
-  return missing;
-}
+
+namespace {
+
+const char* const kManifestHeader = "key,value";
 
 }  // namespace
+
+std::string deckFingerprint(const std::string& path) {
+  std::uint64_t h = 14695981039346656037ull;  // FNV-1a over every record's text
+  for (const Record& r : DeckReader::readFile(path)) {
+    for (unsigned char c : r.lineText()) h = (h ^ c) * 1099511628211ull;
+    h = (h ^ '\n') * 1099511628211ull;
+  }
+  char buf[20];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+void writeShardManifest(const std::filesystem::path& dir, const std::string& partStem,
+                        const ShardManifest& m) {
+  std::string swept;
+  for (const std::string& n : m.swept) swept += (swept.empty() ? "" : " ") + n;
+  std::string out = std::string(kManifestHeader) + "\n";
+  for (const auto& [k, v] :
+       std::vector<std::pair<std::string, std::string>>{{"deck", m.deck},
+                                                        {"fingerprint", m.fingerprint},
+                                                        {"part", std::to_string(m.part)},
+                                                        {"parts", std::to_string(m.parts)},
+                                                        {"runs", std::to_string(m.runs)},
+                                                        {"table", m.table},
+                                                        {"swept", swept},
+                                                        {"title", m.title},
+                                                        {"curves", std::to_string(m.curves)}})
+    out += k + "," + csvCell(v) + "\n";
+  AtomicFile::write(dir / (partStem + "_manifest.csv"), out);
+}
+
+ShardManifest readShardManifest(const std::string& text) {
+  std::istringstream in(text);
+  std::string line;
+  if (!std::getline(in, line) || line != kManifestHeader)
+    throw std::runtime_error(text.empty() ? "the manifest is empty" : "not a part's manifest");
+  std::map<std::string, std::string> kv;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const auto c = splitCsv(line);
+    if (c.size() != 2) throw std::runtime_error("a manifest line without key and value: " + line);
+    kv[c[0]] = c[1];
+  }
+  ShardManifest m;
+  auto need = [&](const char* key) -> const std::string& {
+    const auto it = kv.find(key);
+    if (it == kv.end()) throw std::runtime_error(std::string("the manifest has no ") + key);
+    return it->second;
+  };
+  auto whole = [&](const char* key) {
+    const auto v = integerCell(need(key));
+    if (!v || *v < 0) throw std::runtime_error(std::string("the manifest's ") + key + " is not a count");
+    return static_cast<int>(*v);
+  };
+  m.deck = need("deck");
+  m.fingerprint = need("fingerprint");
+  m.part = whole("part");
+  m.parts = whole("parts");
+  m.runs = whole("runs");
+  m.table = need("table");
+  if (m.table != "plans" && m.table != "ensemble")
+    throw std::runtime_error("the manifest's table is '" + m.table + "'");
+  std::istringstream names(need("swept"));
+  for (std::string n; names >> n;) m.swept.push_back(n);
+  m.title = need("title");
+  m.curves = whole("curves");
+  return m;
+}
 
 std::string ShardSpec::tag() const {
   return "part" + std::to_string(index) + "of" + std::to_string(count);
@@ -110,24 +142,39 @@ std::vector<BatchResult> readBatchCsv(const std::string& text) {
   std::istringstream in(text);
   std::string line;
   if (!std::getline(in, line) || line != kBatchHeader)
-    throw std::runtime_error("not a batch table (its first line is not '" +
-                             std::string(kBatchHeader) + "')");
+    throw std::runtime_error(text.empty() ? std::string("it is empty")
+                                          : "not a batch table (its first line is not '" +
+                                                std::string(kBatchHeader) + "')");
+  if (text.back() != '\n')
+    throw std::runtime_error("it ends in the middle of a row (no line end after its last line)");
+  int lineNo = 1;
   while (std::getline(in, line)) {
+    ++lineNo;
     if (line.empty()) continue;
     const auto c = splitCsv(line);
-    if (c.size() != 10) throw std::runtime_error("a batch table row without 10 cells: " + line);
+    const std::string at = "line " + std::to_string(lineNo) + ": ";
+    if (c.size() != 10)
+      throw std::runtime_error(at + std::to_string(c.size()) + " cells where the header has 10");
     BatchResult r;
     r.deck = c[0];
     r.started = c[1] != "not run";
     r.timedOut = c[1] == "timed out";
-    r.exitCode = std::stoi(c[2]);
-    r.signal = std::stoi(c[3]);
-    r.runs = std::stoi(c[4]);
-    r.steps = std::stoi(c[5]);
-    r.iterations = std::stoi(c[6]);
-    r.seconds = std::stod(c[7]);
-    r.debrisRuns = std::stoi(c[8]);
-    r.outsideRuns = std::stoi(c[9]);
+    static const char* names[] = {"exit", "signal", "runs", "steps", "iterations"};
+    int* ints[] = {&r.exitCode, &r.signal, &r.runs, &r.steps, &r.iterations};
+    for (int k = 0; k < 5; ++k) {
+      const auto v = integerCell(c[2 + k]);
+      if (!v) throw std::runtime_error(at + "'" + c[2 + k] + "' in column " + names[k] + " is not a whole number");
+      *ints[k] = static_cast<int>(*v);
+    }
+    const auto wall = numberCell(c[7]);
+    const auto debris = integerCell(c[8]), outside = integerCell(c[9]);
+    if (!wall) throw std::runtime_error(at + "'" + c[7] + "' in column wall_s is not a number");
+    if (!debris || !outside)
+      throw std::runtime_error(at + "'" + (debris ? c[9] : c[8]) + "' in column " +
+                               (debris ? "outside_runs" : "debris_runs") + " is not a whole number");
+    r.seconds = *wall;
+    r.debrisRuns = static_cast<int>(*debris);
+    r.outsideRuns = static_cast<int>(*outside);
     results.push_back(r);
   }
   return results;
@@ -136,117 +183,6 @@ std::vector<BatchResult> readBatchCsv(const std::string& text) {
 void writeBatchPart(const std::filesystem::path& dir, const ShardSpec& spec,
                     const std::vector<BatchResult>& results) {
   AtomicFile::write(dir / ("batch_" + spec.tag() + ".csv"), batchCsv(results));
-}
-
-int mergeParts(const std::filesystem::path& dir, std::ostream& out, std::ostream& err) {
-  if (!std::filesystem::is_directory(dir)) {
-    err << "collapse2d merge: no directory '" << dir.string() << "'\n";
-    return 1;
-  }
-  // (name of the joined file, n) -> part index -> file
-  std::map<std::pair<std::string, int>, std::map<int, std::filesystem::path>> sets;
-  const std::regex plans(R"((.+)_part([0-9]+)of([0-9]+)_plans\.csv)");
-  const std::regex batch(R"(batch_part([0-9]+)of([0-9]+)\.csv)");
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    const std::string name = entry.path().filename().string();
-    std::smatch m;
-    if (std::regex_match(name, m, plans))
-      sets[{m[1].str() + "_plans.csv", std::stoi(m[3])}][std::stoi(m[2])] = entry.path();
-    else if (std::regex_match(name, m, batch))
-      sets[{"batch.csv", std::stoi(m[2])}][std::stoi(m[1])] = entry.path();
-  }
-  if (sets.empty()) {
-    err << "collapse2d merge: no parts (*_part<i>of<n>_plans.csv, batch_part<i>of<n>.csv) in '"
-        << dir.string() << "'\n";
-    return 1;
-  }
-  int status = 0;
-  for (const auto& [key, parts] : sets) {
-    const auto& [joined, n] = key;
-    if (const std::string missing = missingParts(parts, n); !missing.empty()) {
-      err << "collapse2d merge: " << joined << ": part"
-          << (missing.find(',') == std::string::npos ? " " : "s ") << missing << " of " << n
-          << " missing\n";
-      status = 1;
-      continue;
-    }
-    if (joined == "batch.csv") {
-      // One row per deck, in order of first appearance; a deck split over the
-      // parts (its runs sharded) sums its counts and keeps the first failure.
-      std::vector<BatchResult> merged;
-      for (const auto& [i, file] : parts) {
-        std::ifstream in(file);
-        std::stringstream ss;
-        ss << in.rdbuf();
-        std::vector<BatchResult> rows;
-        try {
-          rows = readBatchCsv(ss.str());
-        } catch (const std::exception& e) {
-          err << "collapse2d merge: " << file.string() << ": " << e.what() << "\n";
-          status = 1;
-          continue;
-        }
-        for (const BatchResult& r : rows) {
-          auto it = std::find_if(merged.begin(), merged.end(),
-                                 [&](const BatchResult& m) { return m.deck == r.deck; });
-          if (it == merged.end()) {
-            merged.push_back(r);
-            continue;
-          }
-          if (it->ok() && !r.ok()) {
-            it->exitCode = r.exitCode;
-            it->signal = r.signal;
-          }
-          it->runs += r.runs;
-          it->steps += r.steps;
-          it->iterations += r.iterations;
-          it->seconds += r.seconds;
-          it->debrisRuns += r.debrisRuns;
-          it->outsideRuns += r.outsideRuns;
-        }
-      }
-      AtomicFile::write(dir / joined, batchCsv(merged));
-      out << joined << ": " << merged.size() << " deck" << (merged.size() == 1 ? "" : "s")
-          << " from " << n << " parts\n";
-      printBatchTable(out, merged);
-      continue;
-    }
-    // Plans: the same header in every part, rows ordered by run number.
-    std::string header;
-    std::vector<std::pair<int, std::string>> rows;
-    bool consistent = true;
-    for (const auto& [i, file] : parts) {
-      const auto lines = readLines(file);
-      if (lines.empty()) continue;
-      if (header.empty()) header = lines[0];
-      if (lines[0] != header) {
-        err << "collapse2d merge: " << file.string()
-            << ": its columns differ from the other parts'\n";
-        consistent = false;
-        break;
-      }
-      for (std::size_t k = 1; k < lines.size(); ++k)
-        rows.emplace_back(std::atoi(lines[k].c_str()), lines[k]);
-    }
-    if (!consistent || header.empty()) {
-      if (header.empty()) err << "collapse2d merge: " << joined << ": the parts are empty\n";
-      status = 1;
-      continue;
-    }
-    std::stable_sort(rows.begin(), rows.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::string text = header + "\n";
-    int failed = 0;
-    for (const auto& [run, line] : rows) {
-      text += line + "\n";
-      const auto cells = splitCsv(line);
-      if (std::find(cells.begin(), cells.end(), "failed") != cells.end()) ++failed;
-    }
-    AtomicFile::write(dir / joined, text);
-    out << joined << ": " << rows.size() << " plans from " << n << " parts, " << failed
-        << " failed\n";
-  }
-  return status;
 }
 
 }  // namespace c2d

@@ -9,11 +9,11 @@
 // sweep values as always. Every part writes batch_part<i>of<n>.csv, the batch
 // table as CSV, in the output directory.
 //
-// merge reads a directory holding the parts: it joins every complete set of
-// <stem>_part<i>of<n>_plans.csv into <stem>_plans.csv (rows ordered by run
-// number) and the batch_part<i>of<n>.csv into batch.csv (a deck split over the
-// parts gets one row: the first failure's status, the counts summed), prints the
-// joint table, and refuses a set with a part missing.
+// A part of a deck's study also writes <stem>_part<i>of<n>_manifest.csv (what
+// it is a part of: the deck and its fingerprint, i, n, the deck's run count,
+// the table's kind and swept names), and the curves of its runs for the
+// overlays (<stem>_part<i>of<n>_curves.csv); `collapse2d merge` checks every
+// part against it (macro/studies/Merge.h).
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -38,14 +38,31 @@ std::vector<std::string> shardDecks(const std::vector<std::string>& decks, const
                                     DeckOptions& deck);
 
 // The batch table as CSV (header deck,status,exit,signal,runs,steps,iterations,
-// wall_s,debris_runs,outside_runs).
+// wall_s,debris_runs,outside_runs). readBatchCsv throws std::runtime_error
+// (line, column, why) for a text that is not one whole.
 std::string batchCsv(const std::vector<BatchResult>& results);
 std::vector<BatchResult> readBatchCsv(const std::string& text);
 void writeBatchPart(const std::filesystem::path& dir, const ShardSpec& spec,
                     const std::vector<BatchResult>& results);
 
-// Joins the parts in dir (see above): 0 when every set found was complete and
-// merged, 1 otherwise (messages on err).
-int mergeParts(const std::filesystem::path& dir, std::ostream& out, std::ostream& err);
+extern const char* const kBatchHeader;
+
+// What a part of a deck's study is a part of.
+struct ShardManifest {
+  std::string deck, fingerprint;  // the deck as given, and deckFingerprint of it
+  int part = 1, parts = 1;
+  int runs = 0;                     // the runs of the whole deck
+  std::string table;                // "plans" (a SWEEp) or "ensemble"
+  std::vector<std::string> swept;   // the swept names (the tables' columns)
+  std::string title;                // the problem's title
+  int curves = 0;                   // runs whose curves the part wrote for the overlays
+};
+// A hash of the deck's records (INCLude expanded, comments dropped): parts of
+// different decks with the same stem differ in it.
+std::string deckFingerprint(const std::string& path);
+void writeShardManifest(const std::filesystem::path& dir, const std::string& partStem,
+                        const ShardManifest& manifest);
+// Throws std::runtime_error saying what is wrong with the text.
+ShardManifest readShardManifest(const std::string& text);
 
 }  // namespace c2d

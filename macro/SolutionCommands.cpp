@@ -115,12 +115,12 @@ class ParaCommand final : public SolutionCommand {
  private:
   static void apply(const Macro& m, Parameters& p) {
     if (!m.optionText.empty()) {
-      p.set(toLower(m.optionText), m.has(0) ? m.numbers[0].eval(p) : 0.0, m.record.fieldLoc(1));
+      p.assign(toLower(m.optionText), m.has(0) ? m.numbers[0].eval(p) : 0.0, m.record[1]);
       return;
     }
     for (const Record& rec : m.data) {
       const ParamAssign a = DeckParser::parseAssignment(rec);
-      p.set(a.name, a.value.eval(p), rec.fieldLoc(0));
+      p.assign(a.name, a.value.eval(p), rec[0]);
     }
   }
 };

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "macro/CommandSpec.h"
+#include "macro/Deck.h"
 
 namespace c2d {
 
@@ -25,6 +26,17 @@ std::string sweepTag(const SweepValues& values);
 std::string fitFileStem(const std::string& stem, std::size_t max = 160);
 // "ks = -393, mu = 100".
 std::string sweepLabel(const SweepValues& values);
+
+// The values of a SWEEp record from field `first` on: expressions, and ranges
+// lo:step:hi (each part an expression). Throws DeckError at a bad field.
+std::vector<SweepItem> parseSweepItems(const Record& rec, std::size_t first);
+// A variable's values: each range lo:step:hi gives lo + k step for k = 0, 1,
+// ... up to hi (the last value is hi itself when the steps land on it within
+// 1e-9 of a step; at most DeckLimits::kMaxRuns values).
+std::vector<double> sweepValues(const SweepVariable& v, const Parameters& params);
+// The value sets of a sweep, one per run (its variables zipped): a DeckError at
+// a variable whose number of values differs from the first's.
+std::vector<SweepValues> sweepRuns(const TopSweep& sweep, const Parameters& params);
 
 // The declared spec of the SWEEp block, for --help (the top-level structure
 // words are parsed by DeckParser, not by a registry).

@@ -14,6 +14,9 @@
 #include "macro/BatchRunner.h"
 #include "macro/DeckRunner.h"
 #include "macro/Help.h"
+#include "macro/Shard.h"
+#include "macro/studies/Merge.h"
+#include "macro/studies/ParallelRuns.h"
 #include "macro/Interrupt.h"
 #include "macro/Shard.h"
 #include "macro/Suggest.h"
@@ -25,11 +28,12 @@ void usage(std::ostream& os) {
   os << "usage: collapse2d [options] DECK...\n"
         "       collapse2d run [options] [-j N] DECK...\n"
         "                                     (batch: every deck in a process of its own,\n"
-        "                                     N at once, then a table of the results)\n"
+        "                                     N at once, then a table of the results; one\n"
+        "                                     deck's study: its runs in N processes)\n"
         "       collapse2d run --shard i/n [options] DECK...\n"
         "                                     (the i-th of n interleaved parts of the decks,\n"
         "                                     or of one deck's runs; batch_part<i>of<n>.csv)\n"
-        "       collapse2d merge [DIR]        (join the parts' plan tables and batch tables)\n"
+        "       collapse2d merge [DIR]        (check and join the parts' tables and overlays)\n"
         "       collapse2d -iIname            (FEAP's form: deck Iname, log Oname)\n"
         "       collapse2d --help [COMMAND]   (every command, or one command's fields)\n"
         "options:\n"
@@ -55,7 +59,9 @@ void usage(std::ostream& os) {
         "                             ! (a blank record ends the block)\n"
         "  FEAP * * ...\n"
         "  outputs <stem>_ks=-393_tplot.csv, ...; the curves of PLOT,CURVe overlaid in\n"
-        "  <stem>_<y>_vs_<x>.svg with a legend entry per run (see --help SWEEp)\n";
+        "  <stem>_<y>_vs_<x>.svg with a legend entry per run (see --help SWEEp); ranges\n"
+        "  x = 0:0.01:1; an ENSEmble,,n,seed block runs every plan n times with drawn\n"
+        "  values (see --help ENSEmble)\n";
 }
 
 // The options of both modes: -o DIR, -q, --solver NAME. Returns 1 when argv[i]
@@ -144,9 +150,17 @@ int batchMain(int argc, char** argv, const c2d::SolutionCommands& commands) {
     std::cerr << "collapse2d run: " << clash << "\n";
     return c2d::kExitUsage;
   }
+  if (shard.active() && decks.size() == 1 && options.jobs > 1) {
+    std::cerr << "collapse2d run: -j with --shard of one deck: its shards are the processes\n";
+    return c2d::kExitUsage;
+  }
   decks = c2d::shardDecks(decks, shard, options.deck);
   options.progress = !options.deck.quiet && isatty(STDERR_FILENO);
   c2d::installInterruptHandlers();
+  // One deck whose runs are a study: its runs split over the -j processes.
+  if (decks.size() == 1 && !shard.active() && options.jobs > 1)
+    if (const int st = c2d::runDeckInParallel(decks[0], options, commands, std::cout, std::cerr); st >= 0)
+      return st;
   const auto results = c2d::runBatch(decks, options, commands, std::cout);
   if (!options.deck.quiet) c2d::printBatchTable(std::cout, results);
   std::cout.flush();

@@ -5,7 +5,7 @@
 // expected answer to a bad deck; any other exception, a crash or a sanitizer
 // report is a finding.
 //
-// Top-level LOOP and SWEEp passes are capped at kMaxPasses per item, so that a
+// Top-level LOOP, SWEEp and ENSEmble passes are capped at kMaxPasses per item, so that a
 // deck asking for a billion passes does not read as a hang.
 #include <cstddef>
 #include <cstdint>
@@ -17,29 +17,39 @@
 #include "macro/DeckParser.h"
 #include "macro/ProblemRun.h"
 #include "macro/SolutionCommand.h"
+#include "macro/Sweep.h"
+#include "macro/studies/Ensemble.h"
 
 namespace {
 
 constexpr int kMaxPasses = 3;
 
 void checkItems(const std::vector<c2d::TopItem>& items, c2d::Parameters& params,
-                const c2d::SolutionCommands& commands) {
+                const c2d::SolutionCommands& commands, const c2d::SampleDraws* sample = nullptr) {
   for (const c2d::TopItem& item : items) {
     if (const auto* pb = std::get_if<c2d::ParamBlock>(&item)) {
       pb->apply(params);
     } else if (const auto* loop = std::get_if<c2d::TopLoop>(&item)) {
       const int n = loop->count.evalInt(params, "loop count");
-      for (int i = 0; i < n && i < kMaxPasses; ++i) checkItems(loop->body, params, commands);
+      for (int i = 0; i < n && i < kMaxPasses; ++i) checkItems(loop->body, params, commands, sample);
     } else if (const auto* sweep = std::get_if<c2d::TopSweep>(&item)) {
-      for (std::size_t i = 0; i < sweep->runs() && i < kMaxPasses; ++i) {
-        for (const c2d::SweepVariable& v : sweep->variables)
-          params.set(c2d::toLower(v.name), v.values[i].eval(params));
-        checkItems(sweep->body, params, commands);
+      const auto sets = c2d::sweepRuns(*sweep, params);
+      for (std::size_t i = 0; i < sets.size() && i < kMaxPasses; ++i) {
+        for (const auto& [name, v] : sets[i]) params.set(name, v);
+        checkItems(sweep->body, params, commands, sample);
+      }
+    } else if (const auto* e = std::get_if<c2d::TopEnsemble>(&item)) {
+      const c2d::EnsembleSpec spec = c2d::evaluateEnsemble(*e, params);
+      for (int k = 1; k <= spec.samples && k <= kMaxPasses; ++k) {
+        const c2d::SampleDraws draws = c2d::drawSample(spec, k);
+        for (const auto& [name, v] : draws.values) params.set(name, v);
+        checkItems(e->body, params, commands, &draws);
       }
     } else {
       std::ostringstream discard;
       c2d::RunOptions ro;
       ro.outDir = "/nonexistent-fuzz-output";
+      ro.sample = sample;  // an ensemble's jitter and detonators in the binding
       c2d::ProblemRun run(std::get<c2d::Problem>(item), params, commands, ro, discard);
       run.bind(false);
     }

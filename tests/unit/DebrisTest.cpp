@@ -2,6 +2,7 @@
 // (core/SvgDebris) and the peak ground force of a bar dropped on the ground.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -68,6 +69,68 @@ TEST(Debris, MassWhereItLies) {
   EXPECT_NE(debrisLogLines(none).find("no site given"), std::string::npos);
 }
 
+// The robust figures by hand: two unit-mass-per-length bars on [0, 2] and
+// [2, 4] moved by 1 (pieces on [1, 3], [3, 5]) and a point mass 0.5 at x = 5.
+// Total 4.5; mass below x: x - 1 on [1, 5), 4.5 at 5.
+//   5 % (0.225) lies below x = 1.225, 95 % (4.275) below x = 5 (the point mass);
+//   centroid (2 * 2 + 2 * 4 + 0.5 * 5) / 4.5 = 14.5 / 4.5, at the start 10 / 4.5
+//   (bars at 1 and 3, the point mass at 4): shift 1.
+TEST(Debris, RobustFiguresByHand) {
+  State s;
+  Model m = twoBars(1.0, s);
+  m.nodalMass(2) = {0.5, 0.5, 0};
+  const auto pieces = massPieces(m, s);
+  EXPECT_NEAR(massQuantile(pieces, 0.05), 1.225, 1e-12);
+  EXPECT_NEAR(massQuantile(pieces, 0.5), 1 + 2.25, 1e-12);
+  EXPECT_NEAR(massQuantile(pieces, 0.95), 5, 1e-12);
+  EXPECT_NEAR(massQuantile(pieces, 0.85), 1 + 0.85 * 4.5, 1e-12);
+  const DebrisFigures d = debrisFigures(m, s);
+  EXPECT_NEAR(d.centroid, 14.5 / 4.5, 1e-12);
+  EXPECT_NEAR(d.centroidShift, 1, 1e-12);
+  EXPECT_NEAR(d.left95, 0, 1e-12);
+  EXPECT_NEAR(d.right95, 1, 1e-12);
+  // One piece: both bars and the nodal mass.
+  EXPECT_NEAR(d.leftPieceMass, 4.5, 1e-12);
+  EXPECT_NEAR(d.rightPieceMass, 4.5, 1e-12);
+  ASSERT_EQ(d.cover.size(), 1u);
+  EXPECT_NEAR(d.cover[0].first, 1, 1e-12);
+  EXPECT_NEAR(d.cover[0].second, 5, 1e-12);
+
+  // The union of separate pieces.
+  const auto cover = massCover({{9, 11, 1}, {0, 2, 1}, {1, 3, 1}, {5, 5, 1}});
+  ASSERT_EQ(cover.size(), 3u);
+  EXPECT_EQ(cover[0], std::make_pair(0.0, 3.0));
+  EXPECT_EQ(cover[1], std::make_pair(5.0, 5.0));
+  EXPECT_EQ(cover[2], std::make_pair(9.0, 11.0));
+
+  // The first bar blasted away: the second (mass 2 + 0.5) is the piece at both
+  // ends; the first bar's free node is no longer debris.
+  s.u[3 * 1] = 8;
+  s.u[3 * 2] = 7;
+  m.removeElement(0);
+  const DebrisFigures alone = debrisFigures(m, s);
+  EXPECT_NEAR(alone.rightPieceMass, 2.5, 1e-12);
+  EXPECT_NEAR(alone.leftPieceMass, 2.5, 1e-12);
+  EXPECT_NEAR(alone.centroid, (2 * 10.5 + 0.5 * 11) / 2.5, 1e-12);
+  ASSERT_EQ(alone.cover.size(), 1u);
+  EXPECT_NEAR(alone.cover[0].first, 10, 1e-12);
+}
+
+// A run not at rest: the kinetic energy ratio against TIME,REST's.
+TEST(Debris, AtRestAgainstTheRatio) {
+  DebrisFigures d;
+  d.kineticRatio = 2e-2;
+  EXPECT_FALSE(d.atRest());
+  EXPECT_NE(debrisLogLines(d).find("STILL MOVING"), std::string::npos);
+  EXPECT_NE(debrisCsvRow(d).find(",no,"), std::string::npos);
+  d.kineticRatio = 1e-6;
+  EXPECT_TRUE(d.atRest());
+  EXPECT_NE(debrisCsvRow(d).find(",yes,"), std::string::npos);
+  // The row has as many cells as the header.
+  const std::string h = debrisCsvHeader(), r = debrisCsvRow(d);
+  EXPECT_EQ(std::count(h.begin(), h.end(), ','), std::count(r.begin(), r.end(), ','));
+}
+
 TEST(Debris, PictureShowsFootprintSiteAndHistogram) {
   State s;
   Model m = twoBars(-3.0, s);
@@ -126,7 +189,7 @@ TEST(Debris, BarDropPeakGroundForce) {
   std::vector<std::string> cells;
   std::stringstream ss(row);
   for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-  ASSERT_EQ(cells.size(), 12u) << row;
+  ASSERT_EQ(cells.size(), 22u) << row;
   const double L = 2, n = 4, h0 = 0.05, k = 1e4, g = 9.81, m = L;
   const double K = (n + 1) * k, v0 = std::sqrt(2 * g * h0);
   const double pen = m * g / K + std::sqrt(std::pow(m * g / K, 2) + m * v0 * v0 / K);

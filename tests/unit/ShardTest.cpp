@@ -8,6 +8,7 @@
 
 #include "macro/DeckRunner.h"
 #include "macro/Shard.h"
+#include "macro/studies/Merge.h"
 #include "tests/unit/DeckTestSupport.h"
 
 namespace c2d {

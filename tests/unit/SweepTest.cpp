@@ -58,11 +58,11 @@ TEST(Sweep, ParsesZippedVariables) {
       "s.inp");
   ASSERT_EQ(d.items.size(), 1u);
   const auto& sw = std::get<TopSweep>(d.items[0]);
-  EXPECT_EQ(sw.runs(), 3u);
+  Parameters p;
+  EXPECT_EQ(sweepRuns(sw, p).size(), 3u);
   ASSERT_EQ(sw.variables.size(), 2u);
   EXPECT_EQ(sw.variables[0].name, "ks");
-  Parameters p;
-  EXPECT_DOUBLE_EQ(sw.variables[0].values[2].eval(p), -700);
+  EXPECT_DOUBLE_EQ(sweepValues(sw.variables[0], p)[2], -700);
   ASSERT_EQ(sw.body.size(), 2u);
   EXPECT_TRUE(std::holds_alternative<ParamBlock>(sw.body[0]));
   EXPECT_TRUE(std::holds_alternative<Problem>(sw.body[1]));
@@ -80,6 +80,57 @@ TEST(Sweep, ErrorsAtTheirPlace) {
                   "SWEEp block (line 1) is not ended by a blank record");
   expectDeckError([] { parseDeckText("SWEEp\n  ks = 1 2\n  KS = 3 4\n\nFEAP * * t\n 0 0 0 2 3 2\nEND\n", "s.inp"); },
                   "s.inp", 3, 3, "swept twice");
+}
+
+// Long sweeps: ranges lo:step:hi and records that continue a variable's values.
+TEST(Sweep, RangesAndContinuationRecords) {
+  const Deck d = parseDeckText(
+      "SWEEp\n  x = 0:0.01:0.99\n  y = 1 2 -0.5:0.5:47\n      2*2 k\n\n"
+      "FEAP * * t\n  0 0 0 2 3 2\nEND\nBATCh\nEND\nSTOP\n",
+      "s.inp");
+  const auto& sw = std::get<TopSweep>(d.items[0]);
+  Parameters p;
+  p.set("k", 7);
+  const std::vector<double> x = sweepValues(sw.variables[0], p);
+  ASSERT_EQ(x.size(), 100u);
+  EXPECT_EQ(x[0], 0);
+  EXPECT_EQ(x[99], 0.99);  // the end itself, not 0.99000000000000010
+  EXPECT_DOUBLE_EQ(x[37], 0.37);
+  const std::vector<double> y = sweepValues(sw.variables[1], p);
+  ASSERT_EQ(y.size(), 100u);  // 1, 2, 96 values -0.5 ... 47, 4, 7
+  EXPECT_EQ(y[2], -0.5);
+  EXPECT_EQ(y[97], 47);
+  EXPECT_EQ(y[98], 4);
+  EXPECT_EQ(y[99], 7);
+  EXPECT_EQ(sweepRuns(sw, p).size(), 100u);
+  // Downward, and a step that does not land on the end.
+  const Deck down = parseDeckText("SWEEp\n  t = 1:-0.25:0 3:2:8\n\nFEAP * * t\n  0 0 0 2 3 2\nEND\nSTOP\n", "s.inp");
+  EXPECT_EQ(sweepValues(std::get<TopSweep>(down.items[0]).variables[0], p),
+            (std::vector<double>{1, 0.75, 0.5, 0.25, 0, 3, 5, 7}));
+}
+
+TEST(Sweep, RangeErrorsAtTheirPlace) {
+  using testing::expectDeckError;
+  const std::string tail = "\n\nFEAP * * t\n 0 0 0 2 3 2\nEND\nSTOP\n";
+  expectDeckError([&] { parseDeckText("SWEEp\n  x = 0:1" + tail, "s.inp"); }, "s.inp", 2, 7,
+                  "a range of sweep values is lo:step:hi");
+  expectDeckError([&] { parseDeckText("SWEEp\n  x = 0::1" + tail, "s.inp"); }, "s.inp", 2, 9,
+                  "a part of the range '0::1' is empty");
+  expectDeckError([&] { parseDeckText("SWEEp\n  1 2 3" + tail, "s.inp"); }, "s.inp", 2, 3,
+                  "expected 'name = v1 v2 ...'");
+  auto values = [&](const std::string& range) {
+    const Deck d = parseDeckText("SWEEp\n  x = " + range + tail, "s.inp");
+    Parameters p;
+    return sweepValues(std::get<TopSweep>(d.items[0]).variables[0], p);
+  };
+  expectDeckError([&] { values("0:0:1"); }, "s.inp", 2, 9, "needs a finite step other than 0");
+  expectDeckError([&] { values("0:-1:1"); }, "s.inp", 2, 9, "steps away from its end");
+  expectDeckError([&] { values("0:1e-9:1"); }, "s.inp", 2, 9, "more values than this program runs");
+  // Zipped with a range: the counts are compared when the values are known.
+  const Deck d = parseDeckText("SWEEp\n  x = 0:1:4\n  y = 1 2" + tail, "s.inp");
+  Parameters p;
+  expectDeckError([&] { sweepRuns(std::get<TopSweep>(d.items[0]), p); }, "s.inp", 3, 3,
+                  "'y' has 2 values and 'x' (line 2) 5");
 }
 
 TEST(Sweep, TaggedOutputsAndOverlay) {

@@ -1,0 +1,36 @@
+#include "macro/studies/CounterRandom.h"
+
+#include <cctype>
+
+namespace c2d {
+
+namespace {
+
+std::uint64_t splitMix(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ull;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+  return x ^ (x >> 31);
+}
+
+}  // namespace
+
+double counterUniform(std::uint64_t seed, std::uint64_t sample, std::uint64_t stream,
+                      std::uint64_t index) {
+  std::uint64_t k = splitMix(seed);
+  k = splitMix(k ^ sample);
+  k = splitMix(k ^ stream);
+  k = splitMix(k ^ index);
+  return (static_cast<double>(k >> 11) + 0.5) * 0x1.0p-53;
+}
+
+std::uint64_t streamOf(std::string_view name) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (char c : name) {
+    h ^= static_cast<unsigned char>(std::tolower(static_cast<unsigned char>(c)));
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+}  // namespace c2d

@@ -1,0 +1,182 @@
+#include "macro/studies/Ensemble.h"
+
+#include <cmath>
+
+#include "macro/Limits.h"
+#include "macro/studies/CounterRandom.h"
+
+namespace c2d {
+
+namespace {
+
+[[noreturn]] void failAt(const Record& r, std::size_t i, const std::string& msg,
+                         const std::string& hint = {}) {
+  throw DeckError(r.fieldLoc(i), msg, r.excerpt(r.fieldLoc(i)), hint);
+}
+
+bool written(const Record& r, std::size_t i) { return i < r.size() && !r[i].text.empty(); }
+
+const char* const kDrawSyntax = "name = NORMal mean sd | LOGNormal median cov | UNIForm lo hi";
+
+double value(const Expression& e, const Parameters& p) { return e.eval(p); }
+
+}  // namespace
+
+void addEnsembleRecord(TopEnsemble& e, const Record& r, bool assignment) {
+  if (!assignment && (r.is("JITTer") || r.is("DETOnators"))) {
+    const bool jitter = r.is("JITTer");
+    if (jitter ? e.jitter.has_value() : e.detonators.has_value())
+      failAt(r, 0, std::string(jitter ? "JITTer" : "DETOnators") + " is given twice in this block");
+    if (r.size() > 4)
+      failAt(
+          r, 4,
+          "too many fields: " + std::string(jitter ? "JITTer,,dx,fdt" : "DETOnators,kind,sd,cov"));
+    if (jitter && written(r, 1))
+      failAt(r, 1, "JITTer takes numbers only: JITTer,,dx,fdt", "e.g. JITTer,,1e-6,0.01");
+    if (!jitter && written(r, 1) && !keywordMatches(r[1].text, "PYROtechnic") &&
+        !keywordMatches(r[1].text, "ELECtronic"))
+      failAt(r, 1, "unknown kind of detonator '" + r[1].text + "'",
+             "DETOnators,PYROtechnic, DETOnators,ELECtronic or DETOnators,,sd,cov");
+    for (std::size_t i = 2; i < r.size(); ++i)
+      if (written(r, i)) Expression::parse(r[i]);
+    (jitter ? e.jitter : e.detonators) = r;
+    return;
+  }
+  if (!assignment || !Parameters::validName(r[0].text))
+    failAt(r, 0,
+           "expected a drawn parameter '" + std::string(kDrawSyntax) + "', JITTer or DETOnators");
+  const std::string name = r[0].text;
+  if (r.size() < 2 || !written(r, 1)) failAt(r, 1, "'" + name + "' needs a law: " + kDrawSyntax);
+  DrawRecord d;
+  d.name = name;
+  d.record = r;
+  if (keywordMatches(r[1].text, "NORMal"))
+    d.law = "norm";
+  else if (keywordMatches(r[1].text, "LOGNormal"))
+    d.law = "logn";
+  else if (keywordMatches(r[1].text, "UNIForm"))
+    d.law = "unif";
+  else
+    failAt(r, 1, "unknown law '" + r[1].text + "'", kDrawSyntax);
+  if (r.size() != 4 || !written(r, 2) || !written(r, 3))
+    failAt(r, r.size() > 4 ? 4 : std::min<std::size_t>(r.size(), 3),
+           "'" + name + "' needs two numbers: " + kDrawSyntax);
+  d.a = Expression::parse(r[2]);
+  d.b = Expression::parse(r[3]);
+  for (const DrawRecord& o : e.draws)
+    if (toLower(o.name) == toLower(name))
+      failAt(r, 0,
+             "'" + name + "' is drawn twice (line " + std::to_string(o.record.loc.line) + ")");
+  e.draws.push_back(std::move(d));
+}
+
+EnsembleSpec evaluateEnsemble(const TopEnsemble& e, const Parameters& p) {
+  EnsembleSpec s;
+  const Record& h = e.head;
+  const int n = e.samples.evalInt(p, "number of samples");
+  if (n < 1 || n > DeckLimits::kMaxRuns)
+    failAt(h, 2,
+           "the number of samples of an ensemble is between 1 and " +
+               std::to_string(DeckLimits::kMaxRuns) + ", got " + std::to_string(n));
+  s.samples = n;
+  if (written(h, 3)) {
+    const int seed = e.seed.evalInt(p, "seed");
+    if (seed < 0) failAt(h, 3, "the seed of an ensemble is 0 or more, got " + std::to_string(seed));
+    s.seed = static_cast<std::uint64_t>(seed);
+  }
+  for (const DrawRecord& d : e.draws) {
+    NamedDraw nd{d.name, {}};
+    const double a = value(d.a, p), b = value(d.b, p);
+    if (!std::isfinite(a) || !std::isfinite(b))
+      failAt(d.record, std::isfinite(a) ? 3 : 2,
+             "the law of '" + d.name + "' needs finite numbers");
+    if (d.law == "norm") {
+      if (b < 0) failAt(d.record, 3, "the standard deviation of '" + d.name + "' is negative");
+      nd.law = {Law::Normal, a, b};
+    } else if (d.law == "logn") {
+      if (a <= 0)
+        failAt(d.record, 2, "the median of a LOGNormal '" + d.name + "' must be positive");
+      if (b < 0)
+        failAt(d.record, 3, "the coefficient of variation of '" + d.name + "' is negative");
+      nd.law = {Law::LogNormal, a, b};
+    } else {
+      if (b < a) failAt(d.record, 3, "UNIForm lo hi of '" + d.name + "' has hi below lo");
+      nd.law = {Law::Uniform, a, b};
+    }
+    s.draws.push_back(nd);
+  }
+  if (e.jitter) {
+    const Record& r = *e.jitter;
+    JitterSpec j;
+    if (written(r, 2)) j.dx = Expression::parse(r[2]).eval(p);
+    if (written(r, 3)) j.fdt = Expression::parse(r[3]).eval(p);
+    if (!(j.dx >= 0) || !std::isfinite(j.dx)) failAt(r, 2, "JITTer's dx is 0 or more");
+    if (!(j.fdt >= 0 && j.fdt < 1)) failAt(r, 3, "JITTer's fdt is in [0, 1)");
+    s.jitter = j;
+  }
+  if (e.detonators) {
+    const Record& r = *e.detonators;
+    DetonatorSpec d;
+    if (written(r, 1) && keywordMatches(r[1].text, "ELECtronic"))
+      d.sd = DetonatorSpec::kElectronicSd;
+    if (written(r, 1) && keywordMatches(r[1].text, "PYROtechnic"))
+      d.cov = DetonatorSpec::kPyrotechnicCov;
+    if (written(r, 2)) d.sd = Expression::parse(r[2]).eval(p);
+    if (written(r, 3)) d.cov = Expression::parse(r[3]).eval(p);
+    if (!written(r, 1) && !written(r, 2) && !written(r, 3))
+      failAt(r, 1, "DETOnators needs a kind or a scatter",
+             "DETOnators,PYROtechnic, DETOnators,ELECtronic or DETOnators,,sd,cov");
+    if (!(d.sd >= 0) || !std::isfinite(d.sd)) failAt(r, 2, "DETOnators' sd is 0 or more");
+    if (!(d.cov >= 0) || !std::isfinite(d.cov)) failAt(r, 3, "DETOnators' cov is 0 or more");
+    s.detonators = d;
+  }
+  return s;
+}
+
+SampleDraws drawSample(const EnsembleSpec& spec, int sample) {
+  SampleDraws d;
+  d.sample = sample;
+  d.seed = spec.seed;
+  for (const NamedDraw& nd : spec.draws)
+    d.values.emplace_back(
+        nd.name, nd.law.quantile(counterUniform(spec.seed, static_cast<std::uint64_t>(sample),
+                                                streamOf(nd.name), 0)));
+  d.jitter = spec.jitter;
+  d.detonators = spec.detonators;
+  if (spec.jitter) d.stepFactor = stepFactor(*spec.jitter, spec.seed, sample);
+  return d;
+}
+
+void registerEnsembleBlock(CommandRegistry& registry) {
+  CommandSpec s;
+  s.name = "ENSEmble";
+  s.doc =
+      "[ext] Ensemble, a top-level block before a problem (before or after its SWEEp): every plan "
+      "runs n times, sample k (1..n) with the draws of (seed, k) alone, the same in every plan "
+      "(common random numbers), shard and rerun. Records up to a blank record: 'name = NORMal "
+      "mean sd', 'name = LOGNormal median cov' (median and coefficient of variation), 'name = "
+      "UNIForm lo hi': a parameter drawn per sample, set after the sweep's values and before "
+      "the PARAmeter blocks that follow (which may use it, not set it); 'JITTer,,dx,fdt': every "
+      "node moved by a random offset of at most dx (default 1e-6, coincident nodes together) and "
+      "every time step of a dynamic analysis scaled by a factor in 1 +- fdt (default 0.01); "
+      "'DETOnators,,sd,cov': "
+      "every BLASt time t scattered by a normal number of standard deviation sqrt(sd^2 + (cov "
+      "t)^2) (DETOnators,ELECtronic: sd = 1 ms; DETOnators,PYROtechnic: cov = 3 %). Outputs: "
+      "<stem>_ensemble.csv (a row per run), <stem>_plans.csv (a row per plan: quantiles of the "
+      "debris figures, p_outside with its 95 % Wilson interval, p_moving), "
+      "<stem>_sensitivity.csv (rank correlations of the drawn values with the debris figures), "
+      "<stem>_ensemble.svg; the log names the best plan and whether its lead is significant. "
+      "Sample 1 of each plan writes every output of its run; the others their time history and "
+      "debris rows and a short log.";
+  s.fields = {{"-", FieldKind::Text, {}, ""},
+              {"n", FieldKind::Expression, {}, "samples per plan"},
+              {"seed", FieldKind::Expression, "1", "seed of the draws (0 or more)"}};
+  s.section = CommandSection::Mesh;
+  s.data = DataForm::Records;
+  s.dataSyntax =
+      "name = NORMal mean sd | LOGNormal median cov | UNIForm lo hi; JITTer,,dx,fdt; "
+      "DETOnators,,sd,cov | DETOnators,PYROtechnic | DETOnators,ELECtronic";
+  registry.add(std::move(s));
+}
+
+}  // namespace c2d

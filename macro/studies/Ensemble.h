@@ -1,0 +1,65 @@
+#pragma once
+// [ext] The ENSEmble block: a plan decided on distributions. Before a problem
+// (and its SWEEp, before or after it):
+//   ENSEmble,,n,seed
+//     mu = UNIForm 0.4 0.6        ! drawn parameters (macro/studies/Distribution.h)
+//     fMu = LOGNormal 1 0.1
+//     JITTer,,dx,fdt              ! node offsets and time-step factor (Jitter.h)
+//     DETOnators,PYROtechnic      ! BLASt times scattered (Detonators.h)
+//   <blank record>
+// Every plan (every value set of the sweep, or the lone problem) runs n times;
+// sample k (1..n) takes the draws of (seed, k) alone (CounterRandom.h): the
+// same in every plan, in every shard and in every rerun. A drawn name is a
+// parameter like any other, set after the sweep's values and before the
+// PARAmeter blocks between the block and the problem (which may derive from
+// it, and may not set it again).
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "macro/CommandSpec.h"
+#include "macro/Deck.h"
+#include "macro/studies/Detonators.h"
+#include "macro/studies/Distribution.h"
+#include "macro/studies/Jitter.h"
+
+namespace c2d {
+
+// One record of an ENSEmble block (a drawn parameter, JITTer, DETOnators) added
+// to the block, checked as far as it can be before evaluating; DeckError at the
+// offending field. assignment: the record reads 'name = ...' (a drawn parameter).
+void addEnsembleRecord(TopEnsemble& ensemble, const Record& rec, bool assignment);
+
+struct NamedDraw {
+  std::string name;  // as written
+  Distribution law;
+};
+
+struct EnsembleSpec {
+  int samples = 1;
+  std::uint64_t seed = 1;
+  std::vector<NamedDraw> draws;
+  std::optional<JitterSpec> jitter;
+  std::optional<DetonatorSpec> detonators;
+};
+
+// The block's numbers evaluated with the parameters (DeckError at a bad value).
+EnsembleSpec evaluateEnsemble(const TopEnsemble& ensemble, const Parameters& params);
+
+// What sample k of an ensemble draws.
+struct SampleDraws {
+  int sample = 0;  // 1..n
+  std::uint64_t seed = 1;
+  std::vector<std::pair<std::string, double>> values;  // the drawn parameters, in record order
+  double stepFactor = 1;                               // JITTer's time-step factor
+  std::optional<JitterSpec> jitter;
+  std::optional<DetonatorSpec> detonators;
+};
+SampleDraws drawSample(const EnsembleSpec& spec, int sample);
+
+// The declared spec of the ENSEmble block, for --help.
+void registerEnsembleBlock(CommandRegistry& registry);
+
+}  // namespace c2d

@@ -1,0 +1,191 @@
+#include "macro/studies/EnsembleTable.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "macro/Csv.h"
+
+namespace c2d {
+
+namespace {
+
+std::string coverText(const std::vector<std::pair<double, double>>& cover) {
+  std::string s;
+  char buf[64];
+  for (const auto& [a, b] : cover) {
+    std::snprintf(buf, sizeof buf, "%s%.6g:%.6g", s.empty() ? "" : ";", a, b);
+    s += buf;
+  }
+  return s;
+}
+
+}  // namespace
+
+std::string exactNumber(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+int EnsembleTable::failed() const {
+  return static_cast<int>(
+      std::count_if(rows_.begin(), rows_.end(), [](const EnsembleRow& r) { return !r.ok; }));
+}
+
+std::string EnsembleTable::header() const {
+  std::string h = "run,plan,sample,stem";
+  for (const std::string& n : swept_) appendCell(h, csvCell(n));
+  for (const std::string& n : drawn_) appendCell(h, csvCell(n));
+  h += ",status,reason,";
+  h += debrisCsvHeader();
+  return h + ",cover";
+}
+
+std::string EnsembleTable::csv() const {
+  const std::string debrisHeader = debrisCsvHeader();
+  const std::string noDebris(
+      static_cast<std::size_t>(std::count(debrisHeader.begin(), debrisHeader.end(), ',')), ',');
+  std::string out = header() + "\n";
+  for (const EnsembleRow& r : rows_) {
+    out += std::to_string(r.run);
+    appendCell(out, std::to_string(r.plan));
+    appendCell(out, std::to_string(r.sample));
+    appendCell(out, csvCell(r.stem));
+    for (const std::string& n : swept_) {
+      out += ',';
+      for (const auto& [name, v] : r.sweep)
+        if (name == n) out += formatSweepValue(v);
+    }
+    for (const std::string& n : drawn_) {
+      out += ',';
+      for (const auto& [name, v] : r.drawn)
+        if (name == n) out += exactNumber(v);
+    }
+    out += r.ok ? ",ok," : ",failed,";
+    out += csvCell(r.reason.substr(0, r.reason.find('\n')));
+    out += ',';
+    if (r.debris) {
+      out += debrisCsvRow(*r.debris);
+      appendCell(out, coverText(r.debris->cover));
+    } else {
+      out += noDebris;
+      out += ',';
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+double EnsembleRun::figure(const std::string& name) const {
+  const auto it = figures.find(name);
+  return it == figures.end() ? NAN : it->second;
+}
+
+EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount) {
+  EnsembleData data;
+  std::istringstream in(text);
+  std::string line;
+  if (!std::getline(in, line) || line.empty()) throw std::runtime_error("it is empty (no header)");
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  data.header = line;
+  const std::vector<std::string> head = splitCsv(line);
+  const auto status = std::find(head.begin(), head.end(), "status");
+  if (head.size() < 6 || head[0] != "run" || head[1] != "plan" || head[2] != "sample" ||
+      head[3] != "stem" || status == head.end() || status + 1 == head.end() ||
+      *(status + 1) != "reason" || head.back() != "cover")
+    throw std::runtime_error(
+        "its header is not an ensemble table's (run,plan,sample,stem,...,status,reason,...,cover)");
+  const auto firstDebris = static_cast<std::size_t>(status - head.begin()) + 2;
+  const std::size_t values = static_cast<std::size_t>(status - head.begin()) - 4;
+  if (sweptCount > values)
+    throw std::runtime_error("its header has fewer value columns than swept names");
+  data.swept.assign(head.begin() + 4, head.begin() + 4 + static_cast<long>(sweptCount));
+  data.drawn.assign(head.begin() + 4 + static_cast<long>(sweptCount), status);
+  const std::string debrisHeader = debrisCsvHeader();
+  const std::vector<std::string> debrisNames = splitCsv(debrisHeader);
+  if (head.size() != firstDebris + debrisNames.size() + 1 ||
+      !std::equal(debrisNames.begin(), debrisNames.end(),
+                  head.begin() + static_cast<long>(firstDebris)))
+    throw std::runtime_error("its debris columns are not this program's (" + debrisHeader + ")");
+  if (text.back() != '\n')
+    throw std::runtime_error("it ends in the middle of a row (no line end after its last line)");
+  int lineNo = 1;
+  while (std::getline(in, line)) {
+    ++lineNo;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    const std::vector<std::string> c = splitCsv(line);
+    auto bad = [&](std::size_t col, const std::string& why) {
+      throw std::runtime_error("line " + std::to_string(lineNo) +
+                               (col < head.size() ? ", column " + head[col] : "") + ": " + why);
+    };
+    if (c.size() != head.size())
+      bad(head.size(),
+          std::to_string(c.size()) + " cells where the header has " + std::to_string(head.size()));
+    EnsembleRun r;
+    const auto run = integerCell(c[0]), plan = integerCell(c[1]), sample = integerCell(c[2]);
+    if (!run || *run < 1) bad(0, "'" + c[0] + "' is not a run number");
+    if (!plan || *plan < 1) bad(1, "'" + c[1] + "' is not a plan number");
+    if (!sample || *sample < 1) bad(2, "'" + c[2] + "' is not a sample number");
+    r.run = static_cast<int>(*run);
+    r.plan = static_cast<int>(*plan);
+    r.sample = static_cast<int>(*sample);
+    r.stem = c[3];
+    // A value a run does not have (a plan with fewer BLASt records) is empty: NaN.
+    for (std::size_t i = 4; i < 4 + values; ++i) {
+      const auto v = c[i].empty() ? std::optional<double>(NAN) : numberCell(c[i]);
+      if (!v) bad(i, "'" + c[i] + "' is not a number");
+      (i < 4 + sweptCount ? r.swept : r.drawn).push_back(*v);
+    }
+    const std::string& st = c[firstDebris - 2];
+    if (st != "ok" && st != "failed")
+      bad(firstDebris - 2, "the status is '" + st + "', not ok or failed");
+    r.ok = st == "ok";
+    r.reason = c[firstDebris - 1];
+    r.debris = !c[firstDebris].empty();
+    if (r.debris) {
+      for (std::size_t k = 0; k < debrisNames.size(); ++k) {
+        const std::string& name = debrisNames[k];
+        const std::string& cell = c[firstDebris + k];
+        if (name == "site") {
+          if (cell != "inside" && cell != "outside" && cell != "none")
+            bad(firstDebris + k, "the site status is '" + cell + "'");
+          r.site = cell;
+        } else if (name == "at_rest") {
+          if (cell != "yes" && cell != "no")
+            bad(firstDebris + k, "at_rest is '" + cell + "', not yes or no");
+          r.atRest = cell == "yes";
+        } else if (!cell.empty() || (name != "site_xmin" && name != "site_xmax")) {
+          const auto v = numberCell(cell);
+          if (!v) bad(firstDebris + k, "'" + cell + "' is not a number");
+          r.figures[name] = *v;
+        }
+      }
+      const std::string& cover = c.back();
+      std::size_t p = 0;
+      while (p < cover.size()) {
+        std::size_t e = cover.find(';', p);
+        if (e == std::string::npos) e = cover.size();
+        const std::string span = cover.substr(p, e - p);
+        const std::size_t colon = span.find(':');
+        const auto a =
+            colon == std::string::npos ? std::nullopt : numberCell(span.substr(0, colon));
+        const auto b =
+            colon == std::string::npos ? std::nullopt : numberCell(span.substr(colon + 1));
+        if (!a || !b) bad(head.size() - 1, "'" + span + "' is not an interval x0:x1");
+        r.cover.emplace_back(*a, *b);
+        p = e + 1;
+      }
+    } else {
+      for (std::size_t k = firstDebris; k < c.size(); ++k)
+        if (!c[k].empty()) bad(k, "a row without debris figures has '" + c[k] + "' here");
+    }
+    data.runs.push_back(std::move(r));
+  }
+  return data;
+}
+
+}  // namespace c2d

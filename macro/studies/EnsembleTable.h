@@ -1,0 +1,91 @@
+#pragma once
+// [ext] The table of an ensemble's runs, <stem>_ensemble.csv, one row per run:
+//   run,plan,sample,stem,<swept names...>,<drawn names...>,status,reason,
+//   <debris columns (core/Debris.h)>,cover
+// `run` counts every run of the deck from 1 (shards join on it), `plan` the
+// value sets of the sweep (1 without one), `sample` 1..n. The drawn values are
+// the named parameters, dt_factor (JITTer) and blast_1, blast_2, ... (the BLASt
+// records' times, DETOnators), each written to round-trip exactly. `cover` is
+// where the debris lies: the x-intervals "x0:x1" it occupies, joined by ';'
+// (the ensemble picture's map of where debris lies).
+//
+// The statistics of the ensemble (PlanStatistics.h, Sensitivity.h,
+// EnsemblePicture.h) are computed from the table as written and read back
+// (readEnsembleTable), so that a run and the merge of its shards give the same
+// tables to the last digit.
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/Debris.h"
+#include "macro/Sweep.h"
+
+namespace c2d {
+
+using DrawnValues = std::vector<std::pair<std::string, double>>;
+
+struct EnsembleRow {
+  int run = 0, plan = 0, sample = 0;
+  std::string stem;
+  SweepValues sweep;
+  DrawnValues drawn;
+  bool ok = true;
+  std::string reason;
+  std::optional<DebrisFigures> debris;
+};
+
+class EnsembleTable {
+ public:
+  EnsembleTable(std::vector<std::string> swept, std::vector<std::string> drawn)
+      : swept_(std::move(swept)), drawn_(std::move(drawn)) {}
+  void add(EnsembleRow row) { rows_.push_back(std::move(row)); }
+  const std::vector<EnsembleRow>& rows() const { return rows_; }
+  const std::vector<std::string>& swept() const { return swept_; }
+  const std::vector<std::string>& drawn() const { return drawn_; }
+  int failed() const;
+
+  std::string header() const;
+  std::string csv() const;
+
+ private:
+  std::vector<std::string> swept_, drawn_;
+  std::vector<EnsembleRow> rows_;
+};
+
+// A value as the table writes a drawn value: the shortest text that reads back
+// to the same double.
+std::string exactNumber(double v);
+
+// One run of the table as read back.
+struct EnsembleRun {
+  int run = 0, plan = 0, sample = 0;
+  std::string stem;
+  std::vector<double> swept, drawn;  // in the header's order
+  bool ok = false;
+  std::string reason;
+  bool debris = false;                    // debris figures present
+  std::map<std::string, double> figures;  // the numeric debris columns by name
+  std::string site;                       // "inside", "outside", "none"
+  bool atRest = true;
+  std::vector<std::pair<double, double>> cover;
+
+  double figure(const std::string& name) const;  // NaN when absent
+  bool outside() const { return site == "outside"; }
+};
+
+struct EnsembleData {
+  std::vector<std::string> swept, drawn;
+  std::vector<EnsembleRun> runs;  // in table order
+  std::string header;
+};
+
+// Reads the table's text (its first line the header; sweptCount: how many of
+// the columns after `stem` are swept, the others up to `status` drawn). Throws
+// std::runtime_error naming the line and column of a malformed row: a cell
+// count other than the header's, text in a number column, a status other than
+// ok/failed, a cut row.
+EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount);
+
+}  // namespace c2d

@@ -1,0 +1,303 @@
+// Ensembles run as decks (decks/ensemble): the sliding block against its
+// closed form per drawn mu (V16), the column on a pin falling to the side it
+// leans with p_outside in its Wilson interval (V17), an ensemble without draws
+// giving identical runs, two plans seeing the same draws sample by sample (V18),
+// and two shards merged, or `run -j 2`, giving the whole run's files.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "macro/DeckParser.h"
+#include "macro/DeckRunner.h"
+#include "macro/studies/Ensemble.h"
+#include "macro/studies/EnsembleTable.h"
+#include "macro/studies/Jitter.h"
+#include "macro/studies/Merge.h"
+#include "macro/studies/ParallelRuns.h"
+#include "macro/studies/Statistics.h"
+#include "tests/unit/DeckTestSupport.h"
+
+namespace c2d {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string deckPath(const std::string& name) {
+  return std::string(C2D_SOURCE_DIR) + "/decks/ensemble/" + name + ".inp";
+}
+
+DeckOutcome run(const std::string& name, const fs::path& out, int shard = 1, int shards = 1) {
+  DeckOptions o;
+  o.outDir = out;
+  o.quiet = true;
+  o.shard = shard;
+  o.shards = shards;
+  const SolutionCommands commands;
+  std::ostringstream console;
+  return runDeck(deckPath(name), o, commands, console);
+}
+
+EnsembleData table(const fs::path& csv, std::size_t swept) {
+  return readEnsembleTable(slurp(csv), swept);
+}
+
+// The KS statistic of values against a distribution function.
+double ks(std::vector<double> x, double (*cdf)(double)) {
+  std::sort(x.begin(), x.end());
+  const double n = static_cast<double>(x.size());
+  double d = 0;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    d = std::max({d, cdf(x[i]) - i / n, (i + 1) / n - cdf(x[i])});
+  return d;
+}
+
+TEST(EnsembleDecks, TheBlockParsesBeforeOrAfterTheSweep) {
+  const std::string problem = "FEAP * * t\n  0 0 0 2 3 2\nEND\nBATCh\nEND\nSTOP\n";
+  const std::string ens =
+      "ENSEmble,,4,2\n  mu = NORMal 0.5 0.1\n  JITTer,,1e-6\n  DETOnators,PYROtechnic\n\n";
+  const std::string sweep = "SWEEp\n  a = 1 2\n\n";
+  for (const std::string& text : {ens + sweep + problem, sweep + ens + problem}) {
+    const Deck d = parseDeckText(text, "e.inp");
+    ASSERT_EQ(d.items.size(), 1u);
+    const auto& sw = std::get<TopSweep>(d.items[0]);
+    ASSERT_EQ(sw.body.size(), 1u);
+    const auto& e = std::get<TopEnsemble>(sw.body[0]);
+    EXPECT_EQ(e.draws.size(), 1u);
+    EXPECT_TRUE(e.jitter && e.detonators);
+    Parameters p;
+    const EnsembleSpec spec = evaluateEnsemble(e, p);
+    EXPECT_EQ(spec.samples, 4);
+    EXPECT_EQ(spec.seed, 2u);
+    EXPECT_EQ(spec.detonators->cov, DetonatorSpec::kPyrotechnicCov);
+    EXPECT_EQ(spec.jitter->fdt, JitterSpec::kDefaultFdt);
+  }
+  using testing::expectDeckError;
+  expectDeckError([&] { parseDeckText("ENSEmble\n\n" + problem, "e.inp"); }, "e.inp", 1, 9,
+                  "ENSEmble needs the number of samples");
+  expectDeckError([&] { parseDeckText("ENSEmble,,3\n  JITTer,ON\n\n" + problem, "e.inp"); },
+                  "e.inp", 2, 10, "JITTer takes numbers only");
+  expectDeckError([&] { parseDeckText("ENSEmble,,3\n  DETOnators,NONEl\n\n" + problem, "e.inp"); },
+                  "e.inp", 2, 14, "unknown kind of detonator");
+  expectDeckError([&] { parseDeckText("ENSEmble,,3\n  mu = UNIForm 1\n\n" + problem, "e.inp"); },
+                  "e.inp", 2, 17, "'mu' needs two numbers");
+  expectDeckError(
+      [&] { parseDeckText("ENSEmble,,3\n  a = UNIForm 1 2\n\n" + sweep + problem, "e.inp"); },
+      "e.inp", 2, 3, "'a' is both drawn and swept");
+  expectDeckError([&] { parseDeckText(ens + sweep + ens + problem, "e.inp"); }, "e.inp", 9, 1,
+                  "a second ENSEmble for the same problem");
+  const Deck bad = parseDeckText("ENSEmble,,0\n  mu = UNIForm 2 1\n\n" + problem, "e.inp");
+  Parameters p;
+  expectDeckError([&] { evaluateEnsemble(std::get<TopEnsemble>(bad.items[0]), p); }, "e.inp", 1, 11,
+                  "the number of samples of an ensemble is between 1");
+}
+
+// A value only some draws make bad is a deck error before anything runs, at
+// its record, naming the sample and its draws.
+TEST(EnsembleDecks, ADrawThatMakesTheDeckBadIsReportedWithItsSample) {
+  testing::DeckTempDir dir;
+  const std::string deck =
+      dir.write("bad.inp",
+                "ENSEmble,,20,1\n  h = NORMal 0.01 0.01\n\n"
+                "FEAP * * t\n  0 0 0 2 3 2\nCOORdinates\n  1 0 0 0\n  2 0 1 0\n\n"
+                "ELEMents\n  1 0 1 1 2\n\nMATErial,1\n  FRAMe\n"
+                "    RESUltant STIFfness 1 1 1\n\nBOUNdary\n  1 0 1 1 1\n\nEND\n"
+                "BATCh\n  DT,,h\nEND\nSTOP\n");
+  DeckOptions o;
+  o.outDir = dir.path() / "out";
+  o.quiet = true;
+  const SolutionCommands commands;
+  std::ostringstream console;
+  const DeckOutcome r = runDeck(deck, o, commands, console);
+  EXPECT_EQ(r.exitCode, kExitDeckError);
+  EXPECT_NE(r.message.find("bad.inp:22:7: error: the time step must be positive"),
+            std::string::npos)
+      << r.message;
+  EXPECT_NE(r.message.find("(in sample "), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("of the ENSEmble of line 1, which drew h = -"), std::string::npos)
+      << r.message;
+  EXPECT_FALSE(fs::exists(dir.path() / "out" / "bad_ensemble.csv"));
+}
+
+// The example ensembles (no references: minutes each) bind as decks: every
+// run of their check pass, with its draws.
+TEST(EnsembleDecks, TheExampleEnsemblesBind) {
+  const SolutionCommands commands;
+  const std::string src = std::string(C2D_SOURCE_DIR) + "/decks/";
+  for (const auto& [deck, runs] : std::vector<std::pair<std::string, int>>{
+           {"demolition/felling_ensemble.inp", 60},
+           {"demolition/implosion_ensemble.inp", 20},
+           {"collapse/six_story_demolition_ensemble.inp", 20},
+           {"collapse/six_story_fall_ensemble.inp", 20},
+           {"paper/six_story_collapse_ensemble.inp", 20}}) {
+    const DeckPlan plan = planDeck(src + deck, commands);
+    EXPECT_EQ(plan.runs, runs) << deck;
+    EXPECT_TRUE(plan.study) << deck;
+  }
+}
+
+// V16: right = x1 + v0^2 / (2 mu g), x1 = a g t1^2 / 2, v0 = a g t1, for its own mu.
+TEST(EnsembleDecks, SlidingBlockReachesItsOwnClosedForm) {
+  testing::DeckTempDir dir;
+  const DeckOutcome o = run("sliding_block", dir.path());
+  ASSERT_EQ(o.exitCode, 0) << o.message;
+  const EnsembleData d = table(dir.path() / "sliding_block_ensemble.csv", 0);
+  ASSERT_EQ(d.runs.size(), 20u);
+  ASSERT_EQ(d.drawn, std::vector<std::string>{"mu"});
+  const double g = 9.81, a = 0.4, t1 = 0.5, x1 = a * g * t1 * t1 / 2, v0 = a * g * t1;
+  std::vector<double> mu;
+  for (const EnsembleRun& r : d.runs) {
+    ASSERT_TRUE(r.ok && r.debris) << r.reason;
+    EXPECT_TRUE(r.atRest);
+    mu.push_back(r.drawn[0]);
+    EXPECT_NEAR(r.figure("right"), x1 + v0 * v0 / (2 * r.drawn[0] * g), 1e-3)
+        << "mu = " << r.drawn[0];
+  }
+  // The drawn mu against UNIForm 0.2 0.6 (the 1 % critical value 1.628/sqrt(n)).
+  EXPECT_LT(ks(mu, [](double x) { return std::clamp((x - 0.2) / 0.4, 0.0, 1.0); }),
+            1.628 / std::sqrt(20.0));
+}
+
+// V17: each run falls to the side its jittered mass leans to; p_outside and its interval.
+TEST(EnsembleDecks, ColumnOnAPinFallsToTheSideItLeans) {
+  testing::DeckTempDir dir;
+  const DeckOutcome o = run("column_on_pin", dir.path());
+  ASSERT_EQ(o.exitCode, 0) << o.message;
+  const EnsembleData d = table(dir.path() / "column_on_pin_ensemble.csv", 0);
+  ASSERT_EQ(d.runs.size(), 20u);
+  int outside = 0, right = 0;
+  for (const EnsembleRun& r : d.runs) {
+    ASSERT_TRUE(r.ok && r.debris) << r.reason;
+    Model m;
+    for (const Vec2& x : {Vec2(0, 0), Vec2(0, 0.5), Vec2(0, 1)}) m.addNode(x);
+    jitterNodes(m, JitterSpec{1e-6, 0.01}, 1, r.sample);
+    const double lean = 2 * (m.coord(1).x() - m.coord(0).x()) + (m.coord(2).x() - m.coord(0).x());
+    EXPECT_EQ(r.outside(), lean > 0) << "sample " << r.sample;
+    EXPECT_NEAR(std::max(r.figure("left"), r.figure("right")), 1, 1e-3);  // lying on the ground
+    outside += r.outside();
+    right += lean > 0;
+  }
+  EXPECT_EQ(outside, right);
+  const auto plans = slurp(dir.path() / "column_on_pin_plans.csv");
+  const std::string row = plans.substr(plans.find('\n') + 1);
+  std::vector<std::string> cells;
+  std::stringstream ss(row.substr(0, row.find('\n')));
+  for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
+  ASSERT_GE(cells.size(), 4u);
+  const double p = std::stod(cells[cells.size() - 4]), lo = std::stod(cells[cells.size() - 3]),
+               hi = std::stod(cells[cells.size() - 2]);
+  const auto [wlo, whi] = wilsonInterval(outside, 20);
+  EXPECT_NEAR(p, outside / 20.0, 1e-6);
+  EXPECT_NEAR(lo, wlo, 1e-6);
+  EXPECT_NEAR(hi, whi, 1e-6);
+  EXPECT_LT(lo, 0.5);
+  EXPECT_GT(hi, 0.5);
+  EXPECT_GT(outside, 0);
+  EXPECT_LT(outside, 20);
+}
+
+TEST(EnsembleDecks, WithoutDrawsTheRunsAreIdentical) {
+  testing::DeckTempDir dir;
+  const DeckOutcome o = run("bar_drop_repeated", dir.path());
+  ASSERT_EQ(o.exitCode, 0) << o.message;
+  const std::string first = slurp(dir.path() / "bar_drop_repeated_s1_tplot.csv");
+  ASSERT_FALSE(first.empty());
+  for (const char* k : {"2", "3"}) {
+    EXPECT_EQ(slurp(dir.path() / ("bar_drop_repeated_s" + std::string(k) + "_tplot.csv")), first);
+    EXPECT_EQ(slurp(dir.path() / ("bar_drop_repeated_s" + std::string(k) + "_debris.csv")),
+              slurp(dir.path() / "bar_drop_repeated_s1_debris.csv"));
+  }
+  const EnsembleData d = table(dir.path() / "bar_drop_repeated_ensemble.csv", 0);
+  ASSERT_EQ(d.runs.size(), 3u);
+  EXPECT_TRUE(d.drawn.empty());
+  for (const EnsembleRun& r : d.runs) EXPECT_EQ(r.figures, d.runs[0].figures);
+}
+
+// V18: plan a = 0.3 and plan a = 0.4 see the same mu and time-step factor in
+// sample k, and each run reaches its closed form.
+TEST(EnsembleDecks, PlansSeeTheSameDrawsSampleBySample) {
+  testing::DeckTempDir dir;
+  const DeckOutcome o = run("sliding_plans", dir.path());
+  ASSERT_EQ(o.exitCode, 0) << o.message;
+  const EnsembleData d = table(dir.path() / "sliding_plans_ensemble.csv", 1);
+  ASSERT_EQ(d.runs.size(), 12u);
+  ASSERT_EQ(d.drawn, (std::vector<std::string>{"mu", "dt_factor"}));
+  const double g = 9.81, t1 = 0.5;
+  for (int k = 0; k < 6; ++k) {
+    const EnsembleRun& p1 = d.runs[static_cast<std::size_t>(k)];
+    const EnsembleRun& p2 = d.runs[static_cast<std::size_t>(k + 6)];
+    ASSERT_EQ(p1.plan, 1);
+    ASSERT_EQ(p2.plan, 2);
+    ASSERT_EQ(p1.sample, p2.sample);
+    EXPECT_EQ(p1.drawn, p2.drawn);
+    for (const EnsembleRun* r : {&p1, &p2}) {
+      // JITTer scales the steps: the incline lasts 500 steps of dt_factor 1 ms.
+      const double t = t1 * r->drawn[1], a = r->swept[0], x1 = a * g * t * t / 2, v0 = a * g * t;
+      EXPECT_NEAR(r->figure("right"), x1 + v0 * v0 / (2 * r->drawn[0] * g), 1e-3);
+    }
+    EXPECT_LT(p1.figure("right"), p2.figure("right"));
+  }
+  const std::string log = slurp(dir.path() / "sliding_plans.out");
+  EXPECT_NE(log.find("best plan: 1 (a = 0.3)"), std::string::npos);
+  EXPECT_NE(log.find(": significant"), std::string::npos);
+}
+
+// The files of a study one process writes.
+const std::vector<std::string> kStudyFiles = {
+    "sliding_plans_ensemble.csv", "sliding_plans_plans.csv", "sliding_plans_sensitivity.csv",
+    "sliding_plans_ensemble.svg", "sliding_plans_disp_2_1_vs_time.svg"};
+
+TEST(EnsembleDecks, TwoShardsMergedEqualTheWholeRun) {
+  testing::DeckTempDir dir;
+  ASSERT_EQ(run("sliding_plans", dir.path() / "whole").exitCode, 0);
+  for (int i = 1; i <= 2; ++i) {
+    const DeckOutcome o = run("sliding_plans", dir.path() / "parts", i, 2);
+    ASSERT_EQ(o.exitCode, 0) << o.message;
+    EXPECT_EQ(o.runs, 6);
+  }
+  EXPECT_FALSE(fs::exists(dir.path() / "parts" / "sliding_plans_plans.csv"));
+  std::ostringstream out, err;
+  ASSERT_EQ(mergeParts(dir.path() / "parts", out, err), 0) << err.str();
+  for (const std::string& f : kStudyFiles) {
+    ASSERT_TRUE(fs::exists(dir.path() / "parts" / f)) << f;
+    EXPECT_EQ(slurp(dir.path() / "parts" / f), slurp(dir.path() / "whole" / f)) << f;
+  }
+  EXPECT_NE(out.str().find("best plan: 1 (a = 0.3)"), std::string::npos) << out.str();
+}
+
+TEST(EnsembleDecks, RunInTwoProcessesEqualsTheWholeRun) {
+  testing::DeckTempDir dir;
+  ASSERT_EQ(run("sliding_plans", dir.path() / "whole").exitCode, 0);
+  BatchOptions b;
+  b.deck.outDir = dir.path() / "j2";
+  b.deck.quiet = true;
+  b.jobs = 2;
+  const SolutionCommands commands;
+  std::ostringstream out, err;
+  ASSERT_EQ(runDeckInParallel(deckPath("sliding_plans"), b, commands, out, err), 0) << err.str();
+  for (const std::string& f : kStudyFiles)
+    EXPECT_EQ(slurp(dir.path() / "j2" / f), slurp(dir.path() / "whole" / f)) << f;
+  // The parts are merged and gone; the log holds every run in order.
+  EXPECT_FALSE(fs::exists(dir.path() / "j2" / "sliding_plans_part1of2.out"));
+  EXPECT_FALSE(fs::exists(dir.path() / "j2" / "sliding_plans_part2of2_ensemble.csv"));
+  const std::string log = slurp(dir.path() / "j2" / "sliding_plans.out");
+  std::size_t at = 0;
+  for (int k = 1; k <= 12; ++k) {
+    const std::size_t p = log.find("  run " + std::to_string(k) + " of 12,", at);
+    ASSERT_NE(p, std::string::npos) << "run " << k;
+    at = p;
+  }
+  EXPECT_NE(log.find("best plan: 1 (a = 0.3)", at), std::string::npos);
+}
+
+}  // namespace
+}  // namespace c2d

@@ -1,0 +1,212 @@
+// collapse2d merge refuses a bad part by name and writes nothing for its set:
+// a part cut in the middle of a row, missing its last row, empty, copied over
+// another, written by another deck with the same stem, with text in a number
+// column; a full disk is an I/O error (status 3), not an abort.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#include "macro/DeckRunner.h"
+#include "macro/Shard.h"
+#include "macro/studies/Merge.h"
+#include "tests/unit/DeckTestSupport.h"
+
+namespace c2d {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void spit(const fs::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+// The two parts of a deck's study in dir/parts (and the batch parts).
+void runParts(const std::string& deck, const fs::path& dir) {
+  const SolutionCommands commands;
+  std::ostringstream console;
+  DeckOptions o;
+  o.outDir = dir;
+  o.quiet = true;
+  o.shards = 2;
+  for (int i = 1; i <= 2; ++i) {
+    o.shard = i;
+    const DeckOutcome r = runDeck(deck, o, commands, console);
+    ASSERT_TRUE(r.exitCode == 0 || r.exitCode == kExitAnalysisFailed) << r.message;
+    BatchResult b;
+    b.deck = deck;
+    b.started = true;
+    b.exitCode = r.exitCode;
+    b.runs = r.runs;
+    writeBatchPart(dir, ShardSpec{i, 2}, {b});
+  }
+}
+
+const std::string kPlanDeck = std::string(C2D_SOURCE_DIR) + "/decks/output/plan_study.inp";
+
+// A merge of the damaged parts: refused (status 1), the message names `file`
+// and says `why`, and the set's joined table is not written.
+void expectRefused(const std::function<void(const fs::path&)>& damage, const std::string& file,
+                   const std::string& why, const std::string& joined = "plan_study_plans.csv") {
+  testing::DeckTempDir dir;
+  runParts(kPlanDeck, dir.path());
+  damage(dir.path());
+  std::ostringstream out, err;
+  EXPECT_EQ(mergeParts(dir.path(), out, err), 1) << out.str();
+  EXPECT_NE(err.str().find(file), std::string::npos) << err.str();
+  EXPECT_NE(err.str().find(why), std::string::npos) << err.str();
+  EXPECT_NE(err.str().find("not merged"), std::string::npos) << err.str();
+  EXPECT_FALSE(fs::exists(dir.path() / joined));
+}
+
+TEST(Merge, TheGoodPartsMerge) {
+  testing::DeckTempDir dir;
+  runParts(kPlanDeck, dir.path());
+  std::ostringstream out, err;
+  EXPECT_EQ(mergeParts(dir.path(), out, err), 0) << err.str();
+  EXPECT_NE(out.str().find("3 plans from 2 parts, 1 failed"), std::string::npos) << out.str();
+}
+
+TEST(Merge, RefusesAPartCutInTheMiddleOfARow) {
+  expectRefused(
+      [](const fs::path& d) {
+        const fs::path f = d / "plan_study_part1of2_plans.csv";
+        const std::string t = slurp(f);
+        spit(f, t.substr(0, t.size() - 9));
+      },
+      "plan_study_part1of2_plans.csv", "ends in the middle of a row");
+}
+
+TEST(Merge, RefusesAPartMissingItsLastRow) {
+  expectRefused(
+      [](const fs::path& d) {
+        const fs::path f = d / "plan_study_part1of2_plans.csv";
+        std::string t = slurp(f);
+        t.pop_back();
+        spit(f, t.substr(0, t.rfind('\n') + 1));
+      },
+      "plan_study_part1of2_plans.csv",
+      "holds runs 1 (1 run), where part 1 of 2 of this deck (3 runs) holds runs 1, 3");
+}
+
+TEST(Merge, RefusesAnEmptyPart) {
+  expectRefused([](const fs::path& d) { spit(d / "plan_study_part2of2_plans.csv", ""); },
+                "plan_study_part2of2_plans.csv", "it is empty");
+}
+
+TEST(Merge, RefusesPartOneCopiedOverPartTwo) {
+  expectRefused(
+      [](const fs::path& d) {
+        fs::copy_file(d / "plan_study_part1of2_plans.csv", d / "plan_study_part2of2_plans.csv",
+                      fs::copy_options::overwrite_existing);
+      },
+      "plan_study_part2of2_plans.csv", "holds runs 1, 3 (2 runs), where part 2 of 2");
+  // The manifest copied too says which part it is.
+  expectRefused(
+      [](const fs::path& d) {
+        for (const char* f : {"_manifest.csv", "_plans.csv"})
+          fs::copy_file(d / (std::string("plan_study_part1of2") + f),
+                        d / (std::string("plan_study_part2of2") + f),
+                        fs::copy_options::overwrite_existing);
+      },
+      "plan_study_part2of2_manifest.csv", "it says part 1 of 2");
+}
+
+TEST(Merge, RefusesAPartOfAnotherDeckWithTheSameStem) {
+  expectRefused(
+      [](const fs::path& d) {
+        // The same study with other plans, in another directory, same file name.
+        testing::DeckTempDir other;
+        std::string text = slurp(kPlanDeck);
+        text.replace(text.find("dx = 0.5 1.5 3"), 14, "dx = 0.5 2.5 3");
+        const std::string deck = other.write("plan_study.inp", text);
+        const SolutionCommands commands;
+        std::ostringstream console;
+        DeckOptions o;
+        o.outDir = d;
+        o.quiet = true;
+        o.shard = 2;
+        o.shards = 2;
+        runDeck(deck, o, commands, console);
+      },
+      "plan_study_part2of2_manifest.csv", "written by another deck than part 1");
+}
+
+TEST(Merge, RefusesTextInANumberColumn) {
+  expectRefused(
+      [](const fs::path& d) {
+        const fs::path f = d / "plan_study_part2of2_plans.csv";
+        std::string t = slurp(f);
+        const std::size_t row = t.find('\n') + 1;
+        const std::size_t cell = t.find("1.500000e+00", row);  // right = 1.5 (plan dx = 1.5)
+        ASSERT_NE(cell, std::string::npos) << t;
+        t.replace(cell, 12, "1.5 m");
+        spit(f, t);
+      },
+      "plan_study_part2of2_plans.csv", "'1.5 m' in column right is not a number");
+}
+
+TEST(Merge, RefusesABadBatchPart) {
+  testing::DeckTempDir dir;
+  runParts(kPlanDeck, dir.path());
+  const fs::path f = dir.path() / "batch_part2of2.csv";
+  std::string t = slurp(f);
+  t.replace(t.rfind(",0,0\n"), 5, ",0,x\n");
+  spit(f, t);
+  std::ostringstream out, err;
+  EXPECT_EQ(mergeParts(dir.path(), out, err), 1);
+  EXPECT_NE(err.str().find(
+                "batch_part2of2.csv: line 2: 'x' in column outside_runs is not a whole number"),
+            std::string::npos)
+      << err.str();
+  EXPECT_FALSE(fs::exists(dir.path() / "batch.csv"));
+  // The study itself merges.
+  EXPECT_TRUE(fs::exists(dir.path() / "plan_study_plans.csv"));
+}
+
+TEST(Merge, AFullDiskIsAnIoError) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  testing::DeckTempDir dir;
+  runParts(kPlanDeck, dir.path());
+  fs::create_symlink("/dev/full", dir.path() / "plan_study_plans.csv.part");
+  std::ostringstream out, err;
+  EXPECT_EQ(mergeParts(dir.path(), out, err), kExitInternal);
+  EXPECT_NE(err.str().find("I/O error"), std::string::npos) << err.str();
+  EXPECT_NE(err.str().find("cannot write"), std::string::npos) << err.str();
+  EXPECT_NE(err.str().find("plan_study_plans.csv.part"), std::string::npos) << err.str();
+}
+
+TEST(Merge, RefusesABadEnsemblePart) {
+  testing::DeckTempDir dir;
+  runParts(std::string(C2D_SOURCE_DIR) + "/decks/ensemble/sliding_plans.inp", dir.path());
+  const fs::path f = dir.path() / "sliding_plans_part2of2_ensemble.csv";
+  std::string t = slurp(f);
+  t.replace(t.find(",ok,"), 4, ",OK,");
+  spit(f, t);
+  std::ostringstream out, err;
+  EXPECT_EQ(mergeParts(dir.path(), out, err), 1);
+  EXPECT_NE(err.str().find(
+                "sliding_plans_part2of2_ensemble.csv: line 2, column status: the status is 'OK'"),
+            std::string::npos)
+      << err.str();
+  EXPECT_FALSE(fs::exists(dir.path() / "sliding_plans_plans.csv"));
+  // The curves of the overlay are a part's file too.
+  t.replace(t.find(",OK,"), 4, ",ok,");
+  spit(f, t);
+  fs::remove(dir.path() / "sliding_plans_part1of2_curves.csv");
+  std::ostringstream out2, err2;
+  EXPECT_EQ(mergeParts(dir.path(), out2, err2), 1);
+  EXPECT_NE(err2.str().find("sliding_plans_part1of2_curves.csv: missing"), std::string::npos)
+      << err2.str();
+}
+
+}  // namespace
+}  // namespace c2d
