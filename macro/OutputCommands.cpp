@@ -5,21 +5,14 @@
 #include <cstdio>
 
 #include "macro/ProblemRun.h"
+#include "macro/SolutionCommandKit.h"
 
 namespace c2d {
 
 namespace {
 
-FieldSpec num(std::string name, std::string doc, std::string def = {}) {
-  return {std::move(name), FieldKind::Expression, std::move(def), std::move(doc)};
-}
-FieldSpec word(std::string name, std::string doc, std::string def = {}) {
-  return {std::move(name), FieldKind::Text, std::move(def), std::move(doc)};
-}
+using namespace batchspec;
 
-[[noreturn]] void fail(const Macro& m, std::size_t field, const std::string& what) {
-  throw DeckError(m.record.fieldLoc(field), what, m.record.excerpt(m.record.fieldLoc(field)));
-}
 [[noreturn]] void failData(const Record& rec, std::size_t field, const std::string& what,
                            const std::string& hint = {}) {
   throw DeckError(rec.fieldLoc(field), what, rec.excerpt(rec.fieldLoc(field)), hint);
@@ -82,6 +75,88 @@ std::string label(const std::string& text) {
   std::replace(s.begin(), s.end(), '_', ' ');
   return s;
 }
+
+class PrintNodalCommand final : public SolutionCommand {
+ public:
+  PrintNodalCommand(std::string name, std::string doc)
+      : name_(std::move(name)), doc_(std::move(doc)) {}
+  CommandSpec spec() const override {
+    return solution(name_, doc_ + " Nodes n1 to n2 step inc; ,ALL or no numbers: every node.",
+                    {word("option", "ALL"), num("n1", "first node"), num("n2", "last node", "n1"),
+                     num("inc", "increment", "1")});
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    r.printNodal(m);
+    return Flow::Next;
+  }
+
+ private:
+  std::string name_, doc_;
+};
+
+class StreCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("STREss",
+                    "Print element section forces N, V, M (elements n1 to n2 step inc; ,ALL or "
+                    "no numbers: all); STRE,HINGe: the table of softening hinges.",
+                    {word("option", "ALL or HINGe"), num("n1", "first element"),
+                     num("n2", "last element", "n1"), num("inc", "increment", "1")});
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    if (m.option.rfind("hing", 0) == 0)
+      r.printHinges();
+    else
+      r.printStresses(m);
+    return Flow::Next;
+  }
+};
+
+class TplotCommand final : public SolutionCommand {
+ public:
+  CommandSpec spec() const override {
+    return solution("TPLOt",
+                    "Time histories written every inc steps to <stem>_tplot.csv; records after "
+                    "END up to a blank: disp,n,d  velo,n,d  acce,n,d  reac,n,d  stre,e,c "
+                    "(c = 1 N, 2 V, 3 M)  ener  mome  arcl. Columns time, prop (load table 1's factor), with "
+                    "several load tables prop_1, prop_2, ... (each table's), then the records'. ener gives kinetic, strain, contact, external, "
+                    "total = kinetic + strain + contact - external, dissipated (plastic work, the "
+                    "mid-point scheme's algorithmic and contact dissipation since the start) and "
+                    "balance = total + dissipated, constant to the solver tolerance. mome gives momentum_x, "
+                    "momentum_y and angular_momentum (about the origin, counterclockwise): under the "
+                    "energy conserving scheme without loads, supports or contact, constant to the "
+                    "solver tolerance. A later TPLOt of the "
+                    "same run completes that file and starts <stem>_tplot_2.csv, and so on. A run that "
+                    "fails or is interrupted keeps its rows as <stem>_tplot.failed.csv or "
+                    "<stem>_tplot.interrupted.csv.",
+                    {word("-", ""), num("inc", "output every inc steps", "1")}, "kind,n,d");
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    if (written(m, 0)) {
+      const int inc = m.numbers[0].evalInt(ctx.params(), "TPLOt increment");
+      if (inc < 1) fail(m, 2, "the TPLOt increment must be 1 or more, got " + std::to_string(inc));
+    }
+    m.data = ctx.takeSet(m.record, "TPLOt records");
+    for (const Record& rec : m.data) {
+      const std::string k = commandKey(rec.text(0));
+      if (k == "ener" || k == "arcl" || k == "mome") continue;
+      if (k != "disp" && k != "velo" && k != "acce" && k != "reac" && k != "stre")
+        throw DeckError(
+            rec[0].loc,
+            "unknown TPLOt quantity '" + rec.text(0) + "' (disp velo acce reac stre ener mome arcl)",
+            rec.excerpt(rec[0].loc));
+      if (rec.size() < 3)
+        throw DeckError(rec.fieldLoc(rec.size()), "TPLOt record needs 'kind,number,component'",
+                        rec.excerpt(rec.fieldLoc(rec.size())));
+      for (std::size_t i = 1; i < 3; ++i) Expression::parse(rec[i]).evalInt(ctx.params(), "number");
+    }
+  }
+  Flow run(const Macro& m, ProblemRun& r) const override {
+    r.setTimeHistory(m);
+    return Flow::Next;
+  }
+};
 
 class PlotCommand final : public SolutionCommand {
  public:
@@ -242,8 +317,19 @@ void collect(const std::vector<Macro>& list, std::vector<const Macro*>& tplots,
 
 }  // namespace
 
-std::unique_ptr<SolutionCommand> makePlotCommand() { return std::make_unique<PlotCommand>(); }
-std::unique_ptr<SolutionCommand> makeParaViewCommand() { return std::make_unique<ParaViewCommand>(); }
+std::vector<std::unique_ptr<SolutionCommand>> outputCommands() {
+  std::vector<std::unique_ptr<SolutionCommand>> out;
+  out.push_back(std::make_unique<PrintNodalCommand>("DISPlacement", "Print nodal displacements."));
+  out.push_back(std::make_unique<PrintNodalCommand>("VELOcity", "Print nodal velocities."));
+  out.push_back(std::make_unique<PrintNodalCommand>("ACCEleration", "Print nodal accelerations."));
+  out.push_back(std::make_unique<PrintNodalCommand>(
+      "REACtion", "Print nodal reactions (the residual at every dof) and their sums."));
+  out.push_back(std::make_unique<StreCommand>());
+  out.push_back(std::make_unique<TplotCommand>());
+  out.push_back(std::make_unique<PlotCommand>());
+  out.push_back(std::make_unique<ParaViewCommand>());
+  return out;
+}
 
 std::vector<std::string> timeHistoryColumns(const Macro& tplot, const Parameters& params) {
   std::vector<std::string> cols = {"time", "prop"};

@@ -1,6 +1,7 @@
 #pragma once
-// The solution commands that write pictures and ParaView files (PLOT, PVIEw),
-// registered in the SolutionCommands list like every other command.
+// The solution commands that print and write results (DISP, VELO, ACCE, REAC,
+// STRE, TPLOt, PLOT, PVIEw: their list is outputCommands() of
+// SolutionCommandKit.h), and the checks of the columns PLOT,CURVe reads.
 #include <memory>
 #include <string>
 #include <vector>
@@ -10,9 +11,6 @@
 #include "macro/SolutionCommand.h"
 
 namespace c2d {
-
-std::unique_ptr<SolutionCommand> makePlotCommand();
-std::unique_ptr<SolutionCommand> makeParaViewCommand();
 
 // The columns of a TPLOt command as its records name them (time and prop
 // first), with the parameters given; the names TimeHistory writes.
