@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "elements/BarFractures.h"
+#include "elements/EndHinges.h"
 #include "elements/HingeToJoint.h"
 #include "elements/JointedElement.h"
 #include "elements/Joints.h"
@@ -21,6 +23,15 @@ void TopologyEvents::index(const Model& model) {
   for (const JointedElement* j : jointedElements(model)) wrappers_.push_back(j);
   indexedModel_ = &model;
   indexedVersion_ = model.topologyVersion();
+}
+
+bool TopologyEvents::anyEndHingeOrFracture() const {
+  // An opened end hinge or a fracture is also an activated event of a carrier.
+  for (const HingeCarrier* c : carriers_) {
+    const HingeInfo h = c->hinge();
+    if (h.fracture || h.jointDue) return true;
+  }
+  return false;
 }
 
 bool TopologyEvents::anyFailedHinge() const {
@@ -53,6 +64,27 @@ bool TopologyEvents::anyJointPastRupture(const Model& model, const State& state)
 bool TopologyEvents::afterCommit(Model& model, State& state) {
   std::vector<TopologyEvent> events;
   index(model);
+  if (anyEndHingeOrFracture()) {
+    if (endHingesDue(model))
+      for (const OpenedHinge& h : openEndHinges(model, state)) {
+        TopologyEvent ev{TopologyEvent::Kind::HingeOpened, h.element, h.master, h.slave, 0, 0};
+        ev.end = h.end;
+        ev.moment = h.moment;
+        ev.ultimate = h.ultimate;
+        ev.axialForce = h.axialForce;
+        ev.failureJump = h.failureJump;
+        events.push_back(ev);
+      }
+    if (fracturesDue(model))
+      for (const FracturedMember& f : separateFractured(model, state)) {
+        TopologyEvent ev{TopologyEvent::Kind::BarsFractured, f.element, f.node, f.newNode, 0, 0};
+        ev.end = f.end;
+        ev.axialForce = f.axialForce;
+        ev.throughJoint = f.joint;
+        events.push_back(ev);
+      }
+    index(model);
+  }
   if (anyFailedHinge()) {
     for (const CreatedJoint& j : jointFailedHinges(model, state))
       events.push_back({TopologyEvent::Kind::JointFormed, j.element, j.master, j.slave,
