@@ -36,6 +36,9 @@ class HingeCarrier {
   // (made permanent by commit(), dropped by revert()).
   virtual void activateHinge() = 0;
   virtual HingeInfo hinge() const = 0;  // at the last evaluated trial state
+  // The width of the band above 1 in which a located event opens the hinge:
+  // the demand's round-off (solvers/HingeEvents).
+  virtual double demandBand() const { return 1e-12; }
 };
 
 // A member whose laws follow its axial force and whose bars can fracture (RC

@@ -1,5 +1,6 @@
 #include "elements/EndHinges.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "elements/InelasticFrame.h"
@@ -97,11 +98,25 @@ std::vector<OpenedHinge> openEndHinges(Model& model, State& state) {
   installJoints(model);
   for (const OpenedHinge& h : out)
     for (JointedElement* je : jointedElements(model))
-      if (je->slaveNode() == h.slave)
+      if (je->slaveNode() == h.slave) {
+        const MaterialSet* mat = model.material(innermost(*je).materialNumber());
+        const double mr = mat && mat->softening ? std::min(mat->softening->Mr, 0.5 * h.ultimate) : 0.0;
         je->setHinge(EndHinge(memberOf(model.element(h.element)).law->capacity(), h.sign,
-                              h.ultimate, h.failureJump));
+                              h.ultimate, h.failureJump, mr));
+      }
   model.bumpTopology();
   return out;
+}
+
+double endHingeRatio(const Model& model) {
+  double ratio = 0;
+  for (const JointedElement* j : jointedElements(model))
+    if (j->hingeLaw()) {
+      // A spent hinge is a joint with friction Mr, not a capacity Mu(N).
+      const HingeInfo h = j->hingeInfo();
+      if (!h.failed && h.ultimate > 0) ratio = std::max(ratio, std::abs(h.moment) / h.ultimate);
+    }
+  return ratio;
 }
 
 }  // namespace c2d

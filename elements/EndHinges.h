@@ -30,5 +30,7 @@ struct OpenedHinge {
 bool endHingesDue(const Model& model);
 // Makes the joints; bumps the topology version when it made any.
 std::vector<OpenedHinge> openEndHinges(Model& model, State& state);
+// The largest |M|/Mu(N) of the hinges that joints carry (0: none).
+double endHingeRatio(const Model& model);
 
 }  // namespace c2d

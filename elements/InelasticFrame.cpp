@@ -109,20 +109,15 @@ Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& ru
   if (!axial_) {
     N = w * f1.N + (1 - w) * EA_ * b.eps.dot(dln);
     kN = w * EA_;
+  } else if (rule.scheme != Scheme::MidPoint) {
+    N = f1.N;
+    kN = axialTangent_;
   } else {
-    // As the inelastic moment of HingedBending::midPointMoment: N1 - (1 - w) r dN,
-    // r = 1 - dep/deps, never more work than the stored energy's change.
-    const double dN = f1.N - committed_.forces.N, dE = eps - b.eps.dot(dln);
-    const double dEp = trial_.axial.ep - committed_.axial.ep;
-    if (w == 1.0 || !(dEp != 0 && dE != 0)) {
-      N = f1.N - (1 - w) * dN;
-      kN = w * axialTangent_;
-    } else {
-      const double r = std::clamp(1 - dEp / dE, -HingedBending::kMidPointRatio,
-                                  HingedBending::kMidPointRatio);
-      N = f1.N - (1 - w) * r * dN;
-      kN = axialTangent_ - (1 - w) * (2 * r * axialTangent_ - EA_ * r * r);
-    }
+    const AxialCapacity::MidPoint mp =
+        axial_->midPoint(committed_.forces.N, f1.N, b.eps.dot(dln), eps, axialTangent_,
+                         trial_.axial.ep - committed_.axial.ep, w, HingedBending::kMidPointRatio);
+    N = mp.n;
+    kN = mp.tangent;
   }
   const double V = w * f1.V + (1 - w) * GA_ * b.gamma.dot(dln);
   const double M = w * f1.M + (1 - w) * committed_.forces.M;
@@ -165,14 +160,15 @@ ElemVec InelasticFrame::bodyLoad(const Vec2& g) const {
 
 double InelasticFrame::strainEnergy() const {
   const SectionForces& f = trial_.forces;
-  return 0.5 * length_ * (f.N * f.N / EA_ + f.V * f.V / GA_ + f.M * f.M / law_.EI());
+  const double axial = axial_ ? 2 * axial_->energyDensity(f.N) : f.N * f.N / EA_;
+  return 0.5 * length_ * (axial + f.V * f.V / GA_ + f.M * f.M / law_.EI());
 }
 
 SectionForces InelasticFrame::sectionForces() const { return trial_.forces; }
 
 double InelasticFrame::fractureDemand() const {
   if (!axial_ || trial_.fracture != 0) return 0;
-  return axial_->fractureDemand(trial_.forces.N / EA_ + trial_.axial.ep);
+  return axial_->fractureDemand(axial_->strain(trial_.forces.N, trial_.axial));
 }
 
 double InelasticFrame::hingeDemand() const {

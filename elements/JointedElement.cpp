@@ -5,8 +5,6 @@
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
-#include <cstdio>
-#include <cstdlib>
 
 #include "elements/InelasticFrame.h"
 #include "elements/ReissnerFrame.h"
@@ -486,6 +484,7 @@ void JointedElement::writeState(std::ostream& out) const {
     put(out, hinge_->sign());
     put(out, hinge_->givenUltimate());
     put(out, hinge_->failureJump());
+    put(out, hinge_->residual());
   }
   putFixed(out, axialGradient_);
 }
@@ -504,9 +503,9 @@ void JointedElement::readState(std::istream& in) {
   hinge_.reset();
   if (getBool(in)) {
     const int sign = get<int>(in);
-    const double mu = get<double>(in), xiF = get<double>(in);
+    const double mu = get<double>(in), xiF = get<double>(in), mr = get<double>(in);
     try {
-      hinge_.emplace(memberCapacity(*inner_), sign, mu, xiF);
+      hinge_.emplace(memberCapacity(*inner_), sign, mu, xiF, mr);
     } catch (const std::invalid_argument& e) {
       throw CheckpointError(std::string("jointed element: ") + e.what());
     }

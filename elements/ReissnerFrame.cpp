@@ -325,20 +325,12 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
         cp.moment = bend.dN != 0;
         cp.dm = (mm.dM1 * bend.dN) * axialGradient_;
         if (axial_) {
-          // As the moment: N1 - (1 - w) r dN, r = 1 - dep/dSigma (bounded).
-          const double dN = N1 - committed_.forces.N;
-          const double dE = strains(kin.d)(0) - strains(kin.dn)(0);
-          const double dEp = trial_.axial.ep - committed_.axial.ep;
+          const AxialCapacity::MidPoint mp = axial_->midPoint(
+              committed_.forces.N, N1, strains(kin.dn)(0) - e0_(0), strains(kin.d)(0) - e0_(0),
+              axialTangent_, trial_.axial.ep - committed_.axial.ep, w, HingedBending::kMidPointRatio);
           cp.axial = true;
-          if (!(dEp != 0 && dE != 0)) {
-            cp.n = N1 - (1 - w) * dN;
-            cp.ea = axialTangent_;
-          } else {
-            const double r = std::clamp(1 - dEp / dE, -HingedBending::kMidPointRatio,
-                                        HingedBending::kMidPointRatio);
-            cp.n = N1 - (1 - w) * r * dN;
-            cp.ea = (axialTangent_ - (1 - w) * (2 * r * axialTangent_ - ea_ * r * r)) / w;
-          }
+          cp.n = mp.n;
+          cp.ea = mp.tangent / w;
         }
       }
       strain = midPointForce(kin.d, kin.dn, rule.alpha, mm.m, mm.tangent / w, wantTangent, residual,
@@ -371,7 +363,7 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
     const double S = length_ * (trial_.forces.N * strain(1) - trial_.forces.V * (1 + strain(0)));
     trial_.section.endMoment = {m1 - 0.5 * S, m1 + 0.5 * S};
   }
-  const double axialEnergy = axial_ ? N1 * N1 / ea_ : ea_ * e(0) * e(0);
+  const double axialEnergy = axial_ ? 2 * axial_->energyDensity(N1) : ea_ * e(0) * e(0);
   trial_.energy =
       0.5 * length_ * (axialEnergy + ga_ * e(1) * e(1)) + length_ * law_.energyDensity(bend.state);
   return Status::success();
@@ -379,7 +371,7 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
 
 double ReissnerFrame::fractureDemand() const {
   if (!axial_ || trial_.fracture != 0) return 0;
-  return axial_->fractureDemand(trial_.forces.N / ea_ + trial_.axial.ep);
+  return axial_->fractureDemand(axial_->strain(trial_.forces.N, trial_.axial));
 }
 
 double ReissnerFrame::hingeDemand() const {

@@ -15,6 +15,7 @@
 #include "core/Checkpoint.h"
 #include "core/SvgDebris.h"
 #include "core/MemberCrossing.h"
+#include "elements/EndHinges.h"
 #include "elements/MemberFold.h"
 #include "elements/HingeToJoint.h"
 #include "elements/Joints.h"
@@ -976,6 +977,7 @@ void ProblemRun::onCommit() {
     if (info.ultimate > 0)
       maxMomentRatio_ = std::max(maxMomentRatio_, std::abs(info.moment) / info.ultimate);
   }
+  maxMomentRatio_ = std::max(maxMomentRatio_, endHingeRatio(model_));
   if (history_) history_->record(*analysis_);
   if (model_.ground()) {
     const double f = groundForce(model_, analysis_->assembler().dofs(), s);

@@ -201,7 +201,9 @@ HingeInfo HingedBending::info(const HingedBendingState& s) const {
     }
     h.position = a;
     h.moment = s.endMoment[a];
-    h.ultimate = ultimate(s.endMoment[a] < 0 ? -1 : 1, s.N);
+    // An end whose hinge is a joint carries the joint's moment plus the end
+    // section's inertia: the joint reports its own (JointedElement::hingeInfo).
+    if (s.endHinge[a] == 0) h.ultimate = ultimate(s.endMoment[a] < 0 ? -1 : 1, s.N);
     return h;
   }
   h.active = s.hingeActive;

@@ -44,6 +44,9 @@ class RcSection final : public MomentCapacity {
   // Hinge: plastic length Lp = h/2; the hinge's moment falls linearly from Mu and
   // has lost kUltimateDrop of it over the plastic rotation (kappa_u - kappa_y) Lp.
   static constexpr double kHingeLength = 0.5, kUltimateDrop = 0.2;
+  // The broken section's residual moment, a share of My (ASCE/SEI 41-17
+  // Table 10-7: residual strength ratio c = 0.2 of flexure-controlled beams).
+  static constexpr double kResidualMoment = 0.2;
 
   // Throws std::invalid_argument for a section that is not one (sizes, strengths,
   // bars outside the section or of no area, fu < fy, eu <= fy/Es).
@@ -66,7 +69,7 @@ class RcSection final : public MomentCapacity {
   double squashLoad() const;
   // The member's axial law (materials/AxialCapacity.h).
   AxialCapacity axialCapacity() const {
-    return {EA(), tensionYield(), tensionUltimate(), squashLoad(), d_.eu};
+    return {EA(), d_.Es * as_, tensionYield(), tensionUltimate(), squashLoad(), d_.eu};
   }
 
   // Resultants of the strain plane (e0 at the top face, curvature kappa) of the
