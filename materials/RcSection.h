@@ -44,9 +44,6 @@ class RcSection final : public MomentCapacity {
   // Hinge: plastic length Lp = h/2; the hinge's moment falls linearly from Mu and
   // has lost kUltimateDrop of it over the plastic rotation (kappa_u - kappa_y) Lp.
   static constexpr double kHingeLength = 0.5, kUltimateDrop = 0.2;
-  // The broken section's residual moment, a share of My (ASCE/SEI 41-17
-  // Table 10-7: residual strength ratio c = 0.2 of flexure-controlled beams).
-  static constexpr double kResidualMoment = 0.2;
 
   // Throws std::invalid_argument for a section that is not one (sizes, strengths,
   // bars outside the section or of no area, fu < fy, eu <= fy/Es).

@@ -58,7 +58,6 @@ void deriveSectionLaws(MaterialSet& mat) {
       }
     }
     soft.thetaR = rc->ruptureRotation();
-    soft.Mr = RcSection::kResidualMoment * std::min(hard.My, hard.negative->My);
     mat.hardening = hard;
     mat.softening = soft;
     mat.hingeSite = HingeSite::Ends;

@@ -1,0 +1,95 @@
+// The RC decks against their closed forms: decks/rc/column_capacity.inp
+// (verification.md V20: a cantilever column under axial force reaches the base
+// moment Mu(N)) and decks/rc/catenary.inp (V19: the catenary of a beam that lost
+// its middle support, P = 2 T d / sqrt(L^2 + d^2) once the bars yield, until
+// they fracture).
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "macro/DeckRunner.h"
+#include "tests/unit/RunDeckSupport.h"
+
+namespace c2d {
+namespace {
+
+struct Ran {
+  std::filesystem::path dir;
+  std::string log;
+};
+
+Ran runRcDeck(const std::string& deck) {
+  Ran r;
+  r.dir = std::filesystem::temp_directory_path() /
+          ("c2d_rc_" + std::filesystem::path(deck).stem().string() + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(r.dir);
+  std::filesystem::create_directories(r.dir);
+  DeckOptions opt;
+  opt.outDir = r.dir;
+  opt.quiet = true;
+  const SolutionCommands commands;
+  std::ostringstream console;
+  const DeckOutcome o = runDeck(std::string(C2D_SOURCE_DIR) + "/decks/rc/" + deck, opt, commands, console);
+  EXPECT_EQ(o.exitCode, 0) << o.message;
+  std::ifstream log(r.dir / (std::filesystem::path(deck).stem().string() + ".out"));
+  std::stringstream ss;
+  ss << log.rdbuf();
+  r.log = ss.str();
+  return r;
+}
+
+TEST(RcDecks, ColumnReachesTheSectionsUltimateMomentAtItsAxialForce) {
+  const Ran r = runRcDeck("column_capacity.inp");
+  // The hand calculations of tests/unit/RcSectionTest.cpp (the V20 section).
+  const std::pair<const char*, double> cases[] = {
+      {"Nx=0", 269.128}, {"Nx=-3000", 693.023}, {"Nx=500", 166.814}};
+  for (const auto& [tag, mu] : cases) {
+    const auto csv = testing::readCsv(r.dir / (std::string("column_capacity_") + tag + "_tplot.csv"));
+    const auto m = csv.column("reac_1_3");
+    ASSERT_FALSE(m.empty()) << tag;
+    double peak = 0;
+    for (double x : m) peak = std::max(peak, std::abs(x));
+    // The law's tabulated Mu(N) interpolates the section's to 1e-5.
+    EXPECT_NEAR(peak, mu, 2e-5 * mu) << tag;
+  }
+  EXPECT_EQ(r.log.find("max |M|/Mu 1.0000") != std::string::npos, true);
+}
+
+TEST(RcDecks, CatenaryOfTheBarsUntilTheyFracture) {
+  const Ran r = runRcDeck("catenary.inp");
+  const auto csv = testing::readCsv(r.dir / "catenary_tplot.csv");
+  const auto t = csv.column("time"), v = csv.column("disp_7_2"), reac = csv.column("reac_7_2");
+  ASSERT_EQ(t.size(), v.size());
+  // Bars: 4 x 16 mm, fy = 500 MPa, fu = 540 MPa, eu = 0.05, Es As the tie's stiffness.
+  const double L = 3, as = 4 * M_PI * 0.008 * 0.008, nt = as * 500e3, ntu = as * 540e3,
+               esas = 200e6 * as, eu = 0.05, ht = (ntu - nt) / (eu - ntu / esas);
+  int checked = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const double d = -v[i];
+    if (t[i] > 9.5 || d < 0.3) continue;  // the static push, the bars yielded and the hinges spent
+    const double e = std::sqrt(1 + d * d / (L * L)) - 1;
+    const double T = (nt + ht * e) / (1 + ht / esas);
+    const double P = 2 * T * d / std::sqrt(L * L + d * d);
+    EXPECT_NEAR(-reac[i], P, 2e-3 * P) << "d = " << d;
+    ++checked;
+  }
+  EXPECT_GT(checked, 50);
+  // The first fracture: at d_f = L sqrt((1 + eu)^2 - 1) (the push at 2 mm/s from
+  // d = 0.95 m at t = 9.5 s).
+  const std::string key = "bars   fractured at t = ";
+  const std::size_t p = r.log.find(key);
+  ASSERT_NE(p, std::string::npos);
+  const double tf = std::stod(r.log.substr(p + key.size(), 14));
+  const double df = 0.95 + 0.002 * (tf - 9.5);
+  EXPECT_NEAR(df, L * std::sqrt((1 + eu) * (1 + eu) - 1), 2e-4);
+  EXPECT_NE(r.log.find("energy error"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace c2d
