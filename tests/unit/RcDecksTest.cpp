@@ -22,9 +22,17 @@
 namespace c2d {
 namespace {
 
+// A deck's run in a directory of its own, removed with it.
 struct Ran {
   std::filesystem::path dir;
   std::string log;
+  Ran() = default;
+  Ran(Ran&& o) noexcept : dir(std::move(o.dir)), log(std::move(o.log)) { o.dir.clear(); }
+  Ran& operator=(const Ran&) = delete;
+  ~Ran() {
+    std::error_code ec;
+    if (!dir.empty()) std::filesystem::remove_all(dir, ec);
+  }
 };
 
 Ran runRcDeck(const std::string& deck) {
