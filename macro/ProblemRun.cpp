@@ -126,6 +126,8 @@ void ProblemRun::run() {
   };
   analysis_->topologyEvents().onEvent = [this](const TopologyEvent& ev) {
     hingeStep_.resize(model_.numElements(), 0);
+    if (ev.kind == TopologyEvent::Kind::HingeOpened && hingeStep_[ev.element] == 0)
+      hingeStep_[ev.element] = analysis_->state().step;
     logTopologyEvent(log_, model_, analysis_->state().t, ev, topology_);
   };
   analysis_->removals().onEvent = [this](const RemovalEvent& ev) {

@@ -6,7 +6,6 @@
 // a frame that lost an interior ground column: the same verdict and sags at
 // three meshes).
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <algorithm>
@@ -37,8 +36,9 @@ struct Ran {
 
 Ran runRcDeck(const std::string& deck) {
   Ran r;
-  r.dir = std::filesystem::temp_directory_path() /
-          ("c2d_rc_" + std::filesystem::path(deck).stem().string() + "_" + std::to_string(::getpid()));
+  r.dir =
+      std::filesystem::temp_directory_path() /
+      ("c2d_rc_" + std::filesystem::path(deck).stem().string() + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(r.dir);
   std::filesystem::create_directories(r.dir);
   DeckOptions opt;
@@ -46,7 +46,8 @@ Ran runRcDeck(const std::string& deck) {
   opt.quiet = true;
   const SolutionCommands commands;
   std::ostringstream console;
-  const DeckOutcome o = runDeck(std::string(C2D_SOURCE_DIR) + "/decks/rc/" + deck, opt, commands, console);
+  const DeckOutcome o =
+      runDeck(std::string(C2D_SOURCE_DIR) + "/decks/rc/" + deck, opt, commands, console);
   EXPECT_EQ(o.exitCode, 0) << o.message;
   std::ifstream log(r.dir / (std::filesystem::path(deck).stem().string() + ".out"));
   std::stringstream ss;
@@ -61,7 +62,8 @@ TEST(RcDecks, ColumnReachesTheSectionsUltimateMomentAtItsAxialForce) {
   const std::pair<const char*, double> cases[] = {
       {"Nx=0", 269.128}, {"Nx=-3000", 693.023}, {"Nx=500", 166.814}};
   for (const auto& [tag, mu] : cases) {
-    const auto csv = testing::readCsv(r.dir / (std::string("column_capacity_") + tag + "_tplot.csv"));
+    const auto csv =
+        testing::readCsv(r.dir / (std::string("column_capacity_") + tag + "_tplot.csv"));
     const auto m = csv.column("reac_1_3");
     ASSERT_FALSE(m.empty()) << tag;
     double peak = 0;
@@ -70,6 +72,16 @@ TEST(RcDecks, ColumnReachesTheSectionsUltimateMomentAtItsAxialForce) {
     EXPECT_NEAR(peak, mu, 2e-5 * mu) << tag;
   }
   EXPECT_EQ(r.log.find("max |M|/Mu 1.0000") != std::string::npos, true);
+  // STRE,HINGe lists the base hinge's joint: softening at N = 0 and +500 kN,
+  // failed at -3000 kN (the smallest failure jump).
+  auto count = [&](const std::string& text) {
+    std::size_t n = 0;
+    for (std::size_t p = r.log.find(text); p != std::string::npos; p = r.log.find(text, p + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count("  failed, end 1\n"), 1u);
+  EXPECT_EQ(count("  active, end 1\n"), 2u);
+  EXPECT_EQ(count("   1 hinges\n"), 3u);
 }
 
 TEST(RcDecks, CatenaryOfTheBarsUntilTheyFracture) {
@@ -131,7 +143,8 @@ TEST(RcDecks, ColumnRemovalVerdictAndSagDoNotDependOnTheMesh) {
   EXPECT_LT(hi, 1.15 * lo) << sags[0] << " " << sags[1] << " " << sags[2];
   // Every run opens the 14 negative hinges at the outer supports.
   std::size_t runs = 0;
-  for (std::size_t p = r.log.find("summary: "); p != std::string::npos; p = r.log.find("summary: ", p + 1)) {
+  for (std::size_t p = r.log.find("summary: "); p != std::string::npos;
+       p = r.log.find("summary: ", p + 1)) {
     const std::size_t h = r.log.find(" hinges", p);
     const std::size_t c = r.log.rfind(", ", h);
     EXPECT_GE(std::stoi(r.log.substr(c + 2, h - c - 2)), 14);

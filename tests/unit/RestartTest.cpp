@@ -376,13 +376,14 @@ BATCh
 
 TEST(Restart, RcMemberWithAnOpenEndHingeContinuesBitForBit) {
   DeckTempDir dir;
-  const std::string start = "  PROP,,1\n  PROP,,2\n  TPLOt\n  DT,,1\n" + newtonLoop("TIME", 1) +
-                            "  DT,,0.002\n";
+  const std::string start =
+      "  PROP,,1\n  PROP,,2\n  TPLOt\n  DT,,1\n" + newtonLoop("TIME", 1) + "  DT,,0.002\n";
   const std::string loads = "2\n  0 1 1e6 1\n\n2\n  0 0 1 0 1e6 1e6-1\n\n";
   const std::string data = loads + "reac,1,3\ndisp,5,1\nstre,1,1\n\nSTOP\n";
   const std::string restData = "reac,1,3\ndisp,5,1\nstre,1,1\n\nSTOP\n";
-  const DeckResult whole = runDeckText(
-      dir, "whole.inp", kRcColumn + start + newtonLoop("TIME", 30) + "  SAVE,whole_end\nEND\n" + data);
+  const DeckResult whole =
+      runDeckText(dir, "whole.inp",
+                  kRcColumn + start + newtonLoop("TIME", 30) + "  SAVE,whole_end\nEND\n" + data);
   expectRan(whole);
   const DeckResult first = runDeckText(
       dir, "first.inp", kRcColumn + start + newtonLoop("TIME", 15) + "  SAVE,mid\nEND\n" + data);
