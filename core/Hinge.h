@@ -4,6 +4,12 @@
 // a uniform moment localizes in exactly one element: after a converged Newton
 // iteration the solver asks every inactive hinge for its demand |M|/Mu and
 // activates the largest one above 1, then iterates again.
+//
+// The same machinery locates the fracture of an RC member's bars (axial strain
+// eu, materials/AxialCapacity): the demand is the larger of the hinge's and
+// the bars' (strain / eu), and activation does whichever is the larger.
+#include "core/Types.h"
+
 namespace c2d {
 
 struct HingeInfo {
@@ -14,17 +20,44 @@ struct HingeInfo {
   double moment = 0;          // hinge moment t (signed)
   double softening = 0;       // softening variable xi = |alpha| accumulated
   double ultimate = 0;        // the ultimate moment Mu of the law
+  int count = 0;              // hinges opened in the element (hinges at its ends: up to 2)
+  bool jointDue = false;      // a hinge opened at an end, its joint not made yet
+  bool fracture = false;      // the bars reached their fracture strain, not yet separated
 };
 
 class HingeCarrier {
  public:
   virtual ~HingeCarrier() = default;
-  // |M|/Mu at the critical point of the last evaluated trial state; 0 when the
-  // element has no softening law or its hinge is already active.
+  // |M|/Mu at the critical point of the last evaluated trial state (or the
+  // bars' strain / fracture strain, whichever is larger); 0 when the element
+  // has no softening law and no bars, or nothing left to open.
   virtual double hingeDemand() const = 0;
-  // Activate the hinge in the trial state (made permanent by commit(), dropped by revert()).
+  // Activate the hinge (or the fracture) of the larger demand in the trial state
+  // (made permanent by commit(), dropped by revert()).
   virtual void activateHinge() = 0;
   virtual HingeInfo hinge() const = 0;  // at the last evaluated trial state
+  // The width of the band above 1 in which a located event opens the hinge:
+  // the demand's round-off (solvers/HingeEvents).
+  virtual double demandBand() const { return 1e-12; }
+};
+
+// A member whose laws follow its axial force and whose bars can fracture (RC
+// sections, hand-given laws with an interaction curve): the hinge laws of the
+// joints at its ends (elements/JointedElement) follow its axial force, and
+// after the commit that made a fracture permanent a topology event separates
+// the member from one of its ends (elements/BarFractures.h) and reports it done.
+class RcMember {
+ public:
+  virtual ~RcMember() = default;
+  // Axial force of the last evaluated state (tension positive) and its
+  // derivative with respect to the element's displacements d.
+  virtual double axialForce() const = 0;
+  virtual ElemVec axialForceGradient() const = 0;
+  // Whether its laws follow the axial force at all (else the above are not needed).
+  virtual bool followsAxialForce() const = 0;
+  // A committed fracture not yet separated.
+  virtual bool fractureDue() const = 0;
+  virtual void fractureDone() = 0;
 };
 
 }  // namespace c2d

@@ -1,26 +1,59 @@
 #pragma once
 // A material set of the deck (MATErial,m): the element type and its section data.
 // Pure data: the element factory (elements/) turns it into elements.
+#include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace c2d {
 
 enum class Kinematics { Small, Finite };     // SMALl: geometrically linear; FINIte: Reissner
 enum class MassType { Consistent, Lumped };
 
-// HARDening BILInear Mc My Kh1 Kh2: bending elastic to Mc, modulus Kh1 to My, Kh2 beyond.
-struct HardeningData {
+// HARDening BILInear Mc My Kh1 Kh2: bending elastic to Mc, modulus Kh1 to My, Kh2 beyond;
+// HARDening NEGAtive Mc My Kh1 Kh2: other values for negative moments (magnitudes).
+struct HardeningValues {
   double Mc = 0, My = 0, Kh1 = 0, Kh2 = 0;
+};
+struct HardeningData : HardeningValues {
+  std::optional<HardeningValues> negative = std::nullopt;
 };
 
 // SOFTening LINEar Mu Ks [thetaR]: hinge opens when |M| reaches Mu; t = Mu + Ks*xi, Ks < 0,
 // down to 0; a joint made of the hinge ruptures when its relative rotation exceeds thetaR (rad).
+// SOFTening NEGAtive Mu Ks: other values for negative moments (Mu a magnitude).
 struct SofteningData {
   double Mu = 0, Ks = 0;
   std::optional<double> thetaR;
   double Mr = 0;  // friction moment of the joint the fully softened hinge becomes
+  std::optional<std::pair<double, double>> negative = std::nullopt;  // Mu, Ks of negative moments
 };
+
+// SECTion RECTangular b h fc fy [Es [fu eu]] with REBAr d1 A1 [d2 A2 ...]: a
+// rectangular reinforced concrete section b x h (m), concrete strength fc and
+// bar yield stress fy, modulus Es, ultimate stress fu and fracture strain eu of
+// the bars (stresses in kN/m^2 with kN and m); bar layers at their depth from
+// the top face (m) with their area (m^2). The top face is the face on the
+// element's left looking from its first node to its second (the local +y side):
+// a positive moment compresses it. The derivation is materials/RcSection.
+struct RebarLayer {
+  double depth = 0, area = 0;
+};
+struct RcSectionData {
+  double b = 0, h = 0, fc = 0, fy = 0, Es = 0, fu = 0, eu = 0;
+  std::vector<RebarLayer> bars;
+};
+
+// Where a softening hinge opens: at the one-point element's midpoint when its
+// moment reaches Mu (the paper's element), or at the element end whose end
+// moment (from the element's equilibrium) first reaches Mu, as a joint that
+// carries the softening law (HINGes ENDS; SECTion's default).
+enum class HingeSite { Midpoint, Ends };
+
+class MomentCapacity;
+class RcSection;
 
 struct MaterialSet {
   int number = 0;
@@ -36,6 +69,17 @@ struct MaterialSet {
   MassType mass = MassType::Consistent;
   std::optional<HardeningData> hardening;
   std::optional<SofteningData> softening;
+  HingeSite hingeSite = HingeSite::Midpoint;
+  // INTEraction CURVe N1 Mu1 N2 Mu2 ...: the hand-given laws scaled with the
+  // axial force (materials/MomentCapacity.h ScaledCapacity).
+  std::vector<std::pair<double, double>> interaction;
+  // SECTion + REBAr: the section; its derivation (set with it: resultant
+  // stiffnesses, A, I, the laws at N = 0 in hardening and softening, Ends).
+  std::optional<RcSectionData> section;
+  std::shared_ptr<const RcSection> rc;
+  // The laws' dependence on the axial force: the section's, or the scaled
+  // hand-given laws'; null: laws that do not follow N.
+  std::shared_ptr<const MomentCapacity> capacity;
 
   double EA() const { return resEA ? *resEA : E * A; }
   double GA() const { return resGA ? *resGA : kappa * E / (2.0 * (1.0 + nu)) * A; }

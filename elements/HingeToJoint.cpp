@@ -156,6 +156,9 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
     if (laws == MemberLaws::Elastic) {
       mat.hardening.reset();
       mat.softening.reset();
+      mat.section.reset();
+      mat.rc.reset();
+      mat.capacity.reset();
     }
     auto frame =
         std::make_unique<ReissnerFrame>(mat, nodes, model.coord(nodes[0]), model.coord(nodes[1]));

@@ -1,8 +1,11 @@
 #include "elements/InelasticFrame.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+
+#include "materials/RcSection.h"
 
 namespace c2d {
 
@@ -33,6 +36,7 @@ InelasticFrame::InelasticFrame(const MaterialSet& mat, const std::array<int, 2>&
       GA_(mat.GA()),
       rhoA_(mat.rhoA()),
       law_(mat) {
+  if (mat.rc) axial_ = mat.rc->axialCapacity();
   if (!(length_ > 0)) throw std::invalid_argument("frame element with coincident nodes");
   if (!(EA_ > 0) || !(GA_ > 0))
     throw std::invalid_argument("frame element needs positive EA and GA");
@@ -70,10 +74,26 @@ Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& ru
   const HingedBendingState& from = committed_.section;
   const double openSign =
       !from.hingeActive && trial_.section.hingeActive ? trial_.section.hingeSign : 0.0;
+  // The axial force first: the bending laws follow it.
+  const double eps = b.eps.dot(dl);
+  double N1 = EA_ * eps;
+  axialTangent_ = EA_;
+  if (axial_) {
+    const AxialResponse a = axial_->returnMap(committed_.axial, eps);
+    N1 = a.N;
+    axialTangent_ = a.tangent;
+    trial_.axial = a.state;
+  }
+  const std::array<double, 2> ends = trial_.section.endHinge;  // opened in this trial
   HingedBendingResponse bend;
-  if (Status st = law_.respond(b.kappa.dot(dl), l, from, openSign, bend); !st) return st;
+  if (Status st = law_.respond(b.kappa.dot(dl), l, from, openSign, bend, N1); !st) return st;
   trial_.section = bend.state;
-  trial_.forces = {EA_ * b.eps.dot(dl), GA_ * b.gamma.dot(dl), bend.state.M};
+  for (int a = 0; a < 2; ++a)
+    if (from.endHinge[a] == 0) trial_.section.endHinge[a] = ends[a];
+  trial_.forces = {N1, GA_ * b.gamma.dot(dl), bend.state.M};
+  // End moments from the element's equilibrium (section sign convention).
+  trial_.section.endMoment = {trial_.forces.M + 0.5 * l * trial_.forces.V,
+                              trial_.forces.M - 0.5 * l * trial_.forces.V};
   const double kt = bend.tangent;
   if (!std::isfinite(trial_.forces.N) || !std::isfinite(trial_.forces.V))
     return Status::failure("inelastic frame: non-finite section forces");
@@ -84,16 +104,39 @@ Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& ru
   const double w = rule.scheme == Scheme::MidPoint ? 0.5 + rule.alpha : 1.0;
   const ElemVec dln = rotation_ * kin.dn - dl0_;
   const SectionForces& f1 = trial_.forces;
-  const double N = w * f1.N + (1 - w) * EA_ * b.eps.dot(dln);
+  const bool coupled = axial_ || bend.dN != 0;
+  double N = 0, kN = 0;  // the axial resultant of the scheme and dN/deps
+  if (!axial_) {
+    N = w * f1.N + (1 - w) * EA_ * b.eps.dot(dln);
+    kN = w * EA_;
+  } else if (rule.scheme != Scheme::MidPoint) {
+    N = f1.N;
+    kN = axialTangent_;
+  } else {
+    const AxialCapacity::MidPoint mp =
+        axial_->midPoint(committed_.forces.N, f1.N, b.eps.dot(dln), eps, axialTangent_,
+                         trial_.axial.ep - committed_.axial.ep, w, HingedBending::kMidPointRatio);
+    N = mp.n;
+    kN = mp.tangent;
+  }
   const double V = w * f1.V + (1 - w) * GA_ * b.gamma.dot(dln);
   const double M = w * f1.M + (1 - w) * committed_.forces.M;
   const ElemVec fLocal = l * (N * b.eps + V * b.gamma + M * b.kappa);
   residual = rotation_.transpose() * fLocal;
   if (wantTangent) {
-    const ElemMat kLocal = l * w *
-                           (EA_ * b.eps * b.eps.transpose() + GA_ * b.gamma * b.gamma.transpose() +
-                            kt * b.kappa * b.kappa.transpose());
-    tangent = rotation_.transpose() * kLocal * rotation_;
+    if (!coupled) {
+      const ElemMat kLocal = l * w *
+                             (EA_ * b.eps * b.eps.transpose() + GA_ * b.gamma * b.gamma.transpose() +
+                              kt * b.kappa * b.kappa.transpose());
+      tangent = rotation_.transpose() * kLocal * rotation_;
+    } else {
+      // The moment follows N: dM/ddl = kt b_kappa + dM/dN dN/deps b_eps.
+      const ElemMat kLocal =
+          l * (kN * b.eps * b.eps.transpose() +
+               w * (GA_ * b.gamma * b.gamma.transpose() + kt * b.kappa * b.kappa.transpose() +
+                    bend.dN * axialTangent_ * b.kappa * b.eps.transpose()));
+      tangent = rotation_.transpose() * kLocal * rotation_;
+    }
   }
   if (rule.dynamic()) {
     const ElemVec dd = kin.d - kin.dn;
@@ -117,16 +160,37 @@ ElemVec InelasticFrame::bodyLoad(const Vec2& g) const {
 
 double InelasticFrame::strainEnergy() const {
   const SectionForces& f = trial_.forces;
-  return 0.5 * length_ * (f.N * f.N / EA_ + f.V * f.V / GA_ + f.M * f.M / law_.EI());
+  const double axial = axial_ ? 2 * axial_->energyDensity(f.N) : f.N * f.N / EA_;
+  return 0.5 * length_ * (axial + f.V * f.V / GA_ + f.M * f.M / law_.EI());
 }
 
 SectionForces InelasticFrame::sectionForces() const { return trial_.forces; }
 
-double InelasticFrame::hingeDemand() const { return law_.demand(trial_.section); }
+double InelasticFrame::fractureDemand() const {
+  if (!axial_ || trial_.fracture != 0) return 0;
+  return axial_->fractureDemand(axial_->strain(trial_.forces.N, trial_.axial));
+}
 
-void InelasticFrame::activateHinge() { law_.open(trial_.section); }
+double InelasticFrame::hingeDemand() const {
+  return std::max(law_.demand(trial_.section), fractureDemand());
+}
 
-HingeInfo InelasticFrame::hinge() const { return law_.info(trial_.section); }
+void InelasticFrame::activateHinge() {
+  if (fractureDemand() > law_.demand(trial_.section))
+    trial_.fracture = 1;
+  else
+    law_.open(trial_.section);
+}
+
+HingeInfo InelasticFrame::hinge() const {
+  HingeInfo h = law_.info(trial_.section);
+  h.fracture = trial_.fracture == 1;
+  return h;
+}
+
+ElemVec InelasticFrame::axialForceGradient() const {
+  return axialTangent_ * (rotation_.transpose() * midpointRows(length_).eps);
+}
 
 // ------------------------------------------------------------ restart files
 
@@ -141,8 +205,10 @@ void InelasticFrame::writeState(std::ostream& out) const {
   putFixed(out, mass_);
   for (const PointState* p : {&committed_, &trial_}) {
     putSection(out, p->section);
-    for (double x : {p->forces.N, p->forces.V, p->forces.M}) put(out, x);
+    for (double x : {p->forces.N, p->forces.V, p->forces.M, p->axial.ep, p->axial.xi}) put(out, x);
+    put(out, p->fracture);
   }
+  put(out, axialTangent_);
   putFixed(out, dl0_);
 }
 
@@ -155,8 +221,11 @@ void InelasticFrame::readState(std::istream& in) {
   getFixed(in, mass_);
   for (PointState* p : {&committed_, &trial_}) {
     p->section = getSection(in);
-    for (double* x : {&p->forces.N, &p->forces.V, &p->forces.M}) *x = get<double>(in);
+    for (double* x : {&p->forces.N, &p->forces.V, &p->forces.M, &p->axial.ep, &p->axial.xi})
+      *x = get<double>(in);
+    p->fracture = get<int>(in);
   }
+  axialTangent_ = get<double>(in);
   getFixed(in, dl0_);
 }
 
@@ -222,6 +291,7 @@ Status InelasticFrame::setMaterial(const MaterialSet& mat, const ElemVec& d) {
   GA_ = fresh->GA_;
   rhoA_ = fresh->rhoA_;
   law_ = fresh->law_;
+  axial_ = fresh->axial_;
   mass_ = fresh->mass_;
   dl0_ = dl0;
   return Status::success();

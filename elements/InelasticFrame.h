@@ -22,6 +22,15 @@
 // rigid (EI/Kh2 is about 285 for the paper's data), and Newton's method then
 // cycles between sets of branches none of which holds the solution.
 //
+// An RC section (MaterialSet::rc) adds the axial law of materials/AxialCapacity
+// (the bars in tension, the squash load in compression) and bending laws that
+// follow the axial force (moment-axial interaction: the moment's derivative
+// with respect to N couples bending and stretching in the tangent); its hinges
+// open at the element ends (HingedBending, HingeSite::Ends): the end moments
+// M1 = M + V l/2, M2 = M - V l/2 of the element's equilibrium are passed to the
+// law, and the hinge is a joint made at that end after the commit. The bars'
+// fracture (axial strain eu) is located like a hinge event.
+//
 // The element is always a Timoshenko beam (SHEAr OFF is not honoured here: the
 // one-point element is free of shear locking). Dynamics as in LinearFrame:
 // residual f_int + M a_eff, consistent (linear) or lumped mass; under the
@@ -35,6 +44,7 @@
 #include "core/Hinge.h"
 #include "core/MaterialChange.h"
 #include "core/MaterialSet.h"
+#include "materials/AxialCapacity.h"
 #include "materials/HingedBending.h"
 
 namespace c2d {
@@ -42,7 +52,8 @@ namespace c2d {
 class InelasticFrame final : public Element,
                              public HingeCarrier,
                              public Checkpoint,
-                             public MaterialChange {
+                             public MaterialChange,
+                             public RcMember {
  public:
   // x1, x2: reference coordinates of the nodes. Bending uses the HARDening data
   // when given (elastic otherwise); the hinge exists only with SOFTening data.
@@ -68,11 +79,22 @@ class InelasticFrame final : public Element,
   double hingeDemand() const override;
   void activateHinge() override;
   HingeInfo hinge() const override;
+  // End moments carry the shear's round-off (M -+ V l/2): 1e-10.
+  double demandBand() const override { return law_.site() == HingeSite::Ends ? 1e-10 : 1e-12; }
+
+  double axialForce() const override { return trial_.forces.N; }
+  bool followsAxialForce() const override { return axial_ || law_.capacity(); }
+  ElemVec axialForceGradient() const override;
+  bool fractureDue() const override { return committed_.fracture == 1; }
+  void fractureDone() override { committed_.fracture = trial_.fracture = 2; }
 
   double length() const { return length_; }
   const HingedBending& bendingLaw() const { return law_; }
   // Section history at the last evaluated state (committed after commit()).
   const HingedBendingState& section() const { return trial_.section; }
+  // Sets the trial and the committed history (after a commit: the hinges at
+  // the ends made into joints, elements/EndHinges).
+  void setSection(const HingedBendingState& s) { trial_.section = committed_.section = s; }
 
   // Restart files: every member after the construction data except the
   // material laws' parameters, which the constructor rebuilds from the
@@ -87,7 +109,11 @@ class InelasticFrame final : public Element,
   struct PointState {
     HingedBendingState section;
     SectionForces forces;  // at the state's displacements (element frame)
+    AxialState axial;      // RC sections: plastic axial strain
+    int fracture = 0;      // bars: 0 whole, 1 fractured (separation due), 2 separated
   };
+  // The bars' strain / eu at the trial state (RC sections; 0 once fractured).
+  double fractureDemand() const;
 
   std::array<int, 2> nodes_;
   int material_;
@@ -95,6 +121,8 @@ class InelasticFrame final : public Element,
   double EA_, GA_;
   double rhoA_;  // mass per unit length
   HingedBending law_;
+  std::optional<AxialCapacity> axial_;  // RC sections
+  double axialTangent_ = 0;             // dN/deps of the last evaluation
   ElemMat rotation_;  // global -> element frame, block diagonal
   ElemMat mass_;
   PointState committed_, trial_;

@@ -4,6 +4,10 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
+
+#include "elements/InelasticFrame.h"
+#include "elements/ReissnerFrame.h"
 
 namespace c2d {
 
@@ -29,6 +33,27 @@ JointedElement::JointedElement(std::unique_ptr<Element> inner, int slaveEnd, int
   nodes_ = inner_->nodes();
   slave_ = nodes_[slaveEnd_];
   nodes_[slaveEnd_] = master;
+  findMember();
+}
+
+std::shared_ptr<const MomentCapacity> memberCapacity(const Element& member) {
+  const Element* e = &member;
+  while (const JointedElement* j = asJointed(e)) e = &j->inner();
+  if (const auto* f = dynamic_cast<const InelasticFrame*>(e)) return f->bendingLaw().capacity();
+  if (const auto* f = dynamic_cast<const ReissnerFrame*>(e)) return f->bendingLaw().capacity();
+  return nullptr;
+}
+
+void JointedElement::findMember() {
+  const Element* e = inner_.get();
+  while (const JointedElement* j = asJointed(e)) e = j->inner_.get();
+  member_ = dynamic_cast<const RcMember*>(e);
+  if (member_ && !member_->followsAxialForce()) member_ = nullptr;
+}
+
+ElemVec JointedElement::innerAxialGradient() const {
+  if (const JointedElement* j = asJointed(inner_.get())) return j->axialGradient_;
+  return member_->axialForceGradient();
 }
 
 ElementKinematics JointedElement::innerKinematics(const ElementKinematics& outer,
@@ -120,9 +145,11 @@ bool JointedElement::evaluateLink(JointedElement& j, const ElementKinematics& ki
 Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& rule,
                                 bool wantTangent, ElemVec& residual, ElemMat& tangent) {
   if (JointedElement* j = asJointed(inner_.get());
-      j && friction_ <= 0 && j->friction_ <= 0 &&
+      j && freeJoint() && j->freeJoint() &&
       evaluateLink(*j, kin, rule, wantTangent, residual, tangent))
     return Status::success();
+  if (hinge_ && !hinge_->failed(committed_.slip))
+    return evaluateHinge(kin, rule, wantTangent, residual, tangent);
   const int k = dof();
   double psi = trial_.psi;
   // A first-order start only for a small change: the local equation's roots
@@ -198,6 +225,7 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
   }
 
   trial_.psi = psi;
+  trial_.slip = committed_.slip;
   guessD_ = kin.d;
   guessSlope_ = -kin6.row(k).transpose() / krr;
   guessValid_ = true;
@@ -208,6 +236,20 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
   trial_.acc = rule.acceleration(rate, committed_.vel, committed_.acc);
   slaveRotation_ = in.d(k);
 
+  trial_.moment = -residual(k);
+  if (member_) {  // the member's axial force with psi_r(d): dpsi_r/dd = -G_d/G_psi
+    const ElemVec g = innerAxialGradient();
+    ElemVec gd = kin6.row(k).transpose();
+    double gpsi = kin6(k, k);
+    if (friction_ > 0) {
+      double dm = 0;
+      friction(psi, dm);
+      const double a = dm * rule.rotationRateSlope(in.d(k) - in.dn(k));
+      gd(k) += a - dm * rule.rotationRateSlope(kin.d(k) - kin.dn(k));
+      gpsi += a;
+    }
+    axialGradient_ = g - (g(k) / gpsi) * gd;
+  }
   // The outer row k is the moment on the master: the friction's reaction -m,
   // which the converged local equation r_k + m = 0 leaves in residual(k).
   if (wantTangent && friction_ <= 0) {
@@ -231,6 +273,143 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
     tangent -= rpsi * gd.transpose() / (kin6(k, k) + a);
   }
   return Status::success();
+}
+
+Status JointedElement::evaluateHinge(const ElementKinematics& kin, const StepRule& rule,
+                                     bool wantTangent, ElemVec& residual, ElemMat& tangent) {
+  const int k = dof();
+  const EndHinge& law = *hinge_;
+  const double masterRate = rule.rotationRate(kin.d(k) - kin.dn(k));
+  ElementKinematics in = innerKinematics(kin, committed_.psi);
+  ElemMat kin6;
+  auto axial = [&]() { return member_ ? member_->axialForce() : 0.0; };
+  auto rates = [&](double psi) {
+    const double rate = rule.rotationRate(kin.d(k) + psi - in.dn(k)) - masterRate;
+    trial_.vel = rule.velocity(rate, committed_.vel, committed_.acc);
+    trial_.acc = rule.acceleration(rate, committed_.vel, committed_.acc);
+    slaveRotation_ = kin.d(k) + psi;
+  };
+  // Stick: the relative rotation as committed; the joint carries -r_k. A
+  // moment at the capacity to round-off (relative 1e-8) slips with a zero
+  // increment, as LinearSoftening's hinge: a hinge at its capacity is taken to
+  // go on softening (its tangent at the state it opened in is the softening one).
+  in.d(k) = kin.d(k) + committed_.psi;
+  if (Status st = inner_->evaluate(in, rule, true, residual, kin6); !st) return st;
+  const double stick = -residual(k);
+  const EndHinge::Value c0 = law.capacity(committed_.slip, axial());
+  if (std::abs(stick) < c0.C * (1 - 1e-8)) {
+    trial_.psi = committed_.psi;
+    trial_.slip = committed_.slip;
+    trial_.moment = stick;
+    rates(committed_.psi);
+    if (member_) axialGradient_ = innerAxialGradient();
+    if (wantTangent) tangent = kin6;
+    return Status::success();
+  }
+  // Slip in the direction of the moment the joint cannot carry: G(psi) =
+  // r_k + sigma C(xi_n + sigma w, N) = 0 on sigma w >= 0 (a spent capacity
+  // leaves r_k = 0), solved by Newton's method kept in a bracket of the root.
+  const double sigma = stick > 0 ? 1.0 : -1.0;
+  const double psiN = committed_.psi;
+  // Under the Cayley rule the slave's increment stays inside (-pi, pi).
+  const bool bounded = rule.rotationsByCayley() && inner_->mass()(k, k) > 0;
+  const double incN = kin.d(k) + psiN - in.dn(k);
+  double lo = psiN, hi = psiN;
+  const double far = bounded ? std::numbers::pi - 1e-9 : 1e300;
+  (sigma > 0 ? hi : lo) = sigma > 0 ? psiN + (far - incN) : psiN - (far + incN);
+  double psi = psiN, G = 0, Gpsi = 0, m = 0, mPsi = 0, slip = 0;
+  EndHinge::Value cv;
+  bool lastPass = false, converged = false;
+  for (int it = 0; it < kMaxLocalIterations; ++it) {
+    in.d(k) = kin.d(k) + psi;
+    if (it > 0)
+      if (Status st = inner_->evaluate(in, rule, true, residual, kin6); !st) return st;
+    const double inc = kin.d(k) + psi - in.dn(k);
+    const double w = rule.rotationRate(inc) - masterRate;
+    slip = committed_.slip + std::max(0.0, sigma * w);
+    cv = law.capacity(slip, axial());
+    m = sigma * cv.C;
+    const double nk = member_ ? innerAxialGradient()(k) : 0.0;
+    mPsi = cv.dXi * rule.rotationRateSlope(inc) + sigma * cv.dN * nk;
+    G = residual(k) + m;
+    Gpsi = kin6(k, k) + mPsi;
+    if (lastPass) {
+      converged = true;
+      break;
+    }
+    // Newton's step; a step at round-off is taken and the element evaluated
+    // once more (its error is the step's square), else the step stays inside
+    // the bracket (bisecting it when Newton's would leave it).
+    const double small = kSmallStep * (1.0 + std::abs(psi));
+    double step = Gpsi != 0 ? -G / Gpsi : 0.0;
+    if (std::isfinite(step) && std::abs(step) <= small) {
+      lastPass = true;
+      psi += step;
+      continue;
+    }
+    (G < 0 ? lo : hi) = psi;
+    if (!(Gpsi > 0) || !(psi + step > lo && psi + step < hi)) {
+      const bool finite = std::abs(hi) < 1e299 && std::abs(lo) < 1e299;
+      step = (finite ? 0.5 * (lo + hi) : psi + sigma * 0.1) - psi;
+    }
+    if (!std::isfinite(step)) break;
+    psi += step;
+  }
+  if (!converged) {
+    std::ostringstream msg;
+    msg << "hinge at node " << slave_ + 1 << ": its rotation jump did not converge in "
+        << kMaxLocalIterations << " iterations (moment " << residual(k) << ")";
+    return Status::failure(msg.str());
+  }
+  trial_.psi = psi;
+  trial_.slip = slip;
+  trial_.moment = m;
+  rates(psi);
+  guessValid_ = false;
+  // dG/dd: the inner row, the slip rate's dependence on the master's increment,
+  // the capacity's on the member's axial force.
+  ElemVec gd = kin6.row(k).transpose();
+  gd(k) -= cv.dXi * rule.rotationRateSlope(kin.d(k) - kin.dn(k));
+  ElemVec md = ElemVec::Zero();  // dm/dd at fixed psi
+  md(k) = cv.dXi * (rule.rotationRateSlope(kin.d(k) + psi - in.dn(k)) -
+                    rule.rotationRateSlope(kin.d(k) - kin.dn(k)));
+  if (member_) {
+    const ElemVec g = innerAxialGradient();
+    md += sigma * cv.dN * g;
+    gd = kin6.row(k).transpose() + md;
+    axialGradient_ = g - (g(k) / Gpsi) * gd;
+  } else {
+    gd = kin6.row(k).transpose() + md;
+  }
+  if (wantTangent) {
+    // R_k = -m(psi(d), d): dR_k/dd = -m_d - m_psi dpsi/dd, dpsi/dd = -G_d/G_psi.
+    ElemVec rpsi = kin6.col(k);
+    rpsi(k) = -mPsi;
+    tangent = kin6;
+    tangent.row(k) = -md.transpose();
+    tangent -= rpsi * gd.transpose() / Gpsi;
+  }
+  return Status::success();
+}
+
+HingeInfo JointedElement::hingeInfo() const {
+  HingeInfo h;
+  if (!hinge_) return h;
+  h.active = true;
+  h.count = 1;
+  h.failed = hinge_->failed(trial_.slip);
+  h.position = slaveEnd_;
+  h.jump = trial_.psi;
+  h.softening = trial_.slip;
+  // The section moment at the slave end: the moment on the slave section at end 1, its reaction at end 2.
+  h.moment = slaveEnd_ == 0 ? trial_.moment : -trial_.moment;
+  h.ultimate = hinge_->ultimate(member_ ? member_->axialForce() : 0.0);
+  return h;
+}
+
+void JointedElement::setHinge(const EndHinge& law, double slip) {
+  hinge_ = law;
+  trial_.slip = committed_.slip = slip;
 }
 
 void JointedElement::setFriction(double Mr, double eps) {
@@ -269,7 +448,7 @@ ElemVec JointedElement::momentum(const ElemVec& v) const {
 }
 
 void JointedElement::setRelativeState(double psi, double vel, double acc) {
-  trial_ = committed_ = Relative{psi, vel, acc};
+  trial_ = committed_ = Relative{psi, vel, acc, committed_.slip, committed_.moment};
   guessValid_ = false;
 }
 
@@ -285,6 +464,7 @@ void JointedElement::replaceInner(std::unique_ptr<Element> inner) {
   inner_ = std::move(inner);
   nodes_ = inner_->nodes();
   nodes_[slaveEnd_] = master;
+  findMember();
 }
 
 // ------------------------------------------------------------ restart files
@@ -295,10 +475,18 @@ void JointedElement::writeState(std::ostream& out) const {
   put(out, slave_);
   for (int n : nodes_) put(out, n);
   for (const Relative* r : {&trial_, &committed_})
-    for (double x : {r->psi, r->vel, r->acc}) put(out, x);
+    for (double x : {r->psi, r->vel, r->acc, r->slip, r->moment}) put(out, x);
   put(out, slaveRotation_);
   put(out, friction_);
   put(out, frictionEps_);
+  putBool(out, hinge_.has_value());
+  if (hinge_) {
+    put(out, hinge_->sign());
+    put(out, hinge_->givenUltimate());
+    put(out, hinge_->failureJump());
+    put(out, hinge_->residual());
+  }
+  putFixed(out, axialGradient_);
 }
 
 void JointedElement::readState(std::istream& in) {
@@ -308,10 +496,21 @@ void JointedElement::readState(std::istream& in) {
   slave_ = get<int>(in);
   for (int& n : nodes_) n = get<int>(in);
   for (Relative* r : {&trial_, &committed_})
-    for (double* x : {&r->psi, &r->vel, &r->acc}) *x = get<double>(in);
+    for (double* x : {&r->psi, &r->vel, &r->acc, &r->slip, &r->moment}) *x = get<double>(in);
   slaveRotation_ = get<double>(in);
   friction_ = get<double>(in);
   frictionEps_ = get<double>(in);
+  hinge_.reset();
+  if (getBool(in)) {
+    const int sign = get<int>(in);
+    const double mu = get<double>(in), xiF = get<double>(in), mr = get<double>(in);
+    try {
+      hinge_.emplace(memberCapacity(*inner_), sign, mu, xiF, mr);
+    } catch (const std::invalid_argument& e) {
+      throw CheckpointError(std::string("jointed element: ") + e.what());
+    }
+  }
+  getFixed(in, axialGradient_);
 }
 
 Status JointedElement::setMaterial(const MaterialSet& mat, const ElemVec& d) {

@@ -21,14 +21,27 @@
 // its inertia and the mid-point algorithmic forces act on the true slave motion.
 // Hence the element works unchanged under Static, Newmark and MidPoint rules,
 // and the energy identities of the wrapped element hold for the jointed one.
+//
+// A hinge at the member's end (HingeSite::Ends, materials/EndHinge): the joint
+// made where the hinge opened carries its softening law. It is rigid (psi_r as
+// committed, the moment passed to the master) while the moment it must carry
+// is within the capacity C(xi, N), and slips beyond: the local equation is
+// r_k + sigma C(xi_n + sigma w, N) = 0, w the step's relative rate measure
+// (as the friction's), sigma the direction of the slip; the capacity's
+// dependence on the member's axial force N enters the condensed tangent. Once
+// the capacity is spent the joint is free. The slip's work sigma C w >= 0 is
+// the hinge's dissipation.
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <typeinfo>
 
 #include "core/Checkpoint.h"
 #include "core/Element.h"
+#include "core/Hinge.h"
 #include "core/MaterialChange.h"
+#include "materials/EndHinge.h"
 
 namespace c2d {
 
@@ -99,6 +112,19 @@ class JointedElement final : public Element, public Checkpoint, public MaterialC
   void setFriction(double Mr, double eps);
   double frictionMoment() const { return friction_; }
 
+  // The hinge this joint is (see above), with its accumulated slip.
+  void setHinge(const EndHinge& law, double slip = 0);
+  const std::optional<EndHinge>& hingeLaw() const { return hinge_; }
+  double hingeSlip() const { return trial_.slip; }
+  double committedHingeSlip() const { return committed_.slip; }
+  // The hinge as core/Hinge.h reports one: jump = the relative rotation, moment
+  // = the section moment at the joint (positive compressing the top face),
+  // softening = the slip, ultimate = Mu at the member's axial force.
+  HingeInfo hingeInfo() const;
+  // dN/dd of the wrapped member's axial force with psi_r condensed (laws that
+  // follow N); valid after an evaluation.
+  const ElemVec& axialForceGradient() const { return axialGradient_; }
+
   Element& inner() { return *inner_; }
   const Element& inner() const { return *inner_; }
   // Hands the wrapped element back (its node at slaveEnd set to the slave).
@@ -125,9 +151,21 @@ class JointedElement final : public Element, public Checkpoint, public MaterialC
  private:
   struct Relative {
     double psi = 0, vel = 0, acc = 0;
+    double slip = 0;    // the hinge's accumulated |slip| (rad)
+    double moment = 0;  // the joint's moment on the slave section (hinge, friction)
   };
 
   int dof() const { return kNodeDofs * slaveEnd_ + 2; }
+  // No moment law acts: no friction, no hinge or a spent one.
+  bool freeJoint() const {
+    return friction_ <= 0 && (!hinge_ || hinge_->failed(committed_.slip));
+  }
+  // The local problem with the hinge law (stick or slip).
+  Status evaluateHinge(const ElementKinematics& kin, const StepRule& rule, bool wantTangent,
+                       ElemVec& residual, ElemMat& tangent);
+  // The wrapped element's axial force gradient (through an inner wrapper's).
+  ElemVec innerAxialGradient() const;
+  void findMember();
   // A link (this wrapper around another, joints at both ends, neither with
   // friction): both relative rotations by one Newton iteration on the
   // innermost element, two evaluations of it where the nested iterations
@@ -145,12 +183,19 @@ class JointedElement final : public Element, public Checkpoint, public MaterialC
   Relative trial_, committed_;
   double slaveRotation_ = 0;
   double friction_ = 0, frictionEps_ = 1;
+  std::optional<EndHinge> hinge_;
+  // The innermost element's axial force and laws (null: none that follow N).
+  const RcMember* member_ = nullptr;
+  ElemVec axialGradient_ = ElemVec::Zero();
   // Within a step: the outer d of the last evaluation and dpsi_r/dd there
   // (-K_k./K_kk, the condensation's), so that the local iteration starts from
   // psi_r's first-order change with d; dropped at a commit or a revert.
   ElemVec guessD_ = ElemVec::Zero(), guessSlope_ = ElemVec::Zero();
   bool guessValid_ = false;
 };
+
+// The moment-axial capacity of a member's laws (through its joint wrappers), or null.
+std::shared_ptr<const MomentCapacity> memberCapacity(const Element& member);
 
 // The element as a joint wrapper, or null. A type check (the class is final)
 // instead of a dynamic_cast through its three bases: the loops over every

@@ -152,9 +152,6 @@ int installJoints(Model& model) {
   return changed;
 }
 
-namespace {
-
-// The element chain `el` without the joint at `slave`.
 std::unique_ptr<Element> withoutJoint(std::unique_ptr<Element> el, int slave) {
   auto* je = asJointed(el.get());
   if (!je) return el;
@@ -162,6 +159,8 @@ std::unique_ptr<Element> withoutJoint(std::unique_ptr<Element> el, int slave) {
   je->replaceInner(withoutJoint(je->takeInner(), slave));
   return el;
 }
+
+namespace {
 
 // The elements at each node (a condensed joint's element counts at its master).
 std::vector<int> elementsAtNodes(const Model& model) {

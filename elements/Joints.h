@@ -39,6 +39,10 @@ const Element& innermost(const Element& e);
 // wrapper's relative rotation added at its end (JointedElement::innerKinematics).
 ElementKinematics innermostKinematics(const Element& e, const State& state);
 
+// The element chain `el` without its joint wrapper at `slave` (the slave
+// becomes the node of that end).
+std::unique_ptr<Element> withoutJoint(std::unique_ptr<Element> el, int slave);
+
 // The jointed elements of the model, wrappers inside wrappers included
 // (borrowed pointers, valid until the element list changes).
 std::vector<JointedElement*> jointedElements(Model& model);

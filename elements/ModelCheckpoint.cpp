@@ -7,6 +7,7 @@
 #include "core/Checkpoint.h"
 #include "elements/InelasticFrame.h"
 #include "elements/JointedElement.h"
+#include "materials/SectionLaws.h"
 #include "elements/LinearFrame.h"
 #include "elements/ReissnerFrame.h"
 
@@ -118,13 +119,31 @@ void writeModel(std::ostream& out, const Model& model) {
     put(out, m.kinematics);
     put(out, m.mass);
     putBool(out, m.hardening.has_value());
-    if (m.hardening)
+    if (m.hardening) {
       for (double x : {m.hardening->Mc, m.hardening->My, m.hardening->Kh1, m.hardening->Kh2}) put(out, x);
+      putBool(out, m.hardening->negative.has_value());
+      if (const auto& n = m.hardening->negative)
+        for (double x : {n->Mc, n->My, n->Kh1, n->Kh2}) put(out, x);
+    }
     putBool(out, m.softening.has_value());
     if (m.softening) {
       for (double x : {m.softening->Mu, m.softening->Ks}) put(out, x);
       putOptional(out, m.softening->thetaR);
       put(out, m.softening->Mr);
+      putBool(out, m.softening->negative.has_value());
+      if (const auto& n = m.softening->negative)
+        for (double x : {n->first, n->second}) put(out, x);
+    }
+    put(out, m.hingeSite);
+    putCount(out, m.interaction.size());
+    for (const auto& [n, mu] : m.interaction)
+      for (double x : {n, mu}) put(out, x);
+    putBool(out, m.section.has_value());
+    if (const auto& sec = m.section) {
+      for (double x : {sec->b, sec->h, sec->fc, sec->fy, sec->Es, sec->fu, sec->eu}) put(out, x);
+      putCount(out, sec->bars.size());
+      for (const RebarLayer& r : sec->bars)
+        for (double x : {r.depth, r.area}) put(out, x);
     }
   }
   putTag(out, "ELEM");
@@ -219,6 +238,11 @@ Model readModel(std::istream& in, int minTopologyVersion) {
     if (getBool(in)) {
       HardeningData h;
       for (double* x : {&h.Mc, &h.My, &h.Kh1, &h.Kh2}) *x = get<double>(in);
+      if (getBool(in)) {
+        HardeningValues n;
+        for (double* x : {&n.Mc, &n.My, &n.Kh1, &n.Kh2}) *x = get<double>(in);
+        h.negative = n;
+      }
       m.hardening = h;
     }
     if (getBool(in)) {
@@ -226,7 +250,34 @@ Model readModel(std::istream& in, int minTopologyVersion) {
       for (double* x : {&s.Mu, &s.Ks}) *x = get<double>(in);
       s.thetaR = getOptional(in);
       s.Mr = get<double>(in);
+      if (getBool(in)) {
+        const double mu = get<double>(in), ks = get<double>(in);
+        s.negative = std::make_pair(mu, ks);
+      }
       m.softening = s;
+    }
+    m.hingeSite = get<HingeSite>(in);
+    const std::size_t pairs = getCount(in);
+    for (std::size_t i = 0; i < pairs; ++i) {
+      const double n = get<double>(in), mu = get<double>(in);
+      m.interaction.emplace_back(n, mu);
+    }
+    if (getBool(in)) {
+      RcSectionData sec;
+      for (double* x : {&sec.b, &sec.h, &sec.fc, &sec.fy, &sec.Es, &sec.fu, &sec.eu}) *x = get<double>(in);
+      const std::size_t layers = getCount(in);
+      for (std::size_t i = 0; i < layers; ++i) {
+        RebarLayer r;
+        r.depth = get<double>(in);
+        r.area = get<double>(in);
+        sec.bars.push_back(r);
+      }
+      m.section = sec;
+    }
+    try {
+      deriveSectionLaws(m);
+    } catch (const std::invalid_argument& e) {
+      throw CheckpointError(std::string("material ") + std::to_string(m.number) + ": " + e.what());
     }
     model.materials()[key] = std::move(m);
   }

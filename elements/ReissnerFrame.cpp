@@ -1,8 +1,11 @@
 #include "elements/ReissnerFrame.h"
 
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
+
+#include "materials/RcSection.h"
 
 namespace c2d {
 
@@ -100,6 +103,7 @@ ReissnerFrame::ReissnerFrame(const MaterialSet& mat, const std::array<int, 2>& n
       rhoA_(mat.rhoA()),
       law_(mat) {
   assert(length_ > 0 && "element of zero length");
+  if (mat.rc) axial_ = mat.rc->axialCapacity();
   // Rotation is additive in 2D: the kinetic energy is quadratic in the nodal
   // velocities, so the mass matrix is constant (linear shape functions).
   const double rhoI = mat.rhoI();
@@ -129,13 +133,14 @@ double ReissnerFrame::energy(const ElemVec& d) const {
 // Internal force grad W(d) and its (symmetric) derivative for the bending
 // moment m and its tangent kt = dm/dK at d; returns E(d).
 Vec3 ReissnerFrame::staticForce(const ElemVec& d, double m, double kt, bool wantTangent, ElemVec& f,
-                                ElemMat& k) const {
+                                ElemMat& k, const Coupling* cp) const {
   const double l = length_;
   const Vec2 g = (x2_ + d.segment<2>(3) - x1_ - d.segment<2>(0)) / l;
   const Mat2 lam = rot(beta0_ + 0.5 * (d(2) + d(5)));
   const Vec2 h = lam.transpose() * g;  // Lambda^T phi'
   const Vec3 e(h.x() - 1, h.y(), (d(5) - d(2)) / l);
-  const Vec2 n(ea_ * (e(0) - e0_(0)), ga_ * (e(1) - e0_(1)));
+  Vec2 n(ea_ * (e(0) - e0_(0)), ga_ * (e(1) - e0_(1)));
+  if (cp && cp->axial) n.x() = cp->n;
 
   // dE/dd: dh/dphi' = Lambda^T, dh/dpsi = -W h, dpsi/dtheta_a = 1/2.
   const Mat2 p = lam.transpose() / l;
@@ -143,7 +148,9 @@ Vec3 ReissnerFrame::staticForce(const ElemVec& d, double m, double kt, bool want
   strainOperatorForce(l, p, c, n, m, f);
   if (!wantTangent) return e;
 
-  materialTangent(l, 1.0, p, {c, c}, 1.0, p, c, ea_, ga_, kt, k);
+  materialTangent(l, 1.0, p, {c, c}, 1.0, p, c, cp && cp->axial ? cp->ea : ea_, ga_, kt, k);
+  if (cp && cp->moment)
+    for (int a = 0; a < 2; ++a) k.row(thDof(a)) += nodeSign(a) * cp->dm.transpose();
   // Geometric part n . d(b_j)/d(d_k).
   const Vec2 q = lam * kW.transpose() * n;  // q_i = n . (W Lambda^T e_i)
   const double nh = n.dot(h);
@@ -180,7 +187,7 @@ Vec3 ReissnerFrame::staticForce(const ElemVec& d, double m, double kt, bool want
 // m: the algorithmic bending moment, kt: dm/dK_{n+1} / (1/2 + alpha).
 Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double alpha, double m,
                                   double kt, bool wantTangent, ElemVec& f, ElemMat& k,
-                                  std::array<double, 2>& halfTan) const {
+                                  std::array<double, 2>& halfTan, const Coupling* cp) const {
   const double l = length_;
   const Vec2 g1 = (x2_ + d.segment<2>(3) - x1_ - d.segment<2>(0)) / l;
   const Vec2 g0 = (x2_ + dn.segment<2>(3) - x1_ - dn.segment<2>(0)) / l;
@@ -203,7 +210,8 @@ Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double al
   const Vec3 e1(h1.x() - 1, h1.y(), (d(5) - d(2)) / l);
   const Vec3 e0(h0.x() - 1, h0.y(), (dn(5) - dn(2)) / l);
   const Vec3 eAlg = (0.5 + alpha) * e1 + (0.5 - alpha) * e0 - e0_;
-  const Vec2 n(ea_ * eAlg(0), ga_ * eAlg(1));
+  Vec2 n(ea_ * eAlg(0), ga_ * eAlg(1));
+  if (cp && cp->axial) n.x() = cp->n;
 
   const Vec2 lamN = lamM * n;  // Lambda_mid n
   const Vec2 wAM = kW * aM;
@@ -227,7 +235,10 @@ Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double al
   const Mat2 p = (cx / l) * lamM.transpose();
   const Mat2 p1 = (lamM * rx).transpose() / l;
   const Vec2 c1 = -0.5 * kW * h1;
-  materialTangent(l, 0.5 + alpha, p, {-h[0] * wAM, -h[1] * wAM}, g, p1, c1, ea_, ga_, kt, k);
+  materialTangent(l, 0.5 + alpha, p, {-h[0] * wAM, -h[1] * wAM}, g, p1, c1,
+                  cp && cp->axial ? cp->ea : ea_, ga_, kt, k);
+  if (cp && cp->moment)
+    for (int a = 0; a < 2; ++a) k.row(thDof(a)) += (nodeSign(a) * g) * cp->dm.transpose();
 
   // Geometric part: x, y, psi_mid and g_mid move with d: dx/dtheta_a = dpsi_mid/dtheta_a = 1/4,
   // dy/dtheta_a = sign_a/4, dg_mid/du_a = sign_a/(2l); d(Lambda_mid^T)/dpsi = -W Lambda_mid^T.
@@ -253,22 +264,49 @@ Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double al
   return e1;
 }
 
+ElemVec ReissnerFrame::axialStrainGradient(const ElemVec& d) const {
+  // Sigma = (Lambda^T phi')_1 - 1: dSigma/du_a = -+(cos psi, sin psi)/l, dSigma/dtheta_a = Gamma/2.
+  const double psi = beta0_ + 0.5 * (d(2) + d(5));
+  const Vec2 t(std::cos(psi) / length_, std::sin(psi) / length_);
+  const double half = 0.5 * strains(d)(1);
+  ElemVec g;
+  g << -t.x(), -t.y(), half, t.x(), t.y(), half;
+  return g;
+}
+
 Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rule, bool wantTangent,
                                ElemVec& residual, ElemMat& tangent) {
   if (!rule.rotationsInRange(kin.d - kin.dn)) return Status::failure(StepRule::kRotationRangeMessage);
-  // Bending first: the curvature K = (theta2 - theta1)/l is linear in d.
   const HingedBendingState& from = committed_.section;
   const double openSign =
       !from.hingeActive && trial_.section.hingeActive ? trial_.section.hingeSign : 0.0;
+  // Laws that follow the axial force: N_{n+1} first (the material one).
+  const bool coupled = axial_.has_value() || law_.capacity() != nullptr;
+  double N1 = 0;
+  if (coupled) {
+    const double sigma = strains(kin.d)(0) - e0_(0);
+    N1 = ea_ * sigma;
+    axialTangent_ = ea_;
+    if (axial_) {
+      const AxialResponse a = axial_->returnMap(committed_.axial, sigma);
+      N1 = a.N;
+      axialTangent_ = a.tangent;
+      trial_.axial = a.state;
+    }
+    axialGradient_ = axialTangent_ * axialStrainGradient(kin.d);
+  }
+  // Bending: the curvature K = (theta2 - theta1)/l is linear in d.
+  const std::array<double, 2> ends = trial_.section.endHinge;  // opened in this trial
   HingedBendingResponse bend;
   if (Status st = law_.respond((kin.d(5) - kin.d(2)) / length_ - e0_(2), length_, from, openSign,
-                               bend);
+                               bend, N1);
       !st)
     return st;
   const double m1 = bend.state.M;
   Vec3 strain;
   std::array<double, 2> halfTan{};
   const std::array<double, 2>* halfTanAt = nullptr;
+  Coupling cp;
   if (rule.scheme == Scheme::MidPoint) {
     // Resultants at the alpha-weighted point: for bending the weighted moments
     // of the committed and the trial state; an elastic section's moment at t_n
@@ -283,11 +321,31 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
       const auto mm =
           law_.midPointMoment(from, kappaN, bend.state, (kin.d(5) - kin.d(2)) / length_ - e0_(2),
                               bend.tangent, length_, w);
+      if (coupled) {
+        cp.moment = bend.dN != 0;
+        cp.dm = (mm.dM1 * bend.dN) * axialGradient_;
+        if (axial_) {
+          const AxialCapacity::MidPoint mp = axial_->midPoint(
+              committed_.forces.N, N1, strains(kin.dn)(0) - e0_(0), strains(kin.d)(0) - e0_(0),
+              axialTangent_, trial_.axial.ep - committed_.axial.ep, w, HingedBending::kMidPointRatio);
+          cp.axial = true;
+          cp.n = mp.n;
+          cp.ea = mp.tangent / w;
+        }
+      }
       strain = midPointForce(kin.d, kin.dn, rule.alpha, mm.m, mm.tangent / w, wantTangent, residual,
-                             tangent, halfTan);
+                             tangent, halfTan, coupled ? &cp : nullptr);
     }
   } else {
-    strain = staticForce(kin.d, m1, bend.tangent, wantTangent, residual, tangent);
+    if (coupled) {
+      cp.axial = axial_.has_value();
+      cp.n = N1;
+      cp.ea = axialTangent_;
+      cp.moment = bend.dN != 0;
+      cp.dm = bend.dN * axialGradient_;
+    }
+    strain = staticForce(kin.d, m1, bend.tangent, wantTangent, residual, tangent,
+                         coupled ? &cp : nullptr);
   }
   if (rule.dynamic())
     rule.addInertia(mass_, kin.d - kin.dn, kin.vn, kin.an, residual, wantTangent ? &tangent : nullptr,
@@ -297,17 +355,41 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
 
   const Vec3 e = strain - e0_;
   trial_.section = bend.state;
-  trial_.forces = {ea_ * e(0), ga_ * e(1), m1};
+  for (int a = 0; a < 2; ++a)
+    if (from.endHinge[a] == 0) trial_.section.endHinge[a] = ends[a];
+  trial_.forces = {axial_ ? N1 : ea_ * e(0), ga_ * e(1), m1};
+  if (law_.site() == HingeSite::Ends) {
+    // End moments M -+ S/2 from the element's equilibrium (material resultants at n+1).
+    const double S = length_ * (trial_.forces.N * strain(1) - trial_.forces.V * (1 + strain(0)));
+    trial_.section.endMoment = {m1 - 0.5 * S, m1 + 0.5 * S};
+  }
+  const double axialEnergy = axial_ ? 2 * axial_->energyDensity(N1) : ea_ * e(0) * e(0);
   trial_.energy =
-      0.5 * length_ * (ea_ * e(0) * e(0) + ga_ * e(1) * e(1)) + length_ * law_.energyDensity(bend.state);
+      0.5 * length_ * (axialEnergy + ga_ * e(1) * e(1)) + length_ * law_.energyDensity(bend.state);
   return Status::success();
 }
 
-double ReissnerFrame::hingeDemand() const { return law_.demand(trial_.section); }
+double ReissnerFrame::fractureDemand() const {
+  if (!axial_ || trial_.fracture != 0) return 0;
+  return axial_->fractureDemand(axial_->strain(trial_.forces.N, trial_.axial));
+}
 
-void ReissnerFrame::activateHinge() { law_.open(trial_.section); }
+double ReissnerFrame::hingeDemand() const {
+  return std::max(law_.demand(trial_.section), fractureDemand());
+}
 
-HingeInfo ReissnerFrame::hinge() const { return law_.info(trial_.section); }
+void ReissnerFrame::activateHinge() {
+  if (fractureDemand() > law_.demand(trial_.section))
+    trial_.fracture = 1;
+  else
+    law_.open(trial_.section);
+}
+
+HingeInfo ReissnerFrame::hinge() const {
+  HingeInfo h = law_.info(trial_.section);
+  h.fracture = trial_.fracture == 1;
+  return h;
+}
 
 void ReissnerFrame::setSection(const HingedBendingState& s) { trial_.section = committed_.section = s; }
 
@@ -332,9 +414,13 @@ void ReissnerFrame::writeState(std::ostream& out) const {
   // The material set may have hinge laws that this element dropped (HINGE2JOINT).
   putBool(out, law_.isElastic());
   for (const Report* r : {&trial_, &committed_}) {
-    for (double x : {r->energy, r->forces.N, r->forces.V, r->forces.M}) put(out, x);
+    for (double x : {r->energy, r->forces.N, r->forces.V, r->forces.M, r->axial.ep, r->axial.xi})
+      put(out, x);
+    put(out, r->fracture);
     putSection(out, r->section);
   }
+  put(out, axialTangent_);
+  putFixed(out, axialGradient_);
 }
 
 void ReissnerFrame::readState(std::istream& in) {
@@ -346,11 +432,19 @@ void ReissnerFrame::readState(std::istream& in) {
   for (double* x : {&length_, &beta0_, &ea_, &ga_, &ei_, &rhoA_}) *x = get<double>(in);
   getFixed(in, e0_);
   getFixed(in, mass_);
-  if (getBool(in)) law_ = HingedBending(BilinearHardening::elastic(ei_), std::nullopt);
+  if (getBool(in)) {
+    law_ = HingedBending(BilinearHardening::elastic(ei_), std::nullopt);
+    axial_.reset();
+  }
   for (Report* r : {&trial_, &committed_}) {
-    for (double* x : {&r->energy, &r->forces.N, &r->forces.V, &r->forces.M}) *x = get<double>(in);
+    for (double* x : {&r->energy, &r->forces.N, &r->forces.V, &r->forces.M, &r->axial.ep,
+                      &r->axial.xi})
+      *x = get<double>(in);
+    r->fracture = get<int>(in);
     r->section = getSection(in);
   }
+  axialTangent_ = get<double>(in);
+  getFixed(in, axialGradient_);
 }
 
 // ------------------------------------------------------------ material change

@@ -37,8 +37,18 @@
 // HingedBending::midPointMoment, whose work never exceeds the change of the
 // stored energy. The hinge opens only when the solver
 // asks (core/Hinge.h), as in InelasticFrame.
+//
+// RC sections (MaterialSet::rc) and laws that follow the axial force: the
+// axial resultant comes from materials/AxialCapacity (bars in tension, squash
+// load; under the mid-point scheme the inelastic resultant of HingedBending::
+// midPointMoment's construction), the bending laws take the material axial
+// force N_{n+1}, and the tangent gets the moment's dependence on it. Hinges
+// at the element ends (HingeSite::Ends) take the end moments M -+ S/2 of the
+// element's equilibrium, S = l (N Gamma - V (1 + Sigma)) the moment of its
+// end forces.
 #include <array>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "core/Checkpoint.h"
@@ -46,11 +56,16 @@
 #include "core/Hinge.h"
 #include "core/MaterialChange.h"
 #include "core/MaterialSet.h"
+#include "materials/AxialCapacity.h"
 #include "materials/HingedBending.h"
 
 namespace c2d {
 
-class ReissnerFrame final : public Element, public HingeCarrier, public Checkpoint, public MaterialChange {
+class ReissnerFrame final : public Element,
+                            public HingeCarrier,
+                            public Checkpoint,
+                            public MaterialChange,
+                            public RcMember {
  public:
   ReissnerFrame(const MaterialSet& mat, const std::array<int, 2>& nodes, const Vec2& x1,
                 const Vec2& x2);
@@ -78,6 +93,14 @@ class ReissnerFrame final : public Element, public HingeCarrier, public Checkpoi
   double hingeDemand() const override;
   void activateHinge() override;
   HingeInfo hinge() const override;
+  // End moments carry the shear's round-off (M -+ V l/2): 1e-10.
+  double demandBand() const override { return law_.site() == HingeSite::Ends ? 1e-10 : 1e-12; }
+
+  double axialForce() const override { return trial_.forces.N; }
+  bool followsAxialForce() const override { return axial_ || law_.capacity(); }
+  ElemVec axialForceGradient() const override { return axialGradient_; }
+  bool fractureDue() const override { return committed_.fracture == 1; }
+  void fractureDone() override { committed_.fracture = trial_.fracture = 2; }
 
   double length() const { return length_; }
   const HingedBending& bendingLaw() const { return law_; }
@@ -106,16 +129,31 @@ class ReissnerFrame final : public Element, public HingeCarrier, public Checkpoi
     double energy = 0;
     SectionForces forces;
     HingedBendingState section;
+    AxialState axial;  // RC sections: plastic axial strain
+    int fracture = 0;  // bars: 0 whole, 1 fractured (separation due), 2 separated
   };
 
+  // For laws that follow N: the axial resultant the force functions use
+  // instead of EA (Sigma - Sigma0) and its derivative with respect to
+  // Sigma_{n+1} (divided by the scheme's weight under the mid-point scheme),
+  // and the moment's derivative with respect to d at fixed curvature.
+  struct Coupling {
+    bool axial = false;
+    double n = 0, ea = 0;
+    bool moment = false;
+    ElemVec dm = ElemVec::Zero();
+  };
   // Internal force and tangent; both return the strains E(d).
   Vec3 staticForce(const ElemVec& d, double m, double kt, bool wantTangent, ElemVec& f,
-                   ElemMat& k) const;
+                   ElemMat& k, const Coupling* cp = nullptr) const;
   // halfTan: tan of the nodal rotation increments' halves (the Cayley rate of
   // the inertia), found from the sines and cosines the force needs.
   Vec3 midPointForce(const ElemVec& d, const ElemVec& dn, double alpha, double m, double kt,
-                     bool wantTangent, ElemVec& f, ElemMat& k,
-                     std::array<double, 2>& halfTan) const;
+                     bool wantTangent, ElemVec& f, ElemMat& k, std::array<double, 2>& halfTan,
+                     const Coupling* cp = nullptr) const;
+  // dSigma/dd at d.
+  ElemVec axialStrainGradient(const ElemVec& d) const;
+  double fractureDemand() const;
 
   std::array<int, 2> nodes_;
   int materialNumber_ = 0;
@@ -125,6 +163,9 @@ class ReissnerFrame final : public Element, public HingeCarrier, public Checkpoi
   double ea_ = 0, ga_ = 0, ei_ = 0, rhoA_ = 0;
   Vec3 e0_ = Vec3::Zero();
   HingedBending law_;
+  std::optional<AxialCapacity> axial_;  // RC sections
+  double axialTangent_ = 0;             // dN/dSigma of the last evaluation
+  ElemVec axialGradient_ = ElemVec::Zero();  // dN/dd of the last evaluation
   ElemMat mass_;  // global frame
   Report trial_, committed_;
   // The mean rotation at d_n (fixed over a step) and the angle it belongs to:

@@ -3,8 +3,10 @@
 #include <string>
 
 #include "macro/MeshCommands.h"
+#include "macro/Record.h"
 #include "macro/Sweep.h"
 #include "macro/studies/Ensemble.h"
+#include "macro/Units.h"
 
 namespace c2d {
 
@@ -42,14 +44,19 @@ void printSpec(std::ostream& os, const CommandSpec& s) {
   os << "\n";
   printWrapped(os, "      ", 6, s.doc);
   for (const FieldSpec& f : s.fields) {
-    if (f.doc.empty()) continue;
+    const auto unit = units::ofField(s.section, s.key(), f.name);
+    if (f.doc.empty() && !(unit && !unit->empty())) continue;
     std::string doc = f.doc;
+    // The unit in the decks' system (--help UNITs), unless the doc gives it.
+    if (unit && !unit->empty() && doc.find('[') == std::string::npos) doc += " [" + *unit + "]";
     if (!f.defaultValue.empty()) doc += " (default " + f.defaultValue + ")";
     printWrapped(os, "        " + f.name + ":", 10, doc);
   }
   if (s.data == DataForm::Records) printWrapped(os, "      data records:", 8, s.dataSyntax);
   if (s.data == DataForm::Single)
     printWrapped(os, "      data record:", 8, s.dataSyntax + " (the next record)");
+  if (const std::string u = units::ofDataRecords(s.section, s.key()); !u.empty())
+    printWrapped(os, "      units:", 8, u);
 }
 
 }  // namespace
@@ -66,9 +73,14 @@ void printAllHelp(std::ostream& os, const SolutionCommands& solution) {
     for (const CommandSpec& s : r->specs()) printSpec(os, s);
     os << "\n";
   }
+  printWrapped(os, "", 0, units::systemHelp() + " (collapse2d --help UNITs)");
 }
 
 bool printCommandHelp(std::ostream& os, const SolutionCommands& solution, const std::string& word) {
+  if (keywordMatches(word, "UNITs")) {
+    printWrapped(os, "", 0, units::systemHelp());
+    return true;
+  }
   CommandRegistry mesh("Mesh commands"), sub("Material sets: element types and sub-records");
   registerMeshCommands(mesh);
   registerMaterialSubRecords(sub);

@@ -1,5 +1,8 @@
 #include "macro/MeshCommands.h"
 
+#include "macro/SectionRecords.h"
+#include "macro/SubRecordFields.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -104,10 +107,7 @@ namespace {
 // ---------------------------------------------------------------------------
 // small helpers
 
-bool looksNumeric(const std::string& t) {
-  return !t.empty() && (std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '.' ||
-                        t[0] == '-' || t[0] == '+' || t[0] == '(');
-}
+using subrecord::looksNumeric;
 
 std::string restOfLine(const Record& r, std::size_t field) {
   if (field >= r.size() || !r.line) return {};
@@ -256,18 +256,7 @@ void echoMaterial(std::ostream& os, const MaterialSet& m) {
   line("Density", m.density);
   os << "      Mass               " << (m.mass == MassType::Lumped ? "lumped" : "consistent")
      << "\n";
-  if (m.hardening) {
-    line("Hardening Mc", m.hardening->Mc);
-    line("Hardening My", m.hardening->My);
-    line("Hardening Kh1", m.hardening->Kh1);
-    line("Hardening Kh2", m.hardening->Kh2);
-  }
-  if (m.softening) {
-    line("Softening Mu", m.softening->Mu);
-    line("Softening Ks", m.softening->Ks);
-    if (m.softening->thetaR) line("Rupture thetaR", *m.softening->thetaR);
-    if (m.softening->Mr > 0) line("Joint friction Mr", m.softening->Mr);
-  }
+  echoLaws(os, m);
 }
 
 void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
@@ -294,7 +283,8 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
   ctx.maxFields(type, 1, "FRAMe");
   mat.elementType = "FRAMe";
 
-  bool elastic = false, section = false;
+  const Record *elasticRec = nullptr, *sectionRec = nullptr, *resultantRec = nullptr;
+  LawRecords laws;
   const Record* densityRec = nullptr;
   const Record* kinematicsRec = nullptr;
   for (std::size_t k = 1; k < cmd.data.size(); ++k) {
@@ -308,19 +298,9 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
     }
     const std::string key = s->key();
     const std::string text2 = r.text(1);
-    auto numericText = [&](const std::string& syntax) {
-      if (looksNumeric(text2))
-        failAt(r, 1, s->name + " takes two text fields, then numbers", "write " + syntax);
-    };
+    auto numericText = [&](const std::string& syntax) { subrecord::requireText(r, s->name, syntax); };
     auto values = [&](std::size_t maxCount, std::size_t required, const std::string& syntax) {
-      if (r.size() > 2 + maxCount)
-        failAt(r, 2 + maxCount, "too many values: the record is '" + syntax + "'");
-      if (r.size() < 2 + required)
-        failAt(r, r.size(), s->name + " needs " + std::to_string(required) + " values",
-               "write " + syntax);
-      std::vector<double> v(maxCount, 0.0);
-      for (std::size_t i = 0; i < maxCount; ++i) v[i] = ctx.number(r, 2 + i);
-      return v;
+      return subrecord::values(ctx, r, s->name, maxCount, required, syntax);
     };
     auto option = [&](const std::string& syntax, std::initializer_list<const char*> allowed) {
       ctx.maxFields(r, 2, syntax);
@@ -339,7 +319,7 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
       if (v[1] <= -1 || v[1] >= 0.5) failAt(r, 3, "Poisson ratio must lie in (-1, 0.5)");
       mat.E = v[0];
       mat.nu = v[1];
-      elastic = true;
+      elasticRec = &r;
     } else if (key == "cros") {
       // FEAPpv's frame record: A Ixx Iyy Ixy J kappa_1 kappa_2. A plane frame bends
       // about one axis: it uses A, I = Ixx and the shear factor kappa_1 (0: 5/6).
@@ -352,7 +332,7 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
       mat.A = v[0];
       mat.I = v[1];
       mat.kappa = v[5] != 0 ? v[5] : 5.0 / 6.0;
-      section = true;
+      sectionRec = &r;
     } else if (key == "shea") {
       if (text2.empty()) {
         mat.shear = true;
@@ -389,63 +369,32 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
       mat.resEA = v[0];
       mat.resGA = v[1];
       mat.resEI = v[2];
-    } else if (key == "hard") {
-      const std::string syntax = "HARDening BILInear Mc My Kh1 Kh2";
-      numericText(syntax);
-      if (!keywordMatches(text2, "BILInear")) failAt(r, 1, "expected BILInear", "write " + syntax);
-      const auto v = values(4, 4, syntax);
-      if (v[0] <= 0) failAt(r, 2, "Mc must be positive");
-      if (v[1] < v[0]) failAt(r, 3, "My must not be below Mc");
-      if (v[2] <= 0) failAt(r, 4, "Kh1 must be positive");
-      if (v[3] < 0) failAt(r, 5, "Kh2 must not be negative");
-      mat.hardening = HardeningData{v[0], v[1], v[2], v[3]};
-    } else if (key == "soft") {
-      const std::string syntax = "SOFTening LINEar Mu Ks [thetaR [Mr]]";
-      numericText(syntax);
-      if (!keywordMatches(text2, "LINEar")) failAt(r, 1, "expected LINEar", "write " + syntax);
-      const auto v = values(4, 2, syntax);
-      if (v[0] <= 0) failAt(r, 2, "Mu must be positive");
-      if (v[1] >= 0) failAt(r, 3, "Ks must be negative (softening)");
-      mat.softening = SofteningData{v[0], v[1], std::nullopt};
-      if (r.size() > 4 && !r.text(4).empty()) {
-        if (!(v[2] > v[0] / -v[1]))
-          failAt(r, 4, "the rupture rotation thetaR must exceed the failure jump Mu/|Ks| = " +
-                           std::to_string(v[0] / -v[1]));
-        mat.softening->thetaR = v[2];
-      }
-      if (r.size() > 5 && !r.text(5).empty()) {
-        if (!(v[3] >= 0 && v[3] < v[0]))
-          failAt(r, 5, "the joint's friction moment Mr must lie in [0, Mu)");
-        mat.softening->Mr = v[3];
-      }
+      resultantRec = &r;
+    } else {
+      bindLawRecord(ctx, r, *s, mat, laws);
     }
   }
 
+  finishLawRecords(h, laws, mat, elasticRec, sectionRec, resultantRec);
   if (!mat.resEI) {
-    if (!elastic)
+    if (!elasticRec)
       failAt(h, 0, "material " + std::to_string(m) + " has no ELAStic record",
              "give ELAStic ISOTropic E nu and CROSs SECTion A I, or RESUltant STIFfness EA GA EI");
-    if (!section)
+    if (!sectionRec)
       failAt(h, 0, "material " + std::to_string(m) + " has no CROSs record",
              "give CROSs SECTion A I");
   } else if (mat.shear && *mat.resGA <= 0) {
     failAt(h, 0, "material " + std::to_string(m) + " has GA = 0 with shear deformation on",
            "give GA, or SHEAr OFF for Euler-Bernoulli");
   }
-  if (mat.hardening && mat.softening && mat.softening->Mu < mat.hardening->My) {
-    const Record* soft = nullptr;
-    for (const Record& r : cmd.data)
-      if (r.is("SOFTening")) soft = &r;
-    std::ostringstream msg;
-    msg << "Mu = " << mat.softening->Mu << " of SOFTening is below My = " << mat.hardening->My
-        << " of HARDening";
-    failAt(*soft, 2, msg.str(), "the hinge forms at Mu, after the hardening up to My: Mu >= My");
-  }
   if (densityRec && mat.density > 0 && mat.A <= 0)
     failAt(*densityRec, 2, "DENSity needs the section area: give CROSs SECTion A I too");
 
   if (auto* os = ctx.out()) echoMaterial(*os, mat);
   if (const MaterialSet* before = ctx.model.material(m)) {
+    if (before->section || mat.section)
+      failAt(h, 0, "material " + std::to_string(m) + " has or gets a SECTion: it cannot be given again",
+             "an RC member's history belongs to its section");
     auto [it, added] = ctx.changedMaterials.try_emplace(m);
     if (added) it->second.before = before->kinematics;  // as the existing elements have it
     it->second.head = h;
@@ -997,15 +946,6 @@ std::vector<FieldSpec> nodeValueFields(const std::string& what) {
           expr(what + "3", "rotation")};
 }
 
-CommandSpec subSpec(std::string name, std::string doc, std::vector<FieldSpec> fields) {
-  CommandSpec s;
-  s.name = std::move(name);
-  s.doc = std::move(doc);
-  s.fields = std::move(fields);
-  s.section = CommandSection::SubRecord;
-  return s;
-}
-
 }  // namespace
 
 std::vector<MeshCommandEntry> meshCommandTable() {
@@ -1223,26 +1163,7 @@ void registerMaterialSubRecords(CommandRegistry& r) {
       "RESUltant STIFfness EA GA EI: stress-resultant stiffnesses instead of ELAStic + "
       "CROSs (GA includes the shear factor).",
       {text("STIFfness", ""), expr("EA", "axial"), expr("GA", "shear"), expr("EI", "bending")}));
-  r.add(subSpec("HARDening",
-                "HARDening BILInear Mc My Kh1 Kh2: elastoplastic bending, elastic up to Mc, "
-                "modulus Kh1 to My, Kh2 beyond.",
-                {text("BILInear", ""), expr("Mc", "moment"), expr("My", "moment"),
-                 expr("Kh1", "modulus"), expr("Kh2", "modulus")}));
-  r.add(subSpec(
-      "SOFTening",
-      "SOFTening LINEar Mu Ks [thetaR [Mr]]: softening hinge activated when |M| reaches Mu; "
-      "hinge moment Mu + Ks*jump down to zero (Ks < 0). With FINIte kinematics a fully "
-      "softened hinge becomes a revolute joint during the run; a joint whose relative "
-      "rotation exceeds thetaR (rad) ruptures and the pieces separate (a joint whose node "
-      "presses on the ground ruptures when the node leaves it). Mr: the joint's friction "
-      "(the broken section's residual moment), a moment Mr opposing its relative rotation, "
-      "regularised over the step's relative rotation w: Mr w/sqrt(w^2 + eps^2), eps = Mr "
-      "l/EI; dissipated (energy account). Only where the joint is condensed into the "
-      "element: a JOINt whose slave node has more than one element (or nodal data) with "
-      "Mr > 0 is an error at its record.",
-      {text("LINEar", ""), expr("Mu", "ultimate moment"), expr("Ks", "softening modulus"),
-       expr("thetaR", "rupture rotation of the joint (optional)"),
-       expr("Mr", "friction moment of the joint (optional, 0)")}));
+  registerLawRecords(r);
 }
 
 // ---------------------------------------------------------------------------
@@ -1388,6 +1309,15 @@ FieldSpec expr(std::string name, std::string doc, std::string dflt) {
 }
 FieldSpec text(std::string name, std::string doc, std::string dflt) {
   return {std::move(name), FieldKind::Text, std::move(dflt), std::move(doc)};
+}
+
+CommandSpec subSpec(std::string name, std::string doc, std::vector<FieldSpec> fields) {
+  CommandSpec s;
+  s.name = std::move(name);
+  s.doc = std::move(doc);
+  s.fields = std::move(fields);
+  s.section = CommandSection::SubRecord;
+  return s;
 }
 
 CommandSpec meshSpec(std::string name, std::string doc, std::vector<FieldSpec> fields,

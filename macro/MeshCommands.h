@@ -28,6 +28,7 @@ FieldSpec expr(std::string name, std::string doc, std::string dflt = {});
 FieldSpec text(std::string name, std::string doc, std::string dflt = {});
 CommandSpec meshSpec(std::string name, std::string doc, std::vector<FieldSpec> fields,
                      std::string dataSyntax = {}, std::vector<FieldSpec> dataFields = {});
+CommandSpec subSpec(std::string name, std::string doc, std::vector<FieldSpec> fields);
 }  // namespace meshspec
 
 // State of one mesh input, shared by the appliers. Values are evaluated when

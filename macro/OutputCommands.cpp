@@ -99,7 +99,8 @@ class StreCommand final : public SolutionCommand {
   CommandSpec spec() const override {
     return solution("STREss",
                     "Print element section forces N, V, M (elements n1 to n2 step inc; ,ALL or "
-                    "no numbers: all); STRE,HINGe: the table of softening hinges.",
+                    "no numbers: all); STRE,HINGe: the table of softening hinges (at the element "
+                    "ends: their joints).",
                     {word("option", "ALL or HINGe"), num("n1", "first element"),
                      num("n2", "last element", "n1"), num("inc", "increment", "1")});
   }

@@ -14,6 +14,8 @@
 #include "core/Checkpoint.h"
 #include "core/MemberCrossing.h"
 #include "core/SvgDebris.h"
+#include "elements/EndHinges.h"
+#include "elements/MemberFold.h"
 #include "elements/HingeToJoint.h"
 #include "elements/Joints.h"
 #include "elements/MemberFold.h"
@@ -28,6 +30,7 @@
 #include "macro/RemovalLog.h"
 #include "macro/Report.h"
 #include "macro/StaleOutputs.h"
+#include "macro/TopologyLog.h"
 #include "solvers/ConvergenceTest.h"
 #include "solvers/FiniteResults.h"
 #include "solvers/ProportionalLoad.h"
@@ -119,30 +122,15 @@ void ProblemRun::run() {
   input_ = ModelFingerprint::of(model_);  // before any solution command changes the model
   analysis_->onCommit = [this] { onCommit(); };
   analysis_->onHingeActivated = [this](int e, const HingeInfo& h) {
-    log_ << "  hinge  element " << e + 1
+    log_ << "  " << (h.fracture ? "bars   element " : "hinge  element ") << e + 1
          << " activated at t = " << fmt("%.6e", analysis_->state().t)
-         << ", M = " << fmt("%.6e", h.moment) << "\n";
+         << (h.fracture ? ": fracture strain" : ", M = " + fmt("%.6e", h.moment)) << "\n";
   };
   analysis_->topologyEvents().onEvent = [this](const TopologyEvent& ev) {
     hingeStep_.resize(model_.numElements(), 0);
-    const double t = analysis_->state().t;
-    if (ev.kind == TopologyEvent::Kind::JointFormed) {
-      ++jointsFormed_;
-      log_ << "  joint  formed at t = " << fmt("%.6e", t) << ": element " << ev.element + 1
-           << ", fully softened hinge, at node " << ev.master + 1 << " (slave node "
-           << ev.slave + 1 << "), relative rotation " << fmt("%.6e", ev.rotation);
-      // A member's second joint (elements/HingeToJoint.h): a link from now on.
-      const JointedElement* j = asJointed(&model_.element(ev.element));
-      if (j && asJointed(&j->inner()))
-        log_ << "; its second: the member is a link pinned at both ends";
-      log_ << "\n";
-    } else {
-      ++jointsRuptured_;
-      log_ << "  joint  ruptured at t = " << fmt("%.6e", t) << ": element " << ev.element + 1
-           << " separates at node " << ev.master + 1 << " (new node " << ev.slave + 1
-           << "), relative rotation " << fmt("%.6e", ev.rotation) << " beyond thetaR = "
-           << fmt("%.6e", ev.limit) << "\n";
-    }
+    if (ev.kind == TopologyEvent::Kind::HingeOpened && hingeStep_[ev.element] == 0)
+      hingeStep_[ev.element] = analysis_->state().step;
+    logTopologyEvent(log_, model_, analysis_->state().t, ev, topology_);
   };
   analysis_->removals().onEvent = [this](const RemovalEvent& ev) {
     removed_ += static_cast<int>(ev.elements.size());
@@ -217,13 +205,13 @@ RunSummary ProblemRun::summary() const {
   s.iterations = analysis_->totalIterations();
   s.factorizations = analysis_->totalFactorizations();
   s.cuts = cuts_;
-  s.hinges = hingeCount_;
+  s.hinges = hingeCount_ + topology_.hinges;
   s.energyError = energyError_;
   s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   s.dynamic = dynamicSeen_;
   s.maxMomentRatio = maxMomentRatio_;
-  s.jointsFormed = jointsFormed_;
-  s.jointsRuptured = jointsRuptured_;
+  s.jointsFormed = topology_.jointsFormed;
+  s.jointsRuptured = topology_.jointsRuptured;
   s.removed = removed_;
   s.crossings = crossings_;
   s.folded = folded_;
@@ -887,7 +875,8 @@ std::string ProblemRun::runState() const {
                    peakGroundForce_, peakGroundTime_, peakKinetic_, restRatio_, lastMoving_,
                    deepest_.depth, deepestTime_})
     put(out, x);
-  for (int x : {stepsSinceCut_, cuts_, jointsFormed_, jointsRuptured_, removed_, deepest_.node})
+  for (int x : {stepsSinceCut_, cuts_, topology_.jointsFormed, topology_.jointsRuptured, removed_,
+                deepest_.node, topology_.hinges, topology_.fractures})
     put(out, x);
   putBool(out, energyStarted_);
   putBool(out, dynamicSeen_);
@@ -907,8 +896,8 @@ void ProblemRun::setRunState(const std::string& bytes) {
                     &maxMomentRatio_, &peakGroundForce_, &peakGroundTime_, &peakKinetic_,
                     &restRatio_, &lastMoving_, &deepest_.depth, &deepestTime_})
     *x = get<double>(in);
-  for (int* x : {&stepsSinceCut_, &cuts_, &jointsFormed_, &jointsRuptured_, &removed_,
-                 &deepest_.node})
+  for (int* x : {&stepsSinceCut_, &cuts_, &topology_.jointsFormed, &topology_.jointsRuptured,
+                 &removed_, &deepest_.node, &topology_.hinges, &topology_.fractures})
     *x = get<int>(in);
   if (deepest_.node >= model_.numNodes())
     throw CheckpointError("the deepest node is not in the model");
@@ -977,6 +966,7 @@ void ProblemRun::onCommit() {
     if (info.ultimate > 0)
       maxMomentRatio_ = std::max(maxMomentRatio_, std::abs(info.moment) / info.ultimate);
   }
+  maxMomentRatio_ = std::max(maxMomentRatio_, endHingeRatio(model_));
   if (history_) history_->record(*analysis_);
   if (model_.ground()) {
     const double f = groundForce(model_, analysis_->assembler().dofs(), s);

@@ -18,6 +18,7 @@
 #include "macro/RunOutputs.h"
 #include "macro/SolutionCommand.h"
 #include "macro/TimeHistory.h"
+#include "macro/TopologyLog.h"
 #include "elements/HingeToJoint.h"
 #include "macro/Warnings.h"
 #include "macro/studies/Ensemble.h"
@@ -212,7 +213,7 @@ class ProblemRun {
 
   std::vector<int> hingeStep_;  // step at which each element's hinge formed
   int hingeCount_ = 0;
-  int jointsFormed_ = 0, jointsRuptured_ = 0;
+  TopologyCounts topology_;
   int removed_ = 0;
   int crossings_ = 0;
   int folded_ = 0;

@@ -20,7 +20,8 @@ void printNodalTable(std::ostream& os, NodalQuantity q, const Model& model, cons
 void printStressTable(std::ostream& os, Model& model, const State& state, double loadFactor,
                       const std::vector<int>& elements);
 
-// activationStep: per element, the step its hinge formed (0 if none).
+// activationStep: per element, the step its hinge formed (0 if none). Lists the
+// midpoint hinges, then the joints of the hinges opened at element ends.
 void printHingeTable(std::ostream& os, Model& model, const State& state, double loadFactor,
                      const std::vector<int>& activationStep);
 

@@ -72,6 +72,7 @@ BendingResponse BilinearHardening::returnMap(const BendingState& committed, doub
   r.M = mTrial - sign * EI_ * dg;
   r.tangent = EI_ * kh / (EI_ + kh);
   r.plastic = true;
+  r.secondBranch = !onFirst;
   return r;
 }
 

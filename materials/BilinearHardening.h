@@ -23,6 +23,7 @@ struct BendingResponse {
   double tangent = 0;  // consistent tangent dM/dkappa
   BendingState state;  // trial history
   bool plastic = false;  // the step loaded plastically
+  bool secondBranch = false;  // plastic on the branch beyond My (modulus Kh2)
 };
 
 class BilinearHardening {

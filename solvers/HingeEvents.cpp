@@ -11,10 +11,11 @@ namespace c2d {
 
 namespace {
 
-// Demand band of a located event: the hinge opens at 1 <= demand <= 1 + kBand.
-constexpr double kBand = 1e-12;
+// Demand band of a located event: the hinge opens at 1 <= demand <= 1 + band,
+// band = the element's HingeCarrier::demandBand (1e-12 for a midpoint moment;
+// an end moment M -+ V l/2 carries the shear's round-off, about 1e-11).
 // A converged state past Mu by more than this opens an event. Elements left at
-// their ultimate moment by a located event (demand up to 1 + kBand) do not
+// their ultimate moment by a located event (demand up to 1 + band) do not
 // open a second hinge in a step that does not load them further.
 constexpr double kTrigger = 1e-9;
 
@@ -72,7 +73,11 @@ Status HingeEvents::afterConvergence(IterationInfo& info, bool lineSearch, bool&
   int e = -1;
   if (maxDemand(e) <= 1.0 + kTrigger) return Status::success();
   handled = true;
-  return locate(info, lineSearch);
+  const Status st = locate(info, lineSearch);
+  // The hinge opened at the step's end (the event was not found inside the
+  // step): the step is done, converged where it was committed.
+  if (st && info.converged) handled = false;
+  return st;
 }
 
 Status HingeEvents::solveFraction(double fraction, double tEnd, bool lineSearch,
@@ -158,7 +163,7 @@ Status HingeEvents::commitSolved() {
 
 Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   // The demand is piecewise smooth in the step fraction: regula falsi
-  // (Illinois) for max demand in [1, 1 + kBand], from above (see the header).
+  // (Illinois) for max demand in [1, 1 + band], from above (see the header).
   // It is often kinked at the root (an element reaching another branch of its
   // law there): flat on one side, steep on the other, where the chord of the
   // bracket creeps over dozens of solves. So when the last two points of one
@@ -182,7 +187,10 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   uHi_ = s.u;
   // The points each side had before its last update, and the true demands.
   double sLoOld = -1, dLoOld = 0, sHiOld = -1, dHiOld = 0, dLoTrue = dLo, dHiTrue = dHi;
-  const double target = 1.0 + 0.5 * kBand;
+  double band = 1e-12;
+  for (const auto& [e, h] : carriers())
+    if (e == element) band = h->demandBand();
+  const double target = 1.0 + 0.5 * band;
   // The closest approach to the target before each trial.
   double best[3] = {0, 0, 0};
   double closest = std::min(std::abs(dLo - target), std::abs(dHi - target));
@@ -199,7 +207,7 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
     st = solveBetween(f, sLo, sHi, tEnd, lineSearch);
     if (!st) break;
     const double d = maxDemand(element);
-    found = d >= 1.0 && d <= 1.0 + kBand;
+    found = d >= 1.0 && d <= 1.0 + band;
     if (found) break;
     closest = std::min(closest, std::abs(d - target));
     if (d > 1.0) {
@@ -253,7 +261,12 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   solved_ = false;
   locating_ = false;
   if (!st) return st;
-  // The rest of the step.
+  // The rest of the step; none when the hinge opened at the step's end (a
+  // sub-step of length zero would take the rule of the whole step).
+  if (1.0 - f <= 1e-12) {
+    info.converged = true;
+    return Status::success();
+  }
   an_.beginStep(tEnd, 1.0 - f, false);
   info.converged = false;
   return Status::success();

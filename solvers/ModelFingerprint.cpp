@@ -71,6 +71,19 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
           .add(m.softening->Ks)
           .add(m.softening->thetaR.value_or(-1))
           .add(m.softening->Mr);
+    // Negative moments' laws, hinge site, interaction curve, RC section data.
+    if (m.hardening && m.hardening->negative)
+      for (double x : {m.hardening->negative->Mc, m.hardening->negative->My,
+                       m.hardening->negative->Kh1, m.hardening->negative->Kh2})
+        materials.add(x);
+    if (m.softening && m.softening->negative)
+      materials.add(m.softening->negative->first).add(m.softening->negative->second);
+    materials.add(m.hingeSite == HingeSite::Ends);
+    for (const auto& [n, mu] : m.interaction) materials.add(n).add(mu);
+    if (const auto& sec = m.section) {
+      for (double x : {sec->b, sec->h, sec->fc, sec->fy, sec->Es, sec->fu, sec->eu}) materials.add(x);
+      for (const RebarLayer& r : sec->bars) materials.add(r.depth).add(r.area);
+    }
   }
   boundary.add(model.joints().size());
   for (const Joint& j : model.joints()) boundary.add(j.master).add(j.slave);

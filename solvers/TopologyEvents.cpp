@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "elements/BarFractures.h"
+#include "elements/EndHinges.h"
 #include "elements/HingeToJoint.h"
 #include "elements/JointedElement.h"
 #include "elements/Joints.h"
@@ -12,22 +14,34 @@ namespace c2d {
 void TopologyEvents::index(const Model& model) {
   if (indexedModel_ == &model && indexedVersion_ == model.topologyVersion()) return;
   carriers_.clear();
+  jointCarriers_.clear();
   wrappers_.clear();
   const std::vector<int> attached = nodeAttachments(model);
   for (int e = 0; e < model.numElements(); ++e) {
     if (!model.hasElement(e)) continue;
     const auto* c = dynamic_cast<const HingeCarrier*>(&innermost(model.element(e)));
-    if (c && jointsWhenFailed(model, attached, model.element(e))) carriers_.push_back(c);
+    if (!c) continue;
+    carriers_.push_back(c);
+    if (jointsWhenFailed(model, attached, model.element(e))) jointCarriers_.push_back(c);
   }
   for (const JointedElement* j : jointedElements(model)) wrappers_.push_back(j);
   indexedModel_ = &model;
   indexedVersion_ = model.topologyVersion();
 }
 
+bool TopologyEvents::anyEndHingeOrFracture() const {
+  // An opened end hinge or a fracture is also an activated event of a carrier.
+  for (const HingeCarrier* c : carriers_) {
+    const HingeInfo h = c->hinge();
+    if (h.fracture || h.jointDue) return true;
+  }
+  return false;
+}
+
 bool TopologyEvents::anyFailedHinge() const {
   // The condition of jointFailedHinges: when no hinge that can become a
   // joint has failed it makes none.
-  for (const HingeCarrier* c : carriers_) {
+  for (const HingeCarrier* c : jointCarriers_) {
     const HingeInfo h = c->hinge();
     if (h.active && h.failed) return true;
   }
@@ -54,6 +68,27 @@ bool TopologyEvents::anyJointPastRupture(const Model& model, const State& state)
 bool TopologyEvents::afterCommit(Model& model, State& state) {
   std::vector<TopologyEvent> events;
   index(model);
+  if (anyEndHingeOrFracture()) {
+    if (endHingesDue(model))
+      for (const OpenedHinge& h : openEndHinges(model, state)) {
+        TopologyEvent ev{TopologyEvent::Kind::HingeOpened, h.element, h.master, h.slave, 0, 0};
+        ev.end = h.end;
+        ev.moment = h.moment;
+        ev.ultimate = h.ultimate;
+        ev.axialForce = h.axialForce;
+        ev.failureJump = h.failureJump;
+        events.push_back(ev);
+      }
+    if (fracturesDue(model))
+      for (const FracturedMember& f : separateFractured(model, state)) {
+        TopologyEvent ev{TopologyEvent::Kind::BarsFractured, f.element, f.node, f.newNode, 0, 0};
+        ev.end = f.end;
+        ev.axialForce = f.axialForce;
+        ev.throughJoint = f.joint;
+        events.push_back(ev);
+      }
+    index(model);
+  }
   if (anyFailedHinge()) {
     for (const CreatedJoint& j : jointFailedHinges(model, state))
       events.push_back({TopologyEvent::Kind::JointFormed, j.element, j.master, j.slave,

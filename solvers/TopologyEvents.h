@@ -1,10 +1,13 @@
 #pragma once
 // Topology changes during a run, made after a commit so that the state is
-// continuous across them: a geometrically exact element whose softening hinge
-// has fully softened gets its revolute joint (elements/HingeToJoint.h,
-// jointFailedHinges), and a joint whose relative rotation exceeds its rupture
-// rotation separates the pieces (elements/Joints.h, ruptureJoints). The
-// analysis then rebuilds its dof map, pattern and factorization.
+// continuous across them: a hinge opened at an element end gets the joint that
+// carries it (elements/EndHinges.h), a member whose bars fractured is separated
+// from one of its ends (elements/BarFractures.h), a geometrically exact element
+// whose softening hinge has fully softened gets its revolute joint
+// (elements/HingeToJoint.h, jointFailedHinges), and a joint whose relative
+// rotation exceeds its rupture rotation separates the pieces
+// (elements/Joints.h, ruptureJoints). The analysis then rebuilds its dof map,
+// pattern and factorization.
 #include <functional>
 #include <vector>
 
@@ -17,12 +20,17 @@ namespace c2d {
 class JointedElement;
 
 struct TopologyEvent {
-  enum class Kind { JointFormed, JointRuptured };
+  enum class Kind { JointFormed, JointRuptured, HingeOpened, BarsFractured };
   Kind kind = Kind::JointFormed;
   int element = -1;             // 0-based
   int master = -1, slave = -1;  // 0-based nodes
   double rotation = 0;          // the joint's relative rotation (rad)
   double limit = 0;             // rupture rotation (ruptures)
+  // HingeOpened: end (0, 1), the end moment, Mu and N at opening, failure jump;
+  // BarsFractured: end, the axial force, whether through a joint.
+  int end = 0;
+  double moment = 0, ultimate = 0, axialForce = 0, failureJump = 0;
+  bool throughJoint = false;
 };
 
 class TopologyEvents {
@@ -41,12 +49,14 @@ class TopologyEvents {
 
  private:
   bool anyFailedHinge() const;
+  bool anyEndHingeOrFracture() const;
   bool anyJointPastRupture(const Model& model, const State& state) const;
 
   const Model* indexedModel_ = nullptr;
   int indexedVersion_ = -1;
-  // The carriers of the elements whose failed hinge becomes a joint (jointsWhenFailed).
-  std::vector<const HingeCarrier*> carriers_;
+  std::vector<const HingeCarrier*> carriers_;  // every element's with a hinge law
+  // Of those, the elements whose failed hinge becomes a joint (jointsWhenFailed).
+  std::vector<const HingeCarrier*> jointCarriers_;
   std::vector<const JointedElement*> wrappers_;
 };
 

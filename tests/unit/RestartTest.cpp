@@ -335,6 +335,73 @@ TEST(Restart, MemberContactAndFrictionContinueBitForBit) {
   expectSameState(whole.out / "whole_end.rst", rest.out / "rest_end.rst");
 }
 
+// An RC column (SECTion, FINIte) under axial force pushed at its tip: the base
+// hinge opens as a joint carrying the softening law that follows N. Saved
+// while that hinge softens, the restarted run continues bit for bit (the
+// section, the end hinge's joint and law, the axial history).
+const char* kRcColumn = R"(FEAP * * RC column: end hinge, softening under N
+  0 0 0 2 3 2
+
+COORdinates
+  1 1 0 0
+  5 0 0 3
+
+ELEMents
+  1 1 1 1 2
+  4 0 1 4 5
+
+MATErial,1 column
+  FRAMe
+    SECTion RECTangular 0.5 0.5 30e3 500e3
+    REBAr 0.05 1.2566e-3 0.45 1.2566e-3
+    DENSity,,2.5
+    FINIte
+
+BOUNdary
+  1 0 1 1 1
+  5 0 1 0 0
+
+FORCe
+  5 0 0 -1500 0
+
+DISPlacement
+  5 0 1 0 0
+
+FPROportional
+  5 0 2 1 1
+
+END
+BATCh
+)";
+
+TEST(Restart, RcMemberWithAnOpenEndHingeContinuesBitForBit) {
+  DeckTempDir dir;
+  const std::string start =
+      "  PROP,,1\n  PROP,,2\n  TPLOt\n  DT,,1\n" + newtonLoop("TIME", 1) + "  DT,,0.002\n";
+  const std::string loads = "2\n  0 1 1e6 1\n\n2\n  0 0 1 0 1e6 1e6-1\n\n";
+  const std::string data = loads + "reac,1,3\ndisp,5,1\nstre,1,1\n\nSTOP\n";
+  const std::string restData = "reac,1,3\ndisp,5,1\nstre,1,1\n\nSTOP\n";
+  const DeckResult whole =
+      runDeckText(dir, "whole.inp",
+                  kRcColumn + start + newtonLoop("TIME", 30) + "  SAVE,whole_end\nEND\n" + data);
+  expectRan(whole);
+  const DeckResult first = runDeckText(
+      dir, "first.inp", kRcColumn + start + newtonLoop("TIME", 15) + "  SAVE,mid\nEND\n" + data);
+  expectRan(first);
+  const DeckResult rest =
+      runDeckText(dir, "rest.inp",
+                  std::string(kRcColumn) + "  REST,mid\n  TPLOt\n" + newtonLoop("TIME", 15) +
+                      "  SAVE,rest_end\nEND\n" + restData);
+  expectRan(rest);
+  // The save falls while the base hinge softens: its joint is in the model.
+  const Loaded mid(first.out / "mid.rst");
+  EXPECT_GT(mid.model.numNodes(), 5);
+  EXPECT_NE(first.log.find("hinge  opened"), std::string::npos);
+  expectSameTail(readText(whole.out / "whole_tplot.csv"), readText(first.out / "first_tplot.csv"),
+                 readText(rest.out / "rest_tplot.csv"));
+  expectSameState(whole.out / "whole_end.rst", rest.out / "rest_end.rst");
+}
+
 // A bar dropped on a crushing ground, run until at rest (TIME,REST).
 const char* kAtRest = R"(FEAP * * bar dropped on a crushing ground, run until at rest
   0 0 0 2 3 2

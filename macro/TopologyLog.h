@@ -1,0 +1,22 @@
+#pragma once
+// The log line of each topology event of a run (solvers/TopologyEvents.h):
+// joints formed at failed hinges and ruptured, hinges opened at element ends
+// (their joints made), members separated at the fracture of their bars.
+#include <ostream>
+
+#include "core/Model.h"
+#include "solvers/TopologyEvents.h"
+
+namespace c2d {
+
+struct TopologyCounts {
+  int hinges = 0;          // hinges opened at element ends
+  int jointsFormed = 0;    // at fully softened hinges
+  int jointsRuptured = 0;  // past thetaR
+  int fractures = 0;       // members separated at their bars' fracture
+};
+
+void logTopologyEvent(std::ostream& log, const Model& model, double t, const TopologyEvent& ev,
+                      TopologyCounts& counts);
+
+}  // namespace c2d

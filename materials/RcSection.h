@@ -1,0 +1,130 @@
+#pragma once
+// A rectangular reinforced concrete section (deck: SECTion RECTangular + REBAr)
+// and what the member's laws take from it: stiffnesses, the moment-curvature
+// points (cracking, first yield, ultimate) of either sign of the moment at any
+// axial force (the interaction diagram), the axial capacities and the rotation
+// capacity of a hinge. Pure computation, no units of its own: any consistent
+// system (the decks: kN, m, kN/m^2).
+//
+// Materials (Eurocode 2, EN 1992-1-1):
+//  - concrete in compression: the parabola-rectangle of 3.1.7 (fc <= 50 MPa:
+//    n = 2, eps_c2 = 0.002, eps_cu2 = 0.0035), sigma = fc (1 - (1 - e/eps_c2)^2)
+//    up to eps_c2, fc beyond; no tension in the cracked analyses. fc is used as
+//    given (no partial factor, no alpha_cc): give the strength the analysis
+//    should see (a mean strength for a collapse).
+//  - concrete modulus Ec = 2 fc / eps_c2, the parabola's tangent at zero
+//    strain, so that the member's elastic stiffness and the section's
+//    moment-curvature come from one law (EC2's secant Ecm of Table 3.1 is
+//    within about 10 % of it for C25/30-C40/50, and needs MPa); tensile
+//    strength fct = fc / 10 (EC2's fctm / fck is 0.11-0.08 over C20-C50);
+//    Poisson ratio 0.2 (3.1.3(4)).
+//  - bars: elastic-perfectly plastic, Es and fy (3.2.7(2)b, horizontal top
+//    branch), strain limit eu (the fracture strain) in the ultimate state.
+//    In axial tension the bars harden to fu at eu (AxialCapacity).
+// Bars do not displace concrete (the usual hand calculation).
+//
+// Geometry and signs: depth z from the top face (0 <= z <= h), strains
+// eps(z) = e0 + kappa z positive in tension; N > 0 in tension; the moment about
+// the mid-depth (the member axis), M = int sigma (z - h/2) dA, positive when it
+// compresses the top face. The negative moments are those of the section turned
+// upside down (sign = -1), reported as magnitudes.
+#include <array>
+#include <optional>
+
+#include "core/MaterialSet.h"
+#include "materials/AxialCapacity.h"
+#include "materials/MomentCapacity.h"
+
+namespace c2d {
+
+class RcSection final : public MomentCapacity {
+ public:
+  static constexpr double kEpsC2 = 0.002, kEpsCu2 = 0.0035;
+  static constexpr double kConcretePoisson = 0.2, kShearFactor = 5.0 / 6.0;
+  // Hinge: plastic length Lp = h/2; the hinge's moment falls linearly from Mu and
+  // has lost kUltimateDrop of it over the plastic rotation (kappa_u - kappa_y) Lp.
+  static constexpr double kHingeLength = 0.5, kUltimateDrop = 0.2;
+
+  // Throws std::invalid_argument for a section that is not one (sizes, strengths,
+  // bars outside the section or of no area, fu < fy, eu <= fy/Es).
+  explicit RcSection(const RcSectionData& data);
+
+  const RcSectionData& data() const { return d_; }
+  double Ec() const { return ec_; }
+  double fct() const { return d_.fc / 10; }
+  double barArea() const { return as_; }
+  // Transformed uncracked section (concrete b h, bars (Es/Ec - 1) A): EA, EI
+  // about its centroid, GA of the concrete (shear factor 5/6).
+  double EA() const { return ec_ * atr_; }
+  double EI() const { return ec_ * itr_; }
+  double GA() const;
+  double centroidDepth() const { return ztr_; }
+  // Axial capacities (magnitudes): the bars' yield and ultimate forces in tension,
+  // the squash load (concrete at fc, bars at eps_c2, EC2 6.1(5)).
+  double tensionYield() const { return as_ * d_.fy; }
+  double tensionUltimate() const { return as_ * d_.fu; }
+  double squashLoad() const;
+  // The member's axial law (materials/AxialCapacity.h).
+  AxialCapacity axialCapacity() const {
+    return {EA(), d_.Es * as_, tensionYield(), tensionUltimate(), squashLoad(), d_.eu};
+  }
+
+  // Resultants of the strain plane (e0 at the top face, curvature kappa) of the
+  // section as given (sign +1) or upside down (sign -1).
+  struct Forces {
+    double N = 0, M = 0;
+  };
+  Forces forces(double e0, double kappa, int sign) const;
+  // e0 of the plane with curvature kappa and axial force N; none when N is
+  // beyond what the section carries at that curvature.
+  std::optional<double> topStrain(double N, double kappa, int sign) const;
+
+  // A state of the moment-curvature at constant N.
+  struct State {
+    bool exists = false;  // false: none at this N (the axial force alone reaches it)
+    double M = 0, kappa = 0;
+    double e0 = 0;      // strain of the compressed face
+    double depth = 0;   // neutral axis depth from the compressed face (inf: none)
+  };
+  // Cracking of the transformed uncracked section: the tension face at fct.
+  State cracking(double N, int sign) const;
+  // First yield: the most strained bar at fy/Es in tension, or the compressed
+  // face at eps_c2, whichever comes first.
+  State firstYield(double N, int sign) const;
+  // Ultimate (EC2 6.1(5), Fig. 6.1): the compressed face at eps_cu2, or eps_c2 at
+  // 3h/7 from it when the whole section is compressed, or a bar at eu.
+  State ultimate(double N, int sign) const;
+  // Balance point: the compressed face at eps_cu2 as the extreme tension bar
+  // reaches fy/Es (its N and M).
+  State balance(int sign) const;
+  // The hinge's plastic rotation capacity (kappa_u - kappa_y) Lp at N and the
+  // failure jump xiF = that / kUltimateDrop.
+  double plasticRotation(double N, int sign) const;
+  // Rupture rotation of a joint made of this section's failed hinge: xiF at
+  // N = 0 (the larger sign's) plus acos(1/(1 + eu)), the turn of a tie
+  // pinned there whose bars the turn stretches to eu (see README).
+  double ruptureRotation() const;
+
+  // The bending law at N (tabulated on [-squash, tension yield], monotone cubic
+  // in N, constant beyond), with the moment-curvature points kept apart by
+  // floors: Mu >= Mu(0)/100, then My, Mc below it, plastic curvatures positive
+  // and increasing.
+  MomentLaw at(int sign, double N) const override;
+  // The law's points at N: plastic curvatures at My and Mu.
+  struct Points {
+    double Mc = 0, My = 0, Mu = 0, xiY = 0, xiU = 0, xiF = 0;
+  };
+  Points rawPoints(double N, int sign) const;  // direct (not tabulated), before the floors
+
+ private:
+  Points floored(const Points& p, int sign) const;
+
+  RcSectionData d_;
+  std::array<std::vector<RebarLayer>, 2> bars_;  // as given, upside down
+  double ec_ = 0, as_ = 0, atr_ = 0, ztr_ = 0, itr_ = 0;
+  std::array<Points, 2> zero_;  // raw points at N = 0 (floors' references)
+  // Tabulated laws per sign: Mc, My, Mu, xiY, xiU, xiF.
+  std::array<std::array<MonotoneCubic, 6>, 2> table_;
+};
+
+}  // namespace c2d

@@ -1,0 +1,165 @@
+// RC members (SECTion): the elements' tangents with the axial law and the
+// moment-axial interaction, against central differences of their residuals,
+// small and finite kinematics, statics and the mid-point scheme, at large
+// rotations; the hinge carried by a joint at a member's end.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/StepRule.h"
+#include "elements/InelasticFrame.h"
+#include "elements/JointedElement.h"
+#include "elements/ReissnerFrame.h"
+#include "materials/RcSection.h"
+#include "materials/SectionLaws.h"
+#include "tests/unit/ElementTestSupport.h"
+
+namespace c2d::test {
+namespace {
+
+// A beam section 0.3 x 0.5 m, C30, 3 bars of 20 mm at the bottom and 2 of
+// 16 mm at the top (kN, m).
+MaterialSet rcMaterial(Kinematics kin) {
+  MaterialSet m;
+  m.number = 1;
+  m.elementType = "FRAMe";
+  m.kinematics = kin;
+  m.density = 2.5;
+  RcSectionData d;
+  d.b = 0.3;
+  d.h = 0.5;
+  d.fc = 30e3;
+  d.fy = 500e3;
+  d.Es = 200e6;
+  d.fu = 540e3;
+  d.eu = 0.05;
+  const double a20 = M_PI * 0.01 * 0.01, a16 = M_PI * 0.008 * 0.008;
+  d.bars = {{0.04, 2 * a16}, {0.45, 3 * a20}};
+  m.section = d;
+  deriveSectionLaws(m);
+  return m;
+}
+
+// The mid-point scheme (alpha = 0.1) and Newmark's, for steps of 0.01 s.
+StepRule midPointRule(Scheme scheme = Scheme::MidPoint) {
+  StepRule r;
+  r.scheme = scheme;
+  r.alpha = scheme == Scheme::MidPoint ? 0.1 : 0.0;
+  r.ca = 4 / (1e-2 * 1e-2);
+  r.av = -4 / 1e-2;
+  r.aa = -1;
+  return r;
+}
+
+double relativeError(const ElemMat& a, const ElemMat& b) {
+  return (a - b).cwiseAbs().maxCoeff() / std::max(1.0, b.cwiseAbs().maxCoeff());
+}
+
+// Commits the element at d (static, from its committed state), then returns
+// the kinematics of a trial state d + dd.
+ElementKinematics committedAt(Element& e, const ElemVec& d, const ElemVec& dd) {
+  ElementKinematics kin;
+  kin.d = d;
+  kin.dn = d;
+  kin.vn.setZero();
+  kin.an.setZero();
+  ElemVec r;
+  ElemMat k;
+  EXPECT_TRUE(e.evaluate(kin, StepRule{}, true, r, k).ok);
+  e.commit();
+  kin.d = d + dd;
+  return kin;
+}
+
+TEST(RcMember, SmallElementTangentWithInteraction) {
+  const MaterialSet mat = rcMaterial(Kinematics::Small);
+  for (double stretch : {-2e-4, -4e-3, 0.0, 3e-5, 6e-5, 1e-3}) {
+    InelasticFrame e(mat, {0, 1}, Vec2(0, 0), Vec2(1.2, 0.3));
+    ElemVec d = ElemVec::Zero(), dd = ElemVec::Zero();
+    // The bending of first yield at about the third step, the axial strain as given.
+    d << 0, 0, -0.004, stretch * 1.2, 0.01, 0.006;
+    dd << 0, 0, -0.0021, stretch * 0.1, 0.0005, 0.0023;
+    ElementKinematics kin = committedAt(e, d, dd);
+    for (const StepRule& rule : {StepRule{}, midPointRule()}) {
+      ElemVec r;
+      ElemMat k;
+      ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
+      EXPECT_GT(e.section().bulk.xi, 0);
+      const ElemMat fd = centralDifferenceTangent(e, kin, rule, 1e-8);
+      EXPECT_LT(relativeError(k, fd), 1e-5) << "stretch " << stretch << "\n" << k << "\n\n" << fd;
+    }
+  }
+}
+
+TEST(RcMember, FiniteElementTangentWithInteractionAtLargeRotations) {
+  const MaterialSet mat = rcMaterial(Kinematics::Finite);
+  for (double turn : {0.0, 1.1, -2.4}) {
+    for (double stretch : {-3e-4, 0.0, 3e-5, 6e-5, 2e-3}) {
+      ReissnerFrame e(mat, {0, 1}, Vec2(0, 0), Vec2(1.5, 0.0));
+      // A rigid turn by `turn`, then a stretch and a curvature into the plastic range.
+      const Vec2 p2(1.5 * (1 + stretch) * std::cos(turn), 1.5 * (1 + stretch) * std::sin(turn));
+      ElemVec d;
+      d << 0, 0, turn - 0.003, p2.x() - 1.5, p2.y(), turn + 0.004;
+      ElemVec dd;
+      dd << 0.0002, -0.0001, -0.0024, 0.0003, 0.0002, 0.0031;
+      ElementKinematics kin = committedAt(e, d, dd);
+      for (const StepRule& rule : {StepRule{}, midPointRule(), midPointRule(Scheme::Newmark)}) {
+        ElemVec r;
+        ElemMat k;
+        ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
+        EXPECT_GT(e.section().bulk.xi, 0);  // plastic, on the law of its N
+        const ElemMat fd = centralDifferenceTangent(e, kin, rule, 1e-8);
+        EXPECT_LT(relativeError(k, fd), 1e-5)
+            << "turn " << turn << " stretch " << stretch << " scheme " << static_cast<int>(rule.scheme);
+      }
+    }
+  }
+}
+
+// A member with its hinge at end 2 carried by a joint (elements/JointedElement
+// with materials/EndHinge): sticking, slipping with the capacity following the
+// member's axial force, and spent (a free joint).
+template <class Frame>
+void expectHingeJointTangents(Kinematics kin, const StepRule& rule) {
+  const MaterialSet mat = rcMaterial(kin);
+  for (double rot : {0.004, 0.02, 0.2}) {
+    for (double stretch : {-2e-4, 0.0, 3e-5, 6e-5, 1e-4, 2e-3}) {
+      auto inner = std::make_unique<Frame>(mat, std::array<int, 2>{0, 2}, Vec2(0, 0), Vec2(1.5, 0));
+      JointedElement e(std::move(inner), 1, 1);
+      const MomentLaw l = mat.capacity->at(1, 0.0);
+      e.setHinge(EndHinge(mat.capacity, 1, l.Mu, l.xiF));
+      ElemVec d, dd;
+      d << 0, 0, 0.0, 1.5 * stretch, 0.0, 0.4 * rot;
+      dd << 0.0001, 0.0, 0.0002, 1.5 * stretch * 0.1, 0.0002, rot;
+      ElementKinematics k0 = committedAt(e, d, dd);
+      k0.vn.setZero();
+      ElemVec r;
+      ElemMat k;
+      ASSERT_TRUE(e.evaluate(k0, rule, true, r, k).ok);
+      const HingeInfo h = e.hingeInfo();
+      const ElemMat fd = centralDifferenceTangent(e, k0, rule, 1e-8);
+      EXPECT_LT(relativeError(k, fd), 2e-5)
+          << "rot " << rot << " stretch " << stretch << " slip " << h.softening << " failed "
+          << h.failed << "\n" << k << "\n\n" << fd;
+      if (rot == 0.02) {
+        EXPECT_GT(e.hingeSlip(), e.committedHingeSlip());
+      }
+      if (rot == 0.2) {
+        EXPECT_TRUE(h.failed);
+      }
+    }
+  }
+}
+
+TEST(RcMember, HingeJointTangentSmall) {
+  expectHingeJointTangents<InelasticFrame>(Kinematics::Small, StepRule{});
+  expectHingeJointTangents<InelasticFrame>(Kinematics::Small, midPointRule());
+}
+
+TEST(RcMember, HingeJointTangentFinite) {
+  for (const StepRule& rule : {StepRule{}, midPointRule(), midPointRule(Scheme::Newmark)})
+    expectHingeJointTangents<ReissnerFrame>(Kinematics::Finite, rule);
+}
+
+}  // namespace
+}  // namespace c2d::test
