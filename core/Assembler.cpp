@@ -1,11 +1,14 @@
 #include "core/Assembler.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
+#include "core/ContactDamper.h"
 #include "core/FloorLoad.h"
 #include "core/GroundContact.h"
 #include "core/MemberContact.h"
+#include "core/NodeMass.h"
 
 namespace c2d {
 
@@ -47,6 +50,11 @@ bool Assembler::refresh() {
   // Floor loads (QLOAd) and the weight of nodal masses: constant, like self-weight.
   fGrav_ += floorLoadVector(model_);
   mNodal_ = lumpedNodalMass(model_);
+  masses_ = translationalMasses(model_);
+  groundDamping_.assign(model_.numNodes(), 0.0);
+  if (const auto& ground = model_.ground())
+    for (int n = 0; n < model_.numNodes(); ++n)
+      groundDamping_[n] = damperCoefficient(ground->zeta, ground->k, masses_[n]);
   patternVersion_ = model_.topologyVersion();
   return true;
 }
@@ -225,7 +233,8 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
       if (!dofs_.used(n) || dofs_.aliased(n)) continue;
       const Eigen::Index iv = static_cast<Eigen::Index>(n) * kNodeDofs + 1;
       const double y0 = model_.coord(n).y();
-      const ContactForce c = groundContact(*ground, s.crush[n], y0 + s.un[iv], y0 + s.u[iv], rule);
+      const ContactForce c = groundContact(*ground, s.crush[n], y0 + s.un[iv], y0 + s.u[iv], rule,
+                                           {groundDamping_[n], s.vn[iv], s.an[iv]});
       if (c.force == 0 && c.tangent == 0) continue;
       r_[iv] -= c.force;
       fContact_[iv] = c.force;
@@ -314,13 +323,24 @@ double Assembler::commitContact(State& s) {
       members_ ? members_->commit(model_, s, pushedThrough_, pushedThroughEnergy_) : 0.0;
   const auto& ground = model_.ground();
   if (!ground) return released;
+  // A node whose turn fell inside the step gets the peak it came back from
+  // (core/CrushingLaw.h): the energy that takes from its contact is dissipated.
+  double crushed = 0;
+  const bool rates = s.v.size() == s.u.size() && s.vn.size() == s.u.size();
   for (int n = 0; n < model_.numNodes(); ++n) {
     const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs;
-    s.crush[n] = loadingPoint(*ground, s.crush[n], model_.coord(n).y() + s.u[i + 1]);
+    const double y = model_.coord(n).y() + s.u[i + 1];
+    const bool moves = rates && dofs_.used(n) && !dofs_.aliased(n);
+    const double q = moves
+                         ? loadingPoint(*ground, s.crush[n], masses_[n], y, s.vn[i + 1], s.v[i + 1])
+                         : loadingPoint(*ground, s.crush[n], 0.0, y, 0.0, 0.0);
+    if (q > s.crush[n] && penetration(*ground, y) < q)
+      crushed += c2d::contactEnergy(*ground, s.crush[n], y) - c2d::contactEnergy(*ground, q, y);
+    s.crush[n] = q;
   }
   const Eigen::VectorXd& stretches = stretchesOf(s);
   if (&stretches != &s.stretch) s.stretch = stretches;
-  return released;
+  return released + crushed;
 }
 
 const Eigen::VectorXd& Assembler::stretchesOf(const State& s) const {
@@ -339,9 +359,28 @@ double Assembler::contactDissipation(const State& s, const StepRule& rule) const
     const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs;
     const Vec2& X = model_.coord(n);
     d += groundDissipation(*ground, s.crush[n], X.x() + s.un[i] - s.stretch[n], X.x() + s.un[i],
-                           X.y() + s.un[i + 1], X.x() + s.u[i], X.y() + s.u[i + 1], rule);
+                           X.y() + s.un[i + 1], X.x() + s.u[i], X.y() + s.u[i + 1], rule,
+                           groundDamping_[n]);
   }
   return d;
+}
+
+void Assembler::contactMotions(const State& s, std::vector<ContactMotion>& out) const {
+  out.clear();
+  if (const auto& ground = model_.ground())
+    for (int n = 0; n < model_.numNodes(); ++n) {
+      if (!dofs_.used(n) || dofs_.aliased(n)) continue;
+      const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs + 1;
+      const double y = model_.coord(n).y();
+      const double p0 = penetration(*ground, y + s.un[i]), p1 = penetration(*ground, y + s.u[i]);
+      if (p0 > 0 || p1 > 0)
+        out.push_back({p0, p1, -s.vn[i], -s.v[i], ground->k, ground->restitution, s.crush[n],
+                       groundDamping_[n], masses_[n]});
+    }
+  if (members_) members_->motions(model_, s, out);
+  const double g = model_.gravity().norm();
+  for (ContactMotion& c : out)
+    if (c.m > 0 && std::isfinite(c.m) && c.k > 0) c.rest = 0.5 * (c.m * g) * (c.m * g) / c.k;
 }
 
 Assembler::Momentum Assembler::momentum(const State& s) const {

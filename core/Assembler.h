@@ -24,6 +24,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/ContactMotion.h"
 #include "core/DofMap.h"
 #include "core/MemberContact.h"
 #include "core/Model.h"
@@ -65,6 +66,8 @@ class Assembler {
   const Eigen::VectorXd& contactForces() const { return fContact_; }
   // Lumped nodal masses per node dof (MASS, QLOAd carried as mass).
   const Eigen::VectorXd& nodalMass() const { return mNodal_; }
+  // The mass moving with each node's translation (core/NodeMass.h), per node.
+  const std::vector<double>& nodeMasses() const { return masses_; }
   // Forces of removed elements being released (core/Model.h ReleasedForce) at
   // the load point of the last assembly, per node dof: a load.
   const Eigen::VectorXd& releasedLoad() const { return fRel_; }
@@ -107,6 +110,10 @@ class Assembler {
   // gains is the integrator's, not counted here.
   double contactDissipation(const State& s, const StepRule& rule) const;
 
+  // The motion over the step from the committed state to s of every contact
+  // that touches at either end (ground nodes, then member pairs), into out.
+  void contactMotions(const State& s, std::vector<ContactMotion>& out) const;
+
   // Starts the member contact search and its pattern afresh, as a new
   // assembler would (a continuation from a restart file is then bit for bit).
   void restartContactSearch();
@@ -129,6 +136,8 @@ class Assembler {
   std::vector<int> diagPos_;                                     // per equation
   std::vector<int> uvPos_;        // per node: K(eq u, eq v) for the ground friction, -1: none
   Eigen::VectorXd r_, fRef_, fGrav_, fContact_, mNodal_, fRel_;
+  std::vector<double> masses_;         // per node (core/NodeMass.h)
+  std::vector<double> groundDamping_;  // per node: the ground's dashpot coefficient
   Eigen::VectorXd stretch_;  // per node: friction stretches at the end of the last assembled step
   Eigen::VectorXd stretchU_, stretchUn_;  // the state (u, u_n) stretch_ was evaluated at
   // The friction stretches that go with s: the last assembly's when it was of

@@ -1,6 +1,7 @@
 #include "core/CrushingLaw.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace c2d {
 
@@ -58,6 +59,27 @@ double CrushingLaw::dissipated(double p0, double p1) const {
   const double q0 = std::max(q, p0);
   if (p1 <= q0 || ku <= k) return 0.0;
   return 0.5 * (k - k * k / ku) * (p1 - q0) * (p1 + q0);
+}
+
+double crushingPeak(double k, double e, double m, double p, double r) {
+  if (!(e < 1) || !(m > 0 && std::isfinite(m)) || k <= 0 || p <= 0 || r >= 0) return p;
+  const double a = 1 - e * e;
+  // Out of the crushed surface: the set holds p.
+  const double free = std::abs(r) * std::sqrt(m / k) / e;
+  if (p <= a * free) return free;
+  // On the unloading branch: (1 - 2 e^2) q^2 - 2 a p q + p^2 + c0 = 0, c0 = m e^2 r^2 / k,
+  // its root in [p, p / a] (where the left side falls from c0 > 0),
+  // written without the difference that cancels near e^2 = 1/2.
+  const double c0 = m * e * e * r * r / k;
+  const double d = std::max(0.0, e * e * e * e * p * p - (1 - 2 * e * e) * c0);
+  return std::max(p, (p * p + c0) / (a * p + std::sqrt(d)));
+}
+
+double crushingLoadingPoint(double k, double e, double q, double m, double p1, double r0,
+                            double r1) {
+  const double after = crushingLoadingPoint(q, p1);
+  if (p1 <= 0 || !(r0 > 0 && r1 < 0)) return after;
+  return std::max(after, crushingPeak(k, e, m, p1, r1));
 }
 
 double crushingEnergy(double k, double e, double q, double p) {

@@ -13,14 +13,18 @@
 // ground (g <= 0) starts afresh (q = 0). For e = 1 this is the elastic law.
 //
 // With the mid-point scheme the force is the discrete gradient of U between t_n
-// and t_n+1, so an impact conserves energy exactly (alpha = 0), plus the
-// dissipative term alpha*k*(<g_n+1> - <g_n>) (eq 75; <.> the positive part, so
-// that the force is continuous when a node enters or leaves contact).
+// and t_n+1, so an impact conserves energy exactly (e = 1, zeta = 0). A node
+// whose turn falls inside a step gets the peak its mass came back from as its
+// loading point (core/CrushingLaw.h crushingLoadingPoint), so that the crushing
+// dissipates what the impact brought whatever the step.
+//
+// Damping (zeta > 0, core/ContactDamper.h): a dashpot c dp/dt on the node's
+// penetration beyond the set while it touches, c = 2 zeta sqrt(k m) with m the
+// node's own mass (core/NodeMass.h): the same damper at every step.
 //
 // Friction (mu > 0, the law in core/SpringFriction.h): elastic-plastic Coulomb
-// friction on every node with a
-// normal force N > 0 (the penalty force without the dissipative term, >= 0 on
-// every branch). The node is held by a horizontal spring of the ground's
+// friction on every node with a normal force N > 0 (the penalty force without
+// the dashpot, >= 0 on every branch). The node is held by a horizontal spring of the ground's
 // stiffness k anchored where it last slid (its stretch x - a: State::stretch);
 // it slides when the spring force reaches mu N, the anchor then following it at
 // mu N / k, so a
@@ -38,7 +42,7 @@
 namespace c2d {
 
 struct ContactForce {
-  double force = 0;          // upward force on the node (>= 0 unless dissipation pulls)
+  double force = 0;          // upward force on the node (>= 0 unless the dashpot pulls)
   double tangent = 0;        // d(force)/d(penetration at t_n+1): the stiffness on the node's v dof
   double normal = 0;         // the penalty part of force (no dissipation): >= 0, friction's N
   double normalTangent = 0;  // d(normal)/d(penetration at t_n+1)
@@ -54,21 +58,30 @@ struct FrictionForce {
   double slipped = 0; // energy sliding dissipated over the step (>= 0)
 };
 
+// The dashpot of a node's contact: its coefficient c (kN s/m, zeta's for the
+// node's mass: core/ContactDamper.h) and the node's vertical velocity and
+// acceleration at t_n (from which Newmark's rate at t_n+1 follows).
+struct GroundDamper {
+  double c = 0, vn = 0, an = 0;
+};
+
 // Penetration of a node at vertical position y.
 inline double penetration(const Ground& g, double y) { return g.y0 - y; }
 // Energy stored in the contact of a node at vertical position y whose loading
 // point was q at the last commit.
 double contactEnergy(const Ground& g, double q, double y);
-// The loading point after a step that ends at vertical position y.
-double loadingPoint(const Ground& g, double q, double y);
+// The loading point after a step that ends at y, of a node of mass m whose
+// vertical velocity went from vn to v (core/CrushingLaw.h crushingLoadingPoint).
+double loadingPoint(const Ground& g, double q, double m, double y, double vn, double v);
 
 // Force and its stiffness for the node's vertical position yn (t_n) and y (t_n+1)
-// and its loading point q at t_n, under the step rule; the ground's alpha, or the
-// rule's when the ground gives none. Mid-point: the work of the crushing law on
-// the straight path from yn to y divided by the step (a discrete gradient, so
-// that the force's work is the stored energy's change plus what crushing
-// dissipates); otherwise the law at t_n+1.
-ContactForce groundContact(const Ground& g, double q, double yn, double y, const StepRule& rule);
+// and its loading point q at t_n, under the step rule, with the node's dashpot
+// d. Mid-point: the work of the crushing law on the straight path from yn to y
+// divided by the step (a discrete gradient, so that the force's work is the
+// stored energy's change plus what crushing dissipates); otherwise the law at
+// t_n+1.
+ContactForce groundContact(const Ground& g, double q, double yn, double y, const StepRule& rule,
+                           const GroundDamper& d = {});
 
 // Friction on a node whose normal force is c (groundContact at the same
 // rule), anchored at a (t_n), moving horizontally from xn to x.
@@ -80,12 +93,12 @@ inline double frictionEnergy(const Ground& g, double stretch) {
 }
 
 // Energy the ground's contact law takes from a node over the step from (xn, yn)
-// to (x, y), >= 0: the crushing beyond the loading point q, the dissipative term
-// alpha k (<p_n+1> - <p_n>) (p_n+1 - p_n) under the mid-point scheme and the
-// friction's sliding from the anchor a. Under the static and Newmark rules the
-// penalty force is the plain gradient at t_n+1; what that integration loses or
-// gains is the scheme's, not counted here.
+// to (x, y), >= 0: the crushing beyond the loading point q, the dashpot of
+// coefficient c under the mid-point scheme and the friction's sliding from the
+// anchor a. Under the static and Newmark rules the penalty force is the plain
+// gradient at t_n+1; what that integration loses or gains is the scheme's, not
+// counted here.
 double groundDissipation(const Ground& g, double q, double a, double xn, double yn, double x,
-                         double y, const StepRule& rule);
+                         double y, const StepRule& rule, double c = 0);
 
 }  // namespace c2d

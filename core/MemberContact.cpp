@@ -4,7 +4,10 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/ContactDamper.h"
 #include "core/CrushingLaw.h"
+#include "core/NodeMass.h"
+#include "core/PairMotion.h"
 #include "core/SpringFriction.h"
 
 namespace c2d {
@@ -181,6 +184,13 @@ double pairPenetration(const PairPositions& q, int side, double h, bool held) {
   return p.p;
 }
 
+double pairPenetrationRate(const PairPositions& q, const PairPositions& v, int side, double h,
+                           bool held) {
+  Penetration p;
+  penetration(relative(q), side, h, false, p, held);
+  return p.g.dot(relative(v));
+}
+
 namespace {
 
 // The discrete gradient (Gonzalez) of a function f of z between z0 and z1:
@@ -240,9 +250,13 @@ bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, dou
     normal.midPoint(p0, p1, w, dw);  // phi'(p0, p1): the law's discrete derivative
   }
   const double N = std::max(w, 0.0), dN = w > 0 ? dw : 0.0;
-  if (midPoint && law.alpha > 0) {
-    w += law.alpha * k * (std::max(p1, 0.0) - std::max(p0, 0.0));
-    if (p1 > 0) dw += law.alpha * k;
+  // The dashpot: along D with the penalty (mid-point), along grad p at t_n+1
+  // with the rate dp/dt = grad p . dz/dt there (Newmark, below).
+  const bool damped = law.c > 0 && rule.dynamic();
+  if (damped && midPoint) {
+    const DamperForce f = damperForce(law.c, normal.ps, p0, p1, 0.0, 0.0, rule);
+    w += f.force;
+    dw += f.slope;
   }
   const double scale = z0.norm() + z1.norm() + h;
   Vec4 fz;
@@ -250,6 +264,12 @@ bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, dou
   if (!midPoint) {
     fz = w * e1.g;
     if (wantTangent) kz = dw * e1.g * e1.g.transpose() + w * e1.H;
+    if (damped && p1 > normal.ps) {
+      const Vec4 rate = rule.velocity(Vec4(z1 - z0), law.zv, law.za);
+      const double c = law.c, r1 = e1.g.dot(rate);
+      fz += c * r1 * e1.g;
+      if (wantTangent) kz += c * e1.g * (rule.cv * e1.g + e1.H * rate).transpose() + c * r1 * e1.H;
+    }
   } else {
     Penetration em;
     penetration(0.5 * (z0 + z1), side, h, wantTangent, em, held);
@@ -386,6 +406,7 @@ MemberContact::MemberContact(const Model& model, const DofMap& dofs)
     if (model.hasElement(e)) live_.push_back(e);
   const int ne = static_cast<int>(live_.size());
   group_ = jointGroups(model);
+  masses_ = translationalMasses(model);
   usedNode_.assign(nn, 0);
   for (int n = 0; n < nn; ++n) {
     if (!dofs.used(n)) continue;
@@ -524,14 +545,14 @@ const PairMemory* MemberContact::memory(const State& s, std::uint64_t key) {
 bool MemberContact::evaluate(const ContactPair& pair, const Model& model, const State& s,
                              const StepRule& rule, bool wantTangent, PairVec& force,
                              PairMat& tangent) const {
-  if (lastRule_.scheme != rule.scheme || lastRule_.alpha != rule.alpha) lastRule_ = rule;
+  lastRule_ = rule;
   PairPositions q0, q1;
   // The memory only of a pair within reach (slack_: the most a memory's
   // contact distance exceeds its pair's present one).
   if (!positions(pair, model, s, q0, q1, slack_)) return false;
   const PairMemory* m = memory(s, pair.key());
-  return pairContact(q0, q1, side(m, q0), reach(pair, m), law(rule, m), rule, wantTangent, force,
-                     tangent, nullptr, held(m));
+  return pairContact(q0, q1, side(m, q0), reach(pair, m), law(pair, s, q0, m), rule, wantTangent,
+                     force, tangent, nullptr, held(m));
 }
 
 PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, const State& s,
@@ -562,7 +583,7 @@ PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, 
   }
   PairVec f;
   PairMat k;
-  pairContact(q0, q1, sd, reach(pair, m), law(rule, m), rule, false, f, k, &out, held(m));
+  pairContact(q0, q1, sd, reach(pair, m), law(pair, s, q0, m), rule, false, f, k, &out, held(m));
   return out;
 }
 
@@ -578,17 +599,51 @@ double MemberContact::energy(const Model& model, const State& s) const {
 }
 
 double MemberContact::dissipation(const Model& model, const State& s, const StepRule& rule) const {
-  const double a = rule.scheme == Scheme::MidPoint ? alpha(rule) : 0.0;
+  const bool damped = data_.zeta > 0 && rule.scheme == Scheme::MidPoint;
   const bool crushes = data_.restitution < 1;
-  if (a <= 0 && !crushes && data_.mu <= 0) return 0;
+  if (!damped && !crushes && data_.mu <= 0) return 0;
   double d = 0;
+  PairPositions q0, q1;
   for (const ContactPair& pair : candidates(model, s)) {
     const PairMemory* m = memory(s, pair.key());
     const PairOutcome o = outcome(pair, model, s, rule);
-    if (crushes) d += CrushingLaw(data_.k, data_.restitution, m ? m->q : 0.0).dissipated(o.p0, o.p1);
-    d += a * data_.k * (std::max(o.p1, 0.0) - std::max(o.p0, 0.0)) * (o.p1 - o.p0) + o.slipped;
+    const double q = m ? m->q : 0.0;
+    if (crushes) d += CrushingLaw(data_.k, data_.restitution, q).dissipated(o.p0, o.p1);
+    if (damped && positions(pair, model, s, q0, q1, slack_))
+      d += damperDissipation(law(pair, s, q0, m).c,
+                             CrushingLaw(data_.k, data_.restitution, std::max(q, o.p0)).ps, o.p0,
+                             o.p1, rule);
+    d += o.slipped;
   }
   return d;
+}
+
+void MemberContact::motions(const Model& model, const State& s,
+                            std::vector<ContactMotion>& out) const {
+  PairPositions q0, q1;
+  for (const ContactPair& pair : candidates(model, s)) {
+    if (!positions(pair, model, s, q0, q1, slack_)) continue;
+    const PairMemory* m = memory(s, pair.key());
+    const int sd = side(m, q0);
+    const double h = reach(pair, m);
+    const double p0 = pairPenetration(q0, sd, h, held(m)), p1 = pairPenetration(q1, sd, h, held(m));
+    if (p0 <= 0 && p1 <= 0) continue;
+    const PairLaw l = law(pair, s, q0, m);
+    out.push_back({p0, p1, pairPenetrationRate(q0, pairValues(s.vn, pair), sd, h, held(m)),
+                   pairPenetrationRate(q1, pairValues(s.v, pair), sd, h, held(m)), l.k,
+                   l.restitution, l.q, l.c, pairMass(masses_, pair, q0)});
+  }
+}
+
+PairLaw MemberContact::law(const ContactPair& pair, const State& s, const PairPositions& q0,
+                           const PairMemory* m) const {
+  PairLaw out{data_.k, 0.0, data_.restitution, m ? m->q : 0.0, data_.mu, m ? m->stretch : 0.0};
+  if (data_.zeta > 0) {
+    out.c = damperCoefficient(data_.zeta, data_.k, pairMass(masses_, pair, q0));
+    out.zv = pairZ(pairValues(s.vn, pair));
+    out.za = pairZ(pairValues(s.an, pair));
+  }
+  return out;
 }
 
 double MemberContact::commit(const Model& model, State& s, int& pushed,
@@ -596,7 +651,7 @@ double MemberContact::commit(const Model& model, State& s, int& pushed,
   const std::vector<ContactPair>& pairs = candidates(model, s);
   nextMemory_.clear();
   if (nextMemory_.capacity() < pairs.size()) nextMemory_.reserve(2 * pairs.size());
-  double released = 0, letGo = 0;
+  double released = 0, letGo = 0, crushed = 0;
   committedEnergy_ = 0;
   PairPositions q0, q1;
   for (const ContactPair& pair : pairs) {
@@ -610,7 +665,13 @@ double MemberContact::commit(const Model& model, State& s, int& pushed,
     // while the pair presses on: its force and energy are unchanged).
     if (m) next.offset = std::min(m->offset, std::max(full, 0.0));
     if (o.p1 > 0) {
-      next.q = std::max(m ? m->q : 0.0, o.p1);
+      const double plain = std::max(m ? m->q : 0.0, o.p1);
+      // A turn inside the step: the peak the pair's mass came back from.
+      next.q = near ? pairLoadingPoint(data_, masses_, pair, s, q0, q1, side(m, q0), reach(pair, m),
+                                       held(m), plain, o.p1)
+                    : plain;
+      crushed += crushingEnergy(data_.k, data_.restitution, plain, o.p1) -
+                 crushingEnergy(data_.k, data_.restitution, next.q, o.p1);
       const int was = near ? side(m, q0) : 0;
       // A held side changes only past the centre line by the full distance.
       if (near && pairSide(q1) != was && (!next.side || o.p1 > reach(pair, m) + next.h)) {
@@ -660,7 +721,7 @@ double MemberContact::commit(const Model& model, State& s, int& pushed,
   s.pairs.assign(nextMemory_.begin(), nextMemory_.end());
   committed_ = true;
   pushedEnergy += released;
-  return released + letGo;
+  return released + letGo + crushed;
 }
 
 int MemberContact::membersSide(const ContactPair& pair, const Model& model, const State& s,

@@ -1,5 +1,5 @@
 #pragma once
-// Penalty contact between members (CONTact record MEMBers,,k[,alpha[,r[,mu[,e]]]]):
+// Penalty contact between members (CONTact record MEMBers,,k[,zeta[,r[,mu[,e]]]]):
 // every node against every element segment it does not belong to, with the
 // ground's crushing law (restitution e, core/CrushingLaw.h) and elastic-plastic
 // friction (mu, core/SpringFriction.h) per pair.
@@ -64,14 +64,17 @@
 //   f_z = phi'(p_n, p_n+1) D,   D = grad p(z_m) + (p_n+1 - p_n - grad p(z_m).dz) dz / |dz|^2,
 // phi' the closed-form discrete derivative of k <p>^2 / 2 (as the ground's), or
 // the crushing law's work over the step divided by p_n+1 - p_n, so that
-// f_z.dz = U_n+1 - U_n (+ what crushing dissipated), plus the dissipative
-// alpha k (<p_n+1> - <p_n>) D (work alpha k (<p_n+1> - <p_n>)(p_n+1 - p_n) >= 0
-// taken per step).
+// f_z.dz = U_n+1 - U_n (+ what crushing dissipated), plus the dashpot's force
+// along D (core/ContactDamper.h: zeta's coefficient for the pair's reduced mass,
+// core/PairMotion.h; Newmark: c dp/dt grad p at t_n+1). A pair whose turn falls
+// inside a step gets the peak its mass came back from as its loading point
+// (core/CrushingLaw.h crushingLoadingPoint), as a ground node does.
 #include <Eigen/Core>
 #include <cstdint>
 #include <vector>
 
 #include "core/ContactGrid.h"
+#include "core/ContactMotion.h"
 #include "core/DofMap.h"
 #include "core/Model.h"
 #include "core/State.h"
@@ -94,12 +97,21 @@ int pairSide(const PairPositions& q);
 // the segment's ends.
 double pairPenetration(const PairPositions& q, int side, double h, bool held = false);
 
-// The force law of a pair: penalty stiffness k, dissipation alpha (mid-point
-// scheme), restitution e and the pair's loading point q at t_n
-// (core/CrushingLaw.h; e = 1: elastic, q unused).
+// The rate of the pair's penetration p for the velocities v of its points
+// (dp/dt = grad p . dz/dt, z = (x - a, b - a)).
+double pairPenetrationRate(const PairPositions& q, const PairPositions& v, int side, double h,
+                           bool held = false);
+
+using PairZ = Eigen::Matrix<double, 4, 1>;  // z = (x - a, b - a)
+
+// The force law of a pair: penalty stiffness k, the dashpot's coefficient c
+// (kN s/m, core/ContactDamper.h), restitution e and the pair's loading point q
+// at t_n (core/CrushingLaw.h; e = 1: elastic, q unused); zv and za: dz/dt and
+// d2z/dt2 at t_n, from which Newmark's rate at t_n+1 follows.
 struct PairLaw {
-  double k = 0, alpha = 0, restitution = 1, q = 0;
+  double k = 0, c = 0, restitution = 1, q = 0;
   double mu = 0, stretch = 0;  // friction coefficient, the friction spring's stretch at t_n
+  PairZ zv = PairZ::Zero(), za = PairZ::Zero();
 };
 
 // What a pair's step did: its penetrations at t_n and t_n+1, the friction
@@ -157,6 +169,9 @@ class MemberContact {
   // step from t_n to t_n+1.
   double energy(const Model& model, const State& s) const;
   double dissipation(const Model& model, const State& s, const StepRule& rule) const;
+  // The motion over the step to s of every pair that touches at either end
+  // (core/ContactMotion.h), appended to out.
+  void motions(const Model& model, const State& s, std::vector<ContactMotion>& out) const;
 
   // At a commit: the memory of every pair in contact at the end of the step
   // (its loading point, friction stretch and shrinking offset) into s.pairs.
@@ -204,7 +219,6 @@ class MemberContact {
   // within contact distance (plus extra).
   bool positions(const ContactPair& pair, const Model& model, const State& s, PairPositions& q0,
                  PairPositions& q1, double extra = 0) const;
-  double alpha(const StepRule& rule) const { return data_.alpha >= 0 ? data_.alpha : rule.alpha; }
   bool excluded(int node, int element, const Model& model) const;
   // The pair's memory at the last commit (null: none).
   static const PairMemory* memory(const State& s, std::uint64_t key);
@@ -223,16 +237,16 @@ class MemberContact {
   static double reach(const ContactPair& pair, const PairMemory* m) {
     return m ? m->h - m->offset : pair.h;
   }
-  PairLaw law(const StepRule& rule, const PairMemory* m) const {
-    return {data_.k, alpha(rule), data_.restitution, m ? m->q : 0.0, data_.mu,
-            m ? m->stretch : 0.0};
-  }
+  // The pair's law at s (its dashpot for the masses at t_n: q0).
+  PairLaw law(const ContactPair& pair, const State& s, const PairPositions& q0,
+              const PairMemory* m) const;
 
   MemberContactData data_;
   std::vector<int> contactNodes_;                 // used and not aliased
   std::vector<char> usedNode_;                    // nodes whose motion matters (in some element)
   std::vector<double> elementRadius_;             // per element
   std::vector<double> nodeRadius_;                // per node
+  std::vector<double> masses_;                    // per node (core/NodeMass.h)
   std::vector<int> group_;                        // joint groups
   std::vector<std::uint64_t> referenceExcluded_;  // sorted pair keys
   double margin_ = 0;

@@ -162,13 +162,13 @@ void writeModel(std::ostream& out, const Model& model) {
   putTag(out, "GRND");
   putBool(out, model.ground().has_value());
   if (model.ground())
-    for (double x : {model.ground()->y0, model.ground()->k, model.ground()->alpha,
+    for (double x : {model.ground()->y0, model.ground()->k, model.ground()->zeta,
                      model.ground()->mu, model.ground()->restitution})
       put(out, x);
   putBool(out, model.memberContact().has_value());
   if (model.memberContact())
     for (double x :
-         {model.memberContact()->k, model.memberContact()->alpha, model.memberContact()->radius,
+         {model.memberContact()->k, model.memberContact()->zeta, model.memberContact()->radius,
           model.memberContact()->restitution, model.memberContact()->mu})
       put(out, x);
   putFixed(out, model.gravity());
@@ -302,12 +302,12 @@ Model readModel(std::istream& in, int minTopologyVersion) {
   expectTag(in, "GRND");
   if (getBool(in)) {
     Ground g;
-    for (double* x : {&g.y0, &g.k, &g.alpha, &g.mu, &g.restitution}) *x = get<double>(in);
+    for (double* x : {&g.y0, &g.k, &g.zeta, &g.mu, &g.restitution}) *x = get<double>(in);
     model.ground() = g;
   }
   if (getBool(in)) {
     MemberContactData c;
-    for (double* x : {&c.k, &c.alpha, &c.radius, &c.restitution, &c.mu}) *x = get<double>(in);
+    for (double* x : {&c.k, &c.zeta, &c.radius, &c.restitution, &c.mu}) *x = get<double>(in);
     model.memberContact() = c;
   }
   getFixed(in, model.gravity());

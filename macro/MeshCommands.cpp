@@ -755,14 +755,14 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
         failAt(r, 0,
                "a second MEMBers record (the first is on line " +
                    std::to_string(previousMembers->loc.line) + ")");
-      ctx.maxFields(r, 7, "MEMBers,,k[,alpha[,r[,mu[,e]]]]");
+      ctx.maxFields(r, 7, "MEMBers,,k[,zeta[,r[,mu[,e]]]]");
       if (!r.text(1).empty())
         failAt(r, 1, "MEMBers takes no option word (its second field is empty)",
-               "write MEMBers,,k[,alpha[,r[,mu[,e]]]]");
+               "write MEMBers,,k[,zeta[,r[,mu[,e]]]]");
       MemberContactData c;
       c.k = ctx.number(r, 2);
       if (c.k < 0) failAt(r, 2, "penalty stiffness k must not be negative", "0: no member contact");
-      c.alpha = optional(r, 3, -1.0, "alpha", "leave it out for the integrator's");
+      c.zeta = optional(r, 3, 0.0, "the damping ratio zeta", "0 or absent: no dashpot");
       c.radius = optional(r, 4, -1.0, "the contact radius r", "leave it out for the default");
       c.mu = optional(r, 5, 0.0, "the friction coefficient mu", "0 or absent: frictionless");
       c.restitution = restitution(r, 6);
@@ -782,11 +782,8 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
       if (auto* os = ctx.out()) {
         title(*os, "M e m b e r   C o n t a c t");
         *os << "      k ";
-        num(*os, c.k) << "   alpha ";
-        if (c.alpha < 0)
-          *os << "(integrator's)";
-        else
-          num(*os, c.alpha);
+        num(*os, c.k);
+        if (c.zeta > 0) num(*os << "   zeta ", c.zeta);
         *os << "   r ";
         if (c.radius < 0)
           *os << "(sections; 1e-3 of the shortest element without)";
@@ -799,7 +796,8 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
       continue;
     }
     if (!r.is("GROUnd")) {
-      std::string hint = "the records are 'GROUnd,,y0,k[,alpha[,mu[,e]]]' and 'MEMBers,,k[,alpha[,r[,mu[,e]]]]'";
+      std::string hint =
+          "the records are 'GROUnd,,y0,k[,zeta[,mu[,e]]]' and 'MEMBers,,k[,zeta[,r[,mu[,e]]]]'";
       failAt(r, 0, "unknown contact type '" + r.text(0) + "'", hint);
     }
     // One ground per mesh input, in one CONTact command or several (a MESH
@@ -808,17 +806,15 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
       failAt(r, 0,
              "a second GROUnd record (the first is on line " +
                  std::to_string(ctx.groundOrigin.loc.line) + ")");
-    ctx.maxFields(r, 7, "GROUnd,,y0,k[,alpha[,mu[,e]]]");
+    ctx.maxFields(r, 7, "GROUnd,,y0,k[,zeta[,mu[,e]]]");
     if (!r.text(1).empty())
       failAt(r, 1, "GROUnd takes no option word (its second field is empty)",
-             "write GROUnd,,y0,k[,alpha[,mu[,e]]]");
+             "write GROUnd,,y0,k[,zeta[,mu[,e]]]");
     Ground g;
     g.y0 = ctx.number(r, 2);
     g.k = ctx.number(r, 3);
     if (g.k <= 0) failAt(r, 3, "penalty stiffness k must be positive");
-    g.alpha = r.size() > 4 && !r[4].text.empty() ? ctx.number(r, 4) : -1.0;
-    if (r.size() > 4 && !r[4].text.empty() && g.alpha < 0)
-      failAt(r, 4, "alpha must not be negative (leave it out for the integrator's)");
+    g.zeta = optional(r, 4, 0.0, "the damping ratio zeta", "0 or absent: no dashpot");
     g.mu = optional(r, 5, 0.0, "the friction coefficient mu", "0 or absent: frictionless");
     g.restitution = restitution(r, 6);
     ctx.model.ground() = g;
@@ -828,11 +824,8 @@ void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
       title(*os, "G r o u n d   C o n t a c t");
       *os << "      y0 ";
       num(*os, g.y0) << "   k ";
-      num(*os, g.k) << "   alpha ";
-      if (g.alpha < 0)
-        *os << "(integrator's)";
-      else
-        num(*os, g.alpha);
+      num(*os, g.k);
+      if (g.zeta > 0) num(*os << "   zeta ", g.zeta);
       if (g.mu > 0) num(*os << "   mu ", g.mu);
       if (g.restitution < 1) num(*os << "   e ", g.restitution);
       *os << "\n";
@@ -1059,22 +1052,29 @@ std::vector<MeshCommandEntry> meshCommandTable() {
       {meshSpec(
            "CONTact",
            "Penalty contact. GROUnd: rigid ground y = y0 for every node, penalty stiffness "
-           "k; alpha: dissipation of the contact force (absent: the integrator's); mu: "
+           "k (kN/m per node); zeta: damping ratio of a dashpot c dp/dt on the "
+           "penetration p while the node touches, c = 2 zeta sqrt(k m) for the node's "
+           "own mass m (1: critical; absent or 0: none), the same at every step (this "
+           "field was alpha, a damper alpha k dt that vanished with the step: a value "
+           "there is now read as zeta); mu: "
            "Coulomb friction, elastic-plastic: each node held by a horizontal spring of "
            "stiffness k anchored where it last slid, sliding when the spring force reaches "
            "mu N (N the normal force; no creep at rest); e: restitution of an impact "
            "(below 1 the contact crushes: loading with k beyond the largest penetration q "
            "since the node touched down, unloading and reloading with k/e^2 below it, so "
            "that a node strikes with speed v and leaves with e v; the work k(p^2 - "
-           "q^2)(1 - e^2)/2 is dissipated). The run reports the deepest any node went "
+           "q^2)(1 - e^2)/2 is dissipated, whatever DT: a dynamic step through an impact is "
+           "taken in shorter parts where a contact needs it). The run reports the deepest any node "
+           "went "
            "into the ground and warns when it is deeper than half its members' section "
            "depth sqrt(3 I/A) (k too soft for the impact). "
-           "MEMBers,,k[,alpha[,r[,mu[,e]]]]: "
+           "MEMBers,,k[,zeta[,r[,mu[,e]]]]: "
            "contact of every node with every element it is not part of "
            "(nor tied to by a joint), at the distance r_node + r_element with "
            "r = sqrt(3 I/A), half the section depth (r: the radius of members whose "
            "material has no A and I, default 1e-3 of the shortest element); mu and e: "
-           "the ground's friction (along the member) and crushing law, per pair; k = 0: "
+           "the ground's friction (along the member) and crushing law, per pair, and "
+           "zeta its dashpot for the pair's reduced mass; k = 0: "
            "no member contact (a study's switch). Pairs already that close in the "
            "reference configuration do not contact while the members between them hold; "
            "a joint that ruptures sets them free, and pieces inside each other's contact "
@@ -1082,11 +1082,11 @@ std::vector<MeshCommandEntry> meshCommandTable() {
            "separate. One GROUnd per mesh input (a MESH re-entry may give another, not "
            "above the nodes); a k beyond 1/eps = 4.5e15 times the members' largest "
            "EA/L is warned: no step resolves the contact and the members together.",
-           {}, "GROUnd,,y0,k[,alpha[,mu[,e]]] and/or MEMBers,,k[,alpha[,r[,mu[,e]]]]",
+           {}, "GROUnd,,y0,k[,zeta[,mu[,e]]] and/or MEMBers,,k[,zeta[,r[,mu[,e]]]]",
            {text("GROUnd", "contact type (or MEMBers)"), text("", "empty"),
             expr("y0", "ground level (MEMBers: k)"),
-            expr("k", "penalty stiffness (MEMBers: alpha)"),
-            expr("alpha", "dissipation (MEMBers: r)", "integrator's"),
+            expr("k", "penalty stiffness, kN/m per node (MEMBers: zeta)"),
+            expr("zeta", "damping ratio of the contact's dashpot (MEMBers: r)", "0"),
             expr("mu", "friction coefficient", "0"), expr("e", "restitution of an impact", "1")}),
        applyContact});
   t.push_back({meshSpec("GRAVity",

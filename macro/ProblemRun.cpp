@@ -268,10 +268,11 @@ Flow ProblemRun::runLoop(const Macro& m) {
   const bool newton = m.newtonLoop();
   diverged_ = stalled_ = false;
   lastFailure_.clear();
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0, part = parts_; i < n; ++i) {
     const Flow f = execList(m.body, false, i, n);
     if (f == Flow::Stop) return f;
     if (f == Flow::ExitLoop || diverged_) break;
+    if (newton && parts_ != part) i = -1, part = parts_;
   }
   if (newton && !analysis_->stepConverged()) {
     const std::string why = diverged_  ? "diverged" + (lastFailure_.empty() ? std::string()
@@ -360,10 +361,11 @@ Flow ProblemRun::retryWithCut(const Macro& loop, const std::string& why) {
     if (!st) throw AnalysisError(loop.record.fieldLoc(0).str() + ": error: " + st.why);
     const int n = loop.has(0) ? loop.numbers[0].evalInt(params_, "loop count") : 1;
     diverged_ = stalled_ = false;
-    for (int i = 0; i < n; ++i) {
+    for (int i = 0, part = parts_; i < n; ++i) {
       const Flow f = execList(loop.body, false, i, n);
       if (f == Flow::Stop) return f;
       if (f == Flow::ExitLoop || diverged_) break;
+      if (parts_ != part) i = -1, part = parts_;
     }
     if (analysis_->stepConverged()) return Flow::Next;
   }
@@ -422,8 +424,19 @@ Flow ProblemRun::newtonIteration(const Macro& m, bool update, bool lineSearch, b
   std::snprintf(buf, sizeof buf,
                 "  %-5s  step %5d  t = %12.5e  it %3d  |R| = %11.4e  |du.R| = %11.4e%s\n",
                 symmetric ? "TANG" : "UTAN", s.step + 1, s.t, info.iteration, info.residual,
-                info.energy, info.converged ? "  converged" : "");
+                info.energy, info.converged || info.subStep ? "  converged" : "");
   log_ << buf;
+  // A part of the step begins: committed at a landing time, or taken again
+  // shorter through an impact (solvers/ImpactSteps.h).
+  if (info.subStep) {
+    ++parts_;
+    sample_.partCommitted(s);
+    if (info.shortened > 0)
+      log_ << "  " << (symmetric ? "TANG " : "UTAN ") << "  step " << s.step + 1
+           << ": a contact needs a shorter step through its impact: taken again with h = "
+           << fmt("%.4e", info.shortened) << "\n";
+    return Flow::Next;
+  }
   const auto& h = analysis_->stepHistory();
   if (h.size() > 4 && info.energy > 1e30 * h.front().energy) {
     diverged_ = true;
@@ -505,6 +518,7 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::op
     arcLengthFromDt_ = false;
   }
   scalePathIncrement();
+  sample_.stepBegins(s);
   Status st = analysis_->advance();
   // The converged step could not be committed (an element cannot be evaluated
   // at it): with step cutting it is dropped and taken again in halves.

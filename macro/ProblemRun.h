@@ -206,6 +206,9 @@ class ProblemRun {
   ModelFingerprint input_;  // the model as the deck's mesh input built it (SAVE / REST)  // why the last Newton iteration failed (under step cutting)
   bool diverged_ = false;
   bool stalled_ = false;  // the Newton loop left because its energy repeats
+  // Parts of steps begun by Newton iterations (a landing time, an impact's
+  // shorter step): each part has the Newton loop's count of iterations.
+  int parts_ = 0;
 
   bool arcLengthFromDt_ = false;  // ARCL without dlambda0: set up when the first step starts
   bool longFormat_ = false;       // FORM,LONG

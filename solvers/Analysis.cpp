@@ -159,7 +159,12 @@ Status Analysis::advance() {
 double Analysis::nextStepTime() const {
   if (path_) return stepEnd_;  // path following: blasts at the first commit past their time
   const double land = removal_.nextLanding(state_.tn);
-  return land < stepEnd_ - MemberRemoval::tolerance(state_.dt) ? land : stepEnd_;
+  double end = land < stepEnd_ - MemberRemoval::tolerance(state_.dt) ? land : stepEnd_;
+  // Through an impact: the step its last part proposed (solvers/ImpactSteps.h).
+  const double proposed = state_.tn + impacts_.proposal();
+  if (impacts_.proposal() > 0 && proposed < end - MemberRemoval::tolerance(state_.dt))
+    end = proposed;
+  return end;
 }
 
 Status Analysis::removeElements(const std::vector<int>& elements, double release) {
@@ -335,7 +340,7 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
   // first value: the prediction lies outside the region where Newton's method
   // converges (a fast rotation extrapolated linearly stretches the members).
   // The step starts again from the committed state.
-  if (predicted_ &&
+  if (predicted_ && !info.subStep &&
       (!st || (!info.converged && info.iteration >= 2 && !(info.energy <= energy0_)))) {
     for (auto& el : model_.elements())
       if (el) el->revert();
@@ -424,6 +429,23 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
   ++totalIterations_;
 
   info.converged = convergedAt(info.energy, info.iteration);
+  // Through an impact the step may be too long for a contact: taken again
+  // shorter from the committed state (solvers/ImpactSteps.h).
+  if (info.converged && integrator_.dynamic() && !path_ && !hinges_.locating()) {
+    syncRates();
+    const double h = impacts_.check(assembler_, state_, stepRule(), state_.dt);
+    if (h > 0) {
+      for (auto& el : model_.elements())
+        if (el) el->revert();
+      state_.u = state_.un;
+      beginStep(state_.tn + h, state_.dt > 0 ? h / state_.dt : 1.0, true);
+      info.converged = false;
+      info.subStep = true;
+      info.shortened = h;
+      converged_ = false;
+      return Status::success();
+    }
+  }
   if (info.converged) {
     syncRates();
     // A hinge past its ultimate moment: the event is located, and the rest of
@@ -446,6 +468,7 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
     const double t = nextStepTime();
     beginStep(t, state_.dt > 0 ? (t - state_.tn) / state_.dt : 1.0, true);
     info.converged = false;
+    info.subStep = true;
     converged_ = false;
     return Status::success();
   }
@@ -737,6 +760,7 @@ void Analysis::writeState(std::ostream& out) const {
   putTag(out, "BOOK");
   for (double x : {hinges_.committedDemand(), stepDlambda_, energy0_, stepEnd_}) put(out, x);
   account_.write(out);
+  impacts_.write(out);
   putVector(out, stepInc_);
   putBool(out, converged_);
   putBool(out, dirty_);
@@ -802,6 +826,7 @@ void Analysis::readState(std::istream& in) {
   hinges_.setCommittedDemand(get<double>(in));
   for (double* x : {&stepDlambda_, &energy0_, &stepEnd_}) *x = get<double>(in);
   account_.read(in);
+  impacts_.read(in);
   stepInc_ = getVector(in);
   account_.resize(model_.numNodes());
   if (stepInc_.size() != assembler_.dofs().numEquations())

@@ -21,6 +21,7 @@
 #include "solvers/ConvergenceTest.h"
 #include "solvers/EnergyAccount.h"
 #include "solvers/HingeEvents.h"
+#include "solvers/ImpactSteps.h"
 #include "solvers/LinearSolver.h"
 #include "solvers/MemberRemoval.h"
 #include "solvers/PathFollowing.h"
@@ -41,6 +42,11 @@ struct IterationInfo {
   // six): the line search takes over (a static step starts again from the
   // committed state).
   bool globalized = false;
+  // The converged step was committed at a landing time, or taken again
+  // shorter through an impact (solvers/ImpactSteps.h): a new part of the step
+  // begins (not converged, not a restart).
+  bool subStep = false;
+  double shortened = 0;  // the length the step is taken again with (0: it stood)
 };
 
 class Analysis {
@@ -120,6 +126,10 @@ class Analysis {
   std::function<void()> onCommit;
   // Joints formed and ruptured during the run (after a commit; set onEvent to hear of them).
   TopologyEvents& topologyEvents() { return topology_; }
+
+  // The step control through impacts (on by default in dynamics).
+  ImpactSteps& impactSteps() { return impacts_; }
+  const ImpactSteps& impactSteps() const { return impacts_; }
 
   // Members removed during the run (BLASt at their times; REMOve through
   // removeElements); set removals().onEvent to hear of them.
@@ -234,6 +244,7 @@ class Analysis {
   HingeEvents hinges_;
   TopologyEvents topology_;
   MemberRemoval removal_;
+  ImpactSteps impacts_;
   double stepEnd_ = 0;  // end of the step TIME began (sub-steps end on landing times before it)
   bool predicted_ = false;      // the current step started from the prediction
   bool globalized_ = false;     // the step's plain Newton cycled: line search from then on

@@ -44,14 +44,44 @@ State denseState(const State& state, double t, const TimeIntegrator& integrator)
   return out;
 }
 
+DenseOutput::Committed DenseOutput::committed(const State& state) {
+  return {state.tn, state.propn, state.arcLambdan, state.un, state.vn, state.an};
+}
+
+void DenseOutput::stepBegins(const State& state) {
+  parts_.clear();
+  parts_.push_back(committed(state));
+}
+
+void DenseOutput::partCommitted(const State& state) {
+  // A part taken again (a cut step) replaces the commits it comes before.
+  while (!parts_.empty() && parts_.back().t >= state.tn) parts_.pop_back();
+  if (!parts_.empty()) parts_.push_back(committed(state));
+}
+
 void DenseOutput::schedule(const State& state, double t) {
   time_.reset();
   sample_.reset();
+  bracket_.reset();
   if (endsOn(state, t) || !(state.t > t)) return;
   time_ = t;
   t_ = state.t;
   tn_ = state.tn;
   step_ = state.step;
+  // t before the last part's start: between the commits that bracket it.
+  if (t >= state.tn || parts_.size() < 2 || parts_.front().t > t) return;
+  std::size_t k = 0;
+  while (k + 1 < parts_.size() && parts_[k + 1].t <= t) ++k;
+  if (k + 1 >= parts_.size()) return;
+  const Committed& a = parts_[k];
+  const Committed& b = parts_[k + 1];
+  if (a.u.size() != state.u.size() || b.u.size() != state.u.size()) return;
+  State s = state;
+  s.tn = a.t, s.propn = a.prop, s.arcLambdan = a.arcLambda;
+  s.un = a.u, s.vn = a.v, s.an = a.a;
+  s.t = b.t, s.prop = b.prop, s.arcLambda = b.arcLambda;
+  s.u = b.u, s.v = b.v, s.a = b.a;
+  bracket_ = std::move(s);
 }
 
 std::optional<double> DenseOutput::scheduled(const State& state) const {
@@ -67,7 +97,16 @@ const State& DenseOutput::outputState(const Model& model, State& state,
     sample_.reset();
     return state;
   }
-  if (!sample_) sample_ = denseState(state, *t, integrator);
+  if (!sample_) {
+    sample_ = denseState(bracket_ ? *bracket_ : state, *t, integrator);
+    if (bracket_) {
+      // The elements' quantities stay the step's (the sample moves no element);
+      // the committed part is the state's.
+      State& out = *sample_;
+      out.tn = state.tn, out.un = state.un, out.vn = state.vn, out.an = state.an;
+      out.propn = state.propn, out.arcLambdan = state.arcLambdan;
+    }
+  }
   return *sample_;
 }
 

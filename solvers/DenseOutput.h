@@ -18,6 +18,7 @@
 // rotation is interpolated like the rest. What the elements report (section
 // forces, hinges, joints) is theirs at t_n+1: the sample moves no element.
 #include <optional>
+#include <vector>
 
 #include "core/Model.h"
 #include "core/State.h"
@@ -44,11 +45,26 @@ class DenseOutput {
   // The scheduled time, while it applies to `state`.
   std::optional<double> scheduled(const State& state) const;
 
+  // A step taken in parts (solvers/ImpactSteps.h) commits each part: a time
+  // scheduled within an earlier part than the last is sampled between the
+  // committed states that bracket it. stepBegins() with the state a step
+  // starts from, partCommitted() after each part's commit.
+  void stepBegins(const State& state);
+  void partCommitted(const State& state);
+
  private:
+  struct Committed {
+    double t = 0, prop = 0, arcLambda = 0;
+    Eigen::VectorXd u, v, a;
+  };
+  static Committed committed(const State& state);
+
   std::optional<double> time_;
   double t_ = 0, tn_ = 0;  // the state it was scheduled in
   int step_ = 0;
   std::optional<State> sample_;  // made at the first output
+  std::vector<Committed> parts_;   // the step's start and its parts' commits
+  std::optional<State> bracket_;   // the part that holds the scheduled time
 };
 
 }  // namespace c2d

@@ -91,12 +91,12 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
   if (model.ground())
     loads.add(model.ground()->y0)
         .add(model.ground()->k)
-        .add(model.ground()->alpha)
+        .add(model.ground()->zeta)
         .add(model.ground()->mu)
         .add(model.ground()->restitution);
   loads.add(model.memberContact().has_value());
   if (const auto& c = model.memberContact())
-    loads.add(c->k).add(c->alpha).add(c->radius).add(c->restitution).add(c->mu);
+    loads.add(c->k).add(c->zeta).add(c->radius).add(c->restitution).add(c->mu);
   // Floor loads (QLOAd): their load, and their mass when they carry it.
   loads.add(model.elementLoads().size());
   for (const ElementLoad& q : model.elementLoads()) {

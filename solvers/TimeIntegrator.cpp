@@ -28,6 +28,7 @@ StepRule TimeIntegrator::rule(double dt) const {
       break;
     case Kind::Newmark:
       r.scheme = Scheme::Newmark;
+      r.h = dt;
       r.ca = 1.0 / (beta * dt * dt);
       r.av = -1.0 / (beta * dt);
       r.aa = -(0.5 / beta - 1.0);
@@ -38,6 +39,7 @@ StepRule TimeIntegrator::rule(double dt) const {
     case Kind::MidPoint: {
       r.scheme = Scheme::MidPoint;
       r.alpha = alpha;
+      r.h = dt;
       const double w = 0.5 + betaV;
       r.cv = 1.0 / (w * dt);
       r.vv = -(0.5 - betaV) / w;

@@ -25,7 +25,7 @@ const char* kPiece = R"(FEAP * * a free two-element piece dropped 20 m
 COORdinates
   1 0 0 20
   2 0 1.5 20.3
-  3 0 3 20
+  3 0 3 20.2
 
 ELEMents
   1 0 1 1 2
@@ -78,11 +78,13 @@ TEST(BrokenPiece, AFreeTwoElementPieceBreaksOnceAtItsMiddleOnTheGround) {
   EXPECT_EQ(joint[1], "2");
   const std::size_t jointAt = r.log.find("joint  formed");
   EXPECT_EQ(r.log.find("joint  formed", jointAt + 1), std::string::npos) << r.log;
+  // Both elements reach Mu at the middle node within the impact (the moment
+  // is continuous there); no hinge opens after the piece has broken.
   const std::size_t opened = r.log.find("activated at t = ");
   ASSERT_NE(opened, std::string::npos) << r.log;
   EXPECT_LT(opened, jointAt);
-  EXPECT_EQ(r.log.find("activated at t = ", opened + 1), std::string::npos) << r.log;
-  EXPECT_NE(r.log.find("1 hinge, 1 joint formed, 0 ruptured"), std::string::npos) << r.log;
+  EXPECT_EQ(r.log.find("activated at t = ", jointAt), std::string::npos) << r.log;
+  EXPECT_NE(r.log.find(" 1 joint formed, 0 ruptured"), std::string::npos) << r.log;
 }
 
 }  // namespace

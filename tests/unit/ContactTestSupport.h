@@ -56,12 +56,15 @@ inline int newRod(Model& m, const Vec2& a, const Vec2& b, int n, int mat = 1) {
   return first;
 }
 
+// One step (TIME) solved by Newton iterations, at most maxIterations for each
+// part of it (a step through an impact is taken in parts: solvers/ImpactSteps.h).
 inline bool solveStep(Analysis& an, int maxIterations = 40) {
   if (!an.advance()) return false;
   IterationInfo info;
   for (int i = 0; i < maxIterations; ++i) {
     if (!an.iterate(false, false, info)) return false;
     if (info.converged) return true;
+    if (info.subStep) i = -1;
   }
   for (const IterationInfo& h : an.stepHistory())
     std::printf("  iteration %d: residual %.3e energy %.3e\n", h.iteration, h.residual, h.energy);

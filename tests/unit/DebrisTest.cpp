@@ -134,7 +134,7 @@ TEST(Debris, AtRestAgainstTheRatio) {
 TEST(Debris, PictureShowsFootprintSiteAndHistogram) {
   State s;
   Model m = twoBars(-3.0, s);
-  m.ground() = Ground{0, 1e4, -1};
+  m.ground() = Ground{0, 1e4, 0};
   m.site() = Site{-1, 6};
   const DebrisFigures d = debrisFigures(m, s);
   EXPECT_DOUBLE_EQ(d.left, 3);

@@ -87,9 +87,12 @@ TEST(GroundCrushing, StaticLawUnloadsStiffAndStopsAtTheSet) {
 
 TEST(GroundCrushing, LoadingPointFollowsTheLargestPenetrationAndIsForgottenAboveTheGround) {
   const Ground g{0.0, 1e4, 0.0, 0.0, 0.5};
-  EXPECT_EQ(loadingPoint(g, 0.0, -1e-3), 1e-3);
-  EXPECT_EQ(loadingPoint(g, 2e-3, -1e-3), 2e-3);
-  EXPECT_EQ(loadingPoint(g, 2e-3, 1e-6), 0.0);
+  EXPECT_EQ(loadingPoint(g, 0.0, 0.0, -1e-3, 0.0, 0.0), 1e-3);
+  EXPECT_EQ(loadingPoint(g, 2e-3, 0.0, -1e-3, 0.0, 0.0), 2e-3);
+  EXPECT_EQ(loadingPoint(g, 2e-3, 0.0, 1e-6, 0.0, 0.0), 0.0);
+  // Still moving down, or massless: the step's end.
+  EXPECT_EQ(loadingPoint(g, 0.0, 2.0, -1e-3, -1.0, -0.5), 1e-3);
+  EXPECT_EQ(loadingPoint(g, 0.0, 0.0, -1e-3, -1.0, 0.5), 1e-3);
   // Stored energy: the unloading branch's f^2 e^2 / (2 k).
   const double q = 2e-3, p = 0.9 * q, f = g.k * q - 4 * g.k * (q - p);
   EXPECT_NEAR(contactEnergy(g, q, -p), f * f * 0.25 / (2 * g.k), 1e-15);

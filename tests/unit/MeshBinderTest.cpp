@@ -332,7 +332,7 @@ TEST(MeshBinderContact, GroundGravityAndPrint) {
   ASSERT_TRUE(m.ground().has_value());
   EXPECT_EQ(m.ground()->y0, -0.5);
   EXPECT_EQ(m.ground()->k, 1e7);
-  EXPECT_EQ(m.ground()->alpha, -1.0);
+  EXPECT_EQ(m.ground()->zeta, 0.0);
   EXPECT_EQ(m.gravity().y(), -9.81);
   EXPECT_EQ(m.force(4)[1], -77.0);
   const std::string s = echo.str();
@@ -341,7 +341,7 @@ TEST(MeshBinderContact, GroundGravityAndPrint) {
   EXPECT_NE(s.find("N o d a l   B. C."), std::string::npos);
   EXPECT_EQ(s.find("N o d a l   F o r c e s"), std::string::npos);  // under NOPRint
   Model a = build(kPortal + "CONT\n GROU,,0,1e5,0.25\n\n");
-  EXPECT_EQ(a.ground()->alpha, 0.25);
+  EXPECT_EQ(a.ground()->zeta, 0.25);
   expectBuildError(kPortal + "CONT\n GROU,,0,-1\n\n", 21, 10,
                    "penalty stiffness k must be positive");
   expectBuildError(kPortal + "CONT\n WALL,,0,1\n\n", 21, 2, "unknown contact type 'WALL'");

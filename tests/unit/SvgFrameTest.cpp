@@ -235,7 +235,7 @@ TEST(SvgFrame, SupportsFollowTheRestraintCodes) {
 
 TEST(SvgFrame, GroundLineAtItsLevel) {
   Model m = portal();
-  m.ground() = Ground{-1.0, 1e6, -1};
+  m.ground() = Ground{-1.0, 1e6, 0};
   State st;
   st.resize(m.numNodes());
   const XmlNode root = XmlReader::parse(SvgFrame().setCurved(false).svg(m, st));
