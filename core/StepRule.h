@@ -60,6 +60,7 @@ struct StepRule {
   Scheme scheme = Scheme::Static;
   // Mid-point strain weight: stress resultants from (1/2+alpha) E_{n+1} + (1/2-alpha) E_n.
   double alpha = 0;
+  double dt = 0;  // the step's length (dynamics): rates over the step, e.g. a dashpot's
   double cv = 0, vv = 0, va = 0;
   double ca = 0, av = 0, aa = 0;
   bool dynamic() const { return scheme != Scheme::Static; }

@@ -26,7 +26,8 @@
 // one-point element is free of shear locking). Dynamics as in LinearFrame:
 // residual f_int + M a_eff, consistent (linear) or lumped mass; under the
 // mid-point scheme the resultants are weighted between the committed and the
-// trial state with (1/2 - alpha, 1/2 + alpha).
+// trial state with (1/2 - alpha, 1/2 + alpha). DAMPing adds the section's
+// dashpot in dynamics (materials/SectionDamping.h).
 #include <array>
 #include <optional>
 
@@ -36,6 +37,7 @@
 #include "core/MaterialChange.h"
 #include "core/MaterialSet.h"
 #include "materials/HingedBending.h"
+#include "materials/SectionDamping.h"
 
 namespace c2d {
 
@@ -95,6 +97,7 @@ class InelasticFrame final : public Element,
   double EA_, GA_;
   double rhoA_;  // mass per unit length
   HingedBending law_;
+  SectionDamping damping_;  // DAMPing: the section's dashpot in dynamics
   ElemMat rotation_;  // global -> element frame, block diagonal
   ElemMat mass_;
   PointState committed_, trial_;

@@ -98,7 +98,8 @@ ReissnerFrame::ReissnerFrame(const MaterialSet& mat, const std::array<int, 2>& n
       ga_(mat.GA()),
       ei_(mat.EI()),
       rhoA_(mat.rhoA()),
-      law_(mat) {
+      law_(mat),
+      damping_(mat.dampingA1) {
   assert(length_ > 0 && "element of zero length");
   // Rotation is additive in 2D: the kinetic energy is quadratic in the nodal
   // velocities, so the mass matrix is constant (linear shape functions).
@@ -128,14 +129,16 @@ double ReissnerFrame::energy(const ElemVec& d) const {
 
 // Internal force grad W(d) and its (symmetric) derivative for the bending
 // moment m and its tangent kt = dm/dK at d; returns E(d).
-Vec3 ReissnerFrame::staticForce(const ElemVec& d, double m, double kt, bool wantTangent, ElemVec& f,
-                                ElemMat& k) const {
+Vec3 ReissnerFrame::staticForce(const ElemVec& d, double m, double kt, const Damper& damper,
+                                bool wantTangent, ElemVec& f, ElemMat& k) const {
   const double l = length_;
   const Vec2 g = (x2_ + d.segment<2>(3) - x1_ - d.segment<2>(0)) / l;
   const Mat2 lam = rot(beta0_ + 0.5 * (d(2) + d(5)));
   const Vec2 h = lam.transpose() * g;  // Lambda^T phi'
   const Vec3 e(h.x() - 1, h.y(), (d(5) - d(2)) / l);
-  const Vec2 n(ea_ * (e(0) - e0_(0)), ga_ * (e(1) - e0_(1)));
+  const double df = damper.f;
+  const Vec2 n(ea_ * (e(0) - e0_(0) + df * (e(0) - damper.eN(0))),
+               ga_ * (e(1) - e0_(1) + df * (e(1) - damper.eN(1))));
 
   // dE/dd: dh/dphi' = Lambda^T, dh/dpsi = -W h, dpsi/dtheta_a = 1/2.
   const Mat2 p = lam.transpose() / l;
@@ -143,7 +146,7 @@ Vec3 ReissnerFrame::staticForce(const ElemVec& d, double m, double kt, bool want
   strainOperatorForce(l, p, c, n, m, f);
   if (!wantTangent) return e;
 
-  materialTangent(l, 1.0, p, {c, c}, 1.0, p, c, ea_, ga_, kt, k);
+  materialTangent(l, 1.0, p, {c, c}, 1.0, p, c, (1 + df) * ea_, (1 + df) * ga_, kt, k);
   // Geometric part n . d(b_j)/d(d_k).
   const Vec2 q = lam * kW.transpose() * n;  // q_i = n . (W Lambda^T e_i)
   const double nh = n.dot(h);
@@ -261,33 +264,45 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
   const double openSign =
       !from.hingeActive && trial_.section.hingeActive ? trial_.section.hingeSign : 0.0;
   HingedBendingResponse bend;
-  if (Status st = law_.respond((kin.d(5) - kin.d(2)) / length_ - e0_(2), length_, from, openSign,
-                               bend);
-      !st)
-    return st;
+  const double kappa1 = (kin.d(5) - kin.d(2)) / length_ - e0_(2);
+  if (Status st = law_.respond(kappa1, length_, from, openSign, bend); !st) return st;
   const double m1 = bend.state.M;
+  const double kappaN = (kin.dn(5) - kin.dn(2)) / length_ - e0_(2);
+  // The section's dashpot (materials/SectionDamping.h): f = a1/h times the
+  // strains' change over the step, in bending the elastic curvature's.
+  const double f = damping_.factor(rule);
+  SectionDamping::Bending md;
+  if (f > 0)
+    md = law_.isElastic()
+             ? SectionDamping::elasticBending(f, law_.EI(), kappa1 - kappaN)
+             : SectionDamping::bending(f, law_.EI(), m1 - from.M, kappa1 - kappaN, bend.tangent);
   Vec3 strain;
   std::array<double, 2> halfTan{};
   const std::array<double, 2>* halfTanAt = nullptr;
   if (rule.scheme == Scheme::MidPoint) {
     // Resultants at the alpha-weighted point: for bending the weighted moments
     // of the committed and the trial state; an elastic section's moment at t_n
-    // is that of the curvature at d_n.
-    const double w = 0.5 + rule.alpha;
+    // is that of the curvature at d_n. The dashpot weighs the strains' change
+    // by f more (alpha + f); its moment is added to the weighted one.
+    const double w = 0.5 + rule.alpha, wd = w + f;
     halfTanAt = &halfTan;
-    const double kappaN = (kin.dn(5) - kin.dn(2)) / length_ - e0_(2);
     if (law_.isElastic()) {
-      strain = midPointForce(kin.d, kin.dn, rule.alpha, w * m1 + (1 - w) * law_.EI() * kappaN,
-                             bend.tangent, wantTangent, residual, tangent, halfTan);
+      strain =
+          midPointForce(kin.d, kin.dn, rule.alpha + f, w * m1 + (1 - w) * law_.EI() * kappaN + md.m,
+                        f > 0 ? (w * bend.tangent + md.tangent) / wd : bend.tangent, wantTangent,
+                        residual, tangent, halfTan);
     } else {  // inelastic: a moment whose work never exceeds the stored energy's change
       const auto mm =
-          law_.midPointMoment(from, kappaN, bend.state, (kin.d(5) - kin.d(2)) / length_ - e0_(2),
-                              bend.tangent, length_, w);
-      strain = midPointForce(kin.d, kin.dn, rule.alpha, mm.m, mm.tangent / w, wantTangent, residual,
-                             tangent, halfTan);
+          law_.midPointMoment(from, kappaN, bend.state, kappa1, bend.tangent, length_, w);
+      strain =
+          midPointForce(kin.d, kin.dn, rule.alpha + f, mm.m + md.m, (mm.tangent + md.tangent) / wd,
+                        wantTangent, residual, tangent, halfTan);
     }
   } else {
-    strain = staticForce(kin.d, m1, bend.tangent, wantTangent, residual, tangent);
+    Damper damper;
+    if (f > 0) damper = {f, strains(kin.dn)};
+    strain = staticForce(kin.d, m1 + md.m, bend.tangent + md.tangent, damper, wantTangent, residual,
+                         tangent);
   }
   if (rule.dynamic())
     rule.addInertia(mass_, kin.d - kin.dn, kin.vn, kin.an, residual, wantTangent ? &tangent : nullptr,
@@ -326,7 +341,7 @@ void ReissnerFrame::writeState(std::ostream& out) const {
   put(out, materialNumber_);
   putFixed(out, x1_);
   putFixed(out, x2_);
-  for (double x : {length_, beta0_, ea_, ga_, ei_, rhoA_}) put(out, x);
+  for (double x : {length_, beta0_, ea_, ga_, ei_, rhoA_, damping_.coefficient()}) put(out, x);
   putFixed(out, e0_);
   putFixed(out, mass_);
   // The material set may have hinge laws that this element dropped (HINGE2JOINT).
@@ -344,6 +359,7 @@ void ReissnerFrame::readState(std::istream& in) {
   getFixed(in, x1_);
   getFixed(in, x2_);
   for (double* x : {&length_, &beta0_, &ea_, &ga_, &ei_, &rhoA_}) *x = get<double>(in);
+  damping_ = SectionDamping(get<double>(in));
   getFixed(in, e0_);
   getFixed(in, mass_);
   if (getBool(in)) law_ = HingedBending(BilinearHardening::elastic(ei_), std::nullopt);
@@ -374,6 +390,7 @@ Status ReissnerFrame::setMaterial(const MaterialSet& mat, const ElemVec& d) {
   ga_ = fresh.ga_;
   ei_ = fresh.ei_;
   rhoA_ = fresh.rhoA_;
+  damping_ = fresh.damping_;
   mass_ = fresh.mass_;
   law_ = law;
   const double alpha = section.hingeActive ? section.jump.alpha / length_ : 0.0;

@@ -37,6 +37,11 @@
 // HingedBending::midPointMoment, whose work never exceeds the change of the
 // stored energy. The hinge opens only when the solver
 // asks (core/Hinge.h), as in InelasticFrame.
+//
+// DAMPing adds the section's dashpot in dynamics (materials/SectionDamping.h):
+// under the mid-point scheme the resultants come from the (alpha + a1/h)-
+// weighted strains and the work identity above holds with alpha + a1/h; the
+// reported section forces and energy stay the material's.
 #include <array>
 #include <limits>
 #include <string>
@@ -47,6 +52,7 @@
 #include "core/MaterialChange.h"
 #include "core/MaterialSet.h"
 #include "materials/HingedBending.h"
+#include "materials/SectionDamping.h"
 
 namespace c2d {
 
@@ -108,9 +114,15 @@ class ReissnerFrame final : public Element, public HingeCarrier, public Checkpoi
     HingedBendingState section;
   };
 
+  // The section's dashpot in a Newmark step: f = a1/h and the strains at d_n;
+  // it adds f C (E(d) - eN) to the axial and shear resultants.
+  struct Damper {
+    double f = 0;
+    Vec3 eN = Vec3::Zero();
+  };
   // Internal force and tangent; both return the strains E(d).
-  Vec3 staticForce(const ElemVec& d, double m, double kt, bool wantTangent, ElemVec& f,
-                   ElemMat& k) const;
+  Vec3 staticForce(const ElemVec& d, double m, double kt, const Damper& damper, bool wantTangent,
+                   ElemVec& f, ElemMat& k) const;
   // halfTan: tan of the nodal rotation increments' halves (the Cayley rate of
   // the inertia), found from the sines and cosines the force needs.
   Vec3 midPointForce(const ElemVec& d, const ElemVec& dn, double alpha, double m, double kt,
@@ -125,6 +137,7 @@ class ReissnerFrame final : public Element, public HingeCarrier, public Checkpoi
   double ea_ = 0, ga_ = 0, ei_ = 0, rhoA_ = 0;
   Vec3 e0_ = Vec3::Zero();
   HingedBending law_;
+  SectionDamping damping_;  // DAMPing: the section's dashpot in dynamics
   ElemMat mass_;  // global frame
   Report trial_, committed_;
   // The mean rotation at d_n (fixed over a step) and the angle it belongs to:

@@ -16,6 +16,7 @@
 #include "macro/Limits.h"
 #include "macro/BlastCommand.h"
 #include "macro/LoadCommands.h"
+#include "macro/MaterialRecords.h"
 
 namespace c2d {
 
@@ -276,6 +277,7 @@ void echoMaterial(std::ostream& os, const MaterialSet& m) {
   line("Density", m.density);
   os << "      Mass               " << (m.mass == MassType::Lumped ? "lumped" : "consistent")
      << "\n";
+  if (m.dampingA1 > 0) line("Damping a1 (s)", m.dampingA1);
   if (m.hardening) {
     line("Hardening Mc", m.hardening->Mc);
     line("Hardening My", m.hardening->My);
@@ -393,6 +395,8 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
         failAt(r, 3, "a rotary inertia factor other than 1 is not available");
       mat.density = v[0];
       densityRec = &r;
+    } else if (key == "damp") {
+      mat.dampingA1 = readDamping(ctx, r);
     } else if (key == "mass") {
       mat.mass = option("MASS LUMPed / MASS CONSistent", {"LUMPed", "CONSistent"}) == "LUMPed"
                      ? MassType::Lumped
@@ -1014,15 +1018,6 @@ std::vector<FieldSpec> nodeValueFields(const std::string& what) {
           expr(what + "3", "rotation")};
 }
 
-CommandSpec subSpec(std::string name, std::string doc, std::vector<FieldSpec> fields) {
-  CommandSpec s;
-  s.name = std::move(name);
-  s.doc = std::move(doc);
-  s.fields = std::move(fields);
-  s.section = CommandSection::SubRecord;
-  return s;
-}
-
 }  // namespace
 
 std::vector<MeshCommandEntry> meshCommandTable() {
@@ -1070,10 +1065,10 @@ std::vector<MeshCommandEntry> meshCommandTable() {
                         "section forces at the converged state and their history (plastic "
                         "curvature, hinge, initial strain, joint rotations) are kept and the new "
                         "stiffness acts on the increments; stiffness, SHEAr, density, MASS, "
-                        "HARDening and SOFTening may change. Refused: SMALl <-> FINIte (use "
-                        "HINGe2joint), HARDening/SOFTening for elastic SMALl elements, removing "
-                        "the SOFTening of an active hinge, a Mu or yield moment below the "
-                        "element's moment, capacity given back to a failed hinge.",
+                        "DAMPing, HARDening and SOFTening may change. Refused: SMALl <-> FINIte "
+                        "(use HINGe2joint), HARDening/SOFTening for elastic SMALl elements, "
+                        "removing the SOFTening of an active hinge, a Mu or yield moment below "
+                        "the element's moment, capacity given back to a failed hinge.",
                         {expr("m", "material set number"), text("label", "free text")},
                         "FRAMe, then material records", {}),
                applyMaterial});
@@ -1211,53 +1206,6 @@ std::vector<MeshCommandEntry> meshCommandTable() {
 
 void registerMeshCommands(CommandRegistry& registry) {
   for (auto& e : meshCommandTable()) registry.add(std::move(e.spec));
-}
-
-void registerMaterialSubRecords(CommandRegistry& r) {
-  r.add(subSpec("FRAMe", "Element type: two-node plane frame (first record of MATErial).", {}));
-  r.add(subSpec("ELAStic", "ELAStic ISOTropic E nu: Young's modulus and Poisson ratio.",
-                {text("ISOTropic", "the only kind for frames"), expr("E", "modulus"),
-                 expr("nu", "Poisson ratio", "0")}));
-  r.add(subSpec("CROSs",
-                "CROSs SECTion A I [Iyy Ixy J kappa kappa2] (FEAPpv's record): a plane frame "
-                "uses A, I and the shear factor kappa (0: 5/6).",
-                {text("SECTion", "any word"), expr("A", "area"), expr("I", "second moment of area"),
-                 expr("Iyy", "ignored in 2D", "0"), expr("Ixy", "ignored in 2D", "0"),
-                 expr("J", "ignored in 2D", "0"), expr("kappa", "shear factor", "5/6"),
-                 expr("kappa2", "ignored in 2D", "0")}));
-  r.add(subSpec("SHEAr", "SHEAr ON: Timoshenko (default); SHEAr OFF: Euler-Bernoulli.",
-                {text("ON/OFF", "", "ON")}));
-  r.add(subSpec("SMALl", "Geometrically linear kinematics (default).", {}));
-  r.add(subSpec("FINIte", "Geometrically exact (Reissner) kinematics.", {}));
-  r.add(subSpec("DENSity", "DENSity,,rho: mass per unit volume.",
-                {text("", "empty"), expr("rho", "density")}));
-  r.add(subSpec("MASS", "MASS LUMPed or MASS CONSistent (default).",
-                {text("LUMPed/CONSistent", "", "CONSistent")}));
-  r.add(subSpec(
-      "RESUltant",
-      "RESUltant STIFfness EA GA EI: stress-resultant stiffnesses instead of ELAStic + "
-      "CROSs (GA includes the shear factor).",
-      {text("STIFfness", ""), expr("EA", "axial"), expr("GA", "shear"), expr("EI", "bending")}));
-  r.add(subSpec("HARDening",
-                "HARDening BILInear Mc My Kh1 Kh2: elastoplastic bending, elastic up to Mc, "
-                "modulus Kh1 to My, Kh2 beyond.",
-                {text("BILInear", ""), expr("Mc", "moment"), expr("My", "moment"),
-                 expr("Kh1", "modulus"), expr("Kh2", "modulus")}));
-  r.add(subSpec(
-      "SOFTening",
-      "SOFTening LINEar Mu Ks [thetaR [Mr]]: softening hinge activated when |M| reaches Mu; "
-      "hinge moment Mu + Ks*jump down to zero (Ks < 0). With FINIte kinematics a fully "
-      "softened hinge becomes a revolute joint during the run; a joint whose relative "
-      "rotation exceeds thetaR (rad) ruptures and the pieces separate (a joint whose node "
-      "presses on the ground ruptures when the node leaves it). Mr: the joint's friction "
-      "(the broken section's residual moment), a moment Mr opposing its relative rotation, "
-      "regularised over the step's relative rotation w: Mr w/sqrt(w^2 + eps^2), eps = Mr "
-      "l/EI; dissipated (energy account). Only where the joint is condensed into the "
-      "element: a JOINt whose slave node has more than one element (or nodal data) with "
-      "Mr > 0 is an error at its record.",
-      {text("LINEar", ""), expr("Mu", "ultimate moment"), expr("Ks", "softening modulus"),
-       expr("thetaR", "rupture rotation of the joint (optional)"),
-       expr("Mr", "friction moment of the joint (optional, 0)")}));
 }
 
 // ---------------------------------------------------------------------------

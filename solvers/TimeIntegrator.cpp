@@ -22,6 +22,7 @@ TimeIntegrator TimeIntegrator::midPoint(double alpha, double beta) {
 
 StepRule TimeIntegrator::rule(double dt) const {
   StepRule r;
+  r.dt = dt;
   switch (kind) {
     case Kind::Static:
       r.scheme = Scheme::Static;
