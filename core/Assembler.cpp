@@ -139,7 +139,11 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
   bool missing = false;
   PairVec f;
   PairMat k;
+  members_->assembling(rule);
+  swept_.update(model_, s);
+  const double extra = members_->slack();
   for (const ContactPair& p : candidates) {
+    if (!swept_.reach(p, extra)) continue;
     if (!members_->evaluate(p, model_, s, rule, wantTangent, f, k)) continue;
     const int slot = slotOf(p);
     missing = missing || slot < 0;
@@ -156,7 +160,7 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
   patternPairs_.clear();
   const double reserve = 0.25 * members_->margin();
   for (const ContactPair& p : candidates)
-    if (members_->near(p, model_, s, reserve)) patternPairs_.push_back(p.key());
+    if (swept_.reach(p, reserve)) patternPairs_.push_back(p.key());
   buildPattern();
   for (PairForce& pf : contactForces_) pf.slot = slotOf(pf.pair);
 }

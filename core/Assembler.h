@@ -29,6 +29,7 @@
 #include "core/MemberContact.h"
 #include "core/Model.h"
 #include "core/State.h"
+#include "core/SweptBoxes.h"
 #include "solvers/LinearSolver.h"
 
 namespace c2d {
@@ -149,6 +150,7 @@ class Assembler {
   double forceScale_ = 0;
 
   std::unique_ptr<MemberContact> members_;
+  SweptBoxes swept_;  // the nodes' boxes over the step, per assembly: the pairs' first test
   int pushedThrough_ = 0;
   double pushedThroughEnergy_ = 0;
   std::vector<std::uint64_t> patternPairs_;   // sorted keys of the pairs in the pattern

@@ -67,6 +67,10 @@ struct MaterialSet {
   Kinematics kinematics = Kinematics::Small;
   double density = 0;                      // mass per unit volume
   MassType mass = MassType::Consistent;
+  // DAMPing RAYLeigh 0 a1 / DAMPing RATIo zeta f: stiffness-proportional
+  // damping of the section's strain rates, a1 in time units (s); 0: none
+  // (materials/SectionDamping.h).
+  double dampingA1 = 0;
   std::optional<HardeningData> hardening;
   std::optional<SofteningData> softening;
   HingeSite hingeSite = HingeSite::Midpoint;

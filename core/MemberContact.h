@@ -210,6 +210,14 @@ class MemberContact {
   }
 
   double margin() const { return margin_; }
+  // The most a pair's memory reaches beyond its contact distance: evaluate()
+  // sees a pair whose swept boxes are within its distance plus this.
+  double slack() const { return slack_; }
+  // An assembly under `rule` begins (the rule the friction stretches of its
+  // trial state belong to, as evaluate() notes it).
+  void assembling(const StepRule& rule) const {
+    if (lastRule_.scheme != rule.scheme || lastRule_.alpha != rule.alpha) lastRule_ = rule;
+  }
   double radius(int element) const { return elementRadius_[element]; }
 
  private:

@@ -60,7 +60,8 @@ struct StepRule {
   Scheme scheme = Scheme::Static;
   // Mid-point strain weight: stress resultants from (1/2+alpha) E_{n+1} + (1/2-alpha) E_n.
   double alpha = 0;
-  // The step's length t_n+1 - t_n (dynamic rules; 0 in statics).
+  // The step's length t_n+1 - t_n (dynamic rules; 0 in statics): rates over
+  // the step, a dashpot's.
   double h = 0;
   double cv = 0, vv = 0, va = 0;
   double ca = 0, av = 0, aa = 0;

@@ -35,7 +35,8 @@ InelasticFrame::InelasticFrame(const MaterialSet& mat, const std::array<int, 2>&
       EA_(mat.EA()),
       GA_(mat.GA()),
       rhoA_(mat.rhoA()),
-      law_(mat) {
+      law_(mat),
+      damping_(mat.dampingA1) {
   if (mat.rc) axial_ = mat.rc->axialCapacity();
   if (!(length_ > 0)) throw std::invalid_argument("frame element with coincident nodes");
   if (!(EA_ > 0) || !(GA_ > 0))
@@ -119,15 +120,30 @@ Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& ru
     N = mp.n;
     kN = mp.tangent;
   }
-  const double V = w * f1.V + (1 - w) * GA_ * b.gamma.dot(dln);
-  const double M = w * f1.M + (1 - w) * committed_.forces.M;
+  double V = w * f1.V + (1 - w) * GA_ * b.gamma.dot(dln);
+  double M = w * f1.M + (1 - w) * committed_.forces.M;
+  // The section's dashpot (materials/SectionDamping.h): f = a1/h times the
+  // strains' change, in bending the elastic curvature's (not with laws that
+  // follow the axial force: MaterialRecords refuses both).
+  const double f = coupled ? 0.0 : damping_.factor(rule);
+  SectionDamping::Bending md;
+  if (f > 0) {
+    const ElemVec ddl = dl - dln;
+    N += f * EA_ * b.eps.dot(ddl);
+    V += f * GA_ * b.gamma.dot(ddl);
+    const double dK = b.kappa.dot(ddl);
+    md = law_.isElastic()
+             ? SectionDamping::elasticBending(f, law_.EI(), dK)
+             : SectionDamping::bending(f, law_.EI(), f1.M - committed_.forces.M, dK, kt);
+    M += md.m;
+  }
   const ElemVec fLocal = l * (N * b.eps + V * b.gamma + M * b.kappa);
   residual = rotation_.transpose() * fLocal;
   if (wantTangent) {
     if (!coupled) {
-      const ElemMat kLocal = l * w *
-                             (EA_ * b.eps * b.eps.transpose() + GA_ * b.gamma * b.gamma.transpose() +
-                              kt * b.kappa * b.kappa.transpose());
+      const ElemMat kLocal =
+          l * ((w + f) * (EA_ * b.eps * b.eps.transpose() + GA_ * b.gamma * b.gamma.transpose()) +
+               (w * kt + md.tangent) * b.kappa * b.kappa.transpose());
       tangent = rotation_.transpose() * kLocal * rotation_;
     } else {
       // The moment follows N: dM/ddl = kt b_kappa + dM/dN dN/deps b_eps.
@@ -200,7 +216,7 @@ void InelasticFrame::writeState(std::ostream& out) const {
   using namespace checkpoint;
   for (int n : nodes_) put(out, n);
   put(out, material_);
-  for (double x : {length_, EA_, GA_, rhoA_}) put(out, x);
+  for (double x : {length_, EA_, GA_, rhoA_, damping_.coefficient()}) put(out, x);
   putFixed(out, rotation_);
   putFixed(out, mass_);
   for (const PointState* p : {&committed_, &trial_}) {
@@ -217,6 +233,7 @@ void InelasticFrame::readState(std::istream& in) {
   for (int& n : nodes_) n = get<int>(in);
   material_ = get<int>(in);
   for (double* x : {&length_, &EA_, &GA_, &rhoA_}) *x = get<double>(in);
+  damping_ = SectionDamping(get<double>(in));
   getFixed(in, rotation_);
   getFixed(in, mass_);
   for (PointState* p : {&committed_, &trial_}) {
@@ -292,6 +309,7 @@ Status InelasticFrame::setMaterial(const MaterialSet& mat, const ElemVec& d) {
   rhoA_ = fresh->rhoA_;
   law_ = fresh->law_;
   axial_ = fresh->axial_;
+  damping_ = fresh->damping_;
   mass_ = fresh->mass_;
   dl0_ = dl0;
   return Status::success();

@@ -35,7 +35,8 @@
 // one-point element is free of shear locking). Dynamics as in LinearFrame:
 // residual f_int + M a_eff, consistent (linear) or lumped mass; under the
 // mid-point scheme the resultants are weighted between the committed and the
-// trial state with (1/2 - alpha, 1/2 + alpha).
+// trial state with (1/2 - alpha, 1/2 + alpha). DAMPing adds the section's
+// dashpot in dynamics (materials/SectionDamping.h).
 #include <array>
 #include <optional>
 
@@ -46,6 +47,7 @@
 #include "core/MaterialSet.h"
 #include "materials/AxialCapacity.h"
 #include "materials/HingedBending.h"
+#include "materials/SectionDamping.h"
 
 namespace c2d {
 
@@ -123,6 +125,7 @@ class InelasticFrame final : public Element,
   HingedBending law_;
   std::optional<AxialCapacity> axial_;  // RC sections
   double axialTangent_ = 0;             // dN/deps of the last evaluation
+  SectionDamping damping_;  // DAMPing: the section's dashpot in dynamics
   ElemMat rotation_;  // global -> element frame, block diagonal
   ElemMat mass_;
   PointState committed_, trial_;

@@ -101,7 +101,8 @@ LinearFrame::LinearFrame(const MaterialSet& mat, const std::array<int, 2>& nodes
       ea_(mat.EA()),
       ga_(mat.GA()),
       ei_(mat.EI()),
-      rhoA_(mat.rhoA()) {
+      rhoA_(mat.rhoA()),
+      damping_(mat.dampingA1) {
   assert(length_ > 0 && "element of zero length");
   cos_ = (x2.x() - x1.x()) / length_;
   sin_ = (x2.y() - x1.y()) / length_;
@@ -148,6 +149,11 @@ Status LinearFrame::evaluate(const ElementKinematics& kin, const StepRule& rule,
   } else {
     residual = stiffness_ * (kin.d - d0_);
   }
+  // The section's dashpot: a1 K (d - dn)/h.
+  if (const double f = damping_.factor(rule); f > 0) {
+    residual += f * (stiffness_ * (kin.d - kin.dn));
+    wk += f;
+  }
   if (wantTangent) tangent = wk * stiffness_;
   if (rule.dynamic()) {
     const ElemVec dd = kin.d - kin.dn;
@@ -184,7 +190,7 @@ void LinearFrame::writeState(std::ostream& out) const {
   for (int n : nodes_) put(out, n);
   put(out, materialNumber_);
   putBool(out, shear_);
-  for (double x : {length_, cos_, sin_, ea_, ga_, ei_, rhoA_}) put(out, x);
+  for (double x : {length_, cos_, sin_, ea_, ga_, ei_, rhoA_, damping_.coefficient()}) put(out, x);
   putFixed(out, stiffness_);
   putFixed(out, mass_);
   for (const Report* r : {&trial_, &committed_})
@@ -198,6 +204,7 @@ void LinearFrame::readState(std::istream& in) {
   materialNumber_ = get<int>(in);
   shear_ = getBool(in);
   for (double* x : {&length_, &cos_, &sin_, &ea_, &ga_, &ei_, &rhoA_}) *x = get<double>(in);
+  damping_ = SectionDamping(get<double>(in));
   getFixed(in, stiffness_);
   getFixed(in, mass_);
   for (Report* r : {&trial_, &committed_})
@@ -240,6 +247,7 @@ Status LinearFrame::setMaterial(const MaterialSet& mat, const ElemVec& d) {
   ga_ = fresh.ga_;
   ei_ = fresh.ei_;
   rhoA_ = fresh.rhoA_;
+  damping_ = fresh.damping_;
   stiffness_ = fresh.stiffness_;
   mass_ = fresh.mass_;
   d0_ = d - x;

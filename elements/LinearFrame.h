@@ -21,6 +21,7 @@
 #include "core/Element.h"
 #include "core/MaterialChange.h"
 #include "core/MaterialSet.h"
+#include "materials/SectionDamping.h"
 
 namespace c2d {
 
@@ -35,6 +36,7 @@ class LinearFrame final : public Element, public Checkpoint, public MaterialChan
   std::string typeName() const override;
 
   // Static/Newmark: r = K d + M a_eff. MidPoint: r = K((1/2+alpha) d + (1/2-alpha) dn) + M a_eff.
+  // A damped section (DAMPing) adds a1 K (d - dn)/h in dynamics (materials/SectionDamping.h).
   Status evaluate(const ElementKinematics& kin, const StepRule& rule, bool wantTangent,
                   ElemVec& residual, ElemMat& tangent) override;
 
@@ -77,6 +79,7 @@ class LinearFrame final : public Element, public Checkpoint, public MaterialChan
   double length_ = 0;
   double cos_ = 1, sin_ = 0;  // axis direction
   double ea_ = 0, ga_ = 0, ei_ = 0, rhoA_ = 0;
+  SectionDamping damping_;
   ElemMat stiffness_;  // global frame
   ElemMat mass_;       // global frame
   Report trial_, committed_;

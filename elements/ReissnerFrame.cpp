@@ -101,7 +101,8 @@ ReissnerFrame::ReissnerFrame(const MaterialSet& mat, const std::array<int, 2>& n
       ga_(mat.GA()),
       ei_(mat.EI()),
       rhoA_(mat.rhoA()),
-      law_(mat) {
+      law_(mat),
+      damping_(mat.dampingA1) {
   assert(length_ > 0 && "element of zero length");
   if (mat.rc) axial_ = mat.rc->axialCapacity();
   // Rotation is additive in 2D: the kinetic energy is quadratic in the nodal
@@ -132,14 +133,16 @@ double ReissnerFrame::energy(const ElemVec& d) const {
 
 // Internal force grad W(d) and its (symmetric) derivative for the bending
 // moment m and its tangent kt = dm/dK at d; returns E(d).
-Vec3 ReissnerFrame::staticForce(const ElemVec& d, double m, double kt, bool wantTangent, ElemVec& f,
-                                ElemMat& k, const Coupling* cp) const {
+Vec3 ReissnerFrame::staticForce(const ElemVec& d, double m, double kt, const Damper& damper,
+                                bool wantTangent, ElemVec& f, ElemMat& k, const Coupling* cp) const {
   const double l = length_;
   const Vec2 g = (x2_ + d.segment<2>(3) - x1_ - d.segment<2>(0)) / l;
   const Mat2 lam = rot(beta0_ + 0.5 * (d(2) + d(5)));
   const Vec2 h = lam.transpose() * g;  // Lambda^T phi'
   const Vec3 e(h.x() - 1, h.y(), (d(5) - d(2)) / l);
-  Vec2 n(ea_ * (e(0) - e0_(0)), ga_ * (e(1) - e0_(1)));
+  const double df = damper.f;
+  Vec2 n(ea_ * (e(0) - e0_(0) + df * (e(0) - damper.eN(0))),
+         ga_ * (e(1) - e0_(1) + df * (e(1) - damper.eN(1))));
   if (cp && cp->axial) n.x() = cp->n;
 
   // dE/dd: dh/dphi' = Lambda^T, dh/dpsi = -W h, dpsi/dtheta_a = 1/2.
@@ -148,7 +151,8 @@ Vec3 ReissnerFrame::staticForce(const ElemVec& d, double m, double kt, bool want
   strainOperatorForce(l, p, c, n, m, f);
   if (!wantTangent) return e;
 
-  materialTangent(l, 1.0, p, {c, c}, 1.0, p, c, cp && cp->axial ? cp->ea : ea_, ga_, kt, k);
+  materialTangent(l, 1.0, p, {c, c}, 1.0, p, c, cp && cp->axial ? cp->ea : (1 + df) * ea_,
+                  (1 + df) * ga_, kt, k);
   if (cp && cp->moment)
     for (int a = 0; a < 2; ++a) k.row(thDof(a)) += nodeSign(a) * cp->dm.transpose();
   // Geometric part n . d(b_j)/d(d_k).
@@ -298,11 +302,19 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
   // Bending: the curvature K = (theta2 - theta1)/l is linear in d.
   const std::array<double, 2> ends = trial_.section.endHinge;  // opened in this trial
   HingedBendingResponse bend;
-  if (Status st = law_.respond((kin.d(5) - kin.d(2)) / length_ - e0_(2), length_, from, openSign,
-                               bend, N1);
-      !st)
-    return st;
+  const double kappa1 = (kin.d(5) - kin.d(2)) / length_ - e0_(2);
+  if (Status st = law_.respond(kappa1, length_, from, openSign, bend, N1); !st) return st;
   const double m1 = bend.state.M;
+  const double kappaN = (kin.dn(5) - kin.dn(2)) / length_ - e0_(2);
+  // The section's dashpot (materials/SectionDamping.h): f = a1/h times the
+  // strains' change over the step, in bending the elastic curvature's (not
+  // with laws that follow the axial force: MaterialRecords refuses both).
+  const double f = coupled ? 0.0 : damping_.factor(rule);
+  SectionDamping::Bending md;
+  if (f > 0)
+    md = law_.isElastic()
+             ? SectionDamping::elasticBending(f, law_.EI(), kappa1 - kappaN)
+             : SectionDamping::bending(f, law_.EI(), m1 - from.M, kappa1 - kappaN, bend.tangent);
   Vec3 strain;
   std::array<double, 2> halfTan{};
   const std::array<double, 2>* halfTanAt = nullptr;
@@ -310,17 +322,18 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
   if (rule.scheme == Scheme::MidPoint) {
     // Resultants at the alpha-weighted point: for bending the weighted moments
     // of the committed and the trial state; an elastic section's moment at t_n
-    // is that of the curvature at d_n.
-    const double w = 0.5 + rule.alpha;
+    // is that of the curvature at d_n. The dashpot weighs the strains' change
+    // by f more (alpha + f); its moment is added to the weighted one.
+    const double w = 0.5 + rule.alpha, wd = w + f;
     halfTanAt = &halfTan;
-    const double kappaN = (kin.dn(5) - kin.dn(2)) / length_ - e0_(2);
     if (law_.isElastic()) {
-      strain = midPointForce(kin.d, kin.dn, rule.alpha, w * m1 + (1 - w) * law_.EI() * kappaN,
-                             bend.tangent, wantTangent, residual, tangent, halfTan);
+      strain =
+          midPointForce(kin.d, kin.dn, rule.alpha + f, w * m1 + (1 - w) * law_.EI() * kappaN + md.m,
+                        f > 0 ? (w * bend.tangent + md.tangent) / wd : bend.tangent, wantTangent,
+                        residual, tangent, halfTan);
     } else {  // inelastic: a moment whose work never exceeds the stored energy's change
       const auto mm =
-          law_.midPointMoment(from, kappaN, bend.state, (kin.d(5) - kin.d(2)) / length_ - e0_(2),
-                              bend.tangent, length_, w);
+          law_.midPointMoment(from, kappaN, bend.state, kappa1, bend.tangent, length_, w);
       if (coupled) {
         cp.moment = bend.dN != 0;
         cp.dm = (mm.dM1 * bend.dN) * axialGradient_;
@@ -333,8 +346,9 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
           cp.ea = mp.tangent / w;
         }
       }
-      strain = midPointForce(kin.d, kin.dn, rule.alpha, mm.m, mm.tangent / w, wantTangent, residual,
-                             tangent, halfTan, coupled ? &cp : nullptr);
+      strain =
+          midPointForce(kin.d, kin.dn, rule.alpha + f, mm.m + md.m, (mm.tangent + md.tangent) / wd,
+                        wantTangent, residual, tangent, halfTan, coupled ? &cp : nullptr);
     }
   } else {
     if (coupled) {
@@ -344,8 +358,10 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
       cp.moment = bend.dN != 0;
       cp.dm = bend.dN * axialGradient_;
     }
-    strain = staticForce(kin.d, m1, bend.tangent, wantTangent, residual, tangent,
-                         coupled ? &cp : nullptr);
+    Damper damper;
+    if (f > 0) damper = {f, strains(kin.dn)};
+    strain = staticForce(kin.d, m1 + md.m, bend.tangent + md.tangent, damper, wantTangent, residual,
+                         tangent, coupled ? &cp : nullptr);
   }
   if (rule.dynamic())
     rule.addInertia(mass_, kin.d - kin.dn, kin.vn, kin.an, residual, wantTangent ? &tangent : nullptr,
@@ -408,7 +424,7 @@ void ReissnerFrame::writeState(std::ostream& out) const {
   put(out, materialNumber_);
   putFixed(out, x1_);
   putFixed(out, x2_);
-  for (double x : {length_, beta0_, ea_, ga_, ei_, rhoA_}) put(out, x);
+  for (double x : {length_, beta0_, ea_, ga_, ei_, rhoA_, damping_.coefficient()}) put(out, x);
   putFixed(out, e0_);
   putFixed(out, mass_);
   // The material set may have hinge laws that this element dropped (HINGE2JOINT).
@@ -430,6 +446,7 @@ void ReissnerFrame::readState(std::istream& in) {
   getFixed(in, x1_);
   getFixed(in, x2_);
   for (double* x : {&length_, &beta0_, &ea_, &ga_, &ei_, &rhoA_}) *x = get<double>(in);
+  damping_ = SectionDamping(get<double>(in));
   getFixed(in, e0_);
   getFixed(in, mass_);
   if (getBool(in)) {
@@ -468,6 +485,7 @@ Status ReissnerFrame::setMaterial(const MaterialSet& mat, const ElemVec& d) {
   ga_ = fresh.ga_;
   ei_ = fresh.ei_;
   rhoA_ = fresh.rhoA_;
+  damping_ = fresh.damping_;
   mass_ = fresh.mass_;
   law_ = law;
   const double alpha = section.hingeActive ? section.jump.alpha / length_ : 0.0;

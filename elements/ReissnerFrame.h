@@ -46,6 +46,11 @@
 // at the element ends (HingeSite::Ends) take the end moments M -+ S/2 of the
 // element's equilibrium, S = l (N Gamma - V (1 + Sigma)) the moment of its
 // end forces.
+//
+// DAMPing adds the section's dashpot in dynamics (materials/SectionDamping.h):
+// under the mid-point scheme the resultants come from the (alpha + a1/h)-
+// weighted strains and the work identity above holds with alpha + a1/h; the
+// reported section forces and energy stay the material's.
 #include <array>
 #include <limits>
 #include <optional>
@@ -58,6 +63,7 @@
 #include "core/MaterialSet.h"
 #include "materials/AxialCapacity.h"
 #include "materials/HingedBending.h"
+#include "materials/SectionDamping.h"
 
 namespace c2d {
 
@@ -143,9 +149,15 @@ class ReissnerFrame final : public Element,
     bool moment = false;
     ElemVec dm = ElemVec::Zero();
   };
+  // The section's dashpot in a Newmark step: f = a1/h and the strains at d_n;
+  // it adds f C (E(d) - eN) to the axial and shear resultants.
+  struct Damper {
+    double f = 0;
+    Vec3 eN = Vec3::Zero();
+  };
   // Internal force and tangent; both return the strains E(d).
-  Vec3 staticForce(const ElemVec& d, double m, double kt, bool wantTangent, ElemVec& f,
-                   ElemMat& k, const Coupling* cp = nullptr) const;
+  Vec3 staticForce(const ElemVec& d, double m, double kt, const Damper& damper, bool wantTangent,
+                   ElemVec& f, ElemMat& k, const Coupling* cp = nullptr) const;
   // halfTan: tan of the nodal rotation increments' halves (the Cayley rate of
   // the inertia), found from the sines and cosines the force needs.
   Vec3 midPointForce(const ElemVec& d, const ElemVec& dn, double alpha, double m, double kt,
@@ -166,6 +178,7 @@ class ReissnerFrame final : public Element,
   std::optional<AxialCapacity> axial_;  // RC sections
   double axialTangent_ = 0;             // dN/dSigma of the last evaluation
   ElemVec axialGradient_ = ElemVec::Zero();  // dN/dd of the last evaluation
+  SectionDamping damping_;  // DAMPing: the section's dashpot in dynamics
   ElemMat mass_;  // global frame
   Report trial_, committed_;
   // The mean rotation at d_n (fixed over a step) and the angle it belongs to:

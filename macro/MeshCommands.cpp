@@ -20,6 +20,7 @@
 #include "macro/BlastCommand.h"
 #include "macro/LoadCommands.h"
 #include "macro/NumberRanges.h"
+#include "macro/MaterialRecords.h"
 
 namespace c2d {
 
@@ -256,6 +257,7 @@ void echoMaterial(std::ostream& os, const MaterialSet& m) {
   line("Density", m.density);
   os << "      Mass               " << (m.mass == MassType::Lumped ? "lumped" : "consistent")
      << "\n";
+  if (m.dampingA1 > 0) line("Damping a1 (s)", m.dampingA1);
   echoLaws(os, m);
 }
 
@@ -286,6 +288,7 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
   const Record *elasticRec = nullptr, *sectionRec = nullptr, *resultantRec = nullptr;
   LawRecords laws;
   const Record* densityRec = nullptr;
+  const Record* dampingRec = nullptr;
   const Record* kinematicsRec = nullptr;
   for (std::size_t k = 1; k < cmd.data.size(); ++k) {
     const Record& r = cmd.data[k];
@@ -353,6 +356,9 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
         failAt(r, 3, "a rotary inertia factor other than 1 is not available");
       mat.density = v[0];
       densityRec = &r;
+    } else if (key == "damp") {
+      mat.dampingA1 = readDamping(ctx, r);
+      dampingRec = &r;
     } else if (key == "mass") {
       mat.mass = option("MASS LUMPed / MASS CONSistent", {"LUMPed", "CONSistent"}) == "LUMPed"
                      ? MassType::Lumped
@@ -376,6 +382,11 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
   }
 
   finishLawRecords(h, laws, mat, elasticRec, sectionRec, resultantRec);
+  if (dampingRec && mat.dampingA1 > 0 && mat.capacity)
+    failAt(*dampingRec, 0,
+           "DAMPing is not available for members whose laws follow the axial force (SECTion, "
+           "INTEraction)",
+           "leave DAMPing out of this material");
   if (!mat.resEI) {
     if (!elasticRec)
       failAt(h, 0, "material " + std::to_string(m) + " has no ELAStic record",
@@ -986,10 +997,10 @@ std::vector<MeshCommandEntry> meshCommandTable() {
                         "section forces at the converged state and their history (plastic "
                         "curvature, hinge, initial strain, joint rotations) are kept and the new "
                         "stiffness acts on the increments; stiffness, SHEAr, density, MASS, "
-                        "HARDening and SOFTening may change. Refused: SMALl <-> FINIte (use "
-                        "HINGe2joint), HARDening/SOFTening for elastic SMALl elements, removing "
-                        "the SOFTening of an active hinge, a Mu or yield moment below the "
-                        "element's moment, capacity given back to a failed hinge.",
+                        "DAMPing, HARDening and SOFTening may change. Refused: SMALl <-> FINIte "
+                        "(use HINGe2joint), HARDening/SOFTening for elastic SMALl elements, "
+                        "removing the SOFTening of an active hinge, a Mu or yield moment below "
+                        "the element's moment, capacity given back to a failed hinge.",
                         {expr("m", "material set number"), text("label", "free text")},
                         "FRAMe, then material records", {}),
                applyMaterial});
@@ -1136,34 +1147,6 @@ std::vector<MeshCommandEntry> meshCommandTable() {
 
 void registerMeshCommands(CommandRegistry& registry) {
   for (auto& e : meshCommandTable()) registry.add(std::move(e.spec));
-}
-
-void registerMaterialSubRecords(CommandRegistry& r) {
-  r.add(subSpec("FRAMe", "Element type: two-node plane frame (first record of MATErial).", {}));
-  r.add(subSpec("ELAStic", "ELAStic ISOTropic E nu: Young's modulus and Poisson ratio.",
-                {text("ISOTropic", "the only kind for frames"), expr("E", "modulus"),
-                 expr("nu", "Poisson ratio", "0")}));
-  r.add(subSpec("CROSs",
-                "CROSs SECTion A I [Iyy Ixy J kappa kappa2] (FEAPpv's record): a plane frame "
-                "uses A, I and the shear factor kappa (0: 5/6).",
-                {text("SECTion", "any word"), expr("A", "area"), expr("I", "second moment of area"),
-                 expr("Iyy", "ignored in 2D", "0"), expr("Ixy", "ignored in 2D", "0"),
-                 expr("J", "ignored in 2D", "0"), expr("kappa", "shear factor", "5/6"),
-                 expr("kappa2", "ignored in 2D", "0")}));
-  r.add(subSpec("SHEAr", "SHEAr ON: Timoshenko (default); SHEAr OFF: Euler-Bernoulli.",
-                {text("ON/OFF", "", "ON")}));
-  r.add(subSpec("SMALl", "Geometrically linear kinematics (default).", {}));
-  r.add(subSpec("FINIte", "Geometrically exact (Reissner) kinematics.", {}));
-  r.add(subSpec("DENSity", "DENSity,,rho: mass per unit volume.",
-                {text("", "empty"), expr("rho", "density")}));
-  r.add(subSpec("MASS", "MASS LUMPed or MASS CONSistent (default).",
-                {text("LUMPed/CONSistent", "", "CONSistent")}));
-  r.add(subSpec(
-      "RESUltant",
-      "RESUltant STIFfness EA GA EI: stress-resultant stiffnesses instead of ELAStic + "
-      "CROSs (GA includes the shear factor).",
-      {text("STIFfness", ""), expr("EA", "axial"), expr("GA", "shear"), expr("EI", "bending")}));
-  registerLawRecords(r);
 }
 
 // ---------------------------------------------------------------------------

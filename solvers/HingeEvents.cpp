@@ -14,6 +14,14 @@ namespace {
 // Demand band of a located event: the hinge opens at 1 <= demand <= 1 + band,
 // band = the element's HingeCarrier::demandBand (1e-12 for a midpoint moment;
 // an end moment M -+ V l/2 carries the shear's round-off, about 1e-11).
+// Newton's iterations from the chord between a bracket's converged ends
+// before the sub-step is solved from the committed state instead. The chord
+// is off by the square of the bracket's width and takes 1-6 iterations; where
+// it does not (a law's branch other than the committed state's and the
+// bracket's ends: a damped section's moment turning, see
+// materials/SectionDamping.h) its iterates wander for up to the 60 allowed,
+// where the committed state converges in 3-17.
+constexpr int kChordIterations = 15;
 // A converged state past Mu by more than this opens an event. Elements left at
 // their ultimate moment by a located event (demand up to 1 + band) do not
 // open a second hinge in a step that does not load them further.
@@ -81,7 +89,7 @@ Status HingeEvents::afterConvergence(IterationInfo& info, bool lineSearch, bool&
 }
 
 Status HingeEvents::solveFraction(double fraction, double tEnd, bool lineSearch,
-                                  const Eigen::VectorXd* start) {
+                                  const Eigen::VectorXd* start, int maxIterations) {
   // Elements keep their trial flags (a hinge just activated); their trial
   // history follows from the committed one at the next evaluation.
   State& s = an_.state_;
@@ -100,7 +108,7 @@ Status HingeEvents::solveFraction(double fraction, double tEnd, bool lineSearch,
   }
   IterationInfo it;
   double first = -1;
-  for (int k = 0; k < 60; ++k) {
+  for (int k = 0; k < maxIterations; ++k) {
     const Status st = an_.iterate(lineSearch, true, it);
     if (!st) return st;
     if (it.converged) break;
@@ -129,7 +137,8 @@ Status HingeEvents::solveBetween(double fraction, double sLo, double sHi, double
   // (A bracket at round-off can close: its two ends are then one state.)
   const double w = sHi > sLo ? (fraction - sLo) / (sHi - sLo) : 1.0;
   start_ = uLo_ + w * (uHi_ - uLo_);
-  if (solveFraction(fraction, tEnd, lineSearch, &start_)) return Status::success();
+  if (solveFraction(fraction, tEnd, lineSearch, &start_, kChordIterations))
+    return Status::success();
   return solveFraction(fraction, tEnd, lineSearch);
 }
 

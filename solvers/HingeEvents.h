@@ -55,11 +55,12 @@ class HingeEvents {
  private:
   Status locate(IterationInfo& info, bool lineSearch);
   // Newton to the fraction `fraction` of the step ending at tEnd, from `start`
-  // (the free dofs; null: the committed state).
+  // (the free dofs; null: the committed state), in at most maxIterations.
   Status solveFraction(double fraction, double tEnd, bool lineSearch,
-                       const Eigen::VectorXd* start = nullptr);
+                       const Eigen::VectorXd* start = nullptr, int maxIterations = 60);
   // solveFraction from the interpolation of the bracket's converged ends, and
-  // from the committed state when that fails (dynamic steps).
+  // from the committed state when that has not converged in a few iterations
+  // (dynamic steps).
   Status solveBetween(double fraction, double sLo, double sHi, double tEnd, bool lineSearch);
   void open(int element);
   // The committed state as the end of a sub-step of zero length (the event is

@@ -58,7 +58,7 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
   }
   for (const auto& [number, m] : model.materials()) {
     materials.add(number).add(m.elementType);
-    for (double x : {m.E, m.nu, m.A, m.I, m.kappa, m.EA(), m.GA(), m.EI(), m.density})
+    for (double x : {m.E, m.nu, m.A, m.I, m.kappa, m.EA(), m.GA(), m.EI(), m.density, m.dampingA1})
       materials.add(x);
     materials.add(m.shear).add(m.kinematics).add(m.mass);
     materials.add(m.hardening.has_value());

@@ -8,8 +8,8 @@
 //    (pushed to its mechanism, HINGe2joint,INELastic, released, falls onto a
 //    crushing ground with friction; target 2 s on the 2-core test machine);
 //  - SixStoryDemolitionMemberContact: the main example run twice back to
-//    back, as shipped (kmem = 0: ground contact only) and with member contact
-//    (kmem = 1e5), with the ratio of their CPU times (target: at most 1.5)
+//    back, with ground contact only (kmem = 0) and as shipped with member
+//    contact (kmem = 1e5), with the ratio of their CPU times (target: at most 1.5)
 //    and each run's steps, iterations, cuts, factorizations and CPU time per
 //    iteration (counters suffixed _ground and _members).
 // Counters: steps, Newton iterations, factorizations, seconds per iteration.
