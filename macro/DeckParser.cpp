@@ -83,14 +83,6 @@ std::string where(const Record& r) { return "line " + std::to_string(r.loc.line)
 
 std::string lineRef(const Record& r) { return r.loc.file + ":" + std::to_string(r.loc.line); }
 
-// The text of a record after its first field (the FEAP title).
-std::string restOfLine(const Record& r, std::size_t field) {
-  if (field >= r.size() || !r.line) return {};
-  const std::string& s = *r.line;
-  std::size_t p = static_cast<std::size_t>(r[field].loc.col - 1);
-  return p < s.size() ? s.substr(p) : std::string();
-}
-
 bool looksNumeric(const std::string& t) {
   return !t.empty() && (std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '.' ||
                         t[0] == '-' || t[0] == '+' || t[0] == '(');
@@ -148,7 +140,7 @@ ParamAssign DeckParser::parseAssignment(const Record& rec) {
     throw DeckError(rec.fieldLoc(1), "parameter '" + name.text + "' has no value",
                     rec.excerpt(rec.fieldLoc(1)), "write " + name.text + " = expression");
   // The expression is the rest of the record: blanks inside it are allowed here.
-  const std::string text = restOfLine(rec, 1);
+  const std::string text = rec.restOfLine(1);
   ParamAssign a;
   a.name = toLower(name.text);
   a.value = Expression::parse(text, rec[1].loc, rec.line);
@@ -397,7 +389,7 @@ TopItem DeckParser::parseEnsemble(bool inSweep) {
 Problem DeckParser::parseProblem() {
   Problem p;
   p.head = next();
-  p.title = restOfLine(p.head, 1);
+  p.title = p.head.restOfLine(1);
   if (atEnd())
     throw DeckError(p.head[0].loc, "FEAP record without control record",
                     p.head.excerpt(p.head[0].loc),

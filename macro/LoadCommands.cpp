@@ -16,12 +16,6 @@ using namespace meshspec;
 
 namespace {
 
-std::ostream& num(std::ostream& os, double v) {
-  return os << std::setw(13) << std::scientific << std::setprecision(4) << v;
-}
-
-void title(std::ostream& os, const std::string& t) { os << "\n   " << t << "\n\n"; }
-
 // QLOAd: n1 n2 inc qx qy [MASS]. Elements are built when the mesh is complete,
 // so the loads are checked and added then (in deck order).
 void applyElementLoads(MeshContext& ctx, const MeshCommand& cmd) {
@@ -126,6 +120,22 @@ void applySite(MeshContext& ctx, const MeshCommand& cmd) {
   }
 }
 
+void applyGravity(MeshContext& ctx, const MeshCommand& cmd) {
+  const Record& h = cmd.head;
+  ctx.maxFields(h, 4, "GRAVity,,gx,gy");
+  if (!h.text(1).empty())
+    failAt(h, 1, "GRAVity takes no option word (its second field is empty)",
+           "write GRAVity,,gx,gy");
+  ctx.model.gravity() = Vec2(ctx.number(h, 2), ctx.number(h, 3));
+  ctx.gravityOrigin = h;
+  if (auto* os = ctx.out()) {
+    title(*os, "G r a v i t y");
+    *os << "      gx ";
+    num(*os, ctx.model.gravity().x()) << "   gy ";
+    num(*os, ctx.model.gravity().y()) << "\n";
+  }
+}
+
 }  // namespace
 
 std::vector<MeshCommandEntry> loadCommandTable() {
@@ -162,6 +172,12 @@ std::vector<MeshCommandEntry> loadCommandTable() {
                 "SITE per mesh input.",
                 {text("", "empty"), expr("xmin", "left limit"), expr("xmax", "right limit")}),
        applySite});
+  t.push_back({meshSpec("GRAVity",
+                        "Self-weight of every element with a density: acceleration (gx, gy), "
+                        "constant (not scaled by the proportional load). No data records.",
+                        {text("", "empty"), expr("gx", "x acceleration", "0"),
+                         expr("gy", "y acceleration", "0")}),
+               applyGravity});
   return t;
 }
 

@@ -29,6 +29,14 @@ FieldSpec text(std::string name, std::string doc, std::string dflt = {});
 CommandSpec meshSpec(std::string name, std::string doc, std::vector<FieldSpec> fields,
                      std::string dataSyntax = {}, std::vector<FieldSpec> dataFields = {});
 CommandSpec subSpec(std::string name, std::string doc, std::vector<FieldSpec> fields);
+// The echo of the mesh data in FEAP's style: a spaced-out title, then columns
+// of numbers.
+void title(std::ostream& os, const std::string& t);
+std::ostream& num(std::ostream& os, double v);
+inline constexpr const char* kDofName[kNodeDofs] = {"u", "v", "theta"};
+// Edge and coordinate commands: ADD (add values / set nonzero codes) or SET (replace).
+enum class Mode { Add, Set };
+Mode readMode(const Record& head, Mode dflt);
 }  // namespace meshspec
 
 // State of one mesh input, shared by the appliers. Values are evaluated when
@@ -131,6 +139,11 @@ struct MeshCommandEntry {
 
 // The mesh commands, in the order --help lists them.
 std::vector<MeshCommandEntry> meshCommandTable();
+// The families' entries (one file each), in the order meshCommandTable lists them.
+std::vector<MeshCommandEntry> geometryCommandTable();  // COORdinates ELEMents BLOCk JOINt SHIFt POLAr
+std::vector<MeshCommandEntry> materialCommandTable();  // MATErial
+std::vector<MeshCommandEntry> nodalCommandTable();     // BOUNdary FORCe DISPlacement FPROportional E... C...
+std::vector<MeshCommandEntry> contactCommandTable();   // CONTact
 void registerMeshCommands(CommandRegistry& registry);
 // Element types (FRAMe) and material sub-records (ELAStic, CROSs, ...).
 void registerMaterialSubRecords(CommandRegistry& registry);

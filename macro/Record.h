@@ -76,6 +76,12 @@ struct Record {
   // Does the first field name this command (four-character rule)?
   bool is(std::string_view name) const { return !blank() && keywordMatches(fields[0].text, name); }
   std::string lineText() const { return line ? *line : std::string(); }
+  // The line from field i on, as written (a title, a material's label).
+  std::string restOfLine(std::size_t i) const {
+    if (i >= fields.size() || !line) return {};
+    const auto p = static_cast<std::size_t>(fields[i].loc.col - 1);
+    return p < line->size() ? line->substr(p) : std::string();
+  }
   // The record with a caret under column col, for DeckError's "offending text"
   // (DeckError indents each line it prints by four blanks).
   std::string excerpt(int col) const {
