@@ -154,6 +154,8 @@ class ProblemRun {
   const std::vector<double>& drawnBlastTimes() const { return drawnBlastTimes_; }
 
  private:
+  // A number in the log: printf's format f (one conversion).
+  static std::string fmt(const char* f, double v);
   // pass (0-based) of passes: a loop's body (runLoop), else a BATCh block.
   Flow execList(const std::vector<Macro>& list, bool topLevel = false, int pass = -1,
                 int passes = 1);
