@@ -4,10 +4,10 @@
 #include <cmath>
 #include <string>
 
-#include "core/ContactDamper.h"
+#include "core/contact/ContactDamper.h"
 #include "core/FloorLoad.h"
-#include "core/GroundContact.h"
-#include "core/MemberContact.h"
+#include "core/contact/GroundContact.h"
+#include "core/contact/MemberContact.h"
 #include "core/NodeMass.h"
 
 namespace c2d {
@@ -328,7 +328,7 @@ double Assembler::commitContact(State& s) {
   const auto& ground = model_.ground();
   if (!ground) return released;
   // A node whose turn fell inside the step gets the peak it came back from
-  // (core/CrushingLaw.h): the energy that takes from its contact is dissipated.
+  // (core/contact/CrushingLaw.h): the energy that takes from its contact is dissipated.
   double crushed = 0;
   const bool rates = s.v.size() == s.u.size() && s.vn.size() == s.u.size();
   for (int n = 0; n < model_.numNodes(); ++n) {

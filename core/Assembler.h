@@ -14,7 +14,7 @@
 //
 // Member contact couples a node with the ends of an element segment: its pairs
 // are in the pattern too. The pattern holds the candidate pairs of the contact
-// search (core/MemberContact.h) that are within a quarter of the search margin
+// search (core/contact/MemberContact.h) that are within a quarter of the search margin
 // of contact (so the pairs that come into contact over the next steps are
 // mostly there already) and is rebuilt, with the current candidates, only when
 // a pair carrying a force is not in it; structureVersion() then changes and the
@@ -24,13 +24,13 @@
 #include <memory>
 #include <vector>
 
-#include "core/ContactMotion.h"
+#include "core/contact/ContactMotion.h"
 #include "core/DofMap.h"
-#include "core/MemberContact.h"
+#include "core/contact/MemberContact.h"
 #include "core/Model.h"
 #include "core/State.h"
-#include "core/SweptBoxes.h"
-#include "solvers/LinearSolver.h"
+#include "core/contact/SweptBoxes.h"
+#include "core/SparseMatrix.h"
 
 namespace c2d {
 

@@ -5,8 +5,8 @@
 #include <cstdio>
 
 #include "core/FloorLoad.h"
-#include "core/GroundContact.h"
-#include "core/MemberContact.h"
+#include "core/contact/GroundContact.h"
+#include "core/contact/MemberContact.h"
 
 namespace c2d {
 

@@ -27,15 +27,15 @@ struct Joint {
 
 // Rigid ground y = y0 with penalty stiffness k per node (kN/m); zeta the
 // damping ratio of the contact's dashpot (fraction of the critical damping
-// 2 sqrt(k m) of each node's own mass m: core/ContactDamper.h; 0: none); mu
+// 2 sqrt(k m) of each node's own mass m: core/contact/ContactDamper.h; 0: none); mu
 // the coefficient of the elastic-plastic Coulomb friction (0: frictionless);
 // restitution the coefficient e of an impact (1: elastic; below 1 the contact
-// crushes: core/GroundContact.h).
+// crushes: core/contact/GroundContact.h).
 struct Ground {
   double y0 = 0, k = 0, zeta = 0, mu = 0, restitution = 1;
 };
 
-// Penalty contact between members (core/MemberContact.h): stiffness k,
+// Penalty contact between members (core/contact/MemberContact.h): stiffness k,
 // damping ratio zeta (of the pair's reduced mass), restitution and friction
 // coefficient mu as for the ground, and the contact radius of members whose
 // material gives no section (negative: 1e-3 of the shortest element).

@@ -7,7 +7,7 @@
 // and it has none of its own. A node whose translations are both restrained
 // does not move: its mass is infinite. The contacts take it as the mass of a node (the
 // critical damping 2 sqrt(k m) of a contact's dashpot, the peak of an impact
-// whose turn falls inside a step: core/ContactDamper.h, core/CrushingLaw.h).
+// whose turn falls inside a step: core/contact/ContactDamper.h, core/contact/CrushingLaw.h).
 #include <vector>
 
 #include "core/Model.h"

@@ -12,7 +12,7 @@
 namespace c2d {
 
 // What a member contact pair (node against element segment) keeps between
-// steps (core/MemberContact.h): its loading point q (the largest penetration
+// steps (core/contact/MemberContact.h): its loading point q (the largest penetration
 // since the contact began, for the crushing law), the stretch of its friction
 // spring, the contact distance it met at (a topology change that changes the
 // radii of its node or member does not change a contact under way) and its
@@ -39,11 +39,11 @@ struct State {
   double arcLambdan = 0;
   int step = 0;                // number of committed steps
   // Per node: the ground contact's loading point, the largest penetration
-  // since the node last touched down (0 off the ground; core/GroundContact.h).
+  // since the node last touched down (0 off the ground; core/contact/GroundContact.h).
   // Committed only: it changes when a step is committed.
   Eigen::VectorXd crush;
   // Per node: the stretch x - a of its ground friction spring, a where it is
-  // anchored (core/GroundContact.h; 0 off the ground). Committed only.
+  // anchored (core/contact/GroundContact.h; 0 off the ground). Committed only.
   Eigen::VectorXd stretch;
   // The member contact pairs in contact at t_n (or with an offset), sorted by
   // key. Committed only.

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/GroundContact.h"
+#include "core/contact/GroundContact.h"
 #include "core/Hinge.h"
 #include "elements/JointedElement.h"
 #include "elements/Joints.h"

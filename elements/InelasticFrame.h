@@ -40,7 +40,7 @@
 #include <array>
 #include <optional>
 
-#include "core/Checkpoint.h"
+#include "core/output/Checkpoint.h"
 #include "core/Element.h"
 #include "core/Hinge.h"
 #include "core/MaterialChange.h"

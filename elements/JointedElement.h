@@ -37,7 +37,7 @@
 #include <string>
 #include <typeinfo>
 
-#include "core/Checkpoint.h"
+#include "core/output/Checkpoint.h"
 #include "core/Element.h"
 #include "core/Hinge.h"
 #include "core/MaterialChange.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <memory>
 
-#include "core/GroundContact.h"
+#include "core/contact/GroundContact.h"
 
 namespace c2d {
 

@@ -17,7 +17,7 @@
 #include <array>
 #include <string>
 
-#include "core/Checkpoint.h"
+#include "core/output/Checkpoint.h"
 #include "core/Element.h"
 #include "core/MaterialChange.h"
 #include "core/MaterialSet.h"

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/Checkpoint.h"
+#include "core/output/Checkpoint.h"
 #include "elements/InelasticFrame.h"
 #include "elements/JointedElement.h"
 #include "materials/SectionLaws.h"

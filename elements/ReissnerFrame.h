@@ -56,7 +56,7 @@
 #include <optional>
 #include <string>
 
-#include "core/Checkpoint.h"
+#include "core/output/Checkpoint.h"
 #include "core/Element.h"
 #include "core/Hinge.h"
 #include "core/MaterialChange.h"

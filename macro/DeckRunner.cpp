@@ -7,16 +7,16 @@
 #include <set>
 #include <sstream>
 
-#include "core/AtomicFile.h"
-#include "macro/CurveOverlay.h"
-#include "macro/DeckParser.h"
-#include "macro/Interrupt.h"
-#include "macro/Limits.h"
-#include "macro/ParameterNote.h"
-#include "macro/PlanTable.h"
-#include "macro/StaleOutputs.h"
-#include "macro/Sweep.h"
-#include "macro/Shard.h"
+#include "core/output/AtomicFile.h"
+#include "macro/studies/CurveOverlay.h"
+#include "macro/deck/DeckParser.h"
+#include "macro/run/Interrupt.h"
+#include "macro/deck/Limits.h"
+#include "macro/deck/ParameterNote.h"
+#include "macro/studies/PlanTable.h"
+#include "macro/run/StaleOutputs.h"
+#include "macro/studies/Sweep.h"
+#include "macro/studies/Shard.h"
 #include "macro/studies/EnsembleStudy.h"
 #include "macro/studies/EnsembleTable.h"
 

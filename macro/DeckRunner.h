@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "macro/ProblemRun.h"
-#include "macro/SolutionCommand.h"
-#include "macro/Warnings.h"
+#include "macro/run/ProblemRun.h"
+#include "macro/commands/SolutionCommand.h"
+#include "macro/deck/Warnings.h"
 
 namespace c2d {
 

@@ -11,16 +11,16 @@
 #include <string>
 #include <vector>
 
-#include "macro/BatchRunner.h"
+#include "macro/studies/BatchRunner.h"
 #include "macro/DeckRunner.h"
-#include "macro/Help.h"
-#include "macro/Shard.h"
+#include "macro/commands/Help.h"
+#include "macro/studies/Shard.h"
 #include "macro/studies/Merge.h"
 #include "macro/studies/ParallelRuns.h"
-#include "macro/Interrupt.h"
-#include "macro/Shard.h"
-#include "macro/Suggest.h"
-#include "solvers/LinearSolver.h"
+#include "macro/run/Interrupt.h"
+#include "macro/studies/Shard.h"
+#include "macro/deck/Suggest.h"
+#include "solvers/linear/LinearSolver.h"
 
 namespace {
 

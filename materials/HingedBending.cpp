@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/Checkpoint.h"
+#include "core/output/Checkpoint.h"
 
 namespace c2d {
 

@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <string>
 
-#include "core/Checkpoint.h"
-#include "solvers/CheckedSolve.h"
+#include "core/output/Checkpoint.h"
+#include "solvers/linear/CheckedSolve.h"
 #include "solvers/LineSearch.h"
 
 namespace c2d {
@@ -516,7 +516,7 @@ bool Analysis::cycling() const {
 
 Status Analysis::checkSolve() {
   // A mechanism's tangent leaves the residual unbalanced; an ill-conditioned
-  // one may too until refined or factored with pivoting (solvers/CheckedSolve).
+  // one may too until refined or factored with pivoting (solvers/linear/CheckedSolve).
   CheckedSolve check;
   if (check.check(*solver_, assembler_.tangent(), R_, du_, rho_, drho_)) return Status::success();
   // The mechanism's motion: the largest component of the correction.

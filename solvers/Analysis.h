@@ -22,7 +22,7 @@
 #include "solvers/EnergyAccount.h"
 #include "solvers/HingeEvents.h"
 #include "solvers/ImpactSteps.h"
-#include "solvers/LinearSolver.h"
+#include "solvers/linear/LinearSolver.h"
 #include "solvers/MemberRemoval.h"
 #include "solvers/PathFollowing.h"
 #include "solvers/ProportionalLoad.h"
@@ -141,7 +141,7 @@ class Analysis {
   // Topology change (MESH re-entry, HINGE2JOINT): carry the state to the new node count.
   void topologyChanged();
 
-  // Restart files (core/Checkpoint.h): the state, the integrator and its
+  // Restart files (core/output/Checkpoint.h): the state, the integrator and its
   // parameters, the tolerance, the load tables, the path following state, the
   // energy bookkeeping and the linear solver's name: what a continuation needs
   // to repeat the uninterrupted run bit for bit. readState() expects the model
@@ -171,7 +171,7 @@ class Analysis {
   // an earlier tangent of the step; false when they are too far off.
   bool solveWithEarlierFactors();
   // du_ from fresh factors solves K du = R, refined or factored again with
-  // pivoting if need be (solvers/CheckedSolve); otherwise the tangent is
+  // pivoting if need be (solvers/linear/CheckedSolve); otherwise the tangent is
   // singular or too ill-conditioned (the failure says which, and names the
   // node and dof where the correction is largest).
   Status checkSolve();

@@ -1,7 +1,7 @@
 #pragma once
 // Output at times the steps do not land on: the motion between the committed
 // state at t_n and the converged state at t_n+1, sampled at a scheduled time
-// (a picture loop's TIME,,tmax that its last step passed: macro/RunCursor.h),
+// (a picture loop's TIME,,tmax that its last step passed: macro/run/RunCursor.h),
 // so that pictures and ParaView frames come at the times the deck asks for
 // without a step ending there.
 //

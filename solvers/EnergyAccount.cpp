@@ -1,6 +1,6 @@
 #include "solvers/EnergyAccount.h"
 
-#include "core/Checkpoint.h"
+#include "core/output/Checkpoint.h"
 
 namespace c2d {
 

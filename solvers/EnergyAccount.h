@@ -65,7 +65,7 @@ class EnergyAccount {
     storedN_ = stored;
   }
   // Stored energy the commit released without work (a member contact whose
-  // node was pushed past the centre line of the member: core/MemberContact.h).
+  // node was pushed past the centre line of the member: core/contact/MemberContact.h).
   void released(double energy) {
     storedN_ -= energy;
     dissipated_ += energy;

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/Checkpoint.h"
-#include "core/CrushingLaw.h"
+#include "core/output/Checkpoint.h"
+#include "core/contact/CrushingLaw.h"
 
 namespace c2d {
 

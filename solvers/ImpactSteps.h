@@ -7,7 +7,7 @@
 // that (10.2 t on k = 1e5: 16 and 5 ms), shorter than the decks' 10 ms step.
 // Under the mid-point scheme the contact law's discrete gradient keeps the
 // energy of any step exact and the peak of an impact is recovered from the
-// step that turned (core/CrushingLaw.h crushingLoadingPoint), so a point mass
+// step that turned (core/contact/CrushingLaw.h crushingLoadingPoint), so a point mass
 // leaves with e v at any step, as long as its contact lasts more than one
 // step: a contact that touched and turned, or turned and let go, within one
 // step has no state from which its peak can be found. Newmark's trapezoidal
@@ -16,7 +16,7 @@
 // integral.
 //
 // After every converged step (or sub-step) from t_n to t_n+1, each contact that
-// touched at either end is checked (core/ContactMotion.h):
+// touched at either end is checked (core/contact/ContactMotion.h):
 //   - a contact that touched and turned, or turned and let go, within the
 //     step: the step is taken again, a quarter as long or one unloading time
 //     1/omega_u of the contact's mass (omega_u = sqrt(k / (e^2 m))), whichever
@@ -38,7 +38,7 @@
 #include <vector>
 
 #include "core/Assembler.h"
-#include "core/ContactMotion.h"
+#include "core/contact/ContactMotion.h"
 #include "core/State.h"
 #include "core/StepRule.h"
 

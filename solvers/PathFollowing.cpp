@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/Checkpoint.h"
+#include "core/output/Checkpoint.h"
 
 namespace c2d {
 

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/AtomicFile.h"
-#include "core/Checkpoint.h"
+#include "core/output/AtomicFile.h"
+#include "core/output/Checkpoint.h"
 #include "elements/ModelCheckpoint.h"
 
 namespace c2d {

@@ -13,7 +13,7 @@
 //   checksum    uint64   FNV-1a of the payload
 // Reading checks all of them before it changes anything: a truncated,
 // corrupted or foreign file is an error naming the file, never garbage.
-// Written with core/AtomicFile: "<file>.part", renamed when complete.
+// Written with core/output/AtomicFile: "<file>.part", renamed when complete.
 #include <filesystem>
 #include <string>
 

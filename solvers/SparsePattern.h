@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/Error.h"
-#include "solvers/LinearSolver.h"
+#include "solvers/linear/LinearSolver.h"
 
 namespace c2d {
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "macro/Limits.h"
+#include "macro/deck/Limits.h"
 #include "macro/studies/CounterRandom.h"
 
 namespace c2d {

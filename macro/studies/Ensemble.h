@@ -19,8 +19,8 @@
 #include <utility>
 #include <vector>
 
-#include "macro/CommandSpec.h"
-#include "macro/Deck.h"
+#include "macro/commands/CommandSpec.h"
+#include "macro/deck/Deck.h"
 #include "macro/studies/Detonators.h"
 #include "macro/studies/Distribution.h"
 #include "macro/studies/Jitter.h"

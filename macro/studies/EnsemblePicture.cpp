@@ -5,7 +5,7 @@
 #include <limits>
 #include <map>
 
-#include "core/SvgChart.h"
+#include "core/output/SvgChart.h"
 
 namespace c2d {
 

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "macro/Csv.h"
+#include "macro/studies/Csv.h"
 
 namespace c2d {
 

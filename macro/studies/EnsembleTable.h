@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "core/Debris.h"
-#include "macro/Sweep.h"
+#include "macro/studies/Sweep.h"
 
 namespace c2d {
 

@@ -7,11 +7,11 @@
 #include <set>
 #include <sstream>
 
-#include "core/AtomicFile.h"
-#include "macro/Csv.h"
-#include "macro/CurveOverlay.h"
+#include "core/output/AtomicFile.h"
+#include "macro/studies/Csv.h"
+#include "macro/studies/CurveOverlay.h"
 #include "macro/DeckRunner.h"
-#include "macro/Shard.h"
+#include "macro/studies/Shard.h"
 #include "macro/studies/EnsembleStudy.h"
 #include "macro/studies/EnsembleTable.h"
 

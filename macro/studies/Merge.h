@@ -1,6 +1,6 @@
 #pragma once
 // [ext] `collapse2d merge DIR`: joins the parts of studies run with
-// `collapse2d run --shard i/n` (macro/Shard.h) into what one run would have
+// `collapse2d run --shard i/n` (macro/studies/Shard.h) into what one run would have
 // written:
 //   - a deck's study: for every complete set <stem>_part<i>of<n>_*: the plans
 //     table <stem>_plans.csv (a SWEEp: its rows ordered by run), or the

@@ -7,8 +7,8 @@
 #include <regex>
 #include <sstream>
 
-#include "core/AtomicFile.h"
-#include "macro/Interrupt.h"
+#include "core/output/AtomicFile.h"
+#include "macro/run/Interrupt.h"
 #include "macro/studies/Merge.h"
 
 namespace c2d {

@@ -1,7 +1,7 @@
 #pragma once
 // [ext] `collapse2d run -j N DECK` with one deck whose runs form a study (a
 // SWEEp, an ENSEmble): its runs are split over N processes, as N shards of it
-// (run --shard i/N, each in a child of the batch: macro/BatchRunner.h), and the
+// (run --shard i/N, each in a child of the batch: macro/studies/BatchRunner.h), and the
 // parts are merged when all have ended (Merge.h): the tables, the ensemble's
 // statistics and picture, the overlays are those one process would write.
 // The deck's log <stem>.out is the parts' logs joined: the header of the first
@@ -11,7 +11,7 @@
 #include <ostream>
 #include <string>
 
-#include "macro/BatchRunner.h"
+#include "macro/studies/BatchRunner.h"
 
 namespace c2d {
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <map>
 
-#include "macro/Csv.h"
+#include "macro/studies/Csv.h"
 #include "macro/studies/Statistics.h"
 
 namespace c2d {

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <map>
 
-#include "macro/Csv.h"
+#include "macro/studies/Csv.h"
 #include "macro/studies/PlanStatistics.h"
 #include "macro/studies/Statistics.h"
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "solvers/LinearSolver.h"
+#include "solvers/linear/LinearSolver.h"
 
 namespace {
 

@@ -14,10 +14,10 @@
 #include <variant>
 
 #include "core/Error.h"
-#include "macro/DeckParser.h"
-#include "macro/ProblemRun.h"
-#include "macro/SolutionCommand.h"
-#include "macro/Sweep.h"
+#include "macro/deck/DeckParser.h"
+#include "macro/run/ProblemRun.h"
+#include "macro/commands/SolutionCommand.h"
+#include "macro/studies/Sweep.h"
 #include "macro/studies/Ensemble.h"
 
 namespace {

@@ -13,8 +13,8 @@
 #include <sstream>
 #include <thread>
 
-#include "macro/BatchRunner.h"
-#include "macro/Interrupt.h"
+#include "macro/studies/BatchRunner.h"
+#include "macro/run/Interrupt.h"
 #include "tests/unit/RunDeckSupport.h"
 
 namespace c2d {

@@ -1,4 +1,4 @@
-// solvers/CheckedSolve: a correction that misses K du = R is refined, then
+// solvers/linear/CheckedSolve: a correction that misses K du = R is refined, then
 // factored again with pivoting, before the tangent is called singular; the
 // diagnosis tells an ill-conditioned tangent from a singular one by the
 // condition number estimate.
@@ -7,9 +7,9 @@
 #include <random>
 #include <vector>
 
-#include "solvers/AutoSolver.h"
-#include "solvers/CheckedSolve.h"
-#include "solvers/KluSolver.h"
+#include "solvers/linear/AutoSolver.h"
+#include "solvers/linear/CheckedSolve.h"
+#include "solvers/linear/KluSolver.h"
 
 namespace c2d {
 namespace {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/Assembler.h"
-#include "core/GroundContact.h"
+#include "core/contact/GroundContact.h"
 #include "core/Model.h"
 #include "elements/JointedElement.h"
 #include "elements/Joints.h"
@@ -674,7 +674,7 @@ TEST(GroundContact, MidPointForceIsTheDiscreteGradient) {
         EXPECT_NEAR(c.tangent, fd, 1e-5 * g.k) << y0 << " " << y1;
       }
     }
-  // The dashpot: c (<p1> - <p0>) / h on top while in contact (core/ContactDamper.h).
+  // The dashpot: c (<p1> - <p0>) / h on top while in contact (core/contact/ContactDamper.h).
   rule.h = 0.01;
   const GroundDamper d{600.0};
   const ContactForce c0 = groundContact(g, 0.0, 0.45, 0.40, rule),

@@ -1,7 +1,7 @@
 // The pieces the contact's damping and impact steps are built of: the peak an
-// impact came back from (core/CrushingLaw.h crushingPeak), the mass a node's
+// impact came back from (core/contact/CrushingLaw.h crushingPeak), the mass a node's
 // translation moves (core/NodeMass.h), a member pair's reduced mass
-// (core/PairMotion.h), the dashpot's coefficient (core/ContactDamper.h) and
+// (core/contact/PairMotion.h), the dashpot's coefficient (core/contact/ContactDamper.h) and
 // what an impact's step needs (solvers/ImpactSteps.h).
 #include <gtest/gtest.h>
 
@@ -9,10 +9,10 @@
 #include <limits>
 
 #include "ContactTestSupport.h"
-#include "core/ContactDamper.h"
-#include "core/CrushingLaw.h"
+#include "core/contact/ContactDamper.h"
+#include "core/contact/CrushingLaw.h"
 #include "core/NodeMass.h"
-#include "core/PairMotion.h"
+#include "core/contact/PairMotion.h"
 #include "solvers/ImpactSteps.h"
 
 namespace c2d::test {

@@ -1,5 +1,5 @@
 // Debris figures against the site (core/Debris), the debris picture
-// (core/SvgDebris) and the peak ground force of a bar dropped on the ground.
+// (core/output/SvgDebris) and the peak ground force of a bar dropped on the ground.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,9 +8,9 @@
 #include <sstream>
 
 #include "core/Debris.h"
-#include "core/SvgDebris.h"
+#include "core/output/SvgDebris.h"
 #include "elements/ElementFactory.h"
-#include "macro/BatchRunner.h"
+#include "macro/studies/BatchRunner.h"
 #include "macro/DeckRunner.h"
 #include "tests/unit/DeckTestSupport.h"
 

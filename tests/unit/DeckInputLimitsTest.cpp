@@ -6,13 +6,13 @@
 #include <climits>
 #include <cmath>
 
-#include "macro/DeckParser.h"
-#include "macro/DeckReader.h"
-#include "macro/Limits.h"
-#include "macro/MeshBinder.h"
-#include "macro/SolutionCommand.h"
-#include "macro/Sweep.h"
-#include "macro/Warnings.h"
+#include "macro/deck/DeckParser.h"
+#include "macro/deck/DeckReader.h"
+#include "macro/deck/Limits.h"
+#include "macro/deck/MeshBinder.h"
+#include "macro/commands/SolutionCommand.h"
+#include "macro/studies/Sweep.h"
+#include "macro/deck/Warnings.h"
 #include "tests/unit/DeckTestSupport.h"
 
 namespace c2d {

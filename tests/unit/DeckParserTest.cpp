@@ -5,10 +5,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "macro/CommandSpec.h"
-#include "macro/DeckParser.h"
-#include "macro/DeckReader.h"
-#include "macro/MeshCommands.h"
+#include "macro/commands/CommandSpec.h"
+#include "macro/deck/DeckParser.h"
+#include "macro/deck/DeckReader.h"
+#include "macro/commands/MeshCommands.h"
 #include "tests/unit/DeckTestSupport.h"
 
 namespace c2d {

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "macro/DeckParser.h"
+#include "macro/deck/DeckParser.h"
 #include "macro/DeckRunner.h"
 #include "macro/studies/Ensemble.h"
 #include "macro/studies/EnsembleTable.h"

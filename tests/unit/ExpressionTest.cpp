@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "macro/DeckReader.h"
-#include "macro/Expression.h"
+#include "macro/deck/DeckReader.h"
+#include "macro/deck/Expression.h"
 #include "tests/unit/DeckTestSupport.h"
 
 namespace c2d {

@@ -1,4 +1,4 @@
-// Ground contact with restitution e < 1 (core/GroundContact): the crushing law's
+// Ground contact with restitution e < 1 (core/contact/GroundContact): the crushing law's
 // mid-point force does the law's work over the step (what is stored plus what
 // crushing dissipates), its tangent is the derivative of the force, the law
 // reduces to the elastic one as e -> 1, and the loading point follows the
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/GroundContact.h"
+#include "core/contact/GroundContact.h"
 #include "solvers/TimeIntegrator.h"
 
 namespace c2d {

@@ -1,4 +1,4 @@
-// Ground friction (core/GroundContact): the elastic-plastic Coulomb law (its
+// Ground friction (core/contact/GroundContact): the elastic-plastic Coulomb law (its
 // work identity, bound and exact unsymmetric tangent), and a beam lying on the
 // ground under gravity tilted by gx = 0.3 g: it sticks for mu = 0.5 (held by
 // its springs, within mu N / k) and slides with acceleration (0.3 - mu) g for
@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "ContactTestSupport.h"
-#include "core/GroundContact.h"
+#include "core/contact/GroundContact.h"
 #include "elements/Joints.h"
 #include "solvers/TimeIntegrator.h"
 

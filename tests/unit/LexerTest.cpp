@@ -2,7 +2,7 @@
 // columns, the four-character rule, INCLude expansion with locations.
 #include <gtest/gtest.h>
 
-#include "macro/DeckReader.h"
+#include "macro/deck/DeckReader.h"
 #include "tests/unit/DeckTestSupport.h"
 
 namespace c2d {

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "solvers/AutoSolver.h"
-#include "solvers/BlockLuSolver.h"
-#include "solvers/CholmodSolver.h"
-#include "solvers/KluSolver.h"
-#include "solvers/LinearSolver.h"
+#include "solvers/linear/AutoSolver.h"
+#include "solvers/linear/BlockLuSolver.h"
+#include "solvers/linear/CholmodSolver.h"
+#include "solvers/linear/KluSolver.h"
+#include "solvers/linear/LinearSolver.h"
 
 namespace c2d {
 namespace {

@@ -1,4 +1,4 @@
-// QLOAd, MASS and SITE (macro/LoadCommands): what they put in the model, and
+// QLOAd, MASS and SITE (macro/commands/LoadCommands): what they put in the model, and
 // their deck errors at file:line:col.
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "elements/ModelCheckpoint.h"
-#include "macro/DeckParser.h"
-#include "macro/MeshBinder.h"
+#include "macro/deck/DeckParser.h"
+#include "macro/deck/MeshBinder.h"
 #include "solvers/ModelFingerprint.h"
 #include "tests/unit/DeckTestSupport.h"
 

@@ -1,5 +1,5 @@
-// Member-to-member contact (core/MemberContact, core/ContactGrid,
-// core/MemberCrossing): the pair law and its tangent, the discrete gradient
+// Member-to-member contact (core/contact/MemberContact, core/contact/ContactGrid,
+// core/contact/MemberCrossing): the pair law and its tangent, the discrete gradient
 // under the mid-point scheme, the broad phase against brute force, excluded
 // pairs, and whole analyses: bars colliding end-on and crosswise (energy and
 // momentum), a bar dropped on a fixed beam (penetration, rebound, dissipation).
@@ -14,11 +14,11 @@
 #include <vector>
 
 #include "ContactTestSupport.h"
-#include "core/ContactGrid.h"
-#include "core/CrushingLaw.h"
-#include "core/MemberContact.h"
-#include "core/MemberCrossing.h"
-#include "core/SpringFriction.h"
+#include "core/contact/ContactGrid.h"
+#include "core/contact/CrushingLaw.h"
+#include "core/contact/MemberContact.h"
+#include "core/contact/MemberCrossing.h"
+#include "core/contact/SpringFriction.h"
 #include "elements/Joints.h"
 #include "solvers/TimeIntegrator.h"
 #include "tests/unit/RunDeckSupport.h"
@@ -593,7 +593,7 @@ Drop dropBar(double zeta, double dt, int steps, double e = 1) {
     EXPECT_GE(d, 0.0);
     const double before = an.energy().dissipated;
     an.commit();
-    // What the commit took (an impact's peak: core/CrushingLaw.h).
+    // What the commit took (an impact's peak: core/contact/CrushingLaw.h).
     const double released = an.energy().dissipated - before - d;
     out.dissipated += d + (e < 1 ? released : 0.0);
     const Energy e = an.energy();

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "macro/DeckRunner.h"
-#include "macro/Shard.h"
+#include "macro/studies/Shard.h"
 #include "macro/studies/Merge.h"
 #include "tests/unit/DeckTestSupport.h"
 

@@ -5,9 +5,9 @@
 
 #include <sstream>
 
-#include "macro/DeckParser.h"
-#include "macro/DeckReader.h"
-#include "macro/MeshBinder.h"
+#include "macro/deck/DeckParser.h"
+#include "macro/deck/DeckReader.h"
+#include "macro/deck/MeshBinder.h"
 #include "tests/unit/DeckTestSupport.h"
 
 namespace c2d {

@@ -1,7 +1,7 @@
 // Output never changes the computed motion (verification.md V15): the number
 // and the times of a run's pictures, ParaView frames, TPLOt rows and printed
 // tables leave its steps as they are, bit for bit, in every form of picture
-// loop (macro/RunCursor.h); the outputs show the motion at the times asked
+// loop (macro/run/RunCursor.h); the outputs show the motion at the times asked
 // for (solvers/DenseOutput.h); a loop that ends a phase ends on its tmax.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The table of a study of plans (macro/PlanTable): columns, empty cells for
+// The table of a study of plans (macro/studies/PlanTable): columns, empty cells for
 // absent sweep values and debris, CSV quoting of the failure reason.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "macro/PlanTable.h"
+#include "macro/studies/PlanTable.h"
 
 namespace c2d {
 namespace {

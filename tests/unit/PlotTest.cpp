@@ -8,11 +8,11 @@
 #include <cmath>
 #include <regex>
 
-#include "core/SvgChart.h"
-#include "macro/DeckParser.h"
-#include "macro/Help.h"
-#include "macro/ProblemRun.h"
-#include "macro/RunOutputs.h"
+#include "core/output/SvgChart.h"
+#include "macro/deck/DeckParser.h"
+#include "macro/commands/Help.h"
+#include "macro/run/ProblemRun.h"
+#include "macro/run/RunOutputs.h"
 #include "tests/unit/OutputTestSupport.h"
 #include "tests/unit/RunDeckSupport.h"
 

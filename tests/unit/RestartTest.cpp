@@ -15,7 +15,7 @@
 #include <sstream>
 #include <thread>
 
-#include "core/Checkpoint.h"
+#include "core/output/Checkpoint.h"
 #include "core/Hinge.h"
 #include "elements/JointedElement.h"
 #include "elements/Joints.h"

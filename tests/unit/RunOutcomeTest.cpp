@@ -20,7 +20,7 @@
 #include <thread>
 
 #include "macro/DeckRunner.h"
-#include "macro/Interrupt.h"
+#include "macro/run/Interrupt.h"
 #include "tests/unit/OutputTestSupport.h"
 #include "tests/unit/RunDeckSupport.h"
 

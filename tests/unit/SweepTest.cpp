@@ -8,8 +8,8 @@
 
 #include <fstream>
 
-#include "macro/DeckParser.h"
-#include "macro/Sweep.h"
+#include "macro/deck/DeckParser.h"
+#include "macro/studies/Sweep.h"
 #include "tests/unit/OutputTestSupport.h"
 #include "tests/unit/RunDeckSupport.h"
 

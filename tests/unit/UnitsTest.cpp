@@ -1,14 +1,14 @@
 // --help gives the unit of every field of every command in the decks' system
-// (macro/Units): a command or field added without its unit fails here.
+// (macro/commands/Units): a command or field added without its unit fails here.
 #include <gtest/gtest.h>
 
 #include <sstream>
 
-#include "macro/Help.h"
-#include "macro/MeshCommands.h"
-#include "macro/SolutionCommand.h"
-#include "macro/Sweep.h"
-#include "macro/Units.h"
+#include "macro/commands/Help.h"
+#include "macro/commands/MeshCommands.h"
+#include "macro/commands/SolutionCommand.h"
+#include "macro/studies/Sweep.h"
+#include "macro/commands/Units.h"
 
 namespace c2d {
 namespace {

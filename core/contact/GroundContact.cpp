@@ -1,0 +1,76 @@
+#include "core/contact/GroundContact.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/contact/ContactDamper.h"
+#include "core/contact/CrushingLaw.h"
+#include "core/contact/SpringFriction.h"
+
+namespace c2d {
+
+namespace {
+bool crushes(const Ground& g) { return g.restitution < 1; }
+
+CrushingLaw crushing(const Ground& g, double loading) {
+  return CrushingLaw(g.k, g.restitution, loading);
+}
+}  // namespace
+
+double contactEnergy(const Ground& g, double q, double y) {
+  return crushingEnergy(g.k, g.restitution, q, penetration(g, y));
+}
+
+double loadingPoint(const Ground& g, double q, double m, double y, double vn, double v) {
+  // The penetration's rate is -v (it grows as the node moves down).
+  return crushingLoadingPoint(g.k, g.restitution, q, m, penetration(g, y), -vn, -v);
+}
+
+ContactForce groundContact(const Ground& g, double q, double yn, double y, const StepRule& rule,
+                           const GroundDamper& d) {
+  ContactForce out;
+  const double p0 = penetration(g, yn), p1 = penetration(g, y);
+  const CrushingLaw law = crushing(g, std::max(q, p0));
+  if (rule.scheme != Scheme::MidPoint) {
+    if (p1 > 0) {
+      out.force = out.normal = law.force(p1);
+      out.tangent = out.normalTangent = law.slope(p1);
+    }
+  } else if (p0 > 0 || p1 > 0) {
+    // The law's discrete derivative between p0 and p1 (core/contact/CrushingLaw.h).
+    law.midPoint(p0, p1, out.force, out.tangent);
+    out.normal = out.force;
+    out.normalTangent = out.tangent;
+  }
+  // The dashpot; Newmark's rate of the penetration at t_n+1 is -v_n+1.
+  if (d.c > 0) {
+    const double rate = -rule.velocity(y - yn, d.vn, d.an);
+    const DamperForce f = damperForce(d.c, law.ps, p0, p1, rate, rule.cv, rule);
+    out.force += f.force;
+    out.tangent += f.slope;
+  }
+  return out;
+}
+
+FrictionForce groundFriction(const Ground& g, const ContactForce& c, double a, double xn, double x,
+                             const StepRule& rule) {
+  const SpringFrictionForce f = springFriction(g.k, g.mu, std::max(c.normal, 0.0), a, xn, x,
+                                              rule.scheme == Scheme::MidPoint);
+  // N depends on y through the penetration y0 - y.
+  return {f.force, f.dx, -f.dN * c.normalTangent, f.anchor, f.slipped};
+}
+
+double groundDissipation(const Ground& g, double q, double a, double xn, double yn, double x,
+                         double y, const StepRule& rule, double c) {
+  const ContactForce f = groundContact(g, q, yn, y, rule);
+  const double p0 = penetration(g, yn), p1 = penetration(g, y);
+  const CrushingLaw law = crushing(g, q);
+  double d = 0;
+  // Crushing: the loading work beyond q less what the stiffer unloading stores.
+  if (crushes(g)) d += law.dissipated(p0, p1);
+  d += damperDissipation(c, crushing(g, std::max(q, p0)).ps, p0, p1, rule);
+  d += groundFriction(g, f, a, xn, x, rule).slipped;
+  return d;
+}
+
+}  // namespace c2d

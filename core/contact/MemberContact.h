@@ -1,0 +1,295 @@
+#pragma once
+// Penalty contact between members (CONTact record MEMBers,,k[,zeta[,r[,mu[,e]]]]):
+// every node against every element segment it does not belong to, with the
+// ground's crushing law (restitution e, core/contact/CrushingLaw.h) and elastic-plastic
+// friction (mu, core/contact/SpringFriction.h) per pair.
+//
+// Geometry of a pair: node x, segment a-b (translations only), contact distance
+// h = r_node + r_segment, with an element's contact radius r = sqrt(3 I / A)
+// (half the depth of the rectangle with the section's A and I), or the record's
+// radius when the material gives no section; a node's radius is the largest of
+// its elements'. The penetration is
+//   p = h - s d     where the node projects inside the segment, d the signed
+//                   distance from the line a->b (positive to the left) and s the
+//                   side the node was on at t_n (two-sided segments: a node
+//                   pushed through the centre line is pushed back to its side),
+//   p = h - |x - a| (or |x - b|) beyond the ends (rounded ends),
+// and the stored energy U = k <p>^2 / 2 (the crushing law's energy for e < 1:
+// each pair keeps its loading point q while in contact, State::pairs). p is
+// continuous and its gradient too,
+// except where a node that went through the centre line leaves the segment's
+// span. At a vertex of a polyline the rounded end of one segment and the side of
+// its neighbour both push a node within sqrt(2 h p) of the vertex: there the
+// contact is up to twice as stiff.
+//
+// A node that ends a step in contact past the centre line is seen from its new
+// side from then on: the energy its old side stored is released (booked in the
+// energy account, counted and logged: the contact was too soft for the impact).
+//
+// Friction acts on the node's position along the segment, c = r1.r2 / |r2|
+// (measured from a): a spring of stiffness k anchored where the pair last slid
+// (its stretch kept per pair), sliding at mu N with N the pair's normal force
+// (without the dissipative term); under the mid-point scheme the force is the
+// law's path work over the step through the discrete gradient of c. Beyond the
+// segment's ends it still acts along the segment.
+//
+// Excluded pairs: the elements at the node, the elements at the nodes tied to
+// it by joints (a joint's master and slave are one node for contact), and pairs
+// already within contact distance in the reference configuration (members
+// meeting at a frame joint: parts of one piece of structure) while the members
+// between them hold: while the node is as few elements from the segment as in
+// the original mesh, joints counted as one node and ruptured ones as broken.
+// A pair set free inside its contact distance (a joint ruptured; contact
+// switched on at a deformed state) gets an offset o, its penetration then,
+// and contacts at the distance h - o, the offset shrinking as the two move
+// apart: it starts at zero force and the full distance returns once apart.
+// A node set free on the segment itself (a ruptured joint's end node lies on
+// the centre line of the member it was joined to, where its own side is a
+// toss-up) is held on the side where its own members lie (the far ends of its
+// elements), until it has cleared the centre line on that side or gone
+// around the segment's end: held, it is pushed back from the wrong side also
+// beyond the ends, by p = h + (d^2 - e^2) / rho (e the distance beyond the
+// end, rho the distance from the end point: continuous in value and slope
+// with the span's h + |d| and with the rounded end's h - rho across the line,
+// where the pieces of a ruptured joint lie end to end), and a commit does not
+// turn it to the wrong side unless it went through by the full distance.
+// (Seen from its side at t_n, a node that the first step took a hundredth of
+// a millimetre past the line was held on the wrong side from then on, and the
+// pieces of a ruptured joint ended crossed.)
+//
+// Forces: under the static and Newmark rules the gradient of U at t_n+1; under
+// the mid-point scheme a discrete gradient, so that an impact conserves energy
+// exactly: with z = (x - a, b - a) (translation invariant: the forces sum to
+// zero and linear momentum is conserved),
+//   f_z = phi'(p_n, p_n+1) D,   D = grad p(z_m) + (p_n+1 - p_n - grad p(z_m).dz) dz / |dz|^2,
+// phi' the closed-form discrete derivative of k <p>^2 / 2 (as the ground's), or
+// the crushing law's work over the step divided by p_n+1 - p_n, so that
+// f_z.dz = U_n+1 - U_n (+ what crushing dissipated), plus the dashpot's force
+// along D (core/contact/ContactDamper.h: zeta's coefficient for the pair's reduced mass,
+// core/contact/PairMotion.h; Newmark: c dp/dt grad p at t_n+1). A pair whose turn falls
+// inside a step gets the peak its mass came back from as its loading point
+// (core/contact/CrushingLaw.h crushingLoadingPoint), as a ground node does.
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "core/contact/ContactGrid.h"
+#include "core/contact/ContactMotion.h"
+#include "core/DofMap.h"
+#include "core/Model.h"
+#include "core/State.h"
+#include "core/StepRule.h"
+
+namespace c2d {
+
+using PairVec = Eigen::Matrix<double, 6, 1>;  // node x, segment ends a, b: (x, y) each
+using PairMat = Eigen::Matrix<double, 6, 6>;
+
+// Positions of the node and the segment ends at one instant.
+struct PairPositions {
+  Vec2 x, a, b;
+};
+
+// The side of the node relative to the line a->b: +1 left (or on it), -1 right.
+int pairSide(const PairPositions& q);
+// Penetration of the pair for the side s and contact distance h (see above);
+// held: the node is held on the side s (a ruptured joint's pair), also beyond
+// the segment's ends.
+double pairPenetration(const PairPositions& q, int side, double h, bool held = false);
+
+// The rate of the pair's penetration p for the velocities v of its points
+// (dp/dt = grad p . dz/dt, z = (x - a, b - a)).
+double pairPenetrationRate(const PairPositions& q, const PairPositions& v, int side, double h,
+                           bool held = false);
+
+using PairZ = Eigen::Matrix<double, 4, 1>;  // z = (x - a, b - a)
+
+// The force law of a pair: penalty stiffness k, the dashpot's coefficient c
+// (kN s/m, core/contact/ContactDamper.h), restitution e and the pair's loading point q
+// at t_n (core/contact/CrushingLaw.h; e = 1: elastic, q unused); zv and za: dz/dt and
+// d2z/dt2 at t_n, from which Newmark's rate at t_n+1 follows.
+struct PairLaw {
+  double k = 0, c = 0, restitution = 1, q = 0;
+  double mu = 0, stretch = 0;  // friction coefficient, the friction spring's stretch at t_n
+  PairZ zv = PairZ::Zero(), za = PairZ::Zero();
+};
+
+// What a pair's step did: its penetrations at t_n and t_n+1, the friction
+// spring's stretch at t_n+1 and the energy its sliding (or letting go) took.
+struct PairOutcome {
+  double p0 = 0, p1 = 0, stretch = 0, slipped = 0;
+};
+
+// The pair's contact force (added to the residual as an internal force: the
+// gradient of the energy) and its derivative with respect to the positions at
+// t_n+1, for the positions at t_n (q0) and t_n+1 (q1). False, with nothing
+// written, when the pair carries no force.
+bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, double h,
+                 const PairLaw& law, const StepRule& rule, bool wantTangent, PairVec& force,
+                 PairMat& tangent, PairOutcome* outcome = nullptr, bool held = false);
+
+// One node-segment pair of the model.
+struct ContactPair {
+  int node = -1, element = -1;
+  int a = -1, b = -1;  // the element's nodes
+  double h = 0;        // contact distance
+  std::uint64_t key() const {
+    return (static_cast<std::uint64_t>(node) << 32) | static_cast<std::uint32_t>(element);
+  }
+};
+
+// For every node: the representative of the nodes tied to it by joints.
+std::vector<int> jointGroups(const Model& model);
+
+// An element's contact radius from its section, sqrt(3 I / A) (half the depth
+// of the rectangle with the section's A and I); 0 without a section.
+double sectionRadius(const Model& model, int element);
+
+class MemberContact {
+ public:
+  // Per topology version: contact nodes (used, not aliased), radii, joint
+  // groups, the pairs excluded by the reference configuration.
+  MemberContact(const Model& model, const DofMap& dofs);
+
+  // Every pair that may carry a force at the state s (swept boxes from t_n to
+  // t_n+1, inflated by the contact distance, overlap), and more: the list is
+  // found with boxes inflated by a margin and kept while no node has moved
+  // beyond its box of that search by more than the margin. Sorted by key.
+  // Changes only when candidatesVersion() does.
+  const std::vector<ContactPair>& candidates(const Model& model, const State& s) const;
+  int candidatesVersion() const { return candidatesVersion_; }
+
+  // Force and tangent of a candidate pair at s (false: no force), with the
+  // pair's memory in s.pairs.
+  bool evaluate(const ContactPair& pair, const Model& model, const State& s, const StepRule& rule,
+                bool wantTangent, PairVec& force, PairMat& tangent) const;
+
+  // Stored energy at the trial state s (sides and memory from its committed
+  // state), and the energy the crushing and the dissipative term took over the
+  // step from t_n to t_n+1.
+  double energy(const Model& model, const State& s) const;
+  double dissipation(const Model& model, const State& s, const StepRule& rule) const;
+  // The motion over the step to s of every pair that touches at either end
+  // (core/contact/ContactMotion.h), appended to out.
+  void motions(const Model& model, const State& s, std::vector<ContactMotion>& out) const;
+
+  // At a commit: the memory of every pair in contact at the end of the step
+  // (its loading point, friction stretch and shrinking offset) into s.pairs.
+  // Returns the energy released: a pair whose node ended the step past the
+  // segment's centre line is seen from its new side from then on, and the
+  // energy it stored from the old side is gone (its force pushed the node on);
+  // `pushed` counts such pairs, `pushedEnergy` adds what they released. So is
+  // what a held pair stored and stores no more once let go (or apart).
+  double commit(const Model& model, State& s, int& pushed, double& pushedEnergy) const;
+  // The stored energy at the committed state s: as found by this contact's
+  // last commit (no pass over the pairs), or evaluated when it made none.
+  double committedEnergy(const Model& model, const State& s) const {
+    return committed_ ? committedEnergy_ : energy(model, s);
+  }
+  // When the contact starts or the topology changes (s committed): a pair now
+  // free to contact that is already inside its contact distance (the pieces of
+  // a joint that ruptured) and has no memory gets the offset of its present
+  // penetration, so that it starts at zero force.
+  void openPairs(const Model& model, State& s) const;
+  // The side of the pair's segment (at the positions q) where the node's
+  // members lie, or 0 where they lie on both sides or along it.
+  int membersSide(const ContactPair& pair, const Model& model, const State& s,
+                  const PairPositions& q) const;
+
+  // The pair's swept boxes are within contact distance plus `extra` at s.
+  // The pair's boxes at the positions q alone are within contact distance
+  // (plus the slack of its memory): energy() at a committed state sees it.
+  bool reachesAt(const ContactPair& pair, const PairPositions& q) const {
+    Box seg = Box::point(q.a.x(), q.a.y());
+    seg.add(q.b.x(), q.b.y());
+    return Box::point(q.x.x(), q.x.y()).inflated(pair.h + slack_).overlaps(seg);
+  }
+  bool near(const ContactPair& pair, const Model& model, const State& s, double extra) const {
+    PairPositions q0, q1;
+    return positions(pair, model, s, q0, q1, extra);
+  }
+
+  double margin() const { return margin_; }
+  // The most a pair's memory reaches beyond its contact distance: evaluate()
+  // sees a pair whose swept boxes are within its distance plus this.
+  double slack() const { return slack_; }
+  // An assembly under `rule` begins (the rule the friction stretches of its
+  // trial state belong to, as evaluate() notes it).
+  void assembling(const StepRule& rule) const {
+    if (lastRule_.scheme != rule.scheme || lastRule_.alpha != rule.alpha) lastRule_ = rule;
+  }
+  double radius(int element) const { return elementRadius_[element]; }
+
+ private:
+  void search(const Model& model, const State& s) const;
+  bool valid(const Model& model, const State& s) const;
+  // The pair's positions at t_n and t_n+1, and whether its swept boxes are
+  // within contact distance (plus extra).
+  bool positions(const ContactPair& pair, const Model& model, const State& s, PairPositions& q0,
+                 PairPositions& q1, double extra = 0) const;
+  bool excluded(int node, int element, const Model& model) const;
+  // The pair's memory at the last commit (null: none).
+  static const PairMemory* memory(const State& s, std::uint64_t key);
+  // Contact distance of a pair with the memory m (or none): the distance it
+  // met at, less its offset.
+  // The pair's step at s under the rule (and its penetration at the full
+  // contact distance, without offset, at t_n+1).
+  PairOutcome outcome(const ContactPair& pair, const Model& model, const State& s,
+                      const StepRule& rule, double* full = nullptr) const;
+  static double distance(const ContactPair& pair, const PairMemory* m) { return m ? m->h : pair.h; }
+  // The side the node is held on: the memory's, or the one it was on at t_n.
+  static int side(const PairMemory* m, const PairPositions& q0) {
+    return m && m->side ? m->side : pairSide(q0);
+  }
+  static bool held(const PairMemory* m) { return m && m->side; }
+  static double reach(const ContactPair& pair, const PairMemory* m) {
+    return m ? m->h - m->offset : pair.h;
+  }
+  // The pair's law at s (its dashpot for the masses at t_n: q0).
+  PairLaw law(const ContactPair& pair, const State& s, const PairPositions& q0,
+              const PairMemory* m) const;
+
+  MemberContactData data_;
+  std::vector<int> contactNodes_;                 // used and not aliased
+  std::vector<char> usedNode_;                    // nodes whose motion matters (in some element)
+  std::vector<double> elementRadius_;             // per element
+  std::vector<double> nodeRadius_;                // per node
+  std::vector<double> masses_;                    // per node (core/NodeMass.h)
+  std::vector<int> group_;                        // joint groups
+  std::vector<std::uint64_t> referenceExcluded_;  // sorted pair keys
+  double margin_ = 0;
+
+  // The search and its cache (a function of the state; rebuilt on demand).
+  mutable ContactGrid grid_;
+  std::vector<int> live_;  // the elements in the model (removed ones are not)
+  mutable std::vector<Box> boxes_;  // per entry of live_
+  mutable std::vector<Box> anchor_;  // per node: its swept box at the last search
+  mutable std::vector<ContactPair> candidates_;
+  mutable std::vector<PairMemory> nextMemory_;  // commit's scratch
+  // The rule of the last evaluation: the friction springs' stretches at a
+  // trial state are those of the step that was assembled (as the ground's).
+  mutable StepRule lastRule_;
+  mutable double committedEnergy_ = 0;
+  mutable bool committed_ = false;  // committedEnergy_ is that of a commit
+  mutable double slack_ = 0;        // the most a pair's memory reaches beyond its distance
+  mutable int candidatesVersion_ = 0;
+  mutable bool searched_ = false;
+};
+
+// Inline: evaluated for every candidate at every assembly.
+inline bool MemberContact::positions(const ContactPair& pair, const Model& model, const State& s,
+                              PairPositions& q0, PairPositions& q1, double extra) const {
+  auto at = [&](const Eigen::VectorXd& u, int n) {
+    return Vec2(model.coord(n).x() + u[3 * n], model.coord(n).y() + u[3 * n + 1]);
+  };
+  q0 = {at(s.un, pair.node), at(s.un, pair.a), at(s.un, pair.b)};
+  q1 = {at(s.u, pair.node), at(s.u, pair.a), at(s.u, pair.b)};
+  Box node = Box::point(q0.x.x(), q0.x.y()), seg = Box::point(q0.a.x(), q0.a.y());
+  node.add(q1.x.x(), q1.x.y());
+  seg.add(q0.b.x(), q0.b.y());
+  seg.add(q1.a.x(), q1.a.y());
+  seg.add(q1.b.x(), q1.b.y());
+  return node.inflated(pair.h + extra).overlaps(seg);
+}
+
+}  // namespace c2d

@@ -1,0 +1,186 @@
+#include "core/output/AtomicFile.h"
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+#include <system_error>
+#include <utility>
+
+namespace c2d {
+
+namespace {
+
+std::filesystem::path partPathOf(const std::filesystem::path& path) {
+  std::filesystem::path part = path;
+  part += ".part";
+  return part;
+}
+
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what, int err) {
+  std::string msg = "cannot " + what + " '" + path.string() + "'";
+  if (err != 0) msg += ": " + std::string(std::strerror(err));
+  throw IoError(msg);
+}
+
+}  // namespace
+
+std::filesystem::path AtomicFile::tagged(const std::filesystem::path& path, std::string_view tag) {
+  std::filesystem::path name = path.stem();
+  name += ".";
+  name += std::string(tag);
+  name += path.extension();
+  return path.parent_path() / name;
+}
+
+AtomicFile::AtomicFile(std::filesystem::path path)
+    : path_(std::move(path)),
+      part_(partPathOf(path_)),
+      lastFlush_(std::chrono::steady_clock::now()) {
+  if (path_.has_parent_path()) {
+    std::error_code ec;
+    std::filesystem::create_directories(path_.parent_path(), ec);
+    if (ec) fail(path_.parent_path(), "create the directory", ec.value());
+  }
+  errno = 0;
+  out_.open(part_, std::ios::out | std::ios::trunc | std::ios::binary);
+  if (!out_) fail(part_, "open for writing", errno);
+}
+
+AtomicFile::~AtomicFile() {
+  if (committed_) return;
+  out_.close();
+  std::error_code ec;  // a destructor must not throw; a leftover .part is harmless
+  std::filesystem::remove(part_, ec);
+}
+
+void AtomicFile::check(std::chrono::milliseconds flushInterval) {
+  if (committed_) return;
+  if (out_) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - lastFlush_ < flushInterval) return;
+    lastFlush_ = now;
+    errno = 0;
+    out_.flush();
+    if (out_) return;
+    fail(part_, "write", errno);
+  }
+  // A buffered write failed earlier: flushing again gives the system's reason.
+  out_.clear();
+  errno = 0;
+  out_.flush();
+  const int err = errno;
+  out_.setstate(std::ios::badbit);
+  fail(part_, "write", err);
+}
+
+void AtomicFile::commit() { commitTo(path_); }
+
+std::filesystem::path AtomicFile::keep(std::string_view tag) {
+  const std::filesystem::path target = tagged(path_, tag);
+  commitTo(target);
+  return target;
+}
+
+void AtomicFile::commitTo(const std::filesystem::path& target) {
+  if (committed_)
+    throw std::logic_error("AtomicFile::commit called twice for '" + path_.string() + "'");
+  errno = 0;
+  const bool before = static_cast<bool>(out_);
+  out_.flush();
+  const bool wrote = before && static_cast<bool>(out_);
+  int err = errno;
+  if (!before) {  // a buffered write failed earlier: the reason comes with a new try
+    out_.clear();
+    errno = 0;
+    out_.flush();
+    err = errno;
+  }
+  errno = 0;
+  out_.close();
+  if (err == 0) err = errno;
+  if (!wrote || out_.fail()) {
+    std::error_code ec;
+    std::filesystem::remove(part_, ec);
+    committed_ = true;  // nothing left to commit; the destructor has nothing to remove
+    fail(part_, "write", err);
+  }
+  std::error_code ec;
+  std::filesystem::rename(part_, target, ec);
+  if (ec) {
+    std::error_code ignored;
+    std::filesystem::remove(part_, ignored);
+    committed_ = true;
+    fail(target, "rename '" + part_.filename().string() + "' to", ec.value());
+  }
+  committed_ = true;
+}
+
+void AtomicFile::write(const std::filesystem::path& path, std::string_view content) {
+  AtomicFile file(path);
+  file.stream().write(content.data(), static_cast<std::streamsize>(content.size()));
+  file.commit();
+}
+
+AtomicAppendFile::AtomicAppendFile(std::filesystem::path path, std::string header,
+                                   std::string footer, std::chrono::milliseconds minSyncInterval)
+    : path_(std::move(path)),
+      header_(std::move(header)),
+      footer_(std::move(footer)),
+      minInterval_(minSyncInterval) {}
+
+AtomicAppendFile::~AtomicAppendFile() {
+  if (closed_ || (written_ && pendingBytes() == 0)) return;
+  try {
+    rewrite(partPath());
+  } catch (...) {
+    // Unwinding from another failure: the last synced document stays on disk.
+  }
+}
+
+std::filesystem::path AtomicAppendFile::partPath() const { return partPathOf(path_); }
+
+void AtomicAppendFile::append(std::string_view record) {
+  if (closed_) throw std::logic_error("append to closed file '" + path_.string() + "'");
+  body_.append(record);
+}
+
+void AtomicAppendFile::sync() {
+  if (closed_) return;
+  if (written_ && pendingBytes() == 0) return;
+  if (written_ && minInterval_.count() > 0 &&
+      std::chrono::steady_clock::now() - lastWrite_ < minInterval_)
+    return;
+  rewrite(partPath());
+}
+
+void AtomicAppendFile::close() {
+  if (closed_) return;
+  finalize(path_);
+}
+
+std::filesystem::path AtomicAppendFile::keep(std::string_view tag) {
+  const std::filesystem::path target = AtomicFile::tagged(path_, tag);
+  if (!closed_) finalize(target);
+  return target;
+}
+
+void AtomicAppendFile::finalize(const std::filesystem::path& target) {
+  closed_ = true;
+  rewrite(target);
+  std::error_code ec;
+  std::filesystem::remove(partPath(), ec);
+}
+
+void AtomicAppendFile::rewrite(const std::filesystem::path& target) {
+  AtomicFile file(target);
+  std::ostream& out = file.stream();
+  out.write(header_.data(), static_cast<std::streamsize>(header_.size()));
+  out.write(body_.data(), static_cast<std::streamsize>(body_.size()));
+  out.write(footer_.data(), static_cast<std::streamsize>(footer_.size()));
+  file.commit();
+  syncedBody_ = body_.size();
+  written_ = true;
+  lastWrite_ = std::chrono::steady_clock::now();
+}
+
+}  // namespace c2d

@@ -1,0 +1,456 @@
+#include "macro/commands/SectionRecords.h"
+
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+#include "macro/commands/SubRecordFields.h"
+#include "materials/RcSection.h"
+#include "materials/SectionLaws.h"
+
+namespace c2d {
+
+using meshspec::expr;
+using meshspec::failAt;
+using meshspec::subSpec;
+using meshspec::text;
+
+namespace {
+
+// Defaults of SECTion: Es in kN/m^2 (the decks' system); fu and eu of
+// Eurocode 2's class B bars (Annex C: ft/fy >= 1.08, eps_uk >= 5 %).
+constexpr double kDefaultEs = 200e6, kDefaultHardeningRatio = 1.08, kDefaultFractureStrain = 0.05;
+
+std::string str(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+void bindHardening(MeshContext& ctx, const Record& r, const CommandSpec& s, MaterialSet& mat,
+                   LawRecords& seen) {
+  const bool negative = keywordMatches(r.text(1), "NEGAtive");
+  const std::string syntax = negative ? "HARDening NEGAtive Mc My Kh1 Kh2"
+                                      : "HARDening BILInear Mc My Kh1 Kh2";
+  subrecord::requireText(r, s.name, syntax);
+  if (!negative && !keywordMatches(r.text(1), "BILInear"))
+    failAt(r, 1, "expected BILInear (or NEGAtive: the values of negative moments)", "write " + syntax);
+  const auto v = subrecord::values(ctx, r, s.name, 4, 4, syntax);
+  if (v[0] <= 0) failAt(r, 2, "Mc must be positive");
+  if (v[1] < v[0]) failAt(r, 3, "My must not be below Mc");
+  if (v[2] <= 0) failAt(r, 4, "Kh1 must be positive");
+  if (v[3] < 0) failAt(r, 5, "Kh2 must not be negative");
+  const HardeningValues h{v[0], v[1], v[2], v[3]};
+  if (negative) {
+    seen.hardeningNeg = &r;
+    if (!mat.hardening) mat.hardening = HardeningData{};
+    mat.hardening->negative = h;
+  } else {
+    seen.hardening = &r;
+    auto neg = mat.hardening ? mat.hardening->negative : std::nullopt;
+    mat.hardening = HardeningData{};
+    static_cast<HardeningValues&>(*mat.hardening) = h;
+    mat.hardening->negative = neg;
+  }
+}
+
+void bindSoftening(MeshContext& ctx, const Record& r, const CommandSpec& s, MaterialSet& mat,
+                   LawRecords& seen) {
+  const bool negative = keywordMatches(r.text(1), "NEGAtive");
+  const std::string syntax =
+      negative ? "SOFTening NEGAtive Mu Ks" : "SOFTening LINEar Mu Ks [thetaR [Mr]]";
+  subrecord::requireText(r, s.name, syntax);
+  if (!negative && !keywordMatches(r.text(1), "LINEar"))
+    failAt(r, 1, "expected LINEar (or NEGAtive: the values of negative moments)", "write " + syntax);
+  const auto v = subrecord::values(ctx, r, s.name, negative ? 2 : 4, 2, syntax);
+  if (v[0] <= 0) failAt(r, 2, "Mu must be positive");
+  if (v[1] >= 0) failAt(r, 3, "Ks must be negative (softening)");
+  if (negative) {
+    seen.softeningNeg = &r;
+    if (!mat.softening) mat.softening = SofteningData{};
+    mat.softening->negative = std::make_pair(v[0], v[1]);
+    return;
+  }
+  seen.softening = &r;
+  auto neg = mat.softening ? mat.softening->negative : std::nullopt;
+  mat.softening = SofteningData{v[0], v[1], std::nullopt};
+  mat.softening->negative = neg;
+  if (r.size() > 4 && !r.text(4).empty()) {
+    if (!(v[2] > v[0] / -v[1]))
+      failAt(r, 4, "the rupture rotation thetaR must exceed the failure jump Mu/|Ks| = " +
+                       std::to_string(v[0] / -v[1]));
+    mat.softening->thetaR = v[2];
+  }
+  if (r.size() > 5 && !r.text(5).empty()) {
+    if (!(v[3] >= 0 && v[3] < v[0])) failAt(r, 5, "the joint's friction moment Mr must lie in [0, Mu)");
+    mat.softening->Mr = v[3];
+  }
+}
+
+void bindSection(MeshContext& ctx, const Record& r, const CommandSpec& s, MaterialSet& mat,
+                 LawRecords& seen) {
+  const std::string syntax = "SECTion RECTangular b h fc fy [Es [fu eu]]";
+  subrecord::requireText(r, s.name, syntax);
+  if (!keywordMatches(r.text(1), "RECTangular"))
+    failAt(r, 1, "expected RECTangular (the only shape)", "write " + syntax);
+  if (seen.section) failAt(r, 0, "SECTion given twice in one MATErial set");
+  const auto v = subrecord::values(ctx, r, s.name, 7, 4, syntax);
+  const char* names[4] = {"width b", "depth h", "concrete strength fc", "bar yield stress fy"};
+  for (std::size_t i = 0; i < 4; ++i)
+    if (!(v[i] > 0)) failAt(r, 2 + i, std::string("the section's ") + names[i] + " must be positive");
+  RcSectionData d;
+  d.b = v[0];
+  d.h = v[1];
+  d.fc = v[2];
+  d.fy = v[3];
+  d.Es = r.size() > 6 && !r.text(6).empty() ? v[4] : kDefaultEs;
+  if (!(d.Es > 0)) failAt(r, 6, "the bar modulus Es must be positive");
+  const bool ultimate = r.size() > 7 && !r.text(7).empty();
+  if (ultimate != (r.size() > 8 && !r.text(8).empty()))
+    failAt(r, ultimate ? r.size() : 7, "give both fu and eu (or neither)", "write " + syntax);
+  d.fu = ultimate ? v[5] : kDefaultHardeningRatio * d.fy;
+  d.eu = ultimate ? v[6] : kDefaultFractureStrain;
+  if (!(d.fu >= d.fy)) failAt(r, 7, "the bars' ultimate stress fu must not be below fy = " + str(d.fy));
+  if (!(d.eu > d.fy / d.Es))
+    failAt(r, 8, "the bars' fracture strain eu must exceed their yield strain fy/Es = " +
+                     str(d.fy / d.Es));
+  d.bars = mat.section ? mat.section->bars : std::vector<RebarLayer>{};
+  mat.section = d;
+  seen.section = &r;
+}
+
+void bindRebar(MeshContext& ctx, const Record& r, MaterialSet& mat, LawRecords& seen) {
+  // REBAr d1 A1 [d2 A2 ...]: the numbers start at field 1 (or 2 after an empty field).
+  const std::size_t first = r.size() > 1 && r.text(1).empty() ? 2 : 1;
+  if (r.size() <= first || (r.size() - first) % 2 != 0)
+    failAt(r, r.size(), "REBAr takes pairs of depth and area", "write REBAr d1 A1 [d2 A2 ...]");
+  if (!mat.section) mat.section = RcSectionData{};
+  for (std::size_t i = first; i + 1 < r.size(); i += 2) {
+    const double depth = ctx.number(r, i), area = ctx.number(r, i + 1);
+    if (!(depth > 0)) failAt(r, i, "a bar layer's depth from the top face must be positive");
+    if (!(area > 0)) failAt(r, i + 1, "a bar layer's area must be positive");
+    mat.section->bars.push_back({depth, area});
+  }
+  seen.rebar.push_back(&r);
+}
+
+void bindInteraction(MeshContext& ctx, const Record& r, const CommandSpec& s, MaterialSet& mat,
+                     LawRecords& seen) {
+  const std::string syntax = "INTEraction CURVe N1 Mu1 N2 Mu2 ...";
+  subrecord::requireText(r, s.name, syntax);
+  if (!keywordMatches(r.text(1), "CURVe")) failAt(r, 1, "expected CURVe", "write " + syntax);
+  if (r.size() < 6 || r.size() % 2 != 0)
+    failAt(r, r.size(), "INTEraction takes two pairs of N and Mu or more", "write " + syntax);
+  mat.interaction.clear();
+  for (std::size_t i = 2; i + 1 < r.size(); i += 2) {
+    const double n = ctx.number(r, i), mu = ctx.number(r, i + 1);
+    if (!mat.interaction.empty() && !(n > mat.interaction.back().first))
+      failAt(r, i, "the axial forces of the curve must increase");
+    if (!(mu > 0)) failAt(r, i + 1, "the curve's moments Mu must be positive");
+    mat.interaction.emplace_back(n, mu);
+  }
+  if (!(mat.interaction.front().first <= 0 && mat.interaction.back().first >= 0))
+    failAt(r, 2, "the curve must span N = 0 (its value there scales the laws)");
+  seen.interaction = &r;
+}
+
+void bindHinges(MeshContext& ctx, const Record& r, const CommandSpec& s, MaterialSet& mat,
+                LawRecords& seen) {
+  ctx.maxFields(r, 2, "HINGes ENDS / HINGes MIDPoint");
+  if (keywordMatches(r.text(1), "ENDS"))
+    mat.hingeSite = HingeSite::Ends;
+  else if (keywordMatches(r.text(1), "MIDPoint"))
+    mat.hingeSite = HingeSite::Midpoint;
+  else
+    failAt(r, 1, "unknown option '" + r.text(1) + "' of " + s.name, "write HINGes ENDS / HINGes MIDPoint");
+  seen.hinges = &r;
+}
+
+}  // namespace
+
+bool bindLawRecord(MeshContext& ctx, const Record& r, const CommandSpec& s, MaterialSet& mat,
+                   LawRecords& seen) {
+  const std::string key = s.key();
+  if (key == "hard")
+    bindHardening(ctx, r, s, mat, seen);
+  else if (key == "soft")
+    bindSoftening(ctx, r, s, mat, seen);
+  else if (key == "sect")
+    bindSection(ctx, r, s, mat, seen);
+  else if (key == "reba")
+    bindRebar(ctx, r, mat, seen);
+  else if (key == "inte")
+    bindInteraction(ctx, r, s, mat, seen);
+  else if (key == "hing")
+    bindHinges(ctx, r, s, mat, seen);
+  else
+    return false;
+  return true;
+}
+
+void finishLawRecords(const Record& head, const LawRecords& seen, MaterialSet& mat,
+                      const Record* elastic, const Record* cross, const Record* resultant) {
+  if (seen.hardeningNeg && !seen.hardening)
+    failAt(*seen.hardeningNeg, 0, "HARDening NEGAtive needs HARDening BILInear (the positive moments')");
+  if (seen.softeningNeg && !seen.softening)
+    failAt(*seen.softeningNeg, 0, "SOFTening NEGAtive needs SOFTening LINEar (the positive moments')");
+  if (!seen.rebar.empty() && !seen.section)
+    failAt(*seen.rebar.front(), 0, "REBAr without SECTion", "give SECTion RECTangular b h fc fy");
+  if (seen.section) {
+    const Record& sec = *seen.section;
+    const char* why = "SECTion derives the section's stiffnesses and laws";
+    for (const Record* other : {elastic, cross, resultant, seen.hardening, seen.hardeningNeg,
+                                seen.softening, seen.softeningNeg, seen.interaction})
+      if (other) failAt(*other, 0, std::string(why) + ": this record cannot go with it");
+    if (seen.hinges && mat.hingeSite != HingeSite::Ends)
+      failAt(*seen.hinges, 1, "a SECTion member's hinges open at its ends");
+    if (seen.rebar.empty())
+      failAt(sec, 0, "SECTion needs its bars", "give REBAr d1 A1 [d2 A2 ...] (depth from the top face, area)");
+    std::size_t k = 0;  // the layers in the order of their records
+    for (const Record* rb : seen.rebar) {
+      const std::size_t first = rb->size() > 1 && rb->text(1).empty() ? 2 : 1;
+      for (std::size_t i = first; i + 1 < rb->size(); i += 2, ++k)
+        if (const RebarLayer& l = mat.section->bars[k]; !(l.depth < mat.section->h))
+          failAt(*rb, i, "bar layer at depth " + str(l.depth) + " lies outside the section (h = " +
+                             str(mat.section->h) + ")");
+    }
+    try {
+      deriveSectionLaws(mat);
+    } catch (const std::invalid_argument& e) {
+      failAt(sec, 0, e.what());
+    }
+    return;
+  }
+  if (seen.hinges && !mat.softening)
+    failAt(*seen.hinges, 0, "HINGes needs a softening law (SOFTening, or SECTion)");
+  if (mat.hardening && mat.softening) {
+    const double my[2] = {mat.hardening->My,
+                          mat.hardening->negative ? mat.hardening->negative->My : mat.hardening->My};
+    const double mu[2] = {mat.softening->Mu,
+                          mat.softening->negative ? mat.softening->negative->first : mat.softening->Mu};
+    for (int k = 0; k < 2; ++k)
+      if (mu[k] < my[k]) {
+        const Record* soft = k == 1 && seen.softeningNeg ? seen.softeningNeg : seen.softening;
+        std::ostringstream msg;
+        msg << "Mu = " << mu[k] << " of SOFTening" << (k == 1 ? " (negative moments)" : "")
+            << " is below My = " << my[k] << " of HARDening" << (k == 1 ? " (negative moments)" : "");
+        failAt(*soft, 2, msg.str(), "the hinge forms at Mu, after the hardening up to My: Mu >= My");
+      }
+  }
+  try {
+    deriveSectionLaws(mat);
+  } catch (const std::invalid_argument& e) {
+    failAt(seen.interaction ? *seen.interaction : head, 0, e.what());
+  }
+}
+
+// ---------------------------------------------------------------------------
+// echo
+
+namespace {
+
+void line(std::ostream& os, const std::string& name, double v) {
+  os << "      " << std::left << std::setw(19) << name << std::right << std::setw(13)
+     << std::scientific << std::setprecision(4) << v << "\n";
+}
+
+void echoSection(std::ostream& os, const MaterialSet& m) {
+  const RcSection& rc = *m.rc;
+  const RcSectionData& d = rc.data();
+  os << "      RC section (EC2 parabola-rectangle, eps_c2 = 0.002, eps_cu2 = 0.0035; bars\n"
+        "      elastic-perfectly plastic; moments about mid-depth, positive compressing the top)\n";
+  line(os, "Width b", d.b);
+  line(os, "Depth h", d.h);
+  line(os, "Concrete fc", d.fc);
+  line(os, "Ec = 2 fc/eps_c2", rc.Ec());
+  line(os, "fct = fc/10", rc.fct());
+  line(os, "Bars fy", d.fy);
+  line(os, "Bars Es", d.Es);
+  line(os, "Bars fu", d.fu);
+  line(os, "Bars eu", d.eu);
+  for (const RebarLayer& l : d.bars) {
+    std::ostringstream s;
+    s << std::scientific << std::setprecision(4) << "      Bar layer: depth " << l.depth
+      << ", area " << l.area << "\n";
+    os << s.str();
+  }
+  os << "      Transformed uncracked section (concrete b h, bars (Es/Ec - 1) A):\n";
+  line(os, "EA", rc.EA());
+  line(os, "GA (5/6, nu 0.2)", rc.GA());
+  line(os, "EI", rc.EI());
+  line(os, "Centroid depth", rc.centroidDepth());
+  line(os, "Tension yield Nt", rc.tensionYield());
+  line(os, "Tension Ntu", rc.tensionUltimate());
+  line(os, "Squash load Nc", rc.squashLoad());
+  for (int sign : {1, -1}) {
+    const char* tag = sign > 0 ? "+" : "-";
+    os << "      Moments " << (sign > 0 ? "positive (top face compressed)" : "negative (bottom face compressed)")
+       << " at N = 0:\n";
+    const RcSection::State c = rc.cracking(0, sign), y = rc.firstYield(0, sign), u = rc.ultimate(0, sign);
+    const MomentLaw l = rc.at(sign, 0);
+    line(os, std::string("Mc") + tag + " (fct)", l.Mc);
+    line(os, std::string("My") + tag + " (first yield)", l.My);
+    line(os, std::string("kappa_y") + tag, y.kappa);
+    line(os, std::string("x_y") + tag, y.depth);
+    line(os, std::string("Mu") + tag + " (eps_cu2)", l.Mu);
+    line(os, std::string("kappa_u") + tag, u.kappa);
+    line(os, std::string("x_u") + tag, u.depth);
+    line(os, std::string("Kh1") + tag, l.Kh1);
+    line(os, std::string("Kh2") + tag, l.Kh2);
+    line(os, std::string("theta_pl") + tag, rc.plasticRotation(0, sign));
+    line(os, std::string("xiF") + tag + " (jump)", l.xiF);
+    line(os, std::string("Ks") + tag, -l.Mu / l.xiF);
+    const RcSection::State b = rc.balance(sign);
+    line(os, std::string("Balance N") + tag, rc.forces(b.e0, b.kappa, sign).N);
+    line(os, std::string("Balance M") + tag, b.M);
+    (void)c;
+  }
+  if (m.softening && m.softening->thetaR) line(os, "Rupture thetaR", *m.softening->thetaR);
+  os << "      Interaction (N, Mu+, Mu-, My+, My-):\n";
+  const double lo = -rc.squashLoad(), hi = rc.tensionYield();
+  for (int i = 0; i <= 10; ++i) {
+    const double n = lo + (hi - lo) * i / 10;
+    const MomentLaw p = rc.at(1, n), q = rc.at(-1, n);
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "      %13.4e %13.4e %13.4e %13.4e %13.4e\n", n, p.Mu, q.Mu, p.My,
+                  q.My);
+    os << buf;
+  }
+}
+
+}  // namespace
+
+void echoLaws(std::ostream& os, const MaterialSet& m) {
+  if (m.hardening) {
+    line(os, "Hardening Mc", m.hardening->Mc);
+    line(os, "Hardening My", m.hardening->My);
+    line(os, "Hardening Kh1", m.hardening->Kh1);
+    line(os, "Hardening Kh2", m.hardening->Kh2);
+    if (const auto& n = m.hardening->negative) {
+      line(os, "Hardening Mc-", n->Mc);
+      line(os, "Hardening My-", n->My);
+      line(os, "Hardening Kh1-", n->Kh1);
+      line(os, "Hardening Kh2-", n->Kh2);
+    }
+  }
+  if (m.softening) {
+    line(os, "Softening Mu", m.softening->Mu);
+    line(os, "Softening Ks", m.softening->Ks);
+    if (const auto& n = m.softening->negative) {
+      line(os, "Softening Mu-", n->first);
+      line(os, "Softening Ks-", n->second);
+    }
+    if (m.softening->thetaR && !m.rc) line(os, "Rupture thetaR", *m.softening->thetaR);
+    if (m.softening->Mr > 0) line(os, "Joint friction Mr", m.softening->Mr);
+    if (m.hingeSite == HingeSite::Ends) os << "      Hinges             at the element ends\n";
+  }
+  if (!m.interaction.empty()) {
+    os << "      Interaction curve (N, Mu; the laws scaled by Mu(N)/Mu(0)):\n";
+    for (const auto& [n, mu] : m.interaction) {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "      %13.4e %13.4e\n", n, mu);
+      os << buf;
+    }
+  }
+  if (m.rc) echoSection(os, m);
+}
+
+// ---------------------------------------------------------------------------
+// specs
+
+void registerLawRecords(CommandRegistry& r) {
+  r.add(subSpec(
+      "HARDening",
+      "HARDening BILInear Mc My Kh1 Kh2: elastoplastic bending, elastic (EI) up to Mc, "
+      "hardening modulus Kh1 (moment against plastic curvature) to My, Kh2 beyond. "
+      "HARDening NEGAtive Mc My Kh1 Kh2 (after the BILInear record): other values for negative "
+      "moments (magnitudes); without it both signs take the same.",
+      {text("BILInear/NEGAtive", ""), expr("Mc", "elastic limit moment [kN m]"),
+       expr("My", "yield moment [kN m]"), expr("Kh1", "modulus from Mc to My [kN m^2]"),
+       expr("Kh2", "modulus beyond My [kN m^2]")}));
+  r.add(subSpec(
+      "SOFTening",
+      "SOFTening LINEar Mu Ks [thetaR [Mr]]: softening hinge activated when |M| reaches Mu; "
+      "hinge moment Mu + Ks*jump down to zero (Ks < 0). With FINIte kinematics a fully "
+      "softened hinge becomes a revolute joint during the run; a joint whose relative "
+      "rotation exceeds thetaR (rad) ruptures and the pieces separate (a joint whose node "
+      "presses on the ground ruptures when the node leaves it). Mr: the joint's friction "
+      "(the broken section's residual moment), a moment Mr opposing its relative rotation, "
+      "regularised over the step's relative rotation w: Mr w/sqrt(w^2 + eps^2), eps = Mr "
+      "l/EI; dissipated (energy account). Only where the joint is condensed into the "
+      "element: a JOINt whose slave node has more than one element (or nodal data) with "
+      "Mr > 0 is an error at its record. SOFTening NEGAtive Mu Ks (after the LINEar record): "
+      "other values for negative moments; a hinge follows the law of the sign of its moment at "
+      "opening.",
+      {text("LINEar/NEGAtive", ""), expr("Mu", "ultimate moment [kN m]"),
+       expr("Ks", "softening modulus: moment per radian of jump [kN m/rad], negative"),
+       expr("thetaR", "rupture rotation of the joint [rad] (optional)"),
+       expr("Mr", "friction moment of the joint [kN m] (optional, 0)")}));
+  r.add(subSpec(
+      "SECTion",
+      "SECTion RECTangular b h fc fy [Es [fu eu]]: a rectangular reinforced concrete section "
+      "(with REBAr for its bars), instead of ELAStic/CROSs/RESUltant/HARDening/SOFTening. "
+      "Materials of Eurocode 2: concrete parabola-rectangle (eps_c2 = 0.002, eps_cu2 = 0.0035, "
+      "C50/60 at most), fc used as given (give the strength the analysis should see, a mean "
+      "strength for a collapse), Ec = 2 fc/eps_c2 (the parabola's initial slope: one law for "
+      "stiffness and strength), fct = fc/10, no tension in the cracked states; bars elastic-"
+      "perfectly plastic, fracturing at eu. Derived, echoed in the log: EA, EI of the "
+      "transformed uncracked section (concrete b h, bars (Es/Ec - 1) A: the elastic branch "
+      "of the law is the uncracked member, cracking is its first hardening branch), GA = 5/6 "
+      "Ec/2.4 b h; at every axial force N (tension positive) and for each sign of the moment "
+      "(positive compresses the top face: the face on the element's left from its first node "
+      "to its second): Mc (the tension face at fct, transformed section), My and kappa_y "
+      "(first yield: the most strained bar at fy/Es or the compressed face at eps_c2), Mu and "
+      "kappa_u (the compressed face at eps_cu2, or eps_c2 at 3h/7 when the whole section is "
+      "compressed, or a bar at eu; EC2 6.1), the hardening moduli Kh1 = (My - Mc)/(kappa_y - "
+      "My/EI), Kh2 = (Mu - My)/(plastic curvature from My to Mu): the law passes through the "
+      "section's moment-curvature points; moments about mid-depth. Tabulated on [-Nc, Nt] "
+      "(monotone cubic in N). Hinges open at the element ends (the end moments of the "
+      "element's equilibrium) as joints with the softening law: plastic rotation capacity "
+      "theta_pl = (kappa_u - kappa_y) Lp, Lp = h/2 (EC8-3 A.3.2.2 eq. A.9; Panagiotakos and "
+      "Fardis 2001; Lp = h/2: Paulay and Priestley 1992), the moment falling linearly from "
+      "Mu and 20 % lower at theta_pl (Panagiotakos and Fardis' ultimate: a 20 % drop): "
+      "failure jump xiF = 5 theta_pl, Ks = -Mu/xiF, taken at the axial force of the "
+      "hinge's opening; the joint then turns freely (the bars hold the pieces) and "
+      "ruptures at thetaR = xiF(N = 0) + acos(1/(1 + eu)) (a tie pinned there turned so far has "
+      "its bars at eu). Axial force: elastic with the uncracked EA in compression and the "
+      "cracked tie's Es As in tension (the member's strain is then its bars'), bounded by the "
+      "bars in tension, Nt = As fy hardening to Ntu = As fu at the strain eu, where the bars "
+      "fracture and the member separates from one of its ends (one log line each), and by the "
+      "squash load Nc = fc b h + As min(fy, Es eps_c2) in compression. Mc, My, Mu follow N (moment-axial "
+      "interaction): the hardening and softening variables are kept when N changes. "
+      "Defaults: Es = 200e6 (kN/m^2: 200 GPa; give it in another unit system), fu = 1.08 fy, "
+      "eu = 0.05 (EC2 Annex C class B).",
+      {text("RECTangular", "the shape"), expr("b", "width [m]"), expr("h", "depth [m]"),
+       expr("fc", "concrete compressive strength [kN/m^2]"),
+       expr("fy", "bar yield stress [kN/m^2]"),
+       expr("Es", "bar modulus [kN/m^2]", "200e6"),
+       expr("fu", "bar ultimate stress [kN/m^2]", "1.08 fy"),
+       expr("eu", "bar fracture strain [-]", "0.05")}));
+  r.add(subSpec(
+      "REBAr",
+      "REBAr d1 A1 [d2 A2 ...]: the bars of a SECTion as layers, each its depth from the top "
+      "face (the face a positive moment compresses) and its area; more REBAr records add "
+      "layers.",
+      {expr("d1", "depth of the layer from the top face [m]"),
+       expr("A1", "area of the layer's bars [m^2]")}));
+  r.add(subSpec(
+      "INTEraction",
+      "INTEraction CURVe N1 Mu1 N2 Mu2 ...: hand-given laws (HARDening, SOFTening) that follow "
+      "the axial force: every moment and modulus of either sign is multiplied by Mu(N)/Mu(0), "
+      "the curve interpolated by a monotone cubic (constant beyond its ends); the N must "
+      "increase and span 0 (tension positive).",
+      {text("CURVe", ""), expr("N1", "axial force [kN]"), expr("Mu1", "ultimate moment [kN m]")}));
+  r.add(subSpec(
+      "HINGes",
+      "HINGes ENDS: the softening hinges open at the element ends, where the end moment of the "
+      "element's equilibrium first reaches Mu, as joints carrying the softening law (SECTion "
+      "members always do); a coarse mesh then sees the support moments. HINGes MIDPoint "
+      "(default for hand-given laws): at the one-point element's midpoint when its moment "
+      "reaches Mu (the paper's element).",
+      {text("ENDS/MIDPoint", "", "MIDPoint")}));
+}
+
+}  // namespace c2d

@@ -1,0 +1,62 @@
+// ProblemRun's debris report: where the debris of a run with ground contact
+// ends up (core/Debris.h), as log lines, <stem>_debris.csv and the picture of
+// PLOT,DEBRis.
+#include <cstdio>
+
+#include "core/output/AtomicFile.h"
+#include "core/output/SvgDebris.h"
+#include "macro/run/ProblemRun.h"
+
+namespace c2d {
+
+namespace {
+
+std::string shortTime(double t) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", t);
+  return buf;
+}
+
+}  // namespace
+
+DebrisFigures ProblemRun::debrisNow(const State& s) const {
+  DebrisFigures d = debrisFigures(model_, s);
+  d.peakGroundForce = peakGroundForce_;
+  d.peakTime = peakGroundTime_;
+  d.kineticRatio = peakKinetic_ > 0 ? analysis_->kineticEnergy() / peakKinetic_ : 0.0;
+  d.restRatio = restRatio_ > 0 ? restRatio_ : Rest{}.ratio;
+  if (deepest_.node >= 0) {
+    d.deepestNode = deepest_.node;
+    d.deepest = deepest_.depth;
+    d.deepestTime = deepestTime_;
+    d.deepestLimit = halfSectionDepth(model_, deepest_.node);
+  }
+  return d;
+}
+
+void ProblemRun::reportDebris() {
+  // Where the debris ends up, against the footprint and the site: the log's lines,
+  // <stem>_debris.csv (one row), and the picture when PLOT,DEBRis asked for one.
+  const DebrisFigures d = debrisNow(analysis_->state());
+  if (d.leftNode < 0) return;
+  debris_ = d;
+  log_ << "\n" << debrisLogLines(d);
+  const std::filesystem::path csv = options_.outDir / (options_.stem + "_debris.csv");
+  AtomicFile::write(csv, debrisCsvHeader() + "\n" + debrisCsvRow(d) + "\n");
+  log_ << "  debris: " << csv.filename().string() << "\n";
+  if (debrisPlot_) plotDebris();
+}
+
+void ProblemRun::plotDebris() {
+  const State& s = outputState();
+  const DebrisFigures d = debrisNow(s);
+  std::string title = RunOutputs::displayTitle(problem_.title);
+  if (!options_.label.empty()) title += (title.empty() ? "" : ", ") + options_.label;
+  title += (title.empty() ? "" : ": ") + std::string("debris at t = ") + shortTime(s.t);
+  const std::filesystem::path path = options_.outDir / (options_.stem + "_debris.svg");
+  if (options_.pictures) saveDebrisSvg(path, model_, s, d, title);
+  debrisPlot_ = true;
+  log_ << "  PLOT   debris: " << path.filename().string() << "\n";
+}
+
+}  // namespace c2d

@@ -1,0 +1,131 @@
+// ProblemRun's restart files (SAVE, REST): the run's own state beside the
+// model's and the analysis', written and read back.
+#include "macro/run/ProblemRun.h"
+
+#include <sys/ioctl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "core/output/Checkpoint.h"
+#include "core/contact/MemberCrossing.h"
+#include "core/output/SvgDebris.h"
+#include "elements/EndHinges.h"
+#include "elements/MemberFold.h"
+#include "elements/HingeToJoint.h"
+#include "elements/Joints.h"
+#include "elements/MemberFold.h"
+#include "macro/deck/DeckParser.h"
+#include "macro/deck/DeckReader.h"
+#include "macro/run/Interrupt.h"
+#include "macro/commands/MasslessLoads.h"
+#include "macro/deck/MeshBinder.h"
+#include "macro/commands/MeshCommands.h"
+#include "macro/deck/NumberRanges.h"
+#include "macro/commands/OutputCommands.h"
+#include "macro/run/RemovalLog.h"
+#include "macro/run/Report.h"
+#include "macro/run/StaleOutputs.h"
+#include "macro/run/TopologyLog.h"
+#include "solvers/ConvergenceTest.h"
+#include "solvers/FiniteResults.h"
+#include "solvers/ProportionalLoad.h"
+#include "solvers/RestartFile.h"
+
+namespace c2d {
+
+// ------------------------------------------------------------------ restart
+
+std::filesystem::path ProblemRun::restartPath(const Macro& m) const {
+  std::string name = m.optionText.empty() ? options_.stem : m.optionText;
+  if (std::filesystem::path(name).extension() != ".rst") name += ".rst";
+  return options_.outDir / name;
+}
+
+std::string ProblemRun::runState() const {
+  using namespace checkpoint;
+  std::ostringstream out(std::ios::binary);
+  putCount(out, hingeStep_.size());
+  for (int s : hingeStep_) put(out, s);
+  put(out, hingeCount_);
+  putBool(out, cutting_);
+  for (double x : {dtMin_, dtNominal_, energy0_, energyScale_, energyError_, maxMomentRatio_,
+                   peakGroundForce_, peakGroundTime_, peakKinetic_, restRatio_, lastMoving_,
+                   deepest_.depth, deepestTime_})
+    put(out, x);
+  for (int x : {stepsSinceCut_, cuts_, topology_.jointsFormed, topology_.jointsRuptured, removed_,
+                deepest_.node, topology_.hinges, topology_.fractures})
+    put(out, x);
+  putBool(out, energyStarted_);
+  putBool(out, dynamicSeen_);
+  return out.str();
+}
+
+void ProblemRun::setRunState(const std::string& bytes) {
+  using namespace checkpoint;
+  std::istringstream in(bytes, std::ios::binary);
+  hingeStep_.resize(getCount(in));
+  for (int& s : hingeStep_) s = get<int>(in);
+  if (static_cast<int>(hingeStep_.size()) != model_.numElements())
+    throw CheckpointError("hinge steps do not match the element count");
+  hingeCount_ = get<int>(in);
+  cutting_ = getBool(in);
+  for (double* x : {&dtMin_, &dtNominal_, &energy0_, &energyScale_, &energyError_,
+                    &maxMomentRatio_, &peakGroundForce_, &peakGroundTime_, &peakKinetic_,
+                    &restRatio_, &lastMoving_, &deepest_.depth, &deepestTime_})
+    *x = get<double>(in);
+  for (int* x : {&stepsSinceCut_, &cuts_, &topology_.jointsFormed, &topology_.jointsRuptured,
+                 &removed_, &deepest_.node, &topology_.hinges, &topology_.fractures})
+    *x = get<int>(in);
+  if (deepest_.node >= model_.numNodes())
+    throw CheckpointError("the deepest node is not in the model");
+  energyStarted_ = getBool(in);
+  dynamicSeen_ = getBool(in);
+}
+
+void ProblemRun::saveRestart(const Macro& m) {
+  const Status st = analysis_->commit();
+  if (!st) fail(m, st.why);
+  const std::filesystem::path file = restartPath(m);
+  try {
+    c2d::saveRestart(file, model_, *analysis_, runState(), input_);
+  } catch (const IoError&) {
+    throw;
+  } catch (const std::exception& e) {
+    fail(m, e.what());
+  }
+  // The linear solver starts afresh here, as it does in a run restarted from this
+  // file (a new analysis: CHOLMOD first again, KLU's pivot order chosen anew), so
+  // that the two runs stay identical to the last bit.
+  analysis_->setLinearSolver(analysis_->linearSolverName());
+  analysis_->assembler().restartContactSearch();
+  const State& s = analysis_->state();
+  log_ << "  SAVE   " << file.string() << ": step " << s.step << ", t = " << fmt("%.6e", s.t)
+       << "\n";
+}
+
+void ProblemRun::restoreRestart(const Macro& m) {
+  const std::filesystem::path file = restartPath(m);
+  try {
+    const std::string mine = loadRestart(file, model_, *analysis_, &input_);
+    try {
+      setRunState(mine);
+    } catch (const CheckpointError& e) {
+      throw CheckpointError("restart file '" + file.string() + "': " + e.what());
+    }
+  } catch (const CheckpointError& e) {
+    throw AnalysisError(m.record.fieldLoc(0).str() + ": error: REST: " + e.what());
+  }
+  const State& s = analysis_->state();
+  log_ << "  REST   " << file.string() << ": step " << s.step << ", t = " << fmt("%.6e", s.t)
+       << ", " << model_.numNodes() << " nodes, " << model_.numElements() << " elements, "
+       << analysis_->assembler().dofs().numEquations() << " equations\n";
+}
+
+}  // namespace c2d

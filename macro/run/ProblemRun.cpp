@@ -1,0 +1,505 @@
+#include "macro/run/ProblemRun.h"
+
+#include <sys/ioctl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "core/output/Checkpoint.h"
+#include "core/contact/MemberCrossing.h"
+#include "core/output/SvgDebris.h"
+#include "elements/EndHinges.h"
+#include "elements/MemberFold.h"
+#include "elements/HingeToJoint.h"
+#include "elements/Joints.h"
+#include "elements/MemberFold.h"
+#include "macro/deck/DeckParser.h"
+#include "macro/deck/DeckReader.h"
+#include "macro/run/Interrupt.h"
+#include "macro/commands/MasslessLoads.h"
+#include "macro/deck/MeshBinder.h"
+#include "macro/commands/MeshCommands.h"
+#include "macro/deck/NumberRanges.h"
+#include "macro/commands/OutputCommands.h"
+#include "macro/run/RemovalLog.h"
+#include "macro/run/Report.h"
+#include "macro/run/StaleOutputs.h"
+#include "macro/run/TopologyLog.h"
+#include "solvers/ConvergenceTest.h"
+#include "solvers/FiniteResults.h"
+#include "solvers/ProportionalLoad.h"
+#include "solvers/RestartFile.h"
+
+namespace c2d {
+
+namespace {
+
+// What a MESH re-entry may not change in a material set with elements.
+struct MaterialShape {
+  Kinematics kinematics = Kinematics::Small;
+  bool elastic = false;  // SMALl without HARDening/SOFTening: elastic frame elements
+};
+void checkMaterialChanges(const std::vector<Macro>& list, std::map<int, MaterialShape>& sets,
+                          const std::set<int>& used, const Parameters& params, bool& collapse);
+
+}  // namespace
+
+ProblemRun::ProblemRun(const Problem& problem, Parameters& params, const SolutionCommands& table,
+                       RunOptions options, std::ostream& log)
+    : problem_(problem),
+      params_(params),
+      table_(table),
+      options_(std::move(options)),
+      log_(log),
+      outputs_(std::make_unique<RunOutputs>(options_.outDir, options_.stem, problem_.title,
+                                            options_.label)) {
+  outputs_->setPictures(options_.pictures);
+}
+
+std::string ProblemRun::fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+// A run that ends by an exception leaves no progress line for the message to run into.
+ProblemRun::~ProblemRun() { progress(true); }
+
+void ProblemRun::bind(bool echo) {
+  MeshFacts mesh;
+  mesh.warnings = options_.warnings;
+  const SampleDraws* sample = options_.sample;
+  if (sample && sample->jitter)
+    mesh.beforeElements = [sample](Model& m) {
+      jitterNodes(m, *sample->jitter, sample->seed, sample->sample);
+    };
+  model_ = buildModel(problem_, params_, echo ? &log_ : nullptr, &mesh);
+  if (sample && sample->detonators)
+    drawnBlastTimes_ = scatterBlasts(model_, *sample->detonators, sample->seed, sample->sample);
+  installJoints(model_);
+  boundParams_ = params_;
+  batches_.clear();
+  BindFacts facts;
+  facts.warnings = options_.warnings;
+  for (const BatchBlock& b : problem_.batches)
+    batches_.push_back(bindBatch(b.commands, b.data, table_, boundParams_, &facts));
+  checkPlotColumns(batches_, boundParams_);
+  warnMasslessFloorLoads(problem_, batches_, options_.warnings);
+  // A table that no PROP defines would silently stay at 1 (a restart file brings its own).
+  for (const auto& [table, ref] : mesh.loadTables)
+    if (!facts.restart && !facts.loadTables.count(table)) {
+      const auto& [rec, field] = ref;
+      throw DeckError(rec.fieldLoc(field),
+                      "proportional load table " + std::to_string(table) +
+                          " is defined by no PROP command of this problem",
+                      rec.excerpt(rec.fieldLoc(field)),
+                      "add PROP,," + std::to_string(table) + " to a BATCh block");
+    }
+  std::map<int, MaterialShape> sets;
+  for (const auto& [number, mat] : model_.materials())
+    sets[number] = {mat.kinematics,
+                    mat.kinematics == Kinematics::Small && !mat.hardening && !mat.softening};
+  std::set<int> used;
+  for (const auto& e : model_.elements())
+    if (e) used.insert(e->materialNumber());
+  bool collapse = false;
+  for (const auto& batch : batches_) checkMaterialChanges(batch, sets, used, boundParams_, collapse);
+}
+
+void ProblemRun::run() {
+  start_ = lastProgress_ = std::chrono::steady_clock::now();
+  removeStaleOutputs(options_.outDir, options_.stem);
+  analysis_ = std::make_unique<Analysis>(model_);
+  if (!analysis_->setLinearSolver(options_.solver))
+    throw AnalysisError("unknown linear solver '" + options_.solver + "'");
+  hingeStep_.assign(model_.numElements(), 0);
+  input_ = ModelFingerprint::of(model_);  // before any solution command changes the model
+  analysis_->onCommit = [this] { onCommit(); };
+  analysis_->onHingeActivated = [this](int e, const HingeInfo& h) {
+    log_ << "  " << (h.fracture ? "bars   element " : "hinge  element ") << e + 1
+         << " activated at t = " << fmt("%.6e", analysis_->state().t)
+         << (h.fracture ? ": fracture strain" : ", M = " + fmt("%.6e", h.moment)) << "\n";
+  };
+  analysis_->topologyEvents().onEvent = [this](const TopologyEvent& ev) {
+    hingeStep_.resize(model_.numElements(), 0);
+    if (ev.kind == TopologyEvent::Kind::HingeOpened && hingeStep_[ev.element] == 0)
+      hingeStep_[ev.element] = analysis_->state().step;
+    logTopologyEvent(log_, model_, analysis_->state().t, ev, topology_);
+  };
+  analysis_->removals().onEvent = [this](const RemovalEvent& ev) {
+    removed_ += static_cast<int>(ev.elements.size());
+    const RemovalLog line = removalLog(ev);
+    blastsNotMade_ += line.warning ? 1 : 0;
+    log_ << line.text;
+  };
+  cursor_.reset(batches_);
+  for (const auto& batch : batches_)
+    if (execList(batch, true) == Flow::Stop) break;
+  const Status st = analysis_->commit();
+  if (!st) throw AnalysisError("final commit: " + st.why);
+  if (history_) {
+    history_->record(*analysis_, true);
+    history_->finish();
+  }
+  outputs_->finish(model_, analysis_->state(), history_.get());
+  if (model_.ground()) reportDebris();
+  reportCrossings();
+  reportFolds();
+  // A blast plan the run did not reach is not silently dropped.
+  for (const Blast& b : model_.blasts())
+    if (!b.done) {
+      ++blastsNotMade_;
+      log_ << "  warning: the blast at t = " << fmt("%.6e", b.time)
+           << " did not happen: the run ended at t = " << fmt("%.6e", analysis_->state().t)
+           << "\n";
+    }
+  progress(true);
+}
+
+void ProblemRun::reportCrossings() {
+  // Members that passed through each other (core/contact/MemberCrossing.h).
+  const std::vector<MemberCrossing> crossings = findCrossings(model_, analysis_->state());
+  crossings_ = static_cast<int>(crossings.size());
+  const std::size_t shown = std::min<std::size_t>(crossings.size(), 20);
+  for (std::size_t i = 0; i < shown; ++i) {
+    const MemberCrossing& c = crossings[i];
+    log_ << (i == 0 ? "\n" : "") << "  warning: members " << c.first + 1 << " and " << c.second + 1
+         << " cross at t = " << fmt("%.6e", analysis_->state().t) << ", at ("
+         << fmt("%.3f", c.point.x()) << ", " << fmt("%.3f", c.point.y()) << ") m: "
+         << fmt("%.3f", c.fromNode[0]) << " m from node " << c.nearNode[0] + 1 << " and "
+         << fmt("%.3f", c.fromNode[1]) << " m from node " << c.nearNode[1] + 1 << "\n";
+  }
+  if (crossings.size() > shown)
+    log_ << "  warning: " << crossings.size() - shown << " more pairs of members cross\n";
+  // Members that went through each other during the run, whatever the end.
+  if (const Assembler& a = analysis_->assembler(); a.pushedThrough() > 0)
+    log_ << "  warning: " << a.pushedThrough()
+         << " times a node in contact with a member was pushed past its centre line ("
+         << fmt("%.3e", a.pushedThroughEnergy())
+         << " kJ of contact energy released): the member contact is too soft for the impact, or "
+            "the pieces of a ruptured joint slid through each other\n";
+}
+
+void ProblemRun::reportFolds() {
+  // RC members folded beyond what a member does whole (elements/MemberFold.h).
+  const std::vector<MemberFold> folds = foldedMembers(model_, analysis_->state());
+  folded_ = static_cast<int>(folds.size());
+  for (std::size_t i = 0; i < std::min<std::size_t>(folds.size(), 20); ++i)
+    log_ << (i == 0 && crossings_ == 0 ? "\n" : "") << "  warning: member " << folds[i].element + 1
+         << " is bent through " << fmt("%.3f", folds[i].fold) << " rad between its ends (nodes "
+         << folds[i].nodes[0] + 1 << " and " << folds[i].nodes[1] + 1
+         << ") at t = " << fmt("%.6e", analysis_->state().t)
+         << ": more than a quarter turn, which no RC member bends whole\n";
+}
+
+RunSummary ProblemRun::summary() const {
+  RunSummary s;
+  if (!analysis_) return s;
+  s.steps = analysis_->state().step;
+  s.iterations = analysis_->totalIterations();
+  s.factorizations = analysis_->totalFactorizations();
+  s.cuts = cuts_;
+  s.hinges = hingeCount_ + topology_.hinges;
+  s.energyError = energyError_;
+  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  s.dynamic = dynamicSeen_;
+  s.maxMomentRatio = maxMomentRatio_;
+  s.jointsFormed = topology_.jointsFormed;
+  s.jointsRuptured = topology_.jointsRuptured;
+  s.removed = removed_;
+  s.crossings = crossings_;
+  s.folded = folded_;
+  s.sunk = debris_ && debris_->sunk() ? 1 : 0;
+  s.memberContact = crossings_ > 0 && model_.memberContact().has_value();
+  s.blastsNotMade = blastsNotMade_;
+  s.debrisRuns = debris_ ? 1 : 0;
+  s.outsideRuns = debris_ && debris_->outside() ? 1 : 0;
+  s.movingRuns = debris_ && !debris_->atRest() ? 1 : 0;
+  if (debris_) s.kineticRatio = debris_->kineticRatio;
+  return s;
+}
+
+std::vector<std::filesystem::path> ProblemRun::keepOutputs(std::string_view tag) noexcept {
+  std::vector<std::filesystem::path> kept;
+  try {
+    if (history_) kept.push_back(history_->keep(tag));
+  } catch (...) {
+    // The history cannot be written either (a full disk): nothing to keep.
+  }
+  try {
+    for (const auto& f : outputs_->keep(tag)) kept.push_back(f);
+  } catch (...) {
+  }
+  return kept;
+}
+
+// ------------------------------------------------------------------ control flow
+
+void ProblemRun::safePoint() {
+  if (options_.safePoint) options_.safePoint();
+  if (history_) history_->check();
+  if (pendingInterrupt() != 0) {
+    const State& s = analysis_->state();
+    throwIfInterrupted("step " + std::to_string(s.step) + " (t = " + fmt("%.6e", s.t) + ")");
+  }
+}
+
+Flow ProblemRun::execList(const std::vector<Macro>& list, bool topLevel, int pass, int passes) {
+  const RunCursor::Scope scope(cursor_, list, pass >= 0, pass, passes);
+  for (const Macro& m : list) {
+    cursor_.at(static_cast<std::size_t>(&m - list.data()));
+    safePoint();
+    current_ = &m;
+    const Flow f = m.command->run(m, *this);
+    // Outside any loop a converged iteration or a reached tmax has no loop to leave.
+    if (f == Flow::Stop || (f == Flow::ExitLoop && !topLevel)) return f;
+  }
+  return Flow::Next;
+}
+
+Flow ProblemRun::runLoop(const Macro& m) {
+  const int n = m.has(0) ? m.numbers[0].evalInt(params_, "loop count") : 1;
+  const bool newton = m.newtonLoop();
+  diverged_ = stalled_ = false;
+  lastFailure_.clear();
+  for (int i = 0, part = parts_; i < n; ++i) {
+    const Flow f = execList(m.body, false, i, n);
+    if (f == Flow::Stop) return f;
+    if (f == Flow::ExitLoop || diverged_) break;
+    if (newton && parts_ != part) i = -1, part = parts_;
+  }
+  if (newton && !analysis_->stepConverged()) {
+    const std::string why = diverged_  ? "diverged" + (lastFailure_.empty() ? std::string()
+                                                                             : " (" + lastFailure_ + ")")
+                            : stalled_ ? "stalled (its energy repeats)"
+                                       : "did not converge in " + std::to_string(n) + " iterations";
+    return retryWithCut(m, why);
+  }
+  return Flow::Next;
+}
+
+
+void ProblemRun::fail(const Macro& m, const std::string& what) const {
+  const State& s = analysis_->state();
+  throw AnalysisError(m.record.fieldLoc(0).str() + ": error: " + m.record.text(0) + " in step " +
+                      std::to_string(s.step + 1) + " (t = " + fmt("%.6e", s.t) + "): " + what);
+}
+
+void ProblemRun::failAtCommit(const std::string& what) const {
+  const State& s = analysis_->state();
+  const std::string where =
+      current_ ? current_->record.fieldLoc(0).str() + ": error: " + current_->record.text(0)
+               : std::string("error:");
+  throw AnalysisError(where + " at the commit of step " + std::to_string(s.step) +
+                      " (t = " + fmt("%.6e", s.t) + "): " + what);
+}
+
+
+namespace {
+
+std::vector<MeshItem> meshReentryItems(const Macro& m) {
+  std::vector<Record> records;
+  if (!m.optionText.empty()) {
+    const std::filesystem::path base = std::filesystem::path(m.record.loc.file).parent_path();
+    const std::filesystem::path file = base / m.optionText;
+    if (!std::filesystem::exists(file))
+      throw DeckError(m.record.fieldLoc(1), "MESH: no file '" + file.string() + "'",
+                      m.record.excerpt(m.record.fieldLoc(1)));
+    records = DeckReader::readFile(file.string());
+  } else {
+    records = m.data;
+  }
+  return parseMeshRecords(std::move(records), m.record.loc.file);
+}
+
+// MATErial records of MESH re-entries, in deck order, that would change the
+// kinematics of a set whose elements exist, or give HARDening/SOFTening to its
+// elastic frame elements (before HINGe2joint, which makes them elastic Reissner
+// beams that ignore the laws): refused before any computing (the re-entry checks
+// again when it is applied). A re-entry that builds elements is left to that check.
+void checkMaterialChanges(const std::vector<Macro>& list, std::map<int, MaterialShape>& sets,
+                          const std::set<int>& used, const Parameters& params, bool& collapse) {
+  for (const Macro& m : list) {
+    checkMaterialChanges(m.body, sets, used, params, collapse);
+    if (m.is("hing")) collapse = true;
+    if (!m.is("mesh")) continue;
+    const std::vector<MeshItem> items = meshReentryItems(m);
+    bool builds = false;
+    for (const MeshItem& item : items)
+      if (const auto* c = std::get_if<MeshCommand>(&item))
+        builds = builds || c->head.is("ELEMents") || c->head.is("BLOCk");
+    if (builds) continue;
+    for (const MeshItem& item : items) {
+      const auto* c = std::get_if<MeshCommand>(&item);
+      if (!c || !c->head.is("MATErial") || c->head.size() < 2) continue;
+      int number = 0;
+      try {
+        number = Expression::parse(c->head[1]).evalInt(params, "material number");
+      } catch (const DeckError&) {
+        continue;  // a parameter set later: checked when the re-entry is applied
+      }
+      Kinematics kin = Kinematics::Small;
+      const Record* where = &c->head;
+      const Record* law = nullptr;
+      for (const Record& r : c->data) {
+        if (r.is("SMALl") || r.is("FINIte")) {
+          kin = r.is("SMALl") ? Kinematics::Small : Kinematics::Finite;
+          where = &r;
+        }
+        if (!law && (r.is("HARDening") || r.is("SOFTening"))) law = &r;
+      }
+      auto it = sets.find(number);
+      if (it != sets.end() && used.count(number)) {
+        if (it->second.kinematics != kin)
+          refuseKinematicsChange(*where, number, it->second.kinematics);
+        if (it->second.elastic && law && !collapse)
+          throw DeckError(law->fieldLoc(0),
+                          "material " + std::to_string(number) +
+                              " has elastic frame elements (built without HARDening and "
+                              "SOFTening): the laws cannot be added in a MESH re-entry",
+                          law->excerpt(law->fieldLoc(0).col),
+                          "give the laws in the mesh input, where the elements are built");
+        continue;  // the elements keep their class
+      }
+      sets[number] = {kin, kin == Kinematics::Small && !law};
+    }
+  }
+}
+
+}  // namespace
+
+void ProblemRun::reenterMesh(const Macro& m) {
+  const std::vector<MeshItem> items = meshReentryItems(m);
+  const Status st = analysis_->commit();
+  if (!st) fail(m, st.why);
+  applyMesh(items, params_, model_, &log_, nullptr, &analysis_->state());
+  installJoints(model_);
+  model_.bumpTopology();
+  analysis_->topologyChanged();
+  hingeStep_.resize(model_.numElements(), 0);
+  log_ << "  MESH   re-entered: " << model_.numNodes() << " nodes, " << model_.numElements()
+       << " elements, " << analysis_->assembler().dofs().numEquations() << " equations\n";
+}
+
+
+void ProblemRun::hingesToJoints(const Macro& m, MemberLaws laws) {
+  const Status st = analysis_->commit();
+  if (!st) fail(m, st.why);
+  const std::vector<CreatedJoint> joints = hingeToJoint(model_, analysis_->state(), laws);
+  analysis_->topologyChanged();
+  hingeStep_.resize(model_.numElements(), 0);
+  log_ << "  HINGE2JOINT  " << joints.size() << " hinges became joints, members "
+       << (laws == MemberLaws::Elastic ? "elastic" : "keep their laws") << "; " << model_.numNodes()
+       << " nodes, " << analysis_->assembler().dofs().numEquations() << " equations\n";
+  for (const CreatedJoint& j : joints)
+    log_ << "    element " << j.element + 1 << ": joint master " << j.master + 1 << " slave "
+         << j.slave + 1 << " (element end " << j.slaveEnd + 1 << "), relative rotation "
+         << fmt("%.6e", j.relativeRotation) << "\n";
+}
+
+void ProblemRun::removeMembers(const Macro& m) {
+  std::vector<int> elements;
+  for (int e : selection(m, model_.numElements())) elements.push_back(e);
+  if (elements.empty()) fail(m, "no element in the range");
+  const double td = m.has(3) && !m.record.text(5).empty() ? m.numbers[3].eval(params_) : 0.0;
+  if (!(td >= 0)) fail(m, "the release time td must be zero or positive");
+  const Status st = analysis_->removeElements(elements, td);
+  if (!st) fail(m, st.why);
+  hingeStep_.resize(model_.numElements(), 0);
+}
+
+
+void ProblemRun::onCommit() {
+  if (!model_.joints().empty()) syncSlaveNodes(model_, analysis_->state());
+  const State& s = analysis_->state();
+  const Energy en = analysis_->energy();
+  if (const std::string bad =
+          nonFiniteResult(model_, s, analysis_->assembler().nodalResidual(), en);
+      !bad.empty())
+    failAtCommit("a result is not a finite number: " + bad);
+  for (const auto& [e, h] : analysis_->hingeCarriers()) {
+    if (hingeStep_[e] != 0) continue;
+    const HingeInfo info = h->hinge();
+    if (!info.active) continue;
+    hingeStep_[e] = s.step;
+    ++hingeCount_;
+    log_ << "  hinge  formed in element " << e + 1 << " at step " << s.step
+         << " (t = " << fmt("%.6e", s.t) << ", M = " << fmt("%.6e", info.moment) << ")\n";
+  }
+  for (const auto& [e, h] : analysis_->hingeCarriers()) {
+    const HingeInfo info = h->hinge();
+    if (info.ultimate > 0)
+      maxMomentRatio_ = std::max(maxMomentRatio_, std::abs(info.moment) / info.ultimate);
+  }
+  maxMomentRatio_ = std::max(maxMomentRatio_, endHingeRatio(model_));
+  if (history_) history_->record(*analysis_);
+  if (model_.ground()) {
+    const double f = groundForce(model_, analysis_->assembler().dofs(), s);
+    if (f > peakGroundForce_) {
+      peakGroundForce_ = f;
+      peakGroundTime_ = s.t;
+    }
+    if (const GroundDepth d = deepestNode(model_, analysis_->assembler().dofs(), s);
+        d.node >= 0 && d.depth > deepest_.depth) {
+      deepest_ = d;
+      deepestTime_ = s.t;
+    }
+  }
+  dynamicSeen_ = dynamicSeen_ || analysis_->integrator().dynamic();
+  {
+    const double scale = std::abs(en.kinetic) + std::abs(en.strain) + std::abs(en.contact) +
+                         std::abs(en.external) + std::abs(en.dissipated);
+    if (!energyStarted_) {
+      energy0_ = en.balance();
+      energyStarted_ = true;
+    }
+    energyScale_ = std::max(energyScale_, scale);
+    if (energyScale_ > 0)
+      energyError_ = std::max(energyError_, std::abs(en.balance() - energy0_) / energyScale_);
+    if (analysis_->integrator().dynamic()) {
+      peakKinetic_ = std::max(peakKinetic_, en.kinetic);
+      if (en.kinetic > restRatio_ * peakKinetic_) lastMoving_ = s.t;
+    }
+  }
+  outputs_->onCommit(model_, analysis_->state());
+  progress(false);
+}
+
+void ProblemRun::progress(bool final) {
+  if (!options_.progress) return;
+  // One line on the terminal, rewritten in place (at most every 0.1 s) and
+  // erased when the run ends, so that the run's summary takes its place.
+  if (final) {
+    if (progressShown_) std::fprintf(stderr, "\r\033[K");
+    std::fflush(stderr);
+    progressShown_ = false;
+    return;
+  }
+  const auto now = std::chrono::steady_clock::now();
+  if (progressShown_ && now - lastProgress_ < std::chrono::milliseconds(100)) return;
+  lastProgress_ = now;
+  const State& s = analysis_->state();
+  const auto& h = analysis_->stepHistory();
+  char line[256];
+  std::snprintf(line, sizeof line, "%s: step %d  t = %.4g  load %.4g  Newton it %d  hinges %d%s",
+                options_.stem.c_str(), s.step, s.t, analysis_->loadFactor(),
+                h.empty() ? 0 : h.back().iteration, hingeCount_,
+                cuts_ ? ("  cuts " + std::to_string(cuts_)).c_str() : "");
+  // A line longer than the terminal would wrap, and '\r' would not return to its start.
+  std::size_t width = 80;
+  winsize ws{};
+  if (ioctl(STDERR_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0) width = ws.ws_col;
+  std::string text = line;
+  if (text.size() >= width) text.resize(width - 1);
+  std::fprintf(stderr, "\r\033[K%s", text.c_str());
+  std::fflush(stderr);
+  progressShown_ = true;
+}
+
+}  // namespace c2d

@@ -1,0 +1,250 @@
+#pragma once
+// One problem of a deck (FEAP ... END, BATCh blocks) bound and run: the mesh
+// built into a Model, the BATCh blocks bound into command trees (every deck
+// error found before computing), then executed against an Analysis.
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "core/Debris.h"
+#include "core/Model.h"
+#include "macro/deck/Deck.h"
+#include "macro/run/RunCursor.h"
+#include "macro/run/RunOutputs.h"
+#include "macro/commands/SolutionCommand.h"
+#include "macro/run/TimeHistory.h"
+#include "macro/run/TopologyLog.h"
+#include "elements/HingeToJoint.h"
+#include "macro/deck/Warnings.h"
+#include "macro/studies/Ensemble.h"
+#include "solvers/Analysis.h"
+#include "solvers/DenseOutput.h"
+#include "solvers/ModelFingerprint.h"
+
+namespace c2d {
+
+struct RunOptions {
+  std::filesystem::path outDir = ".";
+  std::string stem = "run";  // base name of the output files of this run
+  std::string label;         // what tells this run apart (sweep values) in titles and legends
+  bool progress = false;     // a single updating progress line on stderr
+  std::string solver = "auto";
+  Warnings* warnings = nullptr;  // where bind() puts deck warnings (null: dropped)
+  // Called at every safe point of the run (between two solution commands), e.g.
+  // to check that the log is still being written.
+  std::function<void()> safePoint;
+  // A sample of an ENSEmble (macro/studies/Ensemble.h): its nodes jittered
+  // before the elements are built, its time steps scaled, its blast times
+  // scattered. Null outside an ensemble.
+  const SampleDraws* sample = nullptr;
+  // Pictures and ParaView files (PLOT, PVIEw) are written (an ensemble's
+  // samples after the first write their tables only).
+  bool pictures = true;
+};
+
+struct RunSummary {
+  int steps = 0, iterations = 0, factorizations = 0, cuts = 0, hinges = 0;
+  // max |balance - initial balance| / max energy scale, the balance being kinetic + strain +
+  // contact - external + dissipated (solvers/EnergyAccount.h): how well the run's energy
+  // account closes, in static and dynamic runs
+  double energyError = 0;
+  double seconds = 0;
+  bool dynamic = false;         // some step was dynamic
+  double maxMomentRatio = 0;    // largest |M|/Mu of an element with a softening law, any time
+  int jointsFormed = 0, jointsRuptured = 0;  // during the run (fully softened hinges, ruptures)
+  int removed = 0;                            // elements removed (BLASt, REMOve)
+  int crossings = 0;  // pairs of members crossing each other at the end
+  int folded = 0;     // RC members bent through more than a quarter turn at the end
+  int sunk = 0;       // runs in which a node went deeper into the ground than half its section
+  bool memberContact = false;  // the crossing members had member contact (CONTact MEMBers)
+  // BLASt records whose time the run never reached, or whose elements had all
+  // been removed before (REMOve): they removed nothing.
+  int blastsNotMade = 0;
+  // Runs that ended with ground contact (debris figures), and those of them whose
+  // debris left the site (SITE).
+  int debrisRuns = 0, outsideRuns = 0;
+  // Runs whose debris was still moving at the end (its kinetic energy above
+  // TIME,REST's ratio of its peak), and the largest such ratio.
+  int movingRuns = 0;
+  double kineticRatio = 0;
+};
+
+class ProblemRun {
+ public:
+  ProblemRun(const Problem& problem, Parameters& params, const SolutionCommands& table,
+             RunOptions options, std::ostream& log);
+  ~ProblemRun();
+
+  // Build the mesh and bind every BATCh block (no computing): throws DeckError.
+  void bind(bool echo);
+  // The parameter table as binding left it: PARA commands of the BATCh blocks
+  // applied in deck order (what a later top-level LOOP count sees).
+  const Parameters& boundParams() const { return boundParams_; }
+  // Execute the bound BATCh blocks; throws AnalysisError when the analysis fails.
+  void run();
+  RunSummary summary() const;
+  // The run failed or was interrupted: its time history and ParaView collection
+  // kept under names tagged `tag` ("failed", "interrupted"). Never throws;
+  // returns the files kept.
+  std::vector<std::filesystem::path> keepOutputs(std::string_view tag) noexcept;
+
+  // --- used by the solution commands ---
+  Model& model() { return model_; }
+  Analysis& analysis() { return *analysis_; }
+  Parameters& params() { return params_; }
+  std::ostream& log() { return log_; }
+  RunOutputs& outputs() { return *outputs_; }
+  const RunOutputs& outputs() const { return *outputs_; }
+  const TimeHistory* history() const { return history_.get(); }
+  // The state pictures and ParaView frames show: the analysis state, or the
+  // motion at the tmax of a loop whose last step passed it (solvers/DenseOutput.h).
+  const State& outputState() {
+    return sample_.outputState(model_, analysis_->state(), analysis_->integrator());
+  }
+  // TIME,REST ended a loop at rest and no step has been taken since.
+  bool atRest() const { return restLogged_ && analysis_->state().t == restTime_; }
+
+  Flow runLoop(const Macro& m);
+  Flow newtonIteration(const Macro& m, bool update, bool lineSearch, bool symmetric);
+  Flow formResidual(const Macro& m);
+  Flow solveOnly(const Macro& m);
+  // TIME,REST: the motion is at rest when the kinetic energy has stayed at or
+  // below `ratio` of its peak (in this run's dynamic analysis) for `hold`
+  // time units; then the loop ends without a step.
+  struct Rest {
+    double ratio = 1e-5, hold = 0.5;
+  };
+  Flow advanceTime(const Macro& m, std::optional<double> tmax, std::optional<Rest> rest = {});
+  void setDt(double dt);
+  // Under step cutting the path-following increment follows dt / nominal dt.
+  void scalePathIncrement();
+  void setProportionalLoad(const Macro& m);
+  void setIntegrator(const Macro& m, const TimeIntegrator& ti);
+  // AUTO,CUT,dtmin,pred: with pred a dynamic step whose predicted start
+  // diverges is cut (dt halved, from the prediction again) rather than started
+  // again from the committed state.
+  void setStepCutting(bool on, double dtMin, bool cutDivergingPrediction = false);
+  void setPathFollowing(const Macro& m);
+  void setTimeHistory(const Macro& m);
+  void reenterMesh(const Macro& m);
+  void hingesToJoints(const Macro& m, MemberLaws laws);
+  // REMOve,ELEMents,n1,n2,inc,td.
+  void removeMembers(const Macro& m);
+  // SAVE[,name]: commit the converged step and write <outDir>/<name>.rst (default
+  // name: the run's stem). REST[,name]: replace the model and the analysis state
+  // by the ones saved there; the following commands continue from them.
+  void saveRestart(const Macro& m);
+  void restoreRestart(const Macro& m);
+  void printNodal(const Macro& m);
+  // FORM,LONG / FORM,SHORt: the digits of the nodal tables (FEAP's fmt_long).
+  void setLongFormat(bool on) { longFormat_ = on; }
+  void printStresses(const Macro& m);
+  void printHinges();
+  // PLOT,DEBRis: <stem>_debris.svg of the current state, drawn again with the
+  // final state at the end of the run.
+  void plotDebris();
+  // The debris figures of a run that ended with ground contact.
+  const std::optional<DebrisFigures>& debris() const { return debris_; }
+  // The BLASt times of an ensemble's sample with DETOnators (one per record).
+  const std::vector<double>& drawnBlastTimes() const { return drawnBlastTimes_; }
+
+ private:
+  // A number in the log: printf's format f (one conversion).
+  static std::string fmt(const char* f, double v);
+  // pass (0-based) of passes: a loop's body (runLoop), else a BATCh block.
+  Flow execList(const std::vector<Macro>& list, bool topLevel = false, int pass = -1,
+                int passes = 1);
+  void safePoint();
+  Flow retryWithCut(const Macro& loop, const std::string& why);
+  [[noreturn]] void fail(const Macro& m, const std::string& what) const;
+  // At a commit: the command that made it (current_), the step and time.
+  [[noreturn]] void failAtCommit(const std::string& what) const;
+  std::string historyText() const;
+  // What to try after a failed Newton loop (the reason, whether it used the
+  // line search, its iteration count when it ran out of iterations).
+  std::string advice(const std::string& why, bool lineSearch, int iterations) const;
+  std::vector<int> selection(const Macro& m, int count) const;
+  void onCommit();
+  // The debris report (macro/run/DebrisReport.cpp).
+  void reportDebris();
+  // The debris figures of the state s, with the run's peak ground force and
+  // deepest node.
+  DebrisFigures debrisNow(const State& s) const;
+  void reportCrossings();
+  // RC members bent through more than a quarter turn at the end: log lines.
+  void reportFolds();
+  void progress(bool final);
+  std::filesystem::path restartPath(const Macro& m) const;
+  // This class's own part of a restart file: hinge steps, step cutting, energy check.
+  std::string runState() const;
+  void setRunState(const std::string& bytes);
+
+  const Problem& problem_;
+  Parameters& params_;
+  const SolutionCommands& table_;
+  RunOptions options_;
+  std::ostream& log_;
+
+  Model model_;
+  Parameters boundParams_;
+  std::unique_ptr<Analysis> analysis_;
+  std::vector<std::vector<Macro>> batches_;
+  const Macro* current_ = nullptr;  // the solution command running
+  std::unique_ptr<TimeHistory> history_;
+  std::unique_ptr<RunOutputs> outputs_;  // PLOT and PVIEw files
+
+  // Step cutting (AUTO,CUT).
+  bool cutting_ = false;
+  double dtMin_ = 0, dtNominal_ = 0;
+  bool cutPrediction_ = false;  // a diverging predicted start cuts the step (AUTO,CUT,,1)
+  int stepsSinceCut_ = 0;
+  int cuts_ = 0;
+  std::string lastFailure_;
+  ModelFingerprint input_;  // the model as the deck's mesh input built it (SAVE / REST)  // why the last Newton iteration failed (under step cutting)
+  bool diverged_ = false;
+  bool stalled_ = false;  // the Newton loop left because its energy repeats
+  // Parts of steps begun by Newton iterations (a landing time, an impact's
+  // shorter step): each part has the Newton loop's count of iterations.
+  int parts_ = 0;
+
+  bool arcLengthFromDt_ = false;  // ARCL without dlambda0: set up when the first step starts
+  bool longFormat_ = false;       // FORM,LONG
+  int extraHistories_ = 0;        // TPLOt commands of the run after the first
+
+  std::vector<int> hingeStep_;  // step at which each element's hinge formed
+  int hingeCount_ = 0;
+  TopologyCounts topology_;
+  int removed_ = 0;
+  int crossings_ = 0;
+  int folded_ = 0;
+  int blastsNotMade_ = 0;
+  double maxMomentRatio_ = 0;
+  double energy0_ = 0, energyScale_ = 0, energyError_ = 0;
+  bool energyStarted_ = false;
+  bool dynamicSeen_ = false;
+  // TIME,REST: the kinetic energy's peak, the ratio watched (0: none yet) and
+  // the last committed time at which the kinetic energy was above it.
+  double peakKinetic_ = 0, restRatio_ = 0, lastMoving_ = 0;
+  bool restLogged_ = false;
+  double restTime_ = 0;  // when TIME,REST last ended a loop at rest
+  RunCursor cursor_;    // where the run is in its commands (TIME,,tmax: land on it or not)
+  DenseOutput sample_;  // outputs at the tmax a picture loop's last step passed
+  // Debris: the largest total ground force so far and its time; the figures at the end.
+  double peakGroundForce_ = 0, peakGroundTime_ = 0;
+  // The deepest any node went into the ground, and when.
+  GroundDepth deepest_;
+  double deepestTime_ = 0;
+  std::optional<DebrisFigures> debris_;
+  bool debrisPlot_ = false;
+  std::vector<double> drawnBlastTimes_;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point lastProgress_;
+  bool progressShown_ = false;
+};
+
+}  // namespace c2d

@@ -1,0 +1,271 @@
+// ProblemRun's time and load stepping (TIME, DT, AUTO, DYNAmic, PROP, ARCL,
+// TPLOt's set-up): a step begun, its length and its cutting, the integrator,
+// the proportional loads, the path following.
+#include "macro/run/ProblemRun.h"
+
+#include <sys/ioctl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "core/output/Checkpoint.h"
+#include "core/contact/MemberCrossing.h"
+#include "core/output/SvgDebris.h"
+#include "elements/EndHinges.h"
+#include "elements/MemberFold.h"
+#include "elements/HingeToJoint.h"
+#include "elements/Joints.h"
+#include "elements/MemberFold.h"
+#include "macro/deck/DeckParser.h"
+#include "macro/deck/DeckReader.h"
+#include "macro/run/Interrupt.h"
+#include "macro/commands/MasslessLoads.h"
+#include "macro/deck/MeshBinder.h"
+#include "macro/commands/MeshCommands.h"
+#include "macro/deck/NumberRanges.h"
+#include "macro/commands/OutputCommands.h"
+#include "macro/run/RemovalLog.h"
+#include "macro/run/Report.h"
+#include "macro/run/StaleOutputs.h"
+#include "macro/run/TopologyLog.h"
+#include "solvers/ConvergenceTest.h"
+#include "solvers/FiniteResults.h"
+#include "solvers/ProportionalLoad.h"
+#include "solvers/RestartFile.h"
+
+namespace c2d {
+
+Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::optional<Rest> rest) {
+  State& s = analysis_->state();
+  if (tmax && s.t >= *tmax - 1e-10 * std::max(1.0, std::abs(*tmax))) {
+    sample_.schedule(s, *tmax);
+    return Flow::ExitLoop;
+  }
+  if (rest) {
+    if (!analysis_->integrator().dynamic())
+      fail(m, "TIME,REST needs a dynamic analysis (DYNAmic): a static one has no motion to come "
+              "to rest");
+    // A new ratio is watched from now on.
+    if (rest->ratio != restRatio_) {
+      restRatio_ = rest->ratio;
+      lastMoving_ = s.t;
+    }
+    const double kinetic = analysis_->kineticEnergy();
+    if (peakKinetic_ > 0 && kinetic <= restRatio_ * peakKinetic_ &&
+        s.t - lastMoving_ >= rest->hold) {
+      if (!restLogged_)
+        log_ << "  TIME   at rest at t = " << fmt("%.6e", s.t) << ": the kinetic energy "
+             << fmt("%.4e", kinetic) << " has stayed at most " << fmt("%.1e", restRatio_)
+             << " of its peak " << fmt("%.4e", peakKinetic_) << " since t = "
+             << fmt("%.6e", lastMoving_) << "\n";
+      restLogged_ = true;
+      restTime_ = s.t;
+      return Flow::ExitLoop;
+    }
+  }
+  if (cutting_ && s.dt < dtNominal_ && ++stepsSinceCut_ >= 2) {
+    analysis_->setDt(std::min(2 * s.dt, dtNominal_));
+    stepsSinceCut_ = 0;
+  }
+  // The last step of a phase ends on tmax; a picture loop's never (RunCursor.h).
+  if (cutting_ && tmax && s.t + s.dt > *tmax && RunCursor::lands(cursor_.afterLoop(params_)))
+    analysis_->setDt(*tmax - s.t);
+  if (arcLengthFromDt_) {
+    analysis_->setPathFollowing(PathFollowing::arcLength(s.dt));
+    arcLengthFromDt_ = false;
+  }
+  scalePathIncrement();
+  sample_.stepBegins(s);
+  Status st = analysis_->advance();
+  // The converged step could not be committed (an element cannot be evaluated
+  // at it): with step cutting it is dropped and taken again in halves.
+  while (!st && cutting_) {
+    const double dt = 0.5 * s.dt;
+    log_ << "  *** step " << s.step + 1 << " not committed: " << st.why << "\n";
+    if (dt < dtMin_)
+      fail(m, st.why + "; step cutting gave up at the minimum step " + fmt("%.4e", dtMin_));
+    ++cuts_;
+    stepsSinceCut_ = 0;
+    analysis_->back();
+    analysis_->setDt(dt);
+    scalePathIncrement();
+    log_ << "  cut    step to dt = " << fmt("%.4e", dt) << "\n";
+    st = analysis_->advance();
+  }
+  if (!st) fail(m, st.why);
+  log_ << "  TIME   t = " << fmt("%.6e", s.t) << "  prop = " << fmt("%.6e", analysis_->loadFactor())
+       << "\n";
+  return Flow::Next;
+}
+
+void ProblemRun::scalePathIncrement() {
+  // A cut step is a cut path increment too (displacement increment or arc
+  // length): otherwise the retried step would repeat the same Newton history.
+  PathFollowing* p = analysis_->pathFollowing();
+  if (!p) return;
+  const double dt = analysis_->state().dt;
+  p->setIncrementScale(cutting_ && dtNominal_ > 0 && dt < dtNominal_ ? dt / dtNominal_ : 1.0);
+}
+
+void ProblemRun::setDt(double dt) {
+  // An ensemble's JITTer scales the steps of the motion; a static path is a
+  // load path (its steps reach the deck's load levels), not a motion.
+  if (options_.sample && analysis_->integrator().dynamic()) dt *= options_.sample->stepFactor;
+  analysis_->setDt(dt);
+  dtNominal_ = dt;
+}
+
+void ProblemRun::setStepCutting(bool on, double dtMin, bool cutDivergingPrediction) {
+  cutting_ = on;
+  cutPrediction_ = on && cutDivergingPrediction;
+  dtNominal_ = analysis_->state().dt;
+  dtMin_ = dtMin > 0 ? dtMin : dtNominal_ / 1024;
+  log_ << "  AUTO   step cutting "
+       << (on ? "on, dtmin = " + fmt("%.4e", dtMin_) : "off")
+       << (cutPrediction_ ? ", a diverging predicted start cuts the step" : "") << "\n";
+}
+
+void ProblemRun::setIntegrator(const Macro& m, const TimeIntegrator& ti) {
+  // A converged step ends under the rule it was solved with (its energy, the
+  // forces a blast at its time releases), not under the new one. A step that
+  // TIME began and no iteration has solved yet (DYNAmic inside the time loop)
+  // is no state to commit: it begins again under the new rule.
+  const State& s = analysis_->state();
+  const bool begun = s.t > s.tn && analysis_->stepHistory().empty();
+  if (begun) {
+    analysis_->back();
+  } else if (const Status st = analysis_->commit(); !st) {
+    fail(m, "committing the last step: " + st.why);
+  }
+  analysis_->setIntegrator(ti);
+  log_ << "  DYNA   " << ti.describe() << "\n";
+  if (!begun) return;
+  if (const Status st = analysis_->advance(); !st) fail(m, st.why);
+  log_ << "  DYNA   the step to t = " << fmt("%.6e", s.t) << " begins again under it\n";
+}
+
+void ProblemRun::setProportionalLoad(const Macro& m) {
+  const Record& first = m.data.front();
+  const int table =
+      m.has(0) && !m.record.text(2).empty() ? m.numbers[0].evalInt(params_, "table number") : 1;
+  if (first.blank()) {
+    analysis_->setLoadFunction(table, ProportionalLoad::ramp());
+    log_ << "  PROP   table " << table << ": ramp p = t\n";
+    return;
+  }
+  auto value = [&](const Record& r, std::size_t i) {
+    return i < r.size() ? Expression::parse(r[i]).eval(params_) : 0.0;
+  };
+  const int type = static_cast<int>(value(first, 0));
+  if (type == 1) {
+    std::array<double, 5> a{};
+    for (int i = 0; i < 5; ++i) a[i] = value(first, 4 + i);
+    const int k = static_cast<int>(value(first, 1));
+    analysis_->setLoadFunction(
+        table, ProportionalLoad::formula(k == 0 ? 1 : k, value(first, 2), value(first, 3), a));
+    log_ << "  PROP   table " << table << ": type 1\n";
+    return;
+  }
+  std::vector<std::pair<double, double>> pts;
+  for (std::size_t r = 1; r < m.data.size(); ++r)
+    for (std::size_t i = 0; i + 1 < m.data[r].size(); i += 2)
+      pts.emplace_back(value(m.data[r], i), value(m.data[r], i + 1));
+  analysis_->setLoadFunction(table, ProportionalLoad::table(std::move(pts)));
+  log_ << "  PROP   table " << table << ": type 2\n";
+}
+
+void ProblemRun::setPathFollowing(const Macro& m) {
+  // The converged step belongs to the control it was computed under: committed
+  // (and written to TPLOt) before the switch, as TIME would have done.
+  if (const Status st = analysis_->commit(); !st) fail(m, st.why);
+  arcLengthFromDt_ = false;
+  if (m.option == "off") {
+    analysis_->setPathFollowing(std::nullopt);
+    log_ << "  ARCL   off\n";
+    return;
+  }
+  const int kfl =
+      m.has(0) && !m.record.text(2).empty() ? m.numbers[0].evalInt(params_, "ARCL kfl") : 0;
+  if (kfl < 4 && m.data.empty()) {
+    // FEAPpv's arc length: the first step's load increment is its time step,
+    // known when that step starts (advanceTime).
+    arcLengthFromDt_ = true;
+    log_ << "  ARCL   arc length (first load increment: the first step's dt)\n";
+    return;
+  }
+  const Record& rec = m.data.front();
+  auto value = [&](std::size_t i) { return Expression::parse(rec[i]).eval(params_); };
+  if (kfl >= 4) {
+    const int node = Expression::parse(rec[0]).evalInt(params_, "node number");
+    const int dof = Expression::parse(rec[1]).evalInt(params_, "dof");
+    if (node < 1 || node > model_.numNodes() || dof < 1 || dof > 3)
+      throw DeckError(rec.loc,
+                      "ARCL: no node " + std::to_string(node) + " dof " + std::to_string(dof),
+                      rec.lineText());
+    analysis_->assembler().refresh();
+    const int eq = analysis_->assembler().dofs().eq(node - 1, dof - 1);
+    if (eq < 0)
+      throw DeckError(rec.loc,
+                      "ARCL: node " + std::to_string(node) + " dof " + std::to_string(dof) +
+                          " is restrained (displacement control needs a free dof)",
+                      rec.lineText());
+    analysis_->setPathFollowing(PathFollowing::displacementControl(eq, value(2)));
+    log_ << "  ARCL   displacement control of node " << node << " dof " << dof << "\n";
+  } else {
+    // 'dlambda0' alone or 'ndamp dlambda0': the last value.
+    analysis_->setPathFollowing(PathFollowing::arcLength(value(rec.size() - 1)));
+    log_ << "  ARCL   arc length\n";
+  }
+}
+
+void ProblemRun::setTimeHistory(const Macro& m) {
+  std::vector<TimeHistory::Column> cols;
+  for (const Record& rec : m.data) {
+    const std::string k = commandKey(rec.text(0));
+    TimeHistory::Column c{TimeHistory::Kind::Ener};
+    if (k == "arcl") c.kind = TimeHistory::Kind::Arcl;
+    if (k == "mome") c.kind = TimeHistory::Kind::Mome;
+    if (k != "ener" && k != "arcl" && k != "mome") {
+      c.kind = k == "disp"   ? TimeHistory::Kind::Disp
+               : k == "velo" ? TimeHistory::Kind::Velo
+               : k == "acce" ? TimeHistory::Kind::Acce
+               : k == "reac" ? TimeHistory::Kind::Reac
+                             : TimeHistory::Kind::Stre;
+      c.index = Expression::parse(rec[1]).evalInt(params_, "number") - 1;
+      c.component = Expression::parse(rec[2]).evalInt(params_, "component") - 1;
+      const int limit =
+          c.kind == TimeHistory::Kind::Stre ? model_.numElements() : model_.numNodes();
+      if (c.index < 0 || c.index >= limit || c.component < 0 || c.component > 2)
+        throw DeckError(rec[1].loc,
+                        "TPLOt: no such " +
+                            std::string(c.kind == TimeHistory::Kind::Stre ? "element" : "node") +
+                            " or component",
+                        rec.excerpt(rec[1].loc));
+    }
+    cols.push_back(c);
+  }
+  const int every =
+      m.has(0) && !m.record.text(2).empty() ? m.numbers[0].evalInt(params_, "TPLOt increment") : 1;
+  if (every < 1)
+    throw DeckError(m.record.fieldLoc(2), "the TPLOt increment must be 1 or more",
+                    m.record.excerpt(m.record.fieldLoc(2)));
+  // A later TPLOt of the run completes the file of the one before and starts
+  // <stem>_tplot_2.csv, ... (two writers of one file lost it).
+  std::string name = options_.stem + "_tplot.csv";
+  if (history_) {
+    history_->record(*analysis_, true);
+    history_->finish();
+    name = options_.stem + "_tplot_" + std::to_string(++extraHistories_ + 1) + ".csv";
+  }
+  history_ = std::make_unique<TimeHistory>(options_.outDir / name, std::move(cols), every,
+                                           analysis_->tableCount());
+  log_ << "  TPLOt  " << name << "\n";
+}
+
+}  // namespace c2d

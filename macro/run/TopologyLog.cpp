@@ -1,0 +1,58 @@
+#include "macro/run/TopologyLog.h"
+
+#include <cstdio>
+#include <string>
+
+#include "elements/JointedElement.h"
+
+namespace c2d {
+
+namespace {
+
+std::string num(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6e", v);
+  return buf;
+}
+
+}  // namespace
+
+void logTopologyEvent(std::ostream& log, const Model& model, double t, const TopologyEvent& ev,
+                      TopologyCounts& counts) {
+  switch (ev.kind) {
+    case TopologyEvent::Kind::JointFormed: {
+      ++counts.jointsFormed;
+      log << "  joint  formed at t = " << num(t) << ": element " << ev.element + 1
+          << ", fully softened hinge, at node " << ev.master + 1 << " (slave node "
+          << ev.slave + 1 << "), relative rotation " << num(ev.rotation);
+      // A member's second joint (elements/HingeToJoint.h): a link from now on.
+      const JointedElement* j = asJointed(&model.element(ev.element));
+      if (j && asJointed(&j->inner())) log << "; its second: the member is a link pinned at both ends";
+      log << "\n";
+      break;
+    }
+    case TopologyEvent::Kind::JointRuptured:
+      ++counts.jointsRuptured;
+      log << "  joint  ruptured at t = " << num(t) << ": element " << ev.element + 1
+          << " separates at node " << ev.master + 1 << " (new node " << ev.slave + 1
+          << "), relative rotation " << num(ev.rotation) << " beyond thetaR = " << num(ev.limit)
+          << "\n";
+      break;
+    case TopologyEvent::Kind::HingeOpened:
+      ++counts.hinges;
+      log << "  hinge  opened at t = " << num(t) << ": element " << ev.element + 1 << " end "
+          << ev.end + 1 << " (node " << ev.master + 1 << ", joint's slave node " << ev.slave + 1
+          << "), M = " << num(ev.moment) << ", Mu(N) = " << num(ev.ultimate)
+          << " at N = " << num(ev.axialForce) << ", failure jump " << num(ev.failureJump) << "\n";
+      break;
+    case TopologyEvent::Kind::BarsFractured:
+      ++counts.fractures;
+      log << "  bars   fractured at t = " << num(t) << ": element " << ev.element + 1
+          << " separates at node " << ev.master + 1 << " (its end " << ev.end + 1 << ", new node "
+          << ev.slave + 1 << (ev.throughJoint ? ", through its joint" : "")
+          << "), axial force " << num(ev.axialForce) << "\n";
+      break;
+  }
+}
+
+}  // namespace c2d

@@ -1,0 +1,47 @@
+#pragma once
+// [ext] The table of a study of plans: a SWEEp over blast times, element
+// numbers or any other parameter, one row per plan (run) in <stem>_plans.csv:
+//   run,stem,<swept names...>,status,reason,<debris columns (core/Debris.h)>
+// status is "ok" or "failed" (reason: the first line of the failure), the
+// debris columns are empty for a run without them. `run` counts every run of
+// the deck from 1, so that the parts of a study split with --shard join again
+// (macro/studies/Shard.h) by sorting on it.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/Debris.h"
+#include "macro/studies/Csv.h"
+#include "macro/studies/Sweep.h"
+
+namespace c2d {
+
+struct PlanRow {
+  int run = 0;  // 1-based over every run of the deck
+  std::string stem;
+  SweepValues sweep;
+  bool ok = true;
+  std::string reason;  // why it failed
+  std::optional<DebrisFigures> debris;
+};
+
+class PlanTable {
+ public:
+  // names: every swept name of the deck (columns), in order of first appearance.
+  explicit PlanTable(std::vector<std::string> names) : names_(std::move(names)) {}
+
+  void add(PlanRow row) { rows_.push_back(std::move(row)); }
+  const std::vector<PlanRow>& rows() const { return rows_; }
+  int failed() const;
+
+  std::string header() const;
+  std::string csv() const;  // header and every row
+  void write(const std::filesystem::path& path) const;
+
+ private:
+  std::vector<std::string> names_;
+  std::vector<PlanRow> rows_;
+};
+
+}  // namespace c2d
