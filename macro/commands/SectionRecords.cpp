@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "macro/commands/SubRecordFields.h"
+#include "materials/HingedBending.h"
 #include "materials/RcSection.h"
 #include "materials/SectionLaws.h"
 
@@ -216,10 +217,18 @@ void finishLawRecords(const Record& head, const LawRecords& seen, MaterialSet& m
           failAt(*rb, i, "bar layer at depth " + str(l.depth) + " lies outside the section (h = " +
                              str(mat.section->h) + ")");
     }
+    double bars = 0;
+    for (const RebarLayer& l : mat.section->bars) bars += l.area;
+    if (!(bars < 0.1 * mat.section->b * mat.section->h))
+      failAt(sec, 0,
+             "the bars' area " + str(bars) + " is not below a tenth of the section's b h = " +
+                 str(mat.section->b * mat.section->h),
+             "REBAr areas in m^2 (a 20 mm bar: 3.14e-4)");
     try {
       deriveSectionLaws(mat);
+      (void)HingedBending(mat);  // the laws the elements will take
     } catch (const std::invalid_argument& e) {
-      failAt(sec, 0, e.what());
+      failAt(sec, 0, std::string("the section's derived laws are not valid: ") + e.what());
     }
     return;
   }
