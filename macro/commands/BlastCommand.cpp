@@ -38,6 +38,13 @@ void applyBlasts(MeshContext& ctx, const MeshCommand& cmd) {
       Blast b;
       b.time = t;
       b.release = td;
+      // The first element beyond the mesh, before the range is generated.
+      if (const long long count = c.model.numElements(); n2 > count) {
+        const long long first = n1 > count ? n1 : n1 + ((count - n1) / inc + 1) * inc;
+        if (first <= n2)
+          failAt(r, first == n1 ? 1 : 2,
+                 "BLASt: element " + std::to_string(first) + " is not defined");
+      }
       for (int e : steppedRange(n1, n2, inc)) {
         if (e > c.model.numElements() || !c.model.hasElement(e - 1))
           failAt(r, e == n1 ? 1 : 2, "BLASt: element " + std::to_string(e) + " is not defined");
@@ -45,8 +52,10 @@ void applyBlasts(MeshContext& ctx, const MeshCommand& cmd) {
           for (int o : other.elements)
             if (o == e - 1)
               failAt(r, e == n1 ? 1 : 2,
-                     "BLASt: element " + std::to_string(e) + " is already removed by an earlier "
-                     "record (at t = " + std::to_string(other.time) + ")");
+                     "BLASt: element " + std::to_string(e) +
+                         " is already removed by an earlier "
+                         "record (at t = " +
+                         std::to_string(other.time) + ")");
         b.elements.push_back(e - 1);
       }
       if (auto* os = c.out()) {
@@ -65,20 +74,20 @@ void applyBlasts(MeshContext& ctx, const MeshCommand& cmd) {
 std::vector<MeshCommandEntry> blastCommandTable() {
   std::vector<MeshCommandEntry> t;
   t.push_back(
-      {meshSpec("BLASt",
-                "Blast plan of a demolition: elements n1..n2 with step inc are removed at time "
-                "t (their stiffness, mass, self-weight, floor loads and contact leave the model; "
-                "a node no element holds any more leaves it too); the forces they exerted on the "
-                "rest are released linearly over td (0 or empty: at once; GSA 2016: td at most a "
-                "tenth of the first vertical period). Steps end exactly on every t and t + td. "
-                "One log line per blast (a blast the run never reaches is warned at its end); the "
-                "energy they carried is booked as dissipated, the work of the released forces as "
-                "external. Under arc length a blast happens at "
-                "the first step past its time. REMOve,ELEMents removes at the current time.",
-                {}, "t n1 n2 inc td",
-                {expr("t", "blast time"), expr("n1", "first element"),
-                 expr("n2", "last element", "n1"), expr("inc", "element step", "1"),
-                 expr("td", "release time of the forces", "0")}),
+      {meshSpec(
+           "BLASt",
+           "Blast plan of a demolition: elements n1..n2 with step inc are removed at time "
+           "t (their stiffness, mass, self-weight, floor loads and contact leave the model; "
+           "a node no element holds any more leaves it too); the forces they exerted on the "
+           "rest are released linearly over td (0 or empty: at once; GSA 2016: td at most a "
+           "tenth of the first vertical period). Steps end exactly on every t and t + td. "
+           "One log line per blast (a blast the run never reaches is warned at its end); the "
+           "energy they carried is booked as dissipated, the work of the released forces as "
+           "external. Under arc length a blast happens at "
+           "the first step past its time. REMOve,ELEMents removes at the current time.",
+           {}, "t n1 n2 inc td",
+           {expr("t", "blast time"), expr("n1", "first element"), expr("n2", "last element", "n1"),
+            expr("inc", "element step", "1"), expr("td", "release time of the forces", "0")}),
        applyBlasts});
   return t;
 }

@@ -6,8 +6,8 @@
 #include <ostream>
 #include <set>
 
-#include "macro/deck/Expression.h"
 #include "macro/commands/MeshCommands.h"
+#include "macro/deck/Expression.h"
 #include "macro/deck/NumberRanges.h"
 
 namespace c2d {
@@ -41,6 +41,13 @@ void applyElementLoads(MeshContext& ctx, const MeshCommand& cmd) {
       if (asMass && c.model.gravity().norm() == 0)
         failAt(r, 5, "QLOAd with MASS needs GRAVity: the mass is |q|/|g|",
                "give GRAVity,,gx,gy in the mesh input");
+      // The first element beyond the mesh, before the range is generated.
+      if (const long long count = c.model.numElements(); n2 > count) {
+        const long long first = n1 > count ? n1 : n1 + ((count - n1) / inc + 1) * inc;
+        if (first <= n2)
+          failAt(r, first == n1 ? 0 : 1,
+                 "QLOAd: element " + std::to_string(first) + " is not defined");
+      }
       for (int e : steppedRange(n1, n2, inc)) {
         if (e > c.model.numElements() || !c.model.elements()[e - 1])
           failAt(r, e == n1 ? 0 : 1, "QLOAd: element " + std::to_string(e) + " is not defined");

@@ -33,11 +33,12 @@ std::string str(double v) {
 void bindHardening(MeshContext& ctx, const Record& r, const CommandSpec& s, MaterialSet& mat,
                    LawRecords& seen) {
   const bool negative = keywordMatches(r.text(1), "NEGAtive");
-  const std::string syntax = negative ? "HARDening NEGAtive Mc My Kh1 Kh2"
-                                      : "HARDening BILInear Mc My Kh1 Kh2";
+  const std::string syntax =
+      negative ? "HARDening NEGAtive Mc My Kh1 Kh2" : "HARDening BILInear Mc My Kh1 Kh2";
   subrecord::requireText(r, s.name, syntax);
   if (!negative && !keywordMatches(r.text(1), "BILInear"))
-    failAt(r, 1, "expected BILInear (or NEGAtive: the values of negative moments)", "write " + syntax);
+    failAt(r, 1, "expected BILInear (or NEGAtive: the values of negative moments)",
+           "write " + syntax);
   const auto v = subrecord::values(ctx, r, s.name, 4, 4, syntax);
   if (v[0] <= 0) failAt(r, 2, "Mc must be positive");
   if (v[1] < v[0]) failAt(r, 3, "My must not be below Mc");
@@ -64,7 +65,8 @@ void bindSoftening(MeshContext& ctx, const Record& r, const CommandSpec& s, Mate
       negative ? "SOFTening NEGAtive Mu Ks" : "SOFTening LINEar Mu Ks [thetaR [Mr]]";
   subrecord::requireText(r, s.name, syntax);
   if (!negative && !keywordMatches(r.text(1), "LINEar"))
-    failAt(r, 1, "expected LINEar (or NEGAtive: the values of negative moments)", "write " + syntax);
+    failAt(r, 1, "expected LINEar (or NEGAtive: the values of negative moments)",
+           "write " + syntax);
   const auto v = subrecord::values(ctx, r, s.name, negative ? 2 : 4, 2, syntax);
   if (v[0] <= 0) failAt(r, 2, "Mu must be positive");
   if (v[1] >= 0) failAt(r, 3, "Ks must be negative (softening)");
@@ -80,12 +82,14 @@ void bindSoftening(MeshContext& ctx, const Record& r, const CommandSpec& s, Mate
   mat.softening->negative = neg;
   if (r.size() > 4 && !r.text(4).empty()) {
     if (!(v[2] > v[0] / -v[1]))
-      failAt(r, 4, "the rupture rotation thetaR must exceed the failure jump Mu/|Ks| = " +
-                       std::to_string(v[0] / -v[1]));
+      failAt(r, 4,
+             "the rupture rotation thetaR must exceed the failure jump Mu/|Ks| = " +
+                 std::to_string(v[0] / -v[1]));
     mat.softening->thetaR = v[2];
   }
   if (r.size() > 5 && !r.text(5).empty()) {
-    if (!(v[3] >= 0 && v[3] < v[0])) failAt(r, 5, "the joint's friction moment Mr must lie in [0, Mu)");
+    if (!(v[3] >= 0 && v[3] < v[0]))
+      failAt(r, 5, "the joint's friction moment Mr must lie in [0, Mu)");
     mat.softening->Mr = v[3];
   }
 }
@@ -100,7 +104,8 @@ void bindSection(MeshContext& ctx, const Record& r, const CommandSpec& s, Materi
   const auto v = subrecord::values(ctx, r, s.name, 7, 4, syntax);
   const char* names[4] = {"width b", "depth h", "concrete strength fc", "bar yield stress fy"};
   for (std::size_t i = 0; i < 4; ++i)
-    if (!(v[i] > 0)) failAt(r, 2 + i, std::string("the section's ") + names[i] + " must be positive");
+    if (!(v[i] > 0))
+      failAt(r, 2 + i, std::string("the section's ") + names[i] + " must be positive");
   RcSectionData d;
   d.b = v[0];
   d.h = v[1];
@@ -113,10 +118,12 @@ void bindSection(MeshContext& ctx, const Record& r, const CommandSpec& s, Materi
     failAt(r, ultimate ? r.size() : 7, "give both fu and eu (or neither)", "write " + syntax);
   d.fu = ultimate ? v[5] : kDefaultHardeningRatio * d.fy;
   d.eu = ultimate ? v[6] : kDefaultFractureStrain;
-  if (!(d.fu >= d.fy)) failAt(r, 7, "the bars' ultimate stress fu must not be below fy = " + str(d.fy));
+  if (!(d.fu >= d.fy))
+    failAt(r, 7, "the bars' ultimate stress fu must not be below fy = " + str(d.fy));
   if (!(d.eu > d.fy / d.Es))
-    failAt(r, 8, "the bars' fracture strain eu must exceed their yield strain fy/Es = " +
-                     str(d.fy / d.Es));
+    failAt(
+        r, 8,
+        "the bars' fracture strain eu must exceed their yield strain fy/Es = " + str(d.fy / d.Es));
   d.bars = mat.section ? mat.section->bars : std::vector<RebarLayer>{};
   mat.section = d;
   seen.section = &r;
@@ -165,7 +172,8 @@ void bindHinges(MeshContext& ctx, const Record& r, const CommandSpec& s, Materia
   else if (keywordMatches(r.text(1), "MIDPoint"))
     mat.hingeSite = HingeSite::Midpoint;
   else
-    failAt(r, 1, "unknown option '" + r.text(1) + "' of " + s.name, "write HINGes ENDS / HINGes MIDPoint");
+    failAt(r, 1, "unknown option '" + r.text(1) + "' of " + s.name,
+           "write HINGes ENDS / HINGes MIDPoint");
   seen.hinges = &r;
 }
 
@@ -194,9 +202,11 @@ bool bindLawRecord(MeshContext& ctx, const Record& r, const CommandSpec& s, Mate
 void finishLawRecords(const Record& head, const LawRecords& seen, MaterialSet& mat,
                       const Record* elastic, const Record* cross, const Record* resultant) {
   if (seen.hardeningNeg && !seen.hardening)
-    failAt(*seen.hardeningNeg, 0, "HARDening NEGAtive needs HARDening BILInear (the positive moments')");
+    failAt(*seen.hardeningNeg, 0,
+           "HARDening NEGAtive needs HARDening BILInear (the positive moments')");
   if (seen.softeningNeg && !seen.softening)
-    failAt(*seen.softeningNeg, 0, "SOFTening NEGAtive needs SOFTening LINEar (the positive moments')");
+    failAt(*seen.softeningNeg, 0,
+           "SOFTening NEGAtive needs SOFTening LINEar (the positive moments')");
   if (!seen.rebar.empty() && !seen.section)
     failAt(*seen.rebar.front(), 0, "REBAr without SECTion", "give SECTion RECTangular b h fc fy");
   if (seen.section) {
@@ -208,14 +218,16 @@ void finishLawRecords(const Record& head, const LawRecords& seen, MaterialSet& m
     if (seen.hinges && mat.hingeSite != HingeSite::Ends)
       failAt(*seen.hinges, 1, "a SECTion member's hinges open at its ends");
     if (seen.rebar.empty())
-      failAt(sec, 0, "SECTion needs its bars", "give REBAr d1 A1 [d2 A2 ...] (depth from the top face, area)");
+      failAt(sec, 0, "SECTion needs its bars",
+             "give REBAr d1 A1 [d2 A2 ...] (depth from the top face, area)");
     std::size_t k = 0;  // the layers in the order of their records
     for (const Record* rb : seen.rebar) {
       const std::size_t first = rb->size() > 1 && rb->text(1).empty() ? 2 : 1;
       for (std::size_t i = first; i + 1 < rb->size(); i += 2, ++k)
         if (const RebarLayer& l = mat.section->bars[k]; !(l.depth < mat.section->h))
-          failAt(*rb, i, "bar layer at depth " + str(l.depth) + " lies outside the section (h = " +
-                             str(mat.section->h) + ")");
+          failAt(*rb, i,
+                 "bar layer at depth " + str(l.depth) +
+                     " lies outside the section (h = " + str(mat.section->h) + ")");
     }
     double bars = 0;
     for (const RebarLayer& l : mat.section->bars) bars += l.area;
@@ -235,17 +247,20 @@ void finishLawRecords(const Record& head, const LawRecords& seen, MaterialSet& m
   if (seen.hinges && !mat.softening)
     failAt(*seen.hinges, 0, "HINGes needs a softening law (SOFTening, or SECTion)");
   if (mat.hardening && mat.softening) {
-    const double my[2] = {mat.hardening->My,
-                          mat.hardening->negative ? mat.hardening->negative->My : mat.hardening->My};
-    const double mu[2] = {mat.softening->Mu,
-                          mat.softening->negative ? mat.softening->negative->first : mat.softening->Mu};
+    const double my[2] = {mat.hardening->My, mat.hardening->negative ? mat.hardening->negative->My
+                                                                     : mat.hardening->My};
+    const double mu[2] = {mat.softening->Mu, mat.softening->negative
+                                                 ? mat.softening->negative->first
+                                                 : mat.softening->Mu};
     for (int k = 0; k < 2; ++k)
       if (mu[k] < my[k]) {
         const Record* soft = k == 1 && seen.softeningNeg ? seen.softeningNeg : seen.softening;
         std::ostringstream msg;
         msg << "Mu = " << mu[k] << " of SOFTening" << (k == 1 ? " (negative moments)" : "")
-            << " is below My = " << my[k] << " of HARDening" << (k == 1 ? " (negative moments)" : "");
-        failAt(*soft, 2, msg.str(), "the hinge forms at Mu, after the hardening up to My: Mu >= My");
+            << " is below My = " << my[k] << " of HARDening"
+            << (k == 1 ? " (negative moments)" : "");
+        failAt(*soft, 2, msg.str(),
+               "the hinge forms at Mu, after the hardening up to My: Mu >= My");
       }
   }
   try {
@@ -295,9 +310,11 @@ void echoSection(std::ostream& os, const MaterialSet& m) {
   line(os, "Squash load Nc", rc.squashLoad());
   for (int sign : {1, -1}) {
     const char* tag = sign > 0 ? "+" : "-";
-    os << "      Moments " << (sign > 0 ? "positive (top face compressed)" : "negative (bottom face compressed)")
+    os << "      Moments "
+       << (sign > 0 ? "positive (top face compressed)" : "negative (bottom face compressed)")
        << " at N = 0:\n";
-    const RcSection::State c = rc.cracking(0, sign), y = rc.firstYield(0, sign), u = rc.ultimate(0, sign);
+    const RcSection::State c = rc.cracking(0, sign), y = rc.firstYield(0, sign),
+                           u = rc.ultimate(0, sign);
     const MomentLaw l = rc.at(sign, 0);
     line(os, std::string("Mc") + tag + " (fct)", l.Mc);
     line(os, std::string("My") + tag + " (first yield)", l.My);
@@ -323,8 +340,8 @@ void echoSection(std::ostream& os, const MaterialSet& m) {
     const double n = lo + (hi - lo) * i / 10;
     const MomentLaw p = rc.at(1, n), q = rc.at(-1, n);
     char buf[160];
-    std::snprintf(buf, sizeof buf, "      %13.4e %13.4e %13.4e %13.4e %13.4e\n", n, p.Mu, q.Mu, p.My,
-                  q.My);
+    std::snprintf(buf, sizeof buf, "      %13.4e %13.4e %13.4e %13.4e %13.4e\n", n, p.Mu, q.Mu,
+                  p.My, q.My);
     os << buf;
   }
 }
@@ -428,14 +445,14 @@ void registerLawRecords(CommandRegistry& r) {
       "cracked tie's Es As in tension (the member's strain is then its bars'), bounded by the "
       "bars in tension, Nt = As fy hardening to Ntu = As fu at the strain eu, where the bars "
       "fracture and the member separates from one of its ends (one log line each), and by the "
-      "squash load Nc = fc b h + As min(fy, Es eps_c2) in compression. Mc, My, Mu follow N (moment-axial "
+      "squash load Nc = fc b h + As min(fy, Es eps_c2) in compression. Mc, My, Mu follow N "
+      "(moment-axial "
       "interaction): the hardening and softening variables are kept when N changes. "
       "Defaults: Es = 200e6 (kN/m^2: 200 GPa; give it in another unit system), fu = 1.08 fy, "
       "eu = 0.05 (EC2 Annex C class B).",
       {text("RECTangular", "the shape"), expr("b", "width [m]"), expr("h", "depth [m]"),
        expr("fc", "concrete compressive strength [kN/m^2]"),
-       expr("fy", "bar yield stress [kN/m^2]"),
-       expr("Es", "bar modulus [kN/m^2]", "200e6"),
+       expr("fy", "bar yield stress [kN/m^2]"), expr("Es", "bar modulus [kN/m^2]", "200e6"),
        expr("fu", "bar ultimate stress [kN/m^2]", "1.08 fy"),
        expr("eu", "bar fracture strain [-]", "0.05")}));
   r.add(subSpec(
