@@ -49,8 +49,11 @@ DenseOutput::Committed DenseOutput::committed(const State& state) {
 }
 
 void DenseOutput::stepBegins(const State& state) {
-  parts_.clear();
-  parts_.push_back(committed(state));
+  // Every step: the first entry's vectors are reused (no allocation per step).
+  parts_.resize(1);
+  Committed& c = parts_.front();
+  c.t = state.tn, c.prop = state.propn, c.arcLambda = state.arcLambdan;
+  c.u = state.un, c.v = state.vn, c.a = state.an;
 }
 
 void DenseOutput::partCommitted(const State& state) {

@@ -39,12 +39,9 @@ void applyBlasts(MeshContext& ctx, const MeshCommand& cmd) {
       b.time = t;
       b.release = td;
       // The first element beyond the mesh, before the range is generated.
-      if (const long long count = c.model.numElements(); n2 > count) {
-        const long long first = n1 > count ? n1 : n1 + ((count - n1) / inc + 1) * inc;
-        if (first <= n2)
-          failAt(r, first == n1 ? 1 : 2,
-                 "BLASt: element " + std::to_string(first) + " is not defined");
-      }
+      if (const long long first = firstBeyond(n1, n2, inc, c.model.numElements()))
+        failAt(r, first == n1 ? 1 : 2,
+               "BLASt: element " + std::to_string(first) + " is not defined");
       for (int e : steppedRange(n1, n2, inc)) {
         if (e > c.model.numElements() || !c.model.hasElement(e - 1))
           failAt(r, e == n1 ? 1 : 2, "BLASt: element " + std::to_string(e) + " is not defined");

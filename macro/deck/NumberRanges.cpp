@@ -20,4 +20,10 @@ std::vector<int> steppedRange(int n1, int n2, int inc) {
   return out;
 }
 
+long long firstBeyond(long long n1, long long n2, long long inc, long long count) {
+  if (n2 <= count || inc <= 0) return 0;
+  const long long first = n1 > count ? n1 : n1 + ((count - n1) / inc + 1) * inc;
+  return first <= n2 ? first : 0;
+}
+
 }  // namespace c2d

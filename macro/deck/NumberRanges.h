@@ -14,6 +14,12 @@ namespace c2d {
 // (none when l or ng is 0).
 std::vector<int> generatedBetween(int l, int n, int ng);
 
+// The first number n1 + k inc (k >= 0, inc > 0) above count that is at most
+// n2, or 0 when the range n1..n2 stays within count: the first element a
+// stepped range names beyond a mesh of count elements, found without
+// generating the range.
+long long firstBeyond(long long n1, long long n2, long long inc, long long count);
+
 // The values of the generated numbers, interpolated linearly between xl (at l)
 // and xn (at n): assign(k, value) for each.
 template <class Assign, class Value>
