@@ -1,43 +1,11 @@
 // ProblemRun's Newton iterations (TANG, UTAN, FORM, SOLV): an iteration with
 // its log line and its stall and cycle tests, a step cut and taken again when
 // its loop ends unconverged, and the advice a failure gives.
-#include "macro/run/ProblemRun.h"
-
-#include <sys/ioctl.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <iostream>
-#include <map>
-#include <set>
 #include <sstream>
 
-#include "core/output/Checkpoint.h"
-#include "core/contact/MemberCrossing.h"
-#include "core/output/SvgDebris.h"
-#include "elements/EndHinges.h"
-#include "elements/MemberFold.h"
-#include "elements/HingeToJoint.h"
-#include "elements/Joints.h"
-#include "elements/MemberFold.h"
-#include "macro/deck/DeckParser.h"
-#include "macro/deck/DeckReader.h"
-#include "macro/run/Interrupt.h"
-#include "macro/commands/MasslessLoads.h"
-#include "macro/deck/MeshBinder.h"
-#include "macro/commands/MeshCommands.h"
-#include "macro/deck/NumberRanges.h"
-#include "macro/commands/OutputCommands.h"
-#include "macro/run/RemovalLog.h"
-#include "macro/run/Report.h"
-#include "macro/run/StaleOutputs.h"
-#include "macro/run/TopologyLog.h"
-#include "solvers/ConvergenceTest.h"
-#include "solvers/FiniteResults.h"
-#include "solvers/ProportionalLoad.h"
-#include "solvers/RestartFile.h"
+#include "macro/run/ProblemRun.h"
 
 namespace c2d {
 

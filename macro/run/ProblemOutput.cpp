@@ -1,42 +1,10 @@
 // ProblemRun's printed tables: nodal values (DISP, VELO, ACCE, REAC), section
 // forces and the hinge table (STRE).
-#include "macro/run/ProblemRun.h"
-
-#include <sys/ioctl.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <iostream>
-#include <map>
-#include <set>
-#include <sstream>
 
-#include "core/output/Checkpoint.h"
-#include "core/contact/MemberCrossing.h"
-#include "core/output/SvgDebris.h"
-#include "elements/EndHinges.h"
-#include "elements/MemberFold.h"
-#include "elements/HingeToJoint.h"
-#include "elements/Joints.h"
-#include "elements/MemberFold.h"
-#include "macro/deck/DeckParser.h"
-#include "macro/deck/DeckReader.h"
-#include "macro/run/Interrupt.h"
-#include "macro/commands/MasslessLoads.h"
-#include "macro/deck/MeshBinder.h"
-#include "macro/commands/MeshCommands.h"
 #include "macro/deck/NumberRanges.h"
-#include "macro/commands/OutputCommands.h"
-#include "macro/run/RemovalLog.h"
+#include "macro/run/ProblemRun.h"
 #include "macro/run/Report.h"
-#include "macro/run/StaleOutputs.h"
-#include "macro/run/TopologyLog.h"
-#include "solvers/ConvergenceTest.h"
-#include "solvers/FiniteResults.h"
-#include "solvers/ProportionalLoad.h"
-#include "solvers/RestartFile.h"
 
 namespace c2d {
 

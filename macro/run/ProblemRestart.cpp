@@ -1,41 +1,9 @@
 // ProblemRun's restart files (SAVE, REST): the run's own state beside the
 // model's and the analysis', written and read back.
-#include "macro/run/ProblemRun.h"
-
-#include <sys/ioctl.h>
-#include <unistd.h>
-
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <iostream>
-#include <map>
-#include <set>
 #include <sstream>
 
-#include "core/output/Checkpoint.h"
-#include "core/contact/MemberCrossing.h"
-#include "core/output/SvgDebris.h"
-#include "elements/EndHinges.h"
-#include "elements/MemberFold.h"
-#include "elements/HingeToJoint.h"
 #include "elements/Joints.h"
-#include "elements/MemberFold.h"
-#include "macro/deck/DeckParser.h"
-#include "macro/deck/DeckReader.h"
-#include "macro/run/Interrupt.h"
-#include "macro/commands/MasslessLoads.h"
-#include "macro/deck/MeshBinder.h"
-#include "macro/commands/MeshCommands.h"
-#include "macro/deck/NumberRanges.h"
-#include "macro/commands/OutputCommands.h"
-#include "macro/run/RemovalLog.h"
-#include "macro/run/Report.h"
-#include "macro/run/StaleOutputs.h"
-#include "macro/run/TopologyLog.h"
-#include "solvers/ConvergenceTest.h"
-#include "solvers/FiniteResults.h"
-#include "solvers/ProportionalLoad.h"
+#include "macro/run/ProblemRun.h"
 #include "solvers/RestartFile.h"
 
 namespace c2d {
@@ -55,9 +23,9 @@ std::string ProblemRun::runState() const {
   for (int s : hingeStep_) put(out, s);
   put(out, hingeCount_);
   putBool(out, cutting_);
-  for (double x : {dtMin_, dtNominal_, energy0_, energyScale_, energyError_, maxMomentRatio_,
-                   peakGroundForce_, peakGroundTime_, peakKinetic_, restRatio_, lastMoving_,
-                   deepest_.depth, deepestTime_})
+  for (double x :
+       {dtMin_, dtNominal_, energy0_, energyScale_, energyError_, maxMomentRatio_, peakGroundForce_,
+        peakGroundTime_, peakKinetic_, restRatio_, lastMoving_, deepest_.depth, deepestTime_})
     put(out, x);
   for (int x : {stepsSinceCut_, cuts_, topology_.jointsFormed, topology_.jointsRuptured, removed_,
                 deepest_.node, topology_.hinges, topology_.fractures})
@@ -76,9 +44,9 @@ void ProblemRun::setRunState(const std::string& bytes) {
     throw CheckpointError("hinge steps do not match the element count");
   hingeCount_ = get<int>(in);
   cutting_ = getBool(in);
-  for (double* x : {&dtMin_, &dtNominal_, &energy0_, &energyScale_, &energyError_,
-                    &maxMomentRatio_, &peakGroundForce_, &peakGroundTime_, &peakKinetic_,
-                    &restRatio_, &lastMoving_, &deepest_.depth, &deepestTime_})
+  for (double* x : {&dtMin_, &dtNominal_, &energy0_, &energyScale_, &energyError_, &maxMomentRatio_,
+                    &peakGroundForce_, &peakGroundTime_, &peakKinetic_, &restRatio_, &lastMoving_,
+                    &deepest_.depth, &deepestTime_})
     *x = get<double>(in);
   for (int* x : {&stepsSinceCut_, &cuts_, &topology_.jointsFormed, &topology_.jointsRuptured,
                  &removed_, &deepest_.node, &topology_.hinges, &topology_.fractures})

@@ -6,35 +6,22 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <iostream>
 #include <map>
 #include <set>
-#include <sstream>
 
-#include "core/output/Checkpoint.h"
 #include "core/contact/MemberCrossing.h"
-#include "core/output/SvgDebris.h"
 #include "elements/EndHinges.h"
-#include "elements/MemberFold.h"
-#include "elements/HingeToJoint.h"
 #include "elements/Joints.h"
 #include "elements/MemberFold.h"
+#include "macro/commands/MasslessLoads.h"
+#include "macro/commands/OutputCommands.h"
 #include "macro/deck/DeckParser.h"
 #include "macro/deck/DeckReader.h"
-#include "macro/run/Interrupt.h"
-#include "macro/commands/MasslessLoads.h"
 #include "macro/deck/MeshBinder.h"
-#include "macro/commands/MeshCommands.h"
-#include "macro/deck/NumberRanges.h"
-#include "macro/commands/OutputCommands.h"
+#include "macro/run/Interrupt.h"
 #include "macro/run/RemovalLog.h"
-#include "macro/run/Report.h"
 #include "macro/run/StaleOutputs.h"
-#include "macro/run/TopologyLog.h"
-#include "solvers/ConvergenceTest.h"
 #include "solvers/FiniteResults.h"
-#include "solvers/ProportionalLoad.h"
-#include "solvers/RestartFile.h"
 
 namespace c2d {
 
@@ -109,7 +96,8 @@ void ProblemRun::bind(bool echo) {
   for (const auto& e : model_.elements())
     if (e) used.insert(e->materialNumber());
   bool collapse = false;
-  for (const auto& batch : batches_) checkMaterialChanges(batch, sets, used, boundParams_, collapse);
+  for (const auto& batch : batches_)
+    checkMaterialChanges(batch, sets, used, boundParams_, collapse);
 }
 
 void ProblemRun::run() {
@@ -156,8 +144,7 @@ void ProblemRun::run() {
     if (!b.done) {
       ++blastsNotMade_;
       log_ << "  warning: the blast at t = " << fmt("%.6e", b.time)
-           << " did not happen: the run ended at t = " << fmt("%.6e", analysis_->state().t)
-           << "\n";
+           << " did not happen: the run ended at t = " << fmt("%.6e", analysis_->state().t) << "\n";
     }
   progress(true);
 }
@@ -171,8 +158,8 @@ void ProblemRun::reportCrossings() {
     const MemberCrossing& c = crossings[i];
     log_ << (i == 0 ? "\n" : "") << "  warning: members " << c.first + 1 << " and " << c.second + 1
          << " cross at t = " << fmt("%.6e", analysis_->state().t) << ", at ("
-         << fmt("%.3f", c.point.x()) << ", " << fmt("%.3f", c.point.y()) << ") m: "
-         << fmt("%.3f", c.fromNode[0]) << " m from node " << c.nearNode[0] + 1 << " and "
+         << fmt("%.3f", c.point.x()) << ", " << fmt("%.3f", c.point.y())
+         << ") m: " << fmt("%.3f", c.fromNode[0]) << " m from node " << c.nearNode[0] + 1 << " and "
          << fmt("%.3f", c.fromNode[1]) << " m from node " << c.nearNode[1] + 1 << "\n";
   }
   if (crossings.size() > shown)
@@ -275,15 +262,14 @@ Flow ProblemRun::runLoop(const Macro& m) {
     if (newton && parts_ != part) i = -1, part = parts_;
   }
   if (newton && !analysis_->stepConverged()) {
-    const std::string why = diverged_  ? "diverged" + (lastFailure_.empty() ? std::string()
-                                                                             : " (" + lastFailure_ + ")")
-                            : stalled_ ? "stalled (its energy repeats)"
-                                       : "did not converge in " + std::to_string(n) + " iterations";
+    const std::string why =
+        diverged_  ? "diverged" + (lastFailure_.empty() ? std::string() : " (" + lastFailure_ + ")")
+        : stalled_ ? "stalled (its energy repeats)"
+                   : "did not converge in " + std::to_string(n) + " iterations";
     return retryWithCut(m, why);
   }
   return Flow::Next;
 }
-
 
 void ProblemRun::fail(const Macro& m, const std::string& what) const {
   const State& s = analysis_->state();
@@ -299,7 +285,6 @@ void ProblemRun::failAtCommit(const std::string& what) const {
   throw AnalysisError(where + " at the commit of step " + std::to_string(s.step) +
                       " (t = " + fmt("%.6e", s.t) + "): " + what);
 }
-
 
 namespace {
 
@@ -387,7 +372,6 @@ void ProblemRun::reenterMesh(const Macro& m) {
        << " elements, " << analysis_->assembler().dofs().numEquations() << " equations\n";
 }
 
-
 void ProblemRun::hingesToJoints(const Macro& m, MemberLaws laws) {
   const Status st = analysis_->commit();
   if (!st) fail(m, st.why);
@@ -413,7 +397,6 @@ void ProblemRun::removeMembers(const Macro& m) {
   if (!st) fail(m, st.why);
   hingeStep_.resize(model_.numElements(), 0);
 }
-
 
 void ProblemRun::onCommit() {
   if (!model_.joints().empty()) syncSlaveNodes(model_, analysis_->state());

@@ -1,43 +1,10 @@
 // ProblemRun's time and load stepping (TIME, DT, AUTO, DYNAmic, PROP, ARCL,
 // TPLOt's set-up): a step begun, its length and its cutting, the integrator,
 // the proportional loads, the path following.
-#include "macro/run/ProblemRun.h"
-
-#include <sys/ioctl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <iostream>
-#include <map>
-#include <set>
-#include <sstream>
 
-#include "core/output/Checkpoint.h"
-#include "core/contact/MemberCrossing.h"
-#include "core/output/SvgDebris.h"
-#include "elements/EndHinges.h"
-#include "elements/MemberFold.h"
-#include "elements/HingeToJoint.h"
-#include "elements/Joints.h"
-#include "elements/MemberFold.h"
-#include "macro/deck/DeckParser.h"
-#include "macro/deck/DeckReader.h"
-#include "macro/run/Interrupt.h"
-#include "macro/commands/MasslessLoads.h"
-#include "macro/deck/MeshBinder.h"
-#include "macro/commands/MeshCommands.h"
-#include "macro/deck/NumberRanges.h"
-#include "macro/commands/OutputCommands.h"
-#include "macro/run/RemovalLog.h"
-#include "macro/run/Report.h"
-#include "macro/run/StaleOutputs.h"
-#include "macro/run/TopologyLog.h"
-#include "solvers/ConvergenceTest.h"
-#include "solvers/FiniteResults.h"
-#include "solvers/ProportionalLoad.h"
-#include "solvers/RestartFile.h"
+#include "macro/run/ProblemRun.h"
 
 namespace c2d {
 
@@ -49,8 +16,9 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::op
   }
   if (rest) {
     if (!analysis_->integrator().dynamic())
-      fail(m, "TIME,REST needs a dynamic analysis (DYNAmic): a static one has no motion to come "
-              "to rest");
+      fail(m,
+           "TIME,REST needs a dynamic analysis (DYNAmic): a static one has no motion to come "
+           "to rest");
     // A new ratio is watched from now on.
     if (rest->ratio != restRatio_) {
       restRatio_ = rest->ratio;
@@ -62,8 +30,8 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::op
       if (!restLogged_)
         log_ << "  TIME   at rest at t = " << fmt("%.6e", s.t) << ": the kinetic energy "
              << fmt("%.4e", kinetic) << " has stayed at most " << fmt("%.1e", restRatio_)
-             << " of its peak " << fmt("%.4e", peakKinetic_) << " since t = "
-             << fmt("%.6e", lastMoving_) << "\n";
+             << " of its peak " << fmt("%.4e", peakKinetic_)
+             << " since t = " << fmt("%.6e", lastMoving_) << "\n";
       restLogged_ = true;
       restTime_ = s.t;
       return Flow::ExitLoop;
@@ -126,8 +94,7 @@ void ProblemRun::setStepCutting(bool on, double dtMin, bool cutDivergingPredicti
   cutPrediction_ = on && cutDivergingPrediction;
   dtNominal_ = analysis_->state().dt;
   dtMin_ = dtMin > 0 ? dtMin : dtNominal_ / 1024;
-  log_ << "  AUTO   step cutting "
-       << (on ? "on, dtmin = " + fmt("%.4e", dtMin_) : "off")
+  log_ << "  AUTO   step cutting " << (on ? "on, dtmin = " + fmt("%.4e", dtMin_) : "off")
        << (cutPrediction_ ? ", a diverging predicted start cuts the step" : "") << "\n";
 }
 
