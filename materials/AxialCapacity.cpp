@@ -13,7 +13,7 @@ constexpr double kYieldTol = 1e-12;  // relative round-off band of the yield con
 // of decks/rc/catenary.inp too, whose Newton iterations then crept at a
 // twelfth of the tension branch's slope.)
 constexpr double kUnloadedStrain = 1e-14;
-}
+}  // namespace
 
 AxialCapacity::AxialCapacity(double EAc, double EAt, double Nt, double Ntu, double Nc, double eu)
     : eac_(EAc), eat_(EAt), nt_(Nt), ntu_(Ntu), nc_(Nc), eu_(eu), ht_(0) {
