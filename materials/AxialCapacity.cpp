@@ -7,7 +7,13 @@ namespace c2d {
 
 namespace {
 constexpr double kYieldTol = 1e-12;  // relative round-off band of the yield conditions
-}
+// Strains within this of zero are the unloaded state's round-off: the strain
+// of a member whose nodes are not exactly aligned with an axis comes out of
+// its positions as +-1e-16 at rest. (1e-12 caught the vibrating free pieces
+// of decks/rc/catenary.inp too, whose Newton iterations then crept at a
+// twelfth of the tension branch's slope.)
+constexpr double kUnloadedStrain = 1e-14;
+}  // namespace
 
 AxialCapacity::AxialCapacity(double EAc, double EAt, double Nt, double Ntu, double Nc, double eu)
     : eac_(EAc), eat_(EAt), nt_(Nt), ntu_(Ntu), nc_(Nc), eu_(eu), ht_(0) {
@@ -23,9 +29,14 @@ AxialResponse AxialCapacity::returnMap(const AxialState& committed, double eps) 
   r.state = committed;
   // At e = 0 the stiffer (compression) branch: a Newton iterate from the
   // unloaded state then falls short of the solution on either side instead of
-  // overshooting a compressed member 30 times into its squash load.
+  // overshooting a compressed member 30 times into its squash load. The
+  // tangent so within round-off of e = 0 (the force is the branch's of the
+  // sign of e): a member at rest whose strain came out +1e-16 took the
+  // tension branch's tangent, and a frame whose nodes were moved by 1e-6 m
+  // (JITTer) overshot its gravity step into divergence.
   const double e = eps - committed.ep;
   const double ea = e <= 0 ? eac_ : eat_;
+  const double elasticTangent = e <= kUnloadedStrain ? eac_ : ea;
   const double nTrial = ea * e;
   const double nt = nt_ + ht_ * committed.xi;
   if (nTrial > nt * (1 + kYieldTol)) {  // bars yielding in tension
@@ -42,7 +53,7 @@ AxialResponse AxialCapacity::returnMap(const AxialState& committed, double eps) 
     r.plastic = true;
   } else {
     r.N = nTrial;
-    r.tangent = ea;
+    r.tangent = elasticTangent;
   }
   return r;
 }

@@ -4,6 +4,7 @@
 // freeEnd).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <regex>
 #include <string>
 
@@ -14,6 +15,7 @@ namespace {
 
 using testing::DeckResult;
 using testing::DeckTempDir;
+using testing::readCsv;
 using testing::runDeckText;
 
 // Two FINIte elements with the six-storey frame's column section and laws (Mu
@@ -85,6 +87,151 @@ TEST(BrokenPiece, AFreeTwoElementPieceBreaksOnceAtItsMiddleOnTheGround) {
   EXPECT_LT(opened, jointAt);
   EXPECT_EQ(r.log.find("activated at t = ", jointAt), std::string::npos) << r.log;
   EXPECT_NE(r.log.find(" 1 joint formed, 0 ruptured"), std::string::npos) << r.log;
+}
+
+// A double pendulum of two elements (hand-given laws, rupture rotation 0.5
+// rad), pinned at node 1 and joined at nodes 2-3, swings down from the
+// horizontal: the joint ruptures in flight at t = 0.33 s and the outer
+// element flies free. The rupture gives the freed piece the slave's state
+// (the master's translation and rates, its own rotation): its kinetic and
+// stored energy are those it had, nothing is released or stored there, and
+// its centre falls at g from that instant (no kick). Node 3, the joint's
+// slave, is the freed piece's node there.
+const char* kRupturedPendulum = R"(FEAP * * a double pendulum whose joint ruptures
+  0 0 0 2 3 2
+
+COORdinates
+  1 0 0 10
+  2 0 1.5 10
+  3 0 1.5 10
+  4 0 3 10
+
+ELEMents
+  1 0 1 1 2
+  2 0 1 3 4
+
+MATErial,1
+  FRAMe
+    RESUltant STIFfness 3.6e6 1.2e6 48000
+    CROSs section 0.12 1.6e-3
+    DENSity,,2.5
+    HARDening BILInear 100 245 12450 195
+    SOFTening LINEar 265 -723 0.5
+    FINIte
+
+JOINt
+  2 3
+
+BOUNdary
+  1 0 1 1 0
+
+GRAVity,,0,-9.81
+
+END
+BATCh
+  DYNAmic,ENERgy,0.1,0.1
+  DT,,0.01
+  TPLOt
+  LOOP,,80
+    TIME
+    LOOP,,30
+      TANG,,1
+    NEXT
+  NEXT
+END
+velo,3,2
+velo,4,2
+ener
+
+STOP
+)";
+
+TEST(BrokenPiece, APieceFreedByARuptureInFlightKeepsItsEnergyAndFallsAtG) {
+  DeckTempDir dir;
+  const DeckResult r = runDeckText(dir, "pendulum.inp", kRupturedPendulum);
+  ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message << r.log;
+  const std::regex ruptured("joint  ruptured at t = ([0-9.e+-]+): element 2 separates at node 2");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.log, m, ruptured)) << r.log;
+  const double tr = std::stod(m[1]);
+  const auto csv = readCsv(r.out / "pendulum_tplot.csv");
+  const auto t = csv.column("time"), kin = csv.column("kinetic"), bal = csv.column("balance"),
+             dis = csv.column("dissipated"), vy3 = csv.column("velo_3_2"),
+             vy4 = csv.column("velo_4_2");
+  ASSERT_GT(t.size(), 60u);
+  double peak = 0;
+  for (double k : kin) peak = std::max(peak, k);
+  ASSERT_GT(peak, 1.0);
+  for (std::size_t i = 1; i < t.size(); ++i) {
+    // Nothing gained or booked away at the rupture or anywhere else.
+    EXPECT_NEAR(bal[i], bal[0], 1e-10 * peak) << "t = " << t[i];
+    EXPECT_GE(dis[i] - dis[i - 1], -1e-10 * peak) << "t = " << t[i];
+    // Once free, the piece's centre (its two nodes' equal masses) falls at
+    // g: dv_y = -g dt every step (its momentum, kept by the scheme).
+    if (t[i - 1] > tr + 1e-9) {
+      const double dv = 0.5 * (vy3[i] + vy4[i] - vy3[i - 1] - vy4[i - 1]);
+      EXPECT_NEAR(dv, -9.81 * (t[i] - t[i - 1]), 1e-9) << "t = " << t[i];
+    }
+  }
+}
+
+// One element of a SECTion column (0.4 x 0.4 m) standing on its foot on a
+// ground with friction mu = 0.5, gravity tilted by 0.7 g (an incline steeper
+// than mu): the friction at the foot holds it back while gravity pulls its
+// top on, so it topples (free rotations at both ends: nothing holds it
+// upright), its top down from 1.5 m to the ground within a second.
+const char* kStandingPiece = R"(FEAP * * a piece standing on one frictional foot
+  0 0 0 2 3 2
+
+COORdinates
+  1 0 0 0
+  2 0 0 1.5
+
+ELEMents
+  1 0 1 1 2
+
+MATErial,1
+  FRAMe
+    SECTion RECTangular 0.4 0.4 30e3 500e3
+    REBAr 0.05 9.42e-4 0.35 9.42e-4
+    DENSity,,2.5
+    FINIte
+
+CONTact
+  GROUnd,,0,1e5,0,0.5,0.3
+
+GRAVity,,0.7*9.81,-9.81
+
+END
+BATCh
+  DYNAmic,ENERgy,0.1,0.1
+  DT,,0.01
+  TPLOt
+  LOOP,,100
+    TIME
+    LOOP,,30
+      TANG,,1
+    NEXT
+  NEXT
+END
+disp,2,2
+
+STOP
+)";
+
+TEST(BrokenPiece, APieceStandingOnOneFrictionalFootTopples) {
+  DeckTempDir dir;
+  const DeckResult r = runDeckText(dir, "stand.inp", kStandingPiece);
+  ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message << r.log;
+  const auto csv = readCsv(r.out / "stand_tplot.csv");
+  const auto t = csv.column("time"), y = csv.column("disp_2_2");
+  ASSERT_FALSE(t.empty());
+  ASSERT_GE(t.back(), 0.99);
+  double lowest = 0;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] <= 1.0) lowest = std::min(lowest, y[i]);
+  // The top (1.5 m up) reaches the ground: it lies on its side.
+  EXPECT_LT(lowest, -1.4);
 }
 
 }  // namespace
