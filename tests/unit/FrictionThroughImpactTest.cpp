@@ -41,12 +41,23 @@ bool solveWithLineSearch(Analysis& an) {
   return false;
 }
 
-Landing land(const TimeIntegrator& ti, double dt) {
+// members: on a held beam 13 m long instead of the ground (MEMBers with the
+// ground's k, zeta, e and mu; the bar's radius 0.2 m and the beam's 0.3 m).
+Landing land(const TimeIntegrator& ti, double dt, bool members = false) {
   const double mu = 0.5, gx = 0.2 * kGravity;
   Model m;
   m.materials()[1] = rod(1, 3.6e10, 1.2e10, 4.8e8, 0.3, 0.004);  // 0.3 t/m, rigid
-  const int first = newRod(m, Vec2(0, 1e-6), Vec2(3, 1e-6), 1);
-  m.ground() = Ground{0.0, 2e5, 1.0, mu, 0.3};
+  double y0 = 0;  // where contact begins
+  if (members) {
+    m.materials()[2] = rod(2, 1e12, 1e12, 1e10, 1.0, 0.03);  // r = 0.3
+    const int beam = newRod(m, Vec2(-5, 0), Vec2(8, 0), 1, 2);
+    for (int n = beam; n < beam + 2; ++n) m.bound(n) = {1, 1, 1};
+    y0 = 0.5;
+    m.memberContact() = MemberContactData{2e5, 1.0, -1, 0.3, mu};
+  } else {
+    m.ground() = Ground{0.0, 2e5, 1.0, mu, 0.3};
+  }
+  const int first = newRod(m, Vec2(0, y0 + 1e-6), Vec2(3, y0 + 1e-6), 1);
   m.gravity() = Vec2(gx, -kGravity);
   Analysis an(m);
   an.setIntegrator(ti);
@@ -61,7 +72,7 @@ Landing land(const TimeIntegrator& ti, double dt) {
   // and rising; its impulses from the bar's change of momentum less gravity's.
   bool inFirst = true;
   an.onCommit = [&] {
-    const double y = position(m, s, first).y();
+    const double y = position(m, s, first).y() - y0;
     if (inFirst && y > 0 && s.v(3 * first + 1) > 0) {
       inFirst = false;
       const double tangential = -(s.v(3 * first) - 3.96 - gx * s.tn);
@@ -101,6 +112,19 @@ TEST(FrictionThroughImpact, ALandingBarSticksWhereverTheStep) {
       EXPECT_LT(l.speed, ti.kind == TimeIntegrator::Kind::MidPoint || dt < 0.01 ? 0.01 : 0.05)
           << name << " dt " << dt;
     }
+  }
+}
+
+TEST(FrictionThroughImpact, ALandingBarSticksOnAMember) {
+  for (double dt : {0.001, 0.01}) {
+    const Landing l = land(TimeIntegrator::midPoint(0, 0), dt, true);
+    std::printf("on a beam, dt %.3f: rests %.4f m on, apex %.4f m, friction impulse %.3f mu N\n",
+                dt, l.rest, l.apex, l.sideways);
+    ASSERT_TRUE(l.solved) << dt;
+    EXPECT_LE(l.sideways, 1.0 + 1e-6) << dt;
+    EXPECT_GT(l.sideways, 0.35) << dt;
+    EXPECT_LT(std::abs(l.rest), 0.05) << dt;
+    EXPECT_LT(l.speed, 0.01) << dt;
   }
 }
 
