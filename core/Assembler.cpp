@@ -8,6 +8,7 @@
 #include "core/FloorLoad.h"
 #include "core/contact/GroundContact.h"
 #include "core/contact/MemberContact.h"
+#include "core/contact/SpringFriction.h"
 #include "core/NodeMass.h"
 
 namespace c2d {
@@ -52,9 +53,12 @@ bool Assembler::refresh() {
   mNodal_ = lumpedNodalMass(model_);
   masses_ = translationalMasses(model_);
   groundDamping_.assign(model_.numNodes(), 0.0);
+  groundStick_.assign(model_.numNodes(), 0.0);
   if (const auto& ground = model_.ground())
-    for (int n = 0; n < model_.numNodes(); ++n)
+    for (int n = 0; n < model_.numNodes(); ++n) {
       groundDamping_[n] = damperCoefficient(ground->zeta, ground->k, masses_[n]);
+      groundStick_[n] = frictionStickDamping(ground->k, masses_[n]);
+    }
   patternVersion_ = model_.topologyVersion();
   return true;
 }
@@ -247,7 +251,7 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
       if (ground->mu <= 0) continue;
       const Eigen::Index iu = iv - 1;
       const FrictionForce fr =
-          groundFriction(*ground, c, s.un[iu] - s.stretch[n], s.un[iu], s.u[iu], rule);
+          groundFriction(*ground, c, s.un[iu] - s.stretch[n], s.un[iu], s.u[iu], rule, groundStick_[n]);
       stretch_[n] = s.u[iu] - fr.anchor;
       r_[iu] -= fr.force;
       fContact_[iu] = fr.force;
@@ -364,7 +368,7 @@ double Assembler::contactDissipation(const State& s, const StepRule& rule) const
     const Vec2& X = model_.coord(n);
     d += groundDissipation(*ground, s.crush[n], X.x() + s.un[i] - s.stretch[n], X.x() + s.un[i],
                            X.y() + s.un[i + 1], X.x() + s.u[i], X.y() + s.u[i + 1], rule,
-                           groundDamping_[n]);
+                           {groundDamping_[n], s.vn[i + 1], s.an[i + 1]}, groundStick_[n]);
   }
   return d;
 }

@@ -139,6 +139,7 @@ class Assembler {
   Eigen::VectorXd r_, fRef_, fGrav_, fContact_, mNodal_, fRel_;
   std::vector<double> masses_;         // per node (core/NodeMass.h)
   std::vector<double> groundDamping_;  // per node: the ground's dashpot coefficient
+  std::vector<double> groundStick_;    // per node: the friction's stick dashpot (kN s/m)
   Eigen::VectorXd stretch_;  // per node: friction stretches at the end of the last assembled step
   Eigen::VectorXd stretchU_, stretchUn_;  // the state (u, u_n) stretch_ was evaluated at
   // The friction stretches that go with s: the last assembly's when it was of

@@ -14,8 +14,10 @@
 // of the touching part of the penetration: its work over the step,
 // c (<p_n+1 - ps> - <p_n - ps>)(p_n+1 - p_n) / h >= 0, is what it dissipates,
 // and the force is continuous where the contact begins or ends within the
-// step. Newmark: f = c dp/dt at t_n+1 while touching, dp/dt the integrator's
-// rate. Statics: none.
+// step. Newmark: f = c w dp/dt at t_n+1 while touching, dp/dt the
+// integrator's rate, w = min(1, (p_n+1 - ps) / |p_n+1 - p_n|): the force
+// ramps in over the last step's motion beyond the set, continuous where the
+// contact begins or ends (w -> 1 as the step shrinks). Statics: none.
 #include <cmath>
 
 #include "core/StepRule.h"

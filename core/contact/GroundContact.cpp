@@ -53,23 +53,29 @@ ContactForce groundContact(const Ground& g, double q, double yn, double y, const
 }
 
 FrictionForce groundFriction(const Ground& g, const ContactForce& c, double a, double xn, double x,
-                             const StepRule& rule) {
-  const SpringFrictionForce f = springFriction(g.k, g.mu, std::max(c.normal, 0.0), a, xn, x,
-                                              rule.scheme == Scheme::MidPoint);
-  // N depends on y through the penetration y0 - y.
-  return {f.force, f.dx, -f.dN * c.normalTangent, f.anchor, f.slipped};
+                             const StepRule& rule, double stick) {
+  // N: the contact's whole normal force while it pushes (its dashpot's part
+  // too: Coulomb's bound is on what the ground bears), depending on y through
+  // the penetration y0 - y.
+  const bool pushes = c.force > 0;
+  const SpringFrictionForce f =
+      springFriction(g.k, stick, g.mu, pushes ? c.force : 0.0, a, xn, x,
+                     rule.dynamic() ? rule.h : 0.0, rule.scheme == Scheme::MidPoint);
+  return {f.force, f.dx, pushes ? -f.dN * c.tangent : 0.0, f.anchor, f.slipped};
 }
 
 double groundDissipation(const Ground& g, double q, double a, double xn, double yn, double x,
-                         double y, const StepRule& rule, double c) {
-  const ContactForce f = groundContact(g, q, yn, y, rule);
+                         double y, const StepRule& rule, const GroundDamper& damper,
+                         double stick) {
+  const double c = damper.c;
+  const ContactForce f = groundContact(g, q, yn, y, rule, damper);
   const double p0 = penetration(g, yn), p1 = penetration(g, y);
   const CrushingLaw law = crushing(g, q);
   double d = 0;
   // Crushing: the loading work beyond q less what the stiffer unloading stores.
   if (crushes(g)) d += law.dissipated(p0, p1);
   d += damperDissipation(c, crushing(g, std::max(q, p0)).ps, p0, p1, rule);
-  d += groundFriction(g, f, a, xn, x, rule).slipped;
+  d += groundFriction(g, f, a, xn, x, rule, stick).slipped;
   return d;
 }
 

@@ -22,20 +22,22 @@
 // penetration beyond the set while it touches, c = 2 zeta sqrt(k m) with m the
 // node's own mass (core/NodeMass.h): the same damper at every step.
 //
-// Friction (mu > 0, the law in core/contact/SpringFriction.h): elastic-plastic Coulomb
-// friction on every node with a normal force N > 0 (the penalty force without
-// the dashpot, >= 0 on every branch). The node is held by a horizontal spring of the ground's
-// stiffness k anchored where it last slid (its stretch x - a: State::stretch);
-// it slides when the spring force reaches mu N, the anchor then following it at
-// mu N / k, so a
-// node sticks to within mu N / k (mu times its penetration) and never creeps,
-// and sliding is resisted by the full mu N whatever the node's own mass. The
-// spring stores k (x - a)^2 / 2 <= (mu N)^2 / (2 k); sliding dissipates mu N
-// per unit of slip. With the mid-point scheme N is the step's normal force and
-// the friction force is the law's work along the straight path from x_n to
-// x_n+1 divided by the step (elastic, then sliding), so that its work is the
-// spring energy's change plus what sliding dissipated; it is continuously
-// differentiable in x_n+1. Otherwise the law at t_n+1 (return mapping).
+// Friction (mu > 0, the law in core/contact/SpringFriction.h): Coulomb friction
+// on every node with a normal force N > 0 (the penalty force without the
+// dashpot, >= 0 on every branch). The node is held by a horizontal stick
+// element anchored where it last slid (its stretch x - a: State::stretch): a
+// spring of the ground's stiffness k with a dashpot 2 sqrt(k m) beside it (m
+// the node's mass, critical damping); it slides when the element's force
+// reaches mu N, the anchor then following it. A node at rest sticks to within
+// mu N / k (mu times its penetration) and never creeps; a node striking the
+// ground sideways meets mu N at once (the dashpot), so an impact takes
+// Coulomb's impulse whatever its duration; sliding is resisted by the full
+// mu N whatever the node's own mass. The spring stores
+// k (x - a)^2 / 2 <= (mu N)^2 / (2 k). With the mid-point scheme N is the
+// step's normal force and the friction force is the element's work along the
+// straight path from x_n to x_n+1 divided by the step, so that its work is the
+// spring energy's change plus what the dashpot and sliding dissipated.
+// Otherwise the element's force at t_n+1.
 #include "core/Model.h"
 #include "core/StepRule.h"
 
@@ -84,21 +86,23 @@ ContactForce groundContact(const Ground& g, double q, double yn, double y, const
                            const GroundDamper& d = {});
 
 // Friction on a node whose normal force is c (groundContact at the same
-// rule), anchored at a (t_n), moving horizontally from xn to x.
+// rule), anchored at a (t_n), moving horizontally from xn to x; stick: the
+// stick element's dashpot (kN s/m, frictionStickDamping for the node's mass).
 FrictionForce groundFriction(const Ground& g, const ContactForce& c, double a, double xn, double x,
-                             const StepRule& rule);
+                             const StepRule& rule, double stick = 0);
 // Energy stored in a friction spring stretched by x - a.
 inline double frictionEnergy(const Ground& g, double stretch) {
   return 0.5 * g.k * stretch * stretch;
 }
 
 // Energy the ground's contact law takes from a node over the step from (xn, yn)
-// to (x, y), >= 0: the crushing beyond the loading point q, the dashpot of
-// coefficient c under the mid-point scheme and the friction's sliding from the
-// anchor a. Under the static and Newmark rules the penalty force is the plain
+// to (x, y), >= 0: the crushing beyond the loading point q, the dashpot
+// (damper, as groundContact's) under the mid-point scheme and the friction's stick dashpot
+// (coefficient stick) and sliding from the anchor a. Under the static and Newmark rules the penalty force is the plain
 // gradient at t_n+1; what that integration loses or gains is the scheme's, not
 // counted here.
 double groundDissipation(const Ground& g, double q, double a, double xn, double yn, double x,
-                         double y, const StepRule& rule, double c = 0);
+                         double y, const StepRule& rule, const GroundDamper& damper = {},
+                         double stick = 0);
 
 }  // namespace c2d

@@ -249,7 +249,6 @@ bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, dou
   } else {
     normal.midPoint(p0, p1, w, dw);  // phi'(p0, p1): the law's discrete derivative
   }
-  const double N = std::max(w, 0.0), dN = w > 0 ? dw : 0.0;
   // The dashpot: along D with the penalty (mid-point), along grad p at t_n+1
   // with the rate dp/dt = grad p . dz/dt there (Newmark, below).
   const bool damped = law.c > 0 && rule.dynamic();
@@ -258,17 +257,28 @@ bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, dou
     w += f.force;
     dw += f.slope;
   }
+  // Friction's N: the whole normal force while it pushes (the dashpot's too),
+  // and dN/dz1.
+  const bool newmarkDamped = damped && !midPoint && p1 > normal.ps;
+  const Vec4 rate1 =
+      newmarkDamped ? Vec4(rule.velocity(Vec4(z1 - z0), law.zv, law.za)) : Vec4(Vec4::Zero());
+  const double w1 = w + (newmarkDamped ? law.c * e1.g.dot(rate1) : 0.0);
+  const double N = std::max(w1, 0.0);
+  Vec4 dNdz = Vec4::Zero();
+  if (rubs && w1 > 0 && wantTangent) {
+    dNdz = dw * e1.g;
+    if (newmarkDamped) dNdz += law.c * (rule.cv * e1.g + e1.H * rate1);
+  }
   const double scale = z0.norm() + z1.norm() + h;
   Vec4 fz;
   Mat4 kz, wdD;
   if (!midPoint) {
     fz = w * e1.g;
     if (wantTangent) kz = dw * e1.g * e1.g.transpose() + w * e1.H;
-    if (damped && p1 > normal.ps) {
-      const Vec4 rate = rule.velocity(Vec4(z1 - z0), law.zv, law.za);
-      const double c = law.c, r1 = e1.g.dot(rate);
+    if (newmarkDamped) {
+      const double c = law.c, r1 = e1.g.dot(rate1);
       fz += c * r1 * e1.g;
-      if (wantTangent) kz += c * e1.g * (rule.cv * e1.g + e1.H * rate).transpose() + c * r1 * e1.H;
+      if (wantTangent) kz += c * e1.g * (rule.cv * e1.g + e1.H * rate1).transpose() + c * r1 * e1.H;
     }
   } else {
     Penetration em;
@@ -285,13 +295,14 @@ bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, dou
     slipCoordinate(z0, false, c0);
     slipCoordinate(z1, wantTangent && !midPoint, c1);
     const SpringFrictionForce fr =
-        springFriction(k, law.mu, N, c0.p - law.stretch, c0.p, c1.p, midPoint);
+        springFriction(k, law.stick, law.mu, N, c0.p - law.stretch, c0.p, c1.p,
+                       rule.dynamic() ? rule.h : 0.0, midPoint);
     const double F = -fr.force;
     if (outcome) {
       outcome->stretch = c1.p - fr.anchor;
       outcome->slipped = fr.slipped;
     }
-    const Vec4 dF = -fr.dx * c1.g - fr.dN * dN * e1.g;  // dF/dz1
+    const Vec4 dF = -fr.dx * c1.g - fr.dN * dNdz;  // dF/dz1
     if (!midPoint) {
       fz += F * c1.g;
       if (wantTangent) kz += c1.g * dF.transpose() + F * c1.H;
@@ -638,6 +649,7 @@ void MemberContact::motions(const Model& model, const State& s,
 PairLaw MemberContact::law(const ContactPair& pair, const State& s, const PairPositions& q0,
                            const PairMemory* m) const {
   PairLaw out{data_.k, 0.0, data_.restitution, m ? m->q : 0.0, data_.mu, m ? m->stretch : 0.0};
+  if (data_.mu > 0) out.stick = frictionStickDamping(data_.k, pairMass(masses_, pair, q0));
   if (data_.zeta > 0) {
     out.c = damperCoefficient(data_.zeta, data_.k, pairMass(masses_, pair, q0));
     out.zv = pairZ(pairValues(s.vn, pair));

@@ -111,6 +111,7 @@ using PairZ = Eigen::Matrix<double, 4, 1>;  // z = (x - a, b - a)
 struct PairLaw {
   double k = 0, c = 0, restitution = 1, q = 0;
   double mu = 0, stretch = 0;  // friction coefficient, the friction spring's stretch at t_n
+  double stick = 0;            // the friction's stick dashpot (kN s/m, SpringFriction.h)
   PairZ zv = PairZ::Zero(), za = PairZ::Zero();
 };
 

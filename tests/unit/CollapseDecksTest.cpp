@@ -249,6 +249,17 @@ TEST(CollapseDecks, SlidingBeam) {
               mu * g * (x - c["disp_1_1"].front()), 1e-3 * mu * g * x);
 }
 
+TEST(CollapseDecks, BarLandingSidewaysSticksWhereItLands) {
+  // Dropped from H under gravity (0.2 g, -g): it lands 0.2 H on at 19.8 m/s,
+  // 3.96 m/s sideways, and friction (mu = 0.5) holds it within 0.05 m of
+  // there (0.51 m on before the stick element's dashpot), at rest.
+  Columns c = runAndRead("collapse/bar_lands_sideways.inp", "bar_lands_sideways");
+  const double H = 19.8 * 19.8 / (2 * 9.81);
+  ASSERT_GT(c["time"].back(), 3.5);
+  EXPECT_NEAR(c["disp_1_1"].back(), 0.2 * H, 0.05);
+  EXPECT_LT(c["kinetic"].back(), 1e-6 * 0.9 * 9.81 * H);
+}
+
 TEST(CollapseDecks, SixStoryCollapseWithMemberContactLeavesNoCrossingMembers) {
   // The 84-element six-story workflow (decks/paper/six_story_collapse_short.inp)
   // run on to t = 200 s, when the frame lies on the ground, with member contact

@@ -147,6 +147,7 @@ std::vector<PairLaw> inelasticLaws(double k, double c) {
       law.q = q;
       law.mu = 0.5;
       law.stretch = stretch;
+      law.stick = frictionStickDamping(k, 0.8);  // the friction's stick dashpot
       laws.push_back(law);
       law.mu = 0;  // crushing alone
       if (stretch == 0) laws.push_back(law);
