@@ -207,6 +207,12 @@ void InelasticFrame::activateHinge() {
     law_.open(trial_.section);
 }
 
+int InelasticFrame::earlyEnd() const {
+  return law_.demand(trial_.section) >= fractureDemand() ? law_.criticalEnd(trial_.section) : -1;
+}
+
+void InelasticFrame::activateHingeAt(int end) { law_.openEnd(trial_.section, end); }
+
 HingeInfo InelasticFrame::hinge() const {
   HingeInfo h = law_.info(trial_.section);
   h.fracture = trial_.fracture == 1;

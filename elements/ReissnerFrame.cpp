@@ -407,6 +407,12 @@ void ReissnerFrame::activateHinge() {
     law_.open(trial_.section);
 }
 
+int ReissnerFrame::earlyEnd() const {
+  return law_.demand(trial_.section) >= fractureDemand() ? law_.criticalEnd(trial_.section) : -1;
+}
+
+void ReissnerFrame::activateHingeAt(int end) { law_.openEnd(trial_.section, end); }
+
 HingeInfo ReissnerFrame::hinge() const {
   HingeInfo h = law_.info(trial_.section);
   h.fracture = trial_.fracture == 1;
