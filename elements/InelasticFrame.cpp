@@ -131,9 +131,8 @@ Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& ru
     const ElemVec ddl = dl - dln;
     const double dE = b.eps.dot(ddl);
     if (axial_) {
-      const double ea = axial_->stiffness(f1.N);
-      nd = SectionDamping::bending(f, ea, ea * (dE - (trial_.axial.ep - committed_.axial.ep)), dE,
-                                   axialTangent_);
+      nd = axial_->damping(f, committed_.forces.N, f1.N, dE,
+                           trial_.axial.ep - committed_.axial.ep, axialTangent_);
     } else {
       nd = SectionDamping::elasticBending(f, EA_, dE);
     }

@@ -315,11 +315,9 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
     md = law_.isElastic()
              ? SectionDamping::elasticBending(f, law_.EI(), kappa1 - kappaN)
              : SectionDamping::bending(f, law_.EI(), m1 - from.M, kappa1 - kappaN, bend.tangent);
-    if (axial_) {
-      const double dE = strains(kin.d)(0) - strains(kin.dn)(0), ea = axial_->stiffness(N1);
-      nd = SectionDamping::bending(f, ea, ea * (dE - (trial_.axial.ep - committed_.axial.ep)), dE,
-                                   axialTangent_);
-    }
+    if (axial_)
+      nd = axial_->damping(f, committed_.forces.N, N1, strains(kin.d)(0) - strains(kin.dn)(0),
+                           trial_.axial.ep - committed_.axial.ep, axialTangent_);
   }
   Vec3 strain;
   std::array<double, 2> halfTan{};

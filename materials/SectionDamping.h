@@ -53,8 +53,9 @@ class SectionDamping {
   //
   // The same dashpot acts on the axial strain of a member whose axial force is
   // bounded (materials/AxialCapacity): there the elastic strain's change is
-  // dEe = dE - dEp, and bending(f, EA, EA dEe, dE, kt1) with EA the stiffness
-  // of the branch at t_n+1 and kt1 = dN_n+1/dE_n+1 gives the force f EA s^2 dE,
+  // dEe = dE - dEp, and bending(f, EA, EA dEe, dE, EA dEe'/dE_n+1) with EA
+  // the stiffness of the committed branch (AxialCapacity::damping) gives the
+  // force f EA s^2 dE,
   // s = dEe/dE clipped to [0, 1]: the Kelvin-Voigt force in an elastic step,
   // nothing while the bars yield at a fixed force or the section crushes.
   struct Bending {
