@@ -39,6 +39,14 @@ class HingeCarrier {
   // The width of the band above 1 in which a located event opens the hinge:
   // the demand's round-off (solvers/HingeEvents).
   virtual double demandBand() const { return 1e-12; }
+  // A hinge that may open below its capacity: one at a member's end, whose
+  // joint is rigid until its moment reaches the capacity C(xi, N), so that
+  // opening it early changes nothing before then. At the trial state: the
+  // end (0: node 1, 1: node 2) of the largest demand when that demand is
+  // such a hinge's (not a fracture's), else -1.
+  virtual int earlyEnd() const { return -1; }
+  // Opens the hinge at that end in the trial state, whatever its demand.
+  virtual void activateHingeAt(int /*end*/) {}
 };
 
 // A member whose laws follow its axial force and whose bars can fracture (RC

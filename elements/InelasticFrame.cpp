@@ -123,13 +123,21 @@ Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& ru
   double V = w * f1.V + (1 - w) * GA_ * b.gamma.dot(dln);
   double M = w * f1.M + (1 - w) * committed_.forces.M;
   // The section's dashpot (materials/SectionDamping.h): f = a1/h times the
-  // strains' change, in bending the elastic curvature's (not with laws that
-  // follow the axial force: MaterialRecords refuses both).
-  const double f = coupled ? 0.0 : damping_.factor(rule);
-  SectionDamping::Bending md;
+  // elastic part of the strains' change: in bending the elastic curvature's,
+  // axially (a bounded axial force) the elastic strain's.
+  const double f = damping_.factor(rule);
+  SectionDamping::Bending md, nd;
   if (f > 0) {
     const ElemVec ddl = dl - dln;
-    N += f * EA_ * b.eps.dot(ddl);
+    const double dE = b.eps.dot(ddl);
+    if (axial_) {
+      nd = axial_->damping(f, committed_.forces.N, f1.N, dE,
+                           trial_.axial.ep - committed_.axial.ep, axialTangent_);
+    } else {
+      nd = SectionDamping::elasticBending(f, EA_, dE);
+    }
+    N += nd.m;
+    kN += nd.tangent;
     V += f * GA_ * b.gamma.dot(ddl);
     const double dK = b.kappa.dot(ddl);
     md = law_.isElastic()
@@ -148,9 +156,9 @@ Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& ru
     } else {
       // The moment follows N: dM/ddl = kt b_kappa + dM/dN dN/deps b_eps.
       const ElemMat kLocal =
-          l * (kN * b.eps * b.eps.transpose() +
-               w * (GA_ * b.gamma * b.gamma.transpose() + kt * b.kappa * b.kappa.transpose() +
-                    bend.dN * axialTangent_ * b.kappa * b.eps.transpose()));
+          l * (kN * b.eps * b.eps.transpose() + (w + f) * GA_ * b.gamma * b.gamma.transpose() +
+               (w * kt + md.tangent) * b.kappa * b.kappa.transpose() +
+               (w + md.dM1) * bend.dN * axialTangent_ * b.kappa * b.eps.transpose());
       tangent = rotation_.transpose() * kLocal * rotation_;
     }
   }
@@ -197,6 +205,12 @@ void InelasticFrame::activateHinge() {
   else
     law_.open(trial_.section);
 }
+
+int InelasticFrame::earlyEnd() const {
+  return law_.demand(trial_.section) >= fractureDemand() ? law_.criticalEnd(trial_.section) : -1;
+}
+
+void InelasticFrame::activateHingeAt(int end) { law_.openEnd(trial_.section, end); }
 
 HingeInfo InelasticFrame::hinge() const {
   HingeInfo h = law_.info(trial_.section);

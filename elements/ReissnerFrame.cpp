@@ -307,14 +307,18 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
   const double m1 = bend.state.M;
   const double kappaN = (kin.dn(5) - kin.dn(2)) / length_ - e0_(2);
   // The section's dashpot (materials/SectionDamping.h): f = a1/h times the
-  // strains' change over the step, in bending the elastic curvature's (not
-  // with laws that follow the axial force: MaterialRecords refuses both).
-  const double f = coupled ? 0.0 : damping_.factor(rule);
-  SectionDamping::Bending md;
-  if (f > 0)
+  // strains' change over the step, in bending the elastic curvature's, axially
+  // (a bounded axial force) the elastic strain's.
+  const double f = damping_.factor(rule);
+  SectionDamping::Bending md, nd;
+  if (f > 0) {
     md = law_.isElastic()
              ? SectionDamping::elasticBending(f, law_.EI(), kappa1 - kappaN)
              : SectionDamping::bending(f, law_.EI(), m1 - from.M, kappa1 - kappaN, bend.tangent);
+    if (axial_)
+      nd = axial_->damping(f, committed_.forces.N, N1, strains(kin.d)(0) - strains(kin.dn)(0),
+                           trial_.axial.ep - committed_.axial.ep, axialTangent_);
+  }
   Vec3 strain;
   std::array<double, 2> halfTan{};
   const std::array<double, 2>* halfTanAt = nullptr;
@@ -336,14 +340,14 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
           law_.midPointMoment(from, kappaN, bend.state, kappa1, bend.tangent, length_, w);
       if (coupled) {
         cp.moment = bend.dN != 0;
-        cp.dm = (mm.dM1 * bend.dN) * axialGradient_;
+        cp.dm = ((mm.dM1 + md.dM1) * bend.dN) * axialGradient_;
         if (axial_) {
           const AxialCapacity::MidPoint mp = axial_->midPoint(
               committed_.forces.N, N1, strains(kin.dn)(0) - e0_(0), strains(kin.d)(0) - e0_(0),
               axialTangent_, trial_.axial.ep - committed_.axial.ep, w, HingedBending::kMidPointRatio);
           cp.axial = true;
-          cp.n = mp.n;
-          cp.ea = mp.tangent / w;
+          cp.n = mp.n + nd.m;
+          cp.ea = (mp.tangent + nd.tangent) / wd;
         }
       }
       strain =
@@ -353,10 +357,10 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
   } else {
     if (coupled) {
       cp.axial = axial_.has_value();
-      cp.n = N1;
-      cp.ea = axialTangent_;
+      cp.n = N1 + nd.m;
+      cp.ea = axialTangent_ + nd.tangent;
       cp.moment = bend.dN != 0;
-      cp.dm = bend.dN * axialGradient_;
+      cp.dm = ((1 + md.dM1) * bend.dN) * axialGradient_;
     }
     Damper damper;
     if (f > 0) damper = {f, strains(kin.dn)};
@@ -400,6 +404,12 @@ void ReissnerFrame::activateHinge() {
   else
     law_.open(trial_.section);
 }
+
+int ReissnerFrame::earlyEnd() const {
+  return law_.demand(trial_.section) >= fractureDemand() ? law_.criticalEnd(trial_.section) : -1;
+}
+
+void ReissnerFrame::activateHingeAt(int end) { law_.openEnd(trial_.section, end); }
 
 HingeInfo ReissnerFrame::hinge() const {
   HingeInfo h = law_.info(trial_.section);

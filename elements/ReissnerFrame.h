@@ -101,6 +101,8 @@ class ReissnerFrame final : public Element,
   HingeInfo hinge() const override;
   // End moments carry the shear's round-off (M -+ V l/2): 1e-10.
   double demandBand() const override { return law_.site() == HingeSite::Ends ? 1e-10 : 1e-12; }
+  int earlyEnd() const override;
+  void activateHingeAt(int end) override;
 
   double axialForce() const override { return trial_.forces.N; }
   bool followsAxialForce() const override { return axial_ || law_.capacity(); }

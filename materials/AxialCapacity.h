@@ -14,6 +14,8 @@
 // plasticity with a bimodular elastic law: the stored energy N^2/(2 EA(s)) is
 // convex, the return map closed form. Units: forces kN, EA kN (the decks'
 // system), strains dimensionless.
+#include "materials/SectionDamping.h"
+
 namespace c2d {
 
 struct AxialState {
@@ -58,6 +60,17 @@ class AxialCapacity {
   };
   MidPoint midPoint(double N0, double N1, double eps0, double eps1, double kt1, double dEp,
                     double w, double ratioBound) const;
+  // The section's dashpot on the elastic axial strain's change dE - dEp over a
+  // step (materials/SectionDamping.h, factor f = a1/h) from N0 to N1, with
+  // kt1 = dN1/deps1: SectionDamping::bending with the stiffness of the
+  // committed force's branch, EA(N0), fixed over the step (the branch of N1
+  // would make the force jump where N1 changes sign, EA / Es As = 5-20 in
+  // RC members, and Newton's iterates chatter there).
+  SectionDamping::Bending damping(double f, double N0, double N1, double dE, double dEp,
+                                  double kt1) const {
+    const double ea = stiffness(N0);
+    return SectionDamping::bending(f, ea, ea * (dE - dEp), dE, ea * kt1 / stiffness(N1));
+  }
   // strain / eu: 1 when the bars reach their fracture strain (0 in compression).
   double fractureDemand(double eps) const { return eps > 0 ? eps / eu_ : 0.0; }
 

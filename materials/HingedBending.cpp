@@ -229,6 +229,18 @@ void HingedBending::open(HingedBendingState& s) const {
   s.hingeSign = s.M >= 0 ? 1.0 : -1.0;
 }
 
+int HingedBending::criticalEnd(const HingedBendingState& s) const {
+  if (site_ != HingeSite::Ends || !canActivate(s)) return -1;
+  const std::array<double, 2> d = endDemands(*this, s);
+  const int a = d[1] > d[0] ? 1 : 0;
+  return d[a] > 0 ? a : -1;
+}
+
+void HingedBending::openEnd(HingedBendingState& s, int end) const {
+  if (site_ != HingeSite::Ends || end < 0 || end > 1 || s.endHinge[end] != 0) return;
+  s.endHinge[end] = signOf(s.endMoment[end]);
+}
+
 double HingedBending::demand(const HingedBendingState& s) const {
   if (!canActivate(s)) return 0;
   if (site_ == HingeSite::Ends) {

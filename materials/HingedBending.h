@@ -126,6 +126,12 @@ class HingedBending {
   // decision, core/Hinge.h): the next evaluation takes it from there. Hinges at
   // the ends: the end of the largest demand is marked.
   void open(HingedBendingState& s) const;
+  // Hinges at the ends: the end of the larger demand whose hinge could still
+  // open (-1: none, or not hinges at the ends), and opening that end with the
+  // sign of its moment whatever its demand (solvers/HingeEvents opens an end
+  // hinge at the lower end of a bracket across which the demand jumps past 1).
+  int criticalEnd(const HingedBendingState& s) const;
+  void openEnd(HingedBendingState& s, int end) const;
   // The bending moment of the mid-point scheme (weight w = 1/2 + alpha) for a
   // step from section state `from` at curvature kappaD0 to `to` at kappaD1
   // (dM1/dkappaD1 = kt1), and its derivative with respect to kappaD1. With

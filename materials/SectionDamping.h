@@ -47,13 +47,25 @@ class SectionDamping {
 
   // The dashpot's bending moment over a step and its derivative with respect
   // to the curvature at t_n+1: factor f, bending stiffness EI, the moment's
-  // change dM over the curvature's change dK, and kt1 = dM_n+1/dK_n+1.
+  // change dM over the curvature's change dK, and kt1 = dM_n+1/dK_n+1; dM1 =
+  // dm/dM_n+1 at fixed curvature (a moment that follows the axial force:
+  // dm/dN = dM1 dM_n+1/dN).
+  //
+  // The same dashpot acts on the axial strain of a member whose axial force is
+  // bounded (materials/AxialCapacity): there the elastic strain's change is
+  // dEe = dE - dEp, and bending(f, EA, EA dEe, dE, EA dEe'/dE_n+1) with EA
+  // the stiffness of the committed branch (AxialCapacity::damping) gives the
+  // force f EA s^2 dE,
+  // s = dEe/dE clipped to [0, 1]: the Kelvin-Voigt force in an elastic step,
+  // nothing while the bars yield at a fixed force or the section crushes.
   struct Bending {
-    double m = 0, tangent = 0;
+    double m = 0, tangent = 0, dM1 = 0;
   };
   static Bending bending(double f, double EI, double dM, double dK, double kt1);
   // An elastic section's (dM = EI dK): the Kelvin-Voigt moment.
-  static Bending elasticBending(double f, double EI, double dK) { return {f * EI * dK, f * EI}; }
+  static Bending elasticBending(double f, double EI, double dK) {
+    return {f * EI * dK, f * EI, 0};
+  }
 
  private:
   double a1_ = 0;

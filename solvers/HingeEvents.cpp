@@ -70,6 +70,14 @@ void HingeEvents::open(int element) {
     }
 }
 
+void HingeEvents::openAt(int element, int end) {
+  for (const auto& [e, h] : carriers())
+    if (e == element) {
+      h->activateHingeAt(end);
+      if (an_.onHingeActivated) an_.onHingeActivated(e, h->hinge());
+    }
+}
+
 Status HingeEvents::afterConvergence(IterationInfo& info, bool lineSearch, bool& handled) {
   handled = false;
   if (locating_ || carriers().empty()) return Status::success();
@@ -197,8 +205,14 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   // The points each side had before its last update, and the true demands.
   double sLoOld = -1, dLoOld = 0, sHiOld = -1, dHiOld = 0, dLoTrue = dLo, dHiTrue = dHi;
   double band = 1e-12;
+  // The hinge past its capacity at the bracket's upper end, and its end when
+  // it may open below its capacity (HingeCarrier::earlyEnd).
+  int elementHi = element, endHi = -1;
   for (const auto& [e, h] : carriers())
-    if (e == element) band = h->demandBand();
+    if (e == element) {
+      band = h->demandBand();
+      endHi = h->earlyEnd();
+    }
   const double target = 1.0 + 0.5 * band;
   // The closest approach to the target before each trial.
   double best[3] = {0, 0, 0};
@@ -220,6 +234,10 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
     if (found) break;
     closest = std::min(closest, std::abs(d - target));
     if (d > 1.0) {
+      elementHi = element;
+      endHi = -1;
+      for (const auto& [e, h] : carriers_)
+        if (e == element) endHi = h->earlyEnd();
       sHiOld = sHi;
       dHiOld = dHiTrue;
       sHi = f;
@@ -237,8 +255,18 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
       side = 1;
     }
   }
-  // Not located within the band: open at the closest point found past Mu.
-  if (st && !found) f = sHi;
+  // Not located within the band: the demand jumps past it between the
+  // bracket's ends (a discontinuity in the step fraction: the axial force
+  // driving Mu(N) to its floor at the diagram's ends within a sub-step, or
+  // the step's own solution on another branch than the sub-steps' from the
+  // committed state), or the 60 trials ran out. A hinge that may open below
+  // its capacity (at a member's end: a joint rigid until its moment reaches
+  // C(xi, N)) opens at the lower end, below Mu, so that no commit carries a
+  // moment past its capacity: the rest of the step returns it to C(xi, N).
+  // Others (a midpoint hinge takes its softening branch from Mu, a fracture
+  // happens at eu) open at the closest point found past it.
+  const bool early = st && !found && endHi >= 0;
+  if (st && !found) f = early ? sLo : sHi;
   if (st && f == 0) {
     restoreCommitted();
   } else if (st && !found) {
@@ -246,8 +274,13 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   }
   if (st) st = commitSolved();  // the sub-step up to the hinge's ultimate moment
   if (st) {
-    maxDemand(element);
-    open(element);
+    if (early) {
+      element = elementHi;
+      openAt(element, endHi);
+    } else {
+      maxDemand(element);
+      open(element);
+    }
     info.hingeActivated = element;
     // At the ultimate moment the open hinge has no jump yet (to 1e-12): the
     // committed state is already the equilibrium. A step of length zero: only

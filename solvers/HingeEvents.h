@@ -63,6 +63,9 @@ class HingeEvents {
   // (dynamic steps).
   Status solveBetween(double fraction, double sLo, double sHi, double tEnd, bool lineSearch);
   void open(int element);
+  // Opens the hinge at end `end` of the element whatever its demand
+  // (HingeCarrier::activateHingeAt).
+  void openAt(int element, int end);
   // The committed state as the end of a sub-step of zero length (the event is
   // at the committed state).
   void restoreCommitted();

@@ -84,7 +84,6 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
   const Record *elasticRec = nullptr, *sectionRec = nullptr, *resultantRec = nullptr;
   LawRecords laws;
   const Record* densityRec = nullptr;
-  const Record* dampingRec = nullptr;
   const Record* kinematicsRec = nullptr;
   for (std::size_t k = 1; k < cmd.data.size(); ++k) {
     const Record& r = cmd.data[k];
@@ -154,7 +153,6 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
       densityRec = &r;
     } else if (key == "damp") {
       mat.dampingA1 = readDamping(ctx, r);
-      dampingRec = &r;
     } else if (key == "mass") {
       mat.mass = option("MASS LUMPed / MASS CONSistent", {"LUMPed", "CONSistent"}) == "LUMPed"
                      ? MassType::Lumped
@@ -178,11 +176,6 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
   }
 
   finishLawRecords(h, laws, mat, elasticRec, sectionRec, resultantRec);
-  if (dampingRec && mat.dampingA1 > 0 && mat.capacity)
-    failAt(*dampingRec, 0,
-           "DAMPing is not available for members whose laws follow the axial force (SECTion, "
-           "INTEraction)",
-           "leave DAMPing out of this material");
   if (!mat.resEI) {
     if (!elasticRec)
       failAt(h, 0, "material " + std::to_string(m) + " has no ELAStic record",

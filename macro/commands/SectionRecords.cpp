@@ -449,7 +449,14 @@ void registerLawRecords(CommandRegistry& r) {
       "(moment-axial "
       "interaction): the hardening and softening variables are kept when N changes. "
       "Defaults: Es = 200e6 (kN/m^2: 200 GPa; give it in another unit system), fu = 1.08 fy, "
-      "eu = 0.05 (EC2 Annex C class B).",
+      "eu = 0.05 (EC2 Annex C class B). Units of the derived values in the decks' system "
+      "(kN, m, s, t): EA, GA and Nc, Nt, Ntu kN; EI kN m^2; Mc, My, Mu kN m; curvatures "
+      "kappa 1/m; Kh1, Kh2 kN m^2 (moment per plastic curvature); Ks kN m/rad; theta_pl, "
+      "xiF, thetaR rad. Another consistent system works unchanged: the rules' constants "
+      "(eps_c2, eps_cu2, fct = fc/10, nu = 0.2, Lp = h/2, the 20 % drop) are strains or "
+      "ratios, and Es's default is the only dimensional number, so give Es in that "
+      "system; e.g. N, mm, s with tonnes: b, h, depths in mm, fc, fy, Es in MPa (30, 500, "
+      "200e3), bar areas in mm^2, forces N, moments N mm, EI N mm^2.",
       {text("RECTangular", "the shape"), expr("b", "width [m]"), expr("h", "depth [m]"),
        expr("fc", "concrete compressive strength [kN/m^2]"),
        expr("fy", "bar yield stress [kN/m^2]"), expr("Es", "bar modulus [kN/m^2]", "200e6"),

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "tests/unit/V2Material.h"
+#include "core/Element.h"
 #include "core/Hinge.h"
 #include "core/Model.h"
 #include "elements/InelasticFrame.h"
@@ -183,6 +184,118 @@ TEST(HingeEvent, DynamicEventTrialsStartFromTheBracket) {
   // 48 iterations in the step of the event (73 with every trial from the
   // committed state).
   EXPECT_LE(eventIterations, 55);
+}
+
+// A demand that jumps past 1 within a step (an RC member whose axial force
+// reaches the bars' yield or the squash load, where Mu(N) falls to its floor):
+// a spring along x whose "moment" k u has the capacity Mu0 up to the
+// stretch uJ and Mu0/1.5 beyond, so that the demand jumps from 0.9 to 1.35
+// at uJ. Its hinge is one that may open below its capacity (a member's end
+// hinge: rigid-plastic, rigid until the force reaches the capacity). The
+// locator halves the bracket to round-off; the hinge opens at the bracket's
+// lower end and the rest of the step returns the force to the capacity, so
+// that no committed state carries more than its capacity.
+class JumpingCapacitySpring final : public Element, public HingeCarrier {
+ public:
+  JumpingCapacitySpring(std::array<int, 2> nodes, double k, double mu0, double uJ)
+      : nodes_(nodes), k_(k), mu0_(mu0), uJ_(uJ) {}
+  std::array<int, 2> nodes() const override { return nodes_; }
+  void setNodes(const std::array<int, 2>& n) override { nodes_ = n; }
+  int materialNumber() const override { return 1; }
+  std::string typeName() const override { return "test-spring"; }
+  double capacity(double u) const { return u < uJ_ ? mu0_ : mu0_ / 1.5; }
+  Status evaluate(const ElementKinematics& kin, const StepRule&, bool wantTangent, ElemVec& r,
+                  ElemMat& k) override {
+    const double u = kin.d(3) - kin.d(0);
+    trial_.u = u;
+    trial_.p = committed_.p;
+    double kt = k_;
+    trial_.force = k_ * (u - trial_.p);
+    if (trial_.open && std::abs(trial_.force) > capacity(u)) {  // slips at the capacity
+      trial_.force = std::copysign(capacity(u), trial_.force);
+      trial_.p = u - trial_.force / k_;
+      kt = 0;
+    }
+    r = ElemVec::Zero();
+    r(0) = -trial_.force;
+    r(3) = trial_.force;
+    if (wantTangent) {
+      k = ElemMat::Zero();
+      k(0, 0) = k(3, 3) = kt;
+      k(0, 3) = k(3, 0) = -kt;
+    }
+    return Status::success();
+  }
+  ElemMat mass() const override { return ElemMat::Zero(); }
+  ElemVec bodyLoad(const Vec2&) const override { return ElemVec::Zero(); }
+  void commit() override { committed_ = trial_; }
+  void revert() override { trial_ = committed_; }
+  double strainEnergy() const override {
+    return 0.5 * trial_.force * trial_.force / k_;
+  }
+  SectionForces sectionForces() const override { return {trial_.force, 0, 0}; }
+  // |force| / capacity at the trial state.
+  double ratio() const { return std::abs(trial_.force) / capacity(trial_.u); }
+  double hingeDemand() const override { return trial_.open ? 0.0 : ratio(); }
+  void activateHinge() override { trial_.open = true; }
+  int earlyEnd() const override { return trial_.open ? -1 : 0; }
+  void activateHingeAt(int) override { trial_.open = true; }
+  HingeInfo hinge() const override {
+    HingeInfo h;
+    h.active = trial_.open;
+    h.moment = trial_.force;
+    h.ultimate = capacity(trial_.u);
+    return h;
+  }
+
+ private:
+  struct State {
+    double u = 0, p = 0, force = 0;
+    bool open = false;
+  };
+  std::array<int, 2> nodes_;
+  double k_, mu0_, uJ_;
+  State trial_, committed_;
+};
+
+TEST(HingeEvent, DemandJumpingPastOneOpensTheEndHingeBelowItsCapacity) {
+  // Node 0 fixed, node 1 free along x, node 2 pulled along x: the jumping
+  // spring (k = 1000, Mu0 = 10, uJ = 0.009: demand 0.9 -> 1.35) in series
+  // with a stiff elastic one.
+  Model m;
+  m.resizeNodes(3);
+  for (int i = 0; i < 3; ++i) m.setCoord(i, Vec2(i, 0));
+  m.setElement(0, std::make_unique<JumpingCapacitySpring>(std::array{0, 1}, 1000.0, 10.0, 0.009));
+  m.setElement(1, std::make_unique<JumpingCapacitySpring>(std::array{1, 2}, 1e6, 1e9, 1e9));
+  m.bound(0) = {1, 1, 1};
+  m.bound(1) = {0, 1, 1};
+  m.bound(2) = {1, 1, 1};
+  m.disp(2) = {0.02, 0, 0};
+  Analysis an(m);
+  an.setLoadFunction(1, ProportionalLoad::ramp());
+  const auto& spring = dynamic_cast<const JumpingCapacitySpring&>(m.element(0));
+  int opened = 0;
+  double ratioAtOpening = -1, uAtOpening = -1;
+  an.onHingeActivated = [&](int e, const HingeInfo&) {
+    EXPECT_EQ(e, 0);
+    ++opened;
+    ratioAtOpening = spring.ratio();  // the committed state where it opens
+    uAtOpening = an.state().u[3];
+  };
+  an.setDt(0.1);
+  double largest = 0;
+  for (int s = 1; s <= 10; ++s) {
+    ASSERT_GT(solveStep(an), 0) << "step " << s;
+    largest = std::max(largest, spring.ratio());
+  }
+  EXPECT_EQ(opened, 1);
+  // Opened at the jump, below its capacity (the lower end of a bracket
+  // halved to round-off), never carrying more than its capacity after.
+  EXPECT_NEAR(uAtOpening, 0.009, 1e-12);
+  EXPECT_LT(ratioAtOpening, 1.0);
+  EXPECT_GT(ratioAtOpening, 0.899);
+  EXPECT_LE(largest, 1.0 + 1e-10);
+  EXPECT_NEAR(spring.sectionForces().N, 10.0 / 1.5, 1e-9);
 }
 
 }  // namespace

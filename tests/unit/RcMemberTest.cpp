@@ -14,6 +14,7 @@
 #include "materials/RcSection.h"
 #include "materials/SectionLaws.h"
 #include "tests/unit/ElementTestSupport.h"
+#include "tests/unit/V2Material.h"
 
 namespace c2d::test {
 namespace {
@@ -183,6 +184,72 @@ TEST(RcMember, AMemberAtRestTakesTheCompressionTangentWithinRoundOff) {
   EXPECT_EQ(ax.returnMap(rest, 1e-13).tangent, EAt);
   EXPECT_EQ(ax.returnMap(rest, 1e-6).tangent, EAt);
   EXPECT_EQ(ax.returnMap(rest, -1e-6).tangent, EAc);
+}
+
+// The members' structural damping (DAMPing, materials/SectionDamping) with laws
+// that follow the axial force: an RC section (a bounded axial force: the
+// dashpot on the elastic axial strain) and hand-given laws with an interaction
+// curve (INTEraction), each element type and dynamic scheme, from compression
+// through the bars' yield, on the plastic branch of the law at its N.
+StepRule dampedRule(Scheme scheme) {
+  StepRule r = midPointRule(scheme);
+  r.h = 1e-2;
+  return r;
+}
+
+MaterialSet interactionMaterial(Kinematics kin) {
+  MaterialSet m = v2::material(1, 1.25e6, kin);
+  m.interaction = {{-3000, 300}, {-1000, 380}, {0, 274}, {800, 150}};
+  deriveSectionLaws(m);
+  return m;
+}
+
+TEST(RcMember, DampedTangentsWithInteraction) {
+  for (Kinematics kin : {Kinematics::Small, Kinematics::Finite}) {
+    for (bool section : {true, false}) {
+      MaterialSet mat = section ? rcMaterial(kin) : interactionMaterial(kin);
+      mat.dampingA1 = 2e-3;  // f = a1/h = 0.2
+      ASSERT_TRUE(mat.capacity);
+      for (double stretch : {-4e-3, -2e-4, 0.0, 3e-5, 6e-5, 2e-3}) {
+        std::unique_ptr<Element> e;
+        if (kin == Kinematics::Small)
+          e = std::make_unique<InelasticFrame>(mat, std::array<int, 2>{0, 1}, Vec2(0, 0),
+                                               Vec2(1.5, 0));
+        else
+          e = std::make_unique<ReissnerFrame>(mat, std::array<int, 2>{0, 1}, Vec2(0, 0),
+                                              Vec2(1.5, 0));
+        ElemVec d, dd;
+        d << 0, 0, -0.003, 1.5 * stretch, 0.0, 0.004;
+        dd << 0.0002, -0.0001, -0.0024, 1.5 * stretch * 0.1 + 0.0003, 0.0002, 0.0031;
+        ElementKinematics k0 = committedAt(*e, d, dd);
+        k0.vn.setConstant(0.1);
+        for (Scheme scheme : {Scheme::MidPoint, Scheme::Newmark}) {
+          const StepRule rule = dampedRule(scheme);
+          ElemVec r, undamped;
+          ElemMat k;
+          ASSERT_TRUE(e->evaluate(k0, rule, true, r, k).ok);
+          const ElemMat fd = centralDifferenceTangent(*e, k0, rule, 1e-8);
+          EXPECT_LT(relativeError(k, fd), 1e-5)
+              << "finite " << int(kin) << " section " << section << " stretch " << stretch
+              << " scheme " << int(scheme) << "\n" << k << "\n\n" << fd;
+          // The dashpot is there: the residual differs from the undamped one.
+          MaterialSet plain = mat;
+          plain.dampingA1 = 0;
+          std::unique_ptr<Element> u;
+          if (kin == Kinematics::Small)
+            u = std::make_unique<InelasticFrame>(plain, std::array<int, 2>{0, 1}, Vec2(0, 0),
+                                                 Vec2(1.5, 0));
+          else
+            u = std::make_unique<ReissnerFrame>(plain, std::array<int, 2>{0, 1}, Vec2(0, 0),
+                                                Vec2(1.5, 0));
+          ElementKinematics ku = committedAt(*u, d, dd);
+          ku.vn.setConstant(0.1);
+          ASSERT_TRUE(u->evaluate(ku, rule, false, undamped, k).ok);
+          EXPECT_GT((r - undamped).norm(), 1e-3 * r.norm()) << "stretch " << stretch;
+        }
+      }
+    }
+  }
 }
 
 }  // namespace
