@@ -709,9 +709,12 @@ double MemberContact::commit(const Model& model, State& s, int& pushed,
     committedEnergy_ += after;
     // What a held pair stored at the end of the step and does not store so
     // seen from its new side, or apart, is released (the trial energy counted
-    // it; a pushed pair booked its own above).
+    // it; a pushed pair booked its own above). From the loading point it gets
+    // now: what the new loading point took is in `crushed` already (taken
+    // from the memory's, it was booked twice: the account's balance at such a
+    // commit stood off by that much until the next step).
     if (wasHeld && !flipped)
-      letGo += crushingEnergy(data_.k, data_.restitution, m ? m->q : 0.0, o.p1) +
+      letGo += crushingEnergy(data_.k, data_.restitution, next.q, o.p1) +
                springFrictionEnergy(data_.k, o.stretch) - after;
     if (kept) nextMemory_.push_back(next);
   }
