@@ -551,8 +551,13 @@ bool MemberContact::evaluate(const ContactPair& pair, const Model& model, const 
   // contact distance exceeds its pair's present one).
   if (!positions(pair, model, s, q0, q1, slack_)) return false;
   const PairMemory* m = memory(s, pair.key());
-  return pairContact(q0, q1, side(m, q0), reach(pair, m), law(pair, s, q0, m), rule, wantTangent,
-                     force, tangent, nullptr, held(m));
+  const int sd = side(m, q0);
+  const double h = reach(pair, m);
+  // Most candidates are apart (a twelfth carries a force): their law (the
+  // dashpot's pair mass and rates) is not formed.
+  if (!touches(q0, q1, sd, h, held(m), rule)) return false;
+  return pairContact(q0, q1, sd, h, law(pair, s, q0, m), rule, wantTangent, force, tangent,
+                     nullptr, held(m));
 }
 
 PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, const State& s,
@@ -576,9 +581,13 @@ PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, 
     out.stretch = m ? m->stretch : 0.0;
     return out;
   }
-  if (data_.mu <= 0) {  // frictionless: the penetrations tell all
-    out.p0 = pairPenetration(q0, sd, reach(pair, m), held(m));
-    out.p1 = pairPenetration(q1, sd, reach(pair, m), held(m));
+  out.p0 = pairPenetration(q0, sd, reach(pair, m), held(m));
+  out.p1 = pairPenetration(q1, sd, reach(pair, m), held(m));
+  if (data_.mu <= 0) return out;  // frictionless: the penetrations tell all
+  if (!(out.p1 > 0 || (rule.scheme == Scheme::MidPoint && out.p0 > 0))) {
+    // Apart over the step (as pairContact decides): the friction spring lets
+    // go, and the law is not formed.
+    out.slipped = springFrictionEnergy(data_.k, m ? m->stretch : 0.0);
     return out;
   }
   PairVec f;
