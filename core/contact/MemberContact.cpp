@@ -556,8 +556,8 @@ bool MemberContact::evaluate(const ContactPair& pair, const Model& model, const 
   // Most candidates are apart (a twelfth carries a force): their law (the
   // dashpot's pair mass and rates) is not formed.
   if (!touches(q0, q1, sd, h, held(m), rule)) return false;
-  return pairContact(q0, q1, sd, h, law(pair, s, q0, m), rule, wantTangent, force, tangent,
-                     nullptr, held(m));
+  return pairContact(q0, q1, sd, h, law(pair, s, q0, m), rule, wantTangent, force, tangent, nullptr,
+                     held(m));
 }
 
 PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, const State& s,
