@@ -562,8 +562,13 @@ bool MemberContact::evaluate(const ContactPair& pair, const Model& model, const 
   // contact distance exceeds its pair's present one).
   if (!positions(pair, model, s, q0, q1, slack_)) return false;
   const PairMemory* m = memory(s, pair.key());
-  return pairContact(q0, q1, side(m, q0), reach(pair, m), law(pair, s, q0, m), rule, wantTangent,
-                     force, tangent, nullptr, held(m));
+  const int sd = side(m, q0);
+  const double h = reach(pair, m);
+  // Most candidates are apart (a twelfth carries a force): their law (the
+  // dashpot's pair mass and rates) is not formed.
+  if (!touches(q0, q1, sd, h, held(m), rule)) return false;
+  return pairContact(q0, q1, sd, h, law(pair, s, q0, m), rule, wantTangent, force, tangent, nullptr,
+                     held(m));
 }
 
 PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, const State& s,
@@ -587,9 +592,13 @@ PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, 
     out.stretch = m ? m->stretch : 0.0;
     return out;
   }
-  if (data_.mu <= 0) {  // frictionless: the penetrations tell all
-    out.p0 = pairPenetration(q0, sd, reach(pair, m), held(m));
-    out.p1 = pairPenetration(q1, sd, reach(pair, m), held(m));
+  out.p0 = pairPenetration(q0, sd, reach(pair, m), held(m));
+  out.p1 = pairPenetration(q1, sd, reach(pair, m), held(m));
+  if (data_.mu <= 0) return out;  // frictionless: the penetrations tell all
+  if (!(out.p1 > 0 || (rule.scheme == Scheme::MidPoint && out.p0 > 0))) {
+    // Apart over the step (as pairContact decides): the friction spring lets
+    // go, and the law is not formed.
+    out.slipped = springFrictionEnergy(data_.k, m ? m->stretch : 0.0);
     return out;
   }
   PairVec f;
@@ -721,9 +730,12 @@ double MemberContact::commit(const Model& model, State& s, int& pushed,
     committedEnergy_ += after;
     // What a held pair stored at the end of the step and does not store so
     // seen from its new side, or apart, is released (the trial energy counted
-    // it; a pushed pair booked its own above).
+    // it; a pushed pair booked its own above). From the loading point it gets
+    // now: what the new loading point took is in `crushed` already (taken
+    // from the memory's, it was booked twice: the account's balance at such a
+    // commit stood off by that much until the next step).
     if (wasHeld && !flipped)
-      letGo += crushingEnergy(data_.k, data_.restitution, m ? m->q : 0.0, o.p1) +
+      letGo += crushingEnergy(data_.k, data_.restitution, next.q, o.p1) +
                springFrictionEnergy(data_.k, o.stretch) - after;
     if (kept) nextMemory_.push_back(next);
   }

@@ -243,6 +243,13 @@ class MemberContact {
     return m && m->side ? m->side : pairSide(q0);
   }
   static bool held(const PairMemory* m) { return m && m->side; }
+  // The pair touches at t_n+1, or under the mid-point scheme at t_n (as
+  // pairContact decides): otherwise it carries no force over the step.
+  static bool touches(const PairPositions& q0, const PairPositions& q1, int side, double h,
+                      bool held, const StepRule& rule) {
+    return pairPenetration(q1, side, h, held) > 0 ||
+           (rule.scheme == Scheme::MidPoint && pairPenetration(q0, side, h, held) > 0);
+  }
   static double reach(const ContactPair& pair, const PairMemory* m) {
     return m ? m->h - m->offset : pair.h;
   }

@@ -802,6 +802,34 @@ TEST(MemberContactModel, ACommitReleasesWhatAHeldPairNoLongerStores) {
   EXPECT_EQ(as.contactEnergy(s), 0.0);
 }
 
+TEST(MemberContactModel, AHeldPairsTurnInsideTheStepIsReleasedOnce) {
+  // The ruptured corner with crushing pairs (e = 0.5): rod b's end node, held
+  // above rod a, ends the step 1 cm below its centre line, having moved down
+  // at t_n and up at t_n+1: the pair's turn fell inside the step, and its
+  // loading point becomes the peak its mass came back from. The energy
+  // before the commit less the released must be the energy after it (the
+  // crushing the new loading point took was booked twice: the account's
+  // balance stood off by that much at such commits).
+  RupturedCorner c;
+  auto& [m, a, b, corner, s, rule, factors] = c;
+  m.memberContact() = MemberContactData{1e3, 0, -1, 0.5, 0};
+  Assembler& as = *corner;
+  as.restartContactSearch();
+  as.openContacts(s);
+  s.u(3 * b + 1) = -0.01;
+  s.vn(3 * b + 1) = -1.0;
+  s.v(3 * b + 1) = 0.5;
+  ASSERT_TRUE(as.assemble(s, rule, factors, false));
+  const double before = as.contactEnergy(s);
+  EXPECT_GT(before, 0.0);
+  const double released = as.commitContact(s);
+  s.commit();
+  const double after = as.contactEnergy(s);
+  EXPECT_GT(released, 0.0);  // the turn's crushing
+  EXPECT_LT(after, before);
+  EXPECT_NEAR(before - released, after, 1e-12);
+}
+
 TEST(MemberContactModel, OpeningPairsKeepsOneMemoryPerPair) {
   // The ruptured corner, the pair (rod b's end node, rod a's last element)
   // already in memory: opening the others (whose keys sort before it) must
