@@ -26,8 +26,8 @@ constexpr int kChordIterations = 15;
 // their ultimate moment by a located event (demand up to 1 + band) do not
 // open a second hinge in a step that does not load them further.
 constexpr double kTrigger = 1e-9;
-// The shortest sub-step to an event, as a fraction of the step: an event
-// located closer to the step's start opens at the committed state. A dynamic
+// The shortest dynamic sub-step to an event, as a fraction of the step: an
+// event located closer to the step's start opens at the committed state. A
 // sub-step's velocities are its displacements over its length h (Newmark:
 // gamma / (beta h) times them), so the round-off of positions of metres, eps
 // |u|, makes velocity errors of eps |u| / h: a sub-step of 5e-9 s (f = 5e-7 of
@@ -281,7 +281,9 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   // An event within the shortest sub-step of the step's start opens at the
   // committed state (see kShortestFraction): the element that reached its
   // capacity there, at the end of its larger demand when it may open early.
-  const bool atStart = st && f > 0 && f < kShortestFraction;
+  // (Dynamic steps only: a static sub-step has no velocities, and opens at its
+  // located point.)
+  const bool atStart = st && f > 0 && f < kShortestFraction && an_.integrator_.dynamic();
   int startEnd = -1;
   if (atStart) {
     if (!found) {

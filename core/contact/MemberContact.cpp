@@ -269,9 +269,9 @@ bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, dou
       newmarkDamped ? Vec4(rule.velocity(Vec4(z1 - z0), law.zv, law.za)) : Vec4(Vec4::Zero());
   const double r1 = e1.g.dot(rate1);  // dp/dt at t_n+1
   // d(c r dp/dt)/dz1
-  const Vec4 dDamper = newmarkDamped ? Vec4(cr * (rule.cv * e1.g + e1.H * rate1) +
-                                            law.c * ramp.slope * r1 * e1.g)
-                                     : Vec4(Vec4::Zero());
+  const Vec4 dDamper =
+      newmarkDamped ? Vec4(cr * (rule.cv * e1.g + e1.H * rate1) + law.c * ramp.slope * r1 * e1.g)
+                    : Vec4(Vec4::Zero());
   const double w1 = w + cr * r1;
   const double N = std::max(w1, 0.0);
   Vec4 dNdz = Vec4::Zero();

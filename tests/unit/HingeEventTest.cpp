@@ -320,7 +320,7 @@ TEST(HingeEvent, EventsARoundOffFractionApartCloseTheEnergyBalance) {
     m.setCoord(1, Vec2(1, 0));
     m.setElement(0, std::make_unique<JumpingCapacitySpring>(std::array{0, 1}, 1000.0, 10.0, 1e9));
     m.setElement(1, std::make_unique<JumpingCapacitySpring>(std::array{0, 1}, 1000.0,
-                                                             10.0 * (1 + 1e-9), 1e9));
+                                                            10.0 * (1 + 1e-9), 1e9));
     m.bound(0) = {1, 1, 1};
     m.bound(1) = {0, 1, 1};
     m.nodalMass(1) = {1, 1, 0};

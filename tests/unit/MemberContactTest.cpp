@@ -130,7 +130,8 @@ TEST(MemberContactPair, NewmarkDashpotRampsInWhereThePairBeginsTouching) {
   PairMat K, unused;
   Eigen::Vector4d dz;  // z_n+1 - z_n, z = (x - a, b - a)
   dz << 0, hc - 0.3, 0, 0;
-  const double rate = std::abs(rule.velocity(dz, Eigen::Vector4d(law.zv), Eigen::Vector4d(law.za))(1));
+  const double rate =
+      std::abs(rule.velocity(dz, Eigen::Vector4d(law.zv), Eigen::Vector4d(law.za))(1));
   ASSERT_GT(rate, 1.0);
   for (double delta : {1e-3, 1e-6, 1e-9}) {
     ASSERT_TRUE(pairContact(q0, entering(delta, hc), side, hc, law, rule, false, f, unused));
@@ -155,7 +156,9 @@ TEST(MemberContactPair, NewmarkDashpotRampsInWhereThePairBeginsTouching) {
       fd.col(i) = (fp - fm) / (2 * h);
     }
     EXPECT_LT((fd - K).cwiseAbs().maxCoeff(), 1e-6 * K.cwiseAbs().maxCoeff())
-        << "delta " << delta << "\nK\n" << K << "\nFD\n" << fd;
+        << "delta " << delta << "\nK\n"
+        << K << "\nFD\n"
+        << fd;
   }
 }
 
