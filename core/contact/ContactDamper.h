@@ -29,6 +29,16 @@ struct DamperForce {
   double slope = 0;  // d force / d p_n+1
 };
 
+// The Newmark dashpot's ramp: the weight w = min(1, (p_n+1 - ps) / |p_n+1 -
+// p_n|) of c dp/dt while touching (p_n+1 > ps; 0 otherwise) and dw/dp_n+1.
+// Shared by the ground (damperForce) and the member pairs, whose rate is a
+// vector's (core/contact/MemberContact.cpp).
+struct DamperRamp {
+  double w = 0;
+  double slope = 0;  // dw / dp_n+1
+};
+DamperRamp damperRamp(double ps, double p0, double p1);
+
 // The coefficient (kN s/m) of the damping ratio zeta for stiffness k and mass
 // m; none for a node that does not move (m infinite) or has no mass.
 inline double damperCoefficient(double zeta, double k, double m) {

@@ -254,16 +254,23 @@ bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, dou
   }
   // Friction's N: the whole normal force while it pushes (the dashpot's too),
   // and dN/dz1.
+  // Newmark's dashpot c r dp/dt ramps in over the step's motion beyond the set
+  // as the ground's does (ContactDamper: r from 0 where the pair begins or
+  // ends touching, so that the force is continuous there).
   const bool newmarkDamped = damped && !midPoint && p1 > normal.ps;
+  const DamperRamp ramp = newmarkDamped ? damperRamp(normal.ps, p0, p1) : DamperRamp{};
+  const double cr = law.c * ramp.w;
   const Vec4 rate1 =
       newmarkDamped ? Vec4(rule.velocity(Vec4(z1 - z0), law.zv, law.za)) : Vec4(Vec4::Zero());
-  const double w1 = w + (newmarkDamped ? law.c * e1.g.dot(rate1) : 0.0);
+  const double r1 = e1.g.dot(rate1);  // dp/dt at t_n+1
+  // d(c r dp/dt)/dz1
+  const Vec4 dDamper =
+      newmarkDamped ? Vec4(cr * (rule.cv * e1.g + e1.H * rate1) + law.c * ramp.slope * r1 * e1.g)
+                    : Vec4(Vec4::Zero());
+  const double w1 = w + cr * r1;
   const double N = std::max(w1, 0.0);
   Vec4 dNdz = Vec4::Zero();
-  if (rubs && w1 > 0 && wantTangent) {
-    dNdz = dw * e1.g;
-    if (newmarkDamped) dNdz += law.c * (rule.cv * e1.g + e1.H * rate1);
-  }
+  if (rubs && w1 > 0 && wantTangent) dNdz = dw * e1.g + dDamper;
   const double scale = z0.norm() + z1.norm() + h;
   Vec4 fz;
   Mat4 kz, wdD;
@@ -271,9 +278,8 @@ bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, dou
     fz = w * e1.g;
     if (wantTangent) kz = dw * e1.g * e1.g.transpose() + w * e1.H;
     if (newmarkDamped) {
-      const double c = law.c, r1 = e1.g.dot(rate1);
-      fz += c * r1 * e1.g;
-      if (wantTangent) kz += c * e1.g * (rule.cv * e1.g + e1.H * rate1).transpose() + c * r1 * e1.H;
+      fz += cr * r1 * e1.g;
+      if (wantTangent) kz += e1.g * dDamper.transpose() + cr * r1 * e1.H;
     }
   } else {
     Penetration em;

@@ -112,6 +112,56 @@ TEST(MemberContactPair, TangentMatchesFiniteDifferencesUnderEveryRule) {
     }
 }
 
+// A node entering contact within the step under Newmark: across the segment
+// a = (0, 0), b = (1, 0) from 0.3 above to p_n+1 = delta inside the contact
+// distance hc (p_n = hc - 0.3 < 0).
+PairPositions entering(double delta, double hc) { return {{0.5, hc - delta}, {0, 0}, {1, 0}}; }
+
+TEST(MemberContactPair, NewmarkDashpotRampsInWhereThePairBeginsTouching) {
+  // Dashpot alone (the penalty only scales it): the force at p_n+1 = delta is
+  // c w dp/dt with w = delta / |p_n+1 - p_n|, so it goes to zero with delta
+  // instead of jumping to c dp/dt where the pair begins to touch.
+  const double hc = 0.12, c = 9.0;
+  const StepRule rule = TimeIntegrator::newmark(0.25, 0.5).rule(0.01);
+  const PairPositions q0{{0.5, 0.3}, {0, 0}, {1, 0}};
+  const int side = pairSide(q0);
+  PairLaw law = dampedLaw(1e-9, c);
+  PairVec f, fp, fm;
+  PairMat K, unused;
+  Eigen::Vector4d dz;  // z_n+1 - z_n, z = (x - a, b - a)
+  dz << 0, hc - 0.3, 0, 0;
+  const double rate =
+      std::abs(rule.velocity(dz, Eigen::Vector4d(law.zv), Eigen::Vector4d(law.za))(1));
+  ASSERT_GT(rate, 1.0);
+  for (double delta : {1e-3, 1e-6, 1e-9}) {
+    ASSERT_TRUE(pairContact(q0, entering(delta, hc), side, hc, law, rule, false, f, unused));
+    EXPECT_LT(f.norm(), 10 * c * rate * delta / (0.3 - hc + delta)) << "delta " << delta;
+  }
+  // Deeper than the step's motion: the whole dashpot.
+  ASSERT_TRUE(pairContact(q0, entering(0.2, hc), side, hc, law, rule, false, f, unused));
+  EXPECT_GT(f.norm(), 0.5 * c * rate);
+  // The tangent on the ramp (with the penalty and friction) against finite
+  // differences.
+  law = dampedLaw(3e3, c);
+  law.mu = 0.5;
+  law.stick = frictionStickDamping(3e3, 0.8);
+  for (double delta : {0.01, 0.05}) {
+    const PairPositions q1 = entering(delta, hc);
+    ASSERT_TRUE(pairContact(q0, q1, side, hc, law, rule, true, f, K));
+    PairMat fd;
+    const double h = 1e-7;
+    for (int i = 0; i < 6; ++i) {
+      pairContact(q0, shifted(q1, i, h), side, hc, law, rule, false, fp, unused);
+      pairContact(q0, shifted(q1, i, -h), side, hc, law, rule, false, fm, unused);
+      fd.col(i) = (fp - fm) / (2 * h);
+    }
+    EXPECT_LT((fd - K).cwiseAbs().maxCoeff(), 1e-6 * K.cwiseAbs().maxCoeff())
+        << "delta " << delta << "\nK\n"
+        << K << "\nFD\n"
+        << fd;
+  }
+}
+
 TEST(MemberContactPair, MidPointForceIsADiscreteGradient) {
   // f . (q1 - q0) = U1 - U0 exactly; with a dashpot c the work exceeds it by
   // the dissipation c (<p1> - <p0>)(p1 - p0) / h >= 0.
