@@ -21,13 +21,18 @@ struct HardeningData : HardeningValues {
   std::optional<HardeningValues> negative = std::nullopt;
 };
 
-// SOFTening LINEar Mu Ks [thetaR]: hinge opens when |M| reaches Mu; t = Mu + Ks*xi, Ks < 0,
-// down to 0; a joint made of the hinge ruptures when its relative rotation exceeds thetaR (rad).
+// SOFTening LINEar Mu Ks [thetaR [Mr [Lb]]]: hinge opens when |M| reaches Mu; t = Mu + Ks*xi,
+// Ks < 0, down to 0; a joint made of the hinge ruptures when its relative rotation exceeds
+// thetaR (rad); Lb (m): the shortest piece the member breaks into (elements/HingeToJoint.h).
 // SOFTening NEGAtive Mu Ks: other values for negative moments (Mu a magnitude).
 struct SofteningData {
   double Mu = 0, Ks = 0;
   std::optional<double> thetaR;
   double Mr = 0;  // friction moment of the joint the fully softened hinge becomes
+  // No joint forms at a node within this distance (m) of an intact joint's node: next to a
+  // broken section the moment grows as V x, and Lb ~ Mu/Vu (Vu the shear the member can
+  // carry) is the nearest a second hinge can open; 0: anywhere (a mesh's node spacing).
+  double pieceLength = 0;
   std::optional<std::pair<double, double>> negative = std::nullopt;  // Mu, Ks of negative moments
 };
 

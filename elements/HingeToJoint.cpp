@@ -38,6 +38,25 @@ std::optional<HingedBendingState> sectionOf(const Element& e) {
   return std::nullopt;
 }
 
+// The shortest piece Lb of the element's material (SOFTening's; 0: none).
+double pieceLength(const Model& model, const Element& e) {
+  const MaterialSet* mat = model.material(innermost(e).materialNumber());
+  return mat && mat->softening ? mat->softening->pieceLength : 0.0;
+}
+
+// A node within the distance lb of an intact joint's node (in the reference
+// configuration: the distance along the material), other than that node
+// itself (a second member may break at a connection where one has). Next to a
+// broken section the moment grows as V x from zero, so a member that cannot
+// carry more shear than Vu cannot open a second hinge nearer than Mu/Vu: the
+// failed hinge there lies in the broken section's zone and stays as it is.
+bool nearJoint(const Model& model, int node, double lb) {
+  if (!(lb > 0)) return false;
+  for (const Joint& j : model.joints())
+    if (j.master != node && (model.coord(j.master) - model.coord(node)).norm() < lb) return true;
+  return false;
+}
+
 // Ends of an element that already carry a joint (its wrappers' slave ends).
 std::array<bool, 2> jointedEnds(const Element& e) {
   std::array<bool, 2> ends{false, false};
@@ -115,8 +134,10 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
     // A member breaks where it carries a moment to the rest, never at a free
     // end (elements/Joints.h). With no other end the hinge stays as it is (a
     // failed one carries no moment).
+    const double shortest = pieceLength(model, model.element(e));
     auto breaks = [&](int a) {
-      return !taken[a] && !freeEnd(model, ends[a], attached[ends[a]]);
+      return !taken[a] && !freeEnd(model, ends[a], attached[ends[a]]) &&
+             !nearJoint(model, ends[a], shortest);
     };
     if (!breaks(end)) end = 1 - end;
     if (!breaks(end)) {
@@ -243,8 +264,11 @@ bool jointsWhenFailed(const Model& model, const std::vector<int>& attached, cons
   if (!asReissner(e)) return false;
   const std::array<bool, 2> taken = jointedEnds(e);
   const std::array<int, 2> ends = e.nodes();
+  const double shortest = pieceLength(model, e);
   for (int a = 0; a < 2; ++a)
-    if (!taken[a] && !freeEnd(model, ends[a], attached[ends[a]])) return true;
+    if (!taken[a] && !freeEnd(model, ends[a], attached[ends[a]]) &&
+        !nearJoint(model, ends[a], shortest))
+      return true;
   return false;
 }
 

@@ -84,13 +84,16 @@ std::vector<CreatedJoint> hingeToJoint(Model& model, State& state,
 // element already has keep their committed relative rotations and rates. An
 // element with a joint at one end gets the new one at its other end (a link
 // pinned at both ends); one with joints at both ends, or whose other end is
-// free, gets none: its failed hinge stays failed (no moment, never back at Mu). (Small
+// free, gets none: its failed hinge stays failed (no moment, never back at Mu). No
+// joint forms at a node within the material's shortest piece Lb (SOFTening's) of
+// an intact joint's node: an end there does not break either. (Small
 // displacement elements keep their free embedded hinge: the failure phase of
 // the paper.) Returns the joints made.
 std::vector<CreatedJoint> jointFailedHinges(Model& model, State& state);
 // Whether a failed hinge of element e becomes a joint there: e is geometrically
-// exact and has an end that is neither a free end nor jointed already
-// (attached: nodeAttachments(model), elements/Joints.h).
+// exact and has an end that is neither a free end, jointed already, nor within
+// its material's Lb of an intact joint (attached: nodeAttachments(model),
+// elements/Joints.h).
 bool jointsWhenFailed(const Model& model, const std::vector<int>& attached, const Element& e);
 
 }  // namespace c2d

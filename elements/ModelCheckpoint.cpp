@@ -130,6 +130,7 @@ void writeModel(std::ostream& out, const Model& model) {
       for (double x : {m.softening->Mu, m.softening->Ks}) put(out, x);
       putOptional(out, m.softening->thetaR);
       put(out, m.softening->Mr);
+      put(out, m.softening->pieceLength);
       putBool(out, m.softening->negative.has_value());
       if (const auto& n = m.softening->negative)
         for (double x : {n->first, n->second}) put(out, x);
@@ -250,6 +251,7 @@ Model readModel(std::istream& in, int minTopologyVersion) {
       for (double* x : {&s.Mu, &s.Ks}) *x = get<double>(in);
       s.thetaR = getOptional(in);
       s.Mr = get<double>(in);
+      s.pieceLength = get<double>(in);
       if (getBool(in)) {
         const double mu = get<double>(in), ks = get<double>(in);
         s.negative = std::make_pair(mu, ks);

@@ -70,7 +70,8 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
       materials.add(m.softening->Mu)
           .add(m.softening->Ks)
           .add(m.softening->thetaR.value_or(-1))
-          .add(m.softening->Mr);
+          .add(m.softening->Mr)
+          .add(m.softening->pieceLength);
     // Negative moments' laws, hinge site, interaction curve, RC section data.
     if (m.hardening && m.hardening->negative)
       for (double x : {m.hardening->negative->Mc, m.hardening->negative->My,

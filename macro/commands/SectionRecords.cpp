@@ -62,12 +62,12 @@ void bindSoftening(MeshContext& ctx, const Record& r, const CommandSpec& s, Mate
                    LawRecords& seen) {
   const bool negative = keywordMatches(r.text(1), "NEGAtive");
   const std::string syntax =
-      negative ? "SOFTening NEGAtive Mu Ks" : "SOFTening LINEar Mu Ks [thetaR [Mr]]";
+      negative ? "SOFTening NEGAtive Mu Ks" : "SOFTening LINEar Mu Ks [thetaR [Mr [Lb]]]";
   subrecord::requireText(r, s.name, syntax);
   if (!negative && !keywordMatches(r.text(1), "LINEar"))
     failAt(r, 1, "expected LINEar (or NEGAtive: the values of negative moments)",
            "write " + syntax);
-  const auto v = subrecord::values(ctx, r, s.name, negative ? 2 : 4, 2, syntax);
+  const auto v = subrecord::values(ctx, r, s.name, negative ? 2 : 5, 2, syntax);
   if (v[0] <= 0) failAt(r, 2, "Mu must be positive");
   if (v[1] >= 0) failAt(r, 3, "Ks must be negative (softening)");
   if (negative) {
@@ -91,6 +91,10 @@ void bindSoftening(MeshContext& ctx, const Record& r, const CommandSpec& s, Mate
     if (!(v[3] >= 0 && v[3] < v[0]))
       failAt(r, 5, "the joint's friction moment Mr must lie in [0, Mu)");
     mat.softening->Mr = v[3];
+  }
+  if (r.size() > 6 && !r.text(6).empty()) {
+    if (!(v[4] >= 0)) failAt(r, 6, "the shortest piece Lb must not be negative");
+    mat.softening->pieceLength = v[4];
   }
 }
 
@@ -370,6 +374,7 @@ void echoLaws(std::ostream& os, const MaterialSet& m) {
     }
     if (m.softening->thetaR && !m.rc) line(os, "Rupture thetaR", *m.softening->thetaR);
     if (m.softening->Mr > 0) line(os, "Joint friction Mr", m.softening->Mr);
+    if (m.softening->pieceLength > 0) line(os, "Shortest piece Lb", m.softening->pieceLength);
     if (m.hingeSite == HingeSite::Ends) os << "      Hinges             at the element ends\n";
   }
   if (!m.interaction.empty()) {
@@ -398,7 +403,7 @@ void registerLawRecords(CommandRegistry& r) {
        expr("Kh2", "modulus beyond My [kN m^2]")}));
   r.add(subSpec(
       "SOFTening",
-      "SOFTening LINEar Mu Ks [thetaR [Mr]]: softening hinge activated when |M| reaches Mu; "
+      "SOFTening LINEar Mu Ks [thetaR [Mr [Lb]]]: softening hinge activated when |M| reaches Mu; "
       "hinge moment Mu + Ks*jump down to zero (Ks < 0). With FINIte kinematics a fully "
       "softened hinge becomes a revolute joint during the run; a joint whose relative "
       "rotation exceeds thetaR (rad) ruptures and the pieces separate (a joint whose node "
@@ -407,13 +412,18 @@ void registerLawRecords(CommandRegistry& r) {
       "regularised over the step's relative rotation w: Mr w/sqrt(w^2 + eps^2), eps = Mr "
       "l/EI; dissipated (energy account). Only where the joint is condensed into the "
       "element: a JOINt whose slave node has more than one element (or nodal data) with "
-      "Mr > 0 is an error at its record. SOFTening NEGAtive Mu Ks (after the LINEar record): "
+      "Mr > 0 is an error at its record. Lb: the shortest piece the member breaks into: a fully "
+      "softened hinge makes no joint at a node within Lb of an intact joint's node (the failed "
+      "hinge stays, carrying no moment); next to a broken section the moment grows as V x, so "
+      "Lb ~ Mu/Vu with Vu the shear the member carries; 0 (default): the mesh's node spacing "
+      "sets the shortest piece. SOFTening NEGAtive Mu Ks (after the LINEar record): "
       "other values for negative moments; a hinge follows the law of the sign of its moment at "
       "opening.",
       {text("LINEar/NEGAtive", ""), expr("Mu", "ultimate moment [kN m]"),
        expr("Ks", "softening modulus: moment per radian of jump [kN m/rad], negative"),
        expr("thetaR", "rupture rotation of the joint [rad] (optional)"),
-       expr("Mr", "friction moment of the joint [kN m] (optional, 0)")}));
+       expr("Mr", "friction moment of the joint [kN m] (optional, 0)"),
+       expr("Lb", "shortest piece: no joint within Lb of an intact joint [m] (optional, 0)")}));
   r.add(subSpec(
       "SECTion",
       "SECTion RECTangular b h fc fy [Es [fu eu]]: a rectangular reinforced concrete section "

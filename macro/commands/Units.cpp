@@ -75,6 +75,7 @@ const std::vector<Field>& fields() {
       {S::SubRecord, "soft", "Ks", "kN m/rad"},
       {S::SubRecord, "soft", "thetaR", kRotation},
       {S::SubRecord, "soft", "Mr", kMoment},
+      {S::SubRecord, "soft", "Lb", kLength},
       {S::SubRecord, "sect", "RECTangular", ""},
       {S::SubRecord, "sect", "b", kLength},
       {S::SubRecord, "sect", "h", kLength},

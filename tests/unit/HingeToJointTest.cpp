@@ -440,5 +440,53 @@ TEST(JointFailedHinges, AFreePieceBreaksWhereItCarriesAMomentNeverAtAFreeEnd) {
   EXPECT_FALSE(freeEnd(m, 2, attached[2]));
 }
 
+// A member broken at a joint: next to it the moment grows as V x from zero, so
+// with the shear a member carries bounded (SOFTening's Lb ~ Mu/Vu) no second
+// joint forms within Lb of it, whatever the mesh. Without Lb the mesh's node
+// spacing is the shortest piece: a rod of 0.25 m elements broke into pieces of
+// one element next to each broken section, and the six-storey fall ruptured
+// twice the joints at 288 elements as at 84.
+std::vector<CreatedJoint> failNextToAJoint(double lb, double h, int failing) {
+  MaterialSet mat = test::hingedRodMaterial(0.6);
+  mat.softening->pieceLength = lb;
+  Model m;
+  m.materials()[1] = mat;
+  const int n = static_cast<int>(std::lround(2.0 / h));  // a 2 m rod
+  m.resizeNodes(n + 1);
+  for (int i = 0; i <= n; ++i) m.setCoord(i, Vec2(h * i, 0));
+  for (int e = 0; e < n; ++e)
+    m.setElement(e, std::make_unique<ReissnerFrame>(mat, std::array{e, e + 1}, m.coord(e),
+                                                    m.coord(e + 1)));
+  m.bound(0)[2] = m.bound(n)[2] = 1;  // both ends held: no free end
+  // The joint of an earlier failure at the middle node (x = 1 m).
+  const int mid = n / 2;
+  const int slave = m.addNode(m.coord(mid));
+  m.element(mid).setNodes({slave, mid + 1});
+  m.joints().push_back(Joint{mid, slave, JointForm::Condensed});
+  EXPECT_EQ(installJoints(m), 1);
+  HingedBendingState failed;
+  failed.hingeActive = failed.hingeFailed = true;
+  failed.jump.alpha = failed.jump.xi = 0.4;
+  dynamic_cast<ReissnerFrame&>(innermost(m.element(failing))).setSection(failed);
+  State s;
+  s.resize(m.numNodes());
+  return jointFailedHinges(m, s);
+}
+
+TEST(JointFailedHinges, NoJointWithinTheShortestPieceOfAnIntactJoint) {
+  // Elements of 0.25 m: the one next to the joint (x = 1.25-1.5 m) fails.
+  const std::vector<CreatedJoint> anywhere = failNextToAJoint(0, 0.25, 5);
+  ASSERT_EQ(anywhere.size(), 1u);  // without Lb: a piece of 0.25-0.5 m
+  EXPECT_TRUE(failNextToAJoint(0.6, 0.25, 5).empty());  // both ends within 0.6 m
+  // Elements of 0.5 m: the one at the joint (x = 1-1.5 m) fails again: without
+  // Lb a link of 0.5 m, with it no joint (its other end at 0.5 m).
+  EXPECT_EQ(failNextToAJoint(0, 0.5, 2).size(), 1u);
+  EXPECT_TRUE(failNextToAJoint(0.6, 0.5, 2).empty());
+  // Farther out (x = 1.5-1.75 m, 0.25 m elements): the end beyond Lb breaks.
+  const std::vector<CreatedJoint> beyond = failNextToAJoint(0.6, 0.25, 6);
+  ASSERT_EQ(beyond.size(), 1u);
+  EXPECT_EQ(beyond[0].master, 7);  // x = 1.75 m, not node 6 at 0.5 m
+}
+
 }  // namespace
 }  // namespace c2d
