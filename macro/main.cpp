@@ -187,6 +187,14 @@ int main(int argc, char** argv) {
   if (argc > 1 && mistypedSubcommand(argv[1])) return c2d::kExitUsage;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
+    // A subcommand after options (collapse2d -o out run -j 2 deck.inp): the
+    // subcommand comes first; read as a deck name it would leave its own
+    // options unknown.
+    if ((a == "run" || a == "merge") && !std::filesystem::exists(a)) {
+      std::cerr << "collapse2d: '" << a << "' comes first, before the options: collapse2d " << a
+                << " [options] ...\n";
+      return c2d::kExitUsage;
+    }
     if (a == "--help" || a == "-h") {
       if (i + 1 < argc) return c2d::printCommandHelp(std::cout, commands, argv[i + 1]) ? 0 : 1;
       usage(std::cout);
