@@ -14,6 +14,7 @@
 #include "materials/RcSection.h"
 #include "materials/SectionLaws.h"
 #include "tests/unit/ElementTestSupport.h"
+#include "tests/unit/RcTestSupport.h"
 #include "tests/unit/V2Material.h"
 
 namespace c2d::test {
@@ -22,24 +23,8 @@ namespace {
 // A beam section 0.3 x 0.5 m, C30, 3 bars of 20 mm at the bottom and 2 of
 // 16 mm at the top (kN, m).
 MaterialSet rcMaterial(Kinematics kin) {
-  MaterialSet m;
-  m.number = 1;
-  m.elementType = "FRAMe";
-  m.kinematics = kin;
-  m.density = 2.5;
-  RcSectionData d;
-  d.b = 0.3;
-  d.h = 0.5;
-  d.fc = 30e3;
-  d.fy = 500e3;
-  d.Es = 200e6;
-  d.fu = 540e3;
-  d.eu = 0.05;
   const double a20 = M_PI * 0.01 * 0.01, a16 = M_PI * 0.008 * 0.008;
-  d.bars = {{0.04, 2 * a16}, {0.45, 3 * a20}};
-  m.section = d;
-  deriveSectionLaws(m);
-  return m;
+  return rcSectionMaterial(kin, {{0.04, 2 * a16}, {0.45, 3 * a20}});
 }
 
 // The mid-point scheme (alpha = 0.1) and Newmark's, for steps of 0.01 s.

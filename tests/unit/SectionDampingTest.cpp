@@ -25,6 +25,7 @@
 #include "solvers/Analysis.h"
 #include "solvers/TimeIntegrator.h"
 #include "tests/unit/ElementTestSupport.h"
+#include "tests/unit/RcTestSupport.h"
 #include "tests/unit/V2Material.h"
 
 namespace c2d {
@@ -366,24 +367,8 @@ TEST(SectionDampingCantilever, FirstModeDecaysWithTheLogDecrementOfItsRatio) {
 // Newton iterations chatter between the bimodular axial law's two branches,
 // EA / Es As = 20, damped or not; see docs/design-notes.md, RC sections.)
 MaterialSet rcCantileverMaterial(Kinematics kin) {
-  MaterialSet mat;
-  mat.number = 1;
-  mat.elementType = "FRAMe";
-  mat.kinematics = kin;
-  mat.density = 2.5;
-  RcSectionData d;
-  d.b = 0.3;
-  d.h = 0.5;
-  d.fc = 30e3;
-  d.fy = 500e3;
-  d.Es = 200e6;
-  d.fu = 540e3;
-  d.eu = 0.05;
   const double a20 = 3 * kPi * 0.01 * 0.01;
-  d.bars = {{0.05, a20}, {0.45, a20}};
-  mat.section = d;
-  deriveSectionLaws(mat);
-  return mat;
+  return test::rcSectionMaterial(kin, {{0.05, a20}, {0.45, a20}});
 }
 
 TEST(SectionDampingCantilever, LawsFollowingTheAxialForceDecayAlike) {
