@@ -143,6 +143,10 @@ std::string runSummaryText(const RunSummary& s) {
   }
   std::snprintf(buf, sizeof buf, ", energy error %.2e", s.energyError);
   out += buf;
+  if (s.energyGained > kEnergyBalanceTolerance) {
+    std::snprintf(buf, sizeof buf, ", energy gained %.2e", s.energyGained);
+    out += buf;
+  }
   std::snprintf(buf, sizeof buf, ", %.2f s", s.seconds);
   return out + buf;
 }
@@ -192,6 +196,7 @@ std::vector<std::string> runWarnings(const RunSummary& s) {
                   s.energyError, kEnergyBalanceTolerance);
     out.push_back(buf);
   }
+  if (s.gainStep > 0) out.push_back("warning: " + energyGainText(s.energyGained, s.gainStep, s.gainTime));
   if (s.crossings > 0) {
     std::snprintf(buf, sizeof buf,
                   "warning: %d pair%s of members cross each other at the end (listed in the "
@@ -445,6 +450,11 @@ class Walker {
     total_.cuts += s.cuts;
     total_.hinges += s.hinges;
     total_.energyError = std::max(total_.energyError, s.energyError);
+    if (s.energyGained > total_.energyGained) {
+      total_.energyGained = s.energyGained;
+      total_.gainStep = s.gainStep;
+      total_.gainTime = s.gainTime;
+    }
     total_.seconds += s.seconds;
     total_.dynamic = total_.dynamic || s.dynamic;
     total_.maxMomentRatio = std::max(total_.maxMomentRatio, s.maxMomentRatio);

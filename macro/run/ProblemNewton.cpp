@@ -27,6 +27,9 @@ std::string ProblemRun::historyText() const {
 
 std::string ProblemRun::advice(const std::string& why, bool lineSearch, int iterations) const {
   std::ostringstream os;
+  if (energy_.gainStep() > 0)
+    os << "    " << energyGainText(energy_.gained(), energy_.gainStep(), energy_.gainTime())
+       << "\n";
   os << "    to try:";
   if (why.find("singular") != std::string::npos) {
     os << " the model may be a mechanism or have lost all stiffness somewhere: check the "

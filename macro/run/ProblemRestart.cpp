@@ -24,13 +24,13 @@ std::string ProblemRun::runState() const {
   put(out, hingeCount_);
   putBool(out, cutting_);
   for (double x :
-       {dtMin_, dtNominal_, energy0_, energyScale_, energyError_, maxMomentRatio_, peakGroundForce_,
+       {dtMin_, dtNominal_, maxMomentRatio_, peakGroundForce_,
         peakGroundTime_, peakKinetic_, restRatio_, lastMoving_, deepest_.depth, deepestTime_})
     put(out, x);
   for (int x : {stepsSinceCut_, cuts_, topology_.jointsFormed, topology_.jointsRuptured, removed_,
                 deepest_.node, topology_.hinges, topology_.fractures})
     put(out, x);
-  putBool(out, energyStarted_);
+  energy_.save(out);
   putBool(out, dynamicSeen_);
   return out.str();
 }
@@ -44,7 +44,7 @@ void ProblemRun::setRunState(const std::string& bytes) {
     throw CheckpointError("hinge steps do not match the element count");
   hingeCount_ = get<int>(in);
   cutting_ = getBool(in);
-  for (double* x : {&dtMin_, &dtNominal_, &energy0_, &energyScale_, &energyError_, &maxMomentRatio_,
+  for (double* x : {&dtMin_, &dtNominal_, &maxMomentRatio_,
                     &peakGroundForce_, &peakGroundTime_, &peakKinetic_, &restRatio_, &lastMoving_,
                     &deepest_.depth, &deepestTime_})
     *x = get<double>(in);
@@ -53,7 +53,7 @@ void ProblemRun::setRunState(const std::string& bytes) {
     *x = get<int>(in);
   if (deepest_.node >= model_.numNodes())
     throw CheckpointError("the deepest node is not in the model");
-  energyStarted_ = getBool(in);
+  energy_.load(in);
   dynamicSeen_ = getBool(in);
 }
 

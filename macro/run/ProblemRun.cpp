@@ -193,7 +193,10 @@ RunSummary ProblemRun::summary() const {
   s.factorizations = analysis_->totalFactorizations();
   s.cuts = cuts_;
   s.hinges = hingeCount_ + topology_.hinges;
-  s.energyError = energyError_;
+  s.energyError = energy_.error();
+  s.energyGained = energy_.gained();
+  s.gainStep = energy_.gainStep();
+  s.gainTime = energy_.gainTime();
   s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   s.dynamic = dynamicSeen_;
   s.maxMomentRatio = maxMomentRatio_;
@@ -435,20 +438,10 @@ void ProblemRun::onCommit() {
     }
   }
   dynamicSeen_ = dynamicSeen_ || analysis_->integrator().dynamic();
-  {
-    const double scale = std::abs(en.kinetic) + std::abs(en.strain) + std::abs(en.contact) +
-                         std::abs(en.external) + std::abs(en.dissipated);
-    if (!energyStarted_) {
-      energy0_ = en.balance();
-      energyStarted_ = true;
-    }
-    energyScale_ = std::max(energyScale_, scale);
-    if (energyScale_ > 0)
-      energyError_ = std::max(energyError_, std::abs(en.balance() - energy0_) / energyScale_);
-    if (analysis_->integrator().dynamic()) {
-      peakKinetic_ = std::max(peakKinetic_, en.kinetic);
-      if (en.kinetic > restRatio_ * peakKinetic_) lastMoving_ = s.t;
-    }
+  energy_.onCommit(en, analysis_->integrator().dynamic(), s.step, s.t);
+  if (analysis_->integrator().dynamic()) {
+    peakKinetic_ = std::max(peakKinetic_, en.kinetic);
+    if (en.kinetic > restRatio_ * peakKinetic_) lastMoving_ = s.t;
   }
   outputs_->onCommit(model_, analysis_->state());
   progress(false);

@@ -14,6 +14,7 @@
 #include "core/Debris.h"
 #include "core/Model.h"
 #include "macro/deck/Deck.h"
+#include "macro/run/EnergyWatch.h"
 #include "macro/run/RunCursor.h"
 #include "macro/run/RunOutputs.h"
 #include "macro/commands/SolutionCommand.h"
@@ -53,6 +54,12 @@ struct RunSummary {
   // contact - external + dissipated (solvers/EnergyAccount.h): how well the run's energy
   // account closes, in static and dynamic runs
   double energyError = 0;
+  // The energy the motion gained without work per the energy put in
+  // (macro/run/EnergyWatch.h), and the step and time it passed the warning's
+  // tolerance (0: it did not).
+  double energyGained = 0;
+  int gainStep = 0;
+  double gainTime = 0;
   double seconds = 0;
   bool dynamic = false;         // some step was dynamic
   double maxMomentRatio = 0;    // largest |M|/Mu of an element with a softening law, any time
@@ -224,8 +231,7 @@ class ProblemRun {
   int folded_ = 0;
   int blastsNotMade_ = 0;
   double maxMomentRatio_ = 0;
-  double energy0_ = 0, energyScale_ = 0, energyError_ = 0;
-  bool energyStarted_ = false;
+  EnergyWatch energy_;
   bool dynamicSeen_ = false;
   // TIME,REST: the kinetic energy's peak, the ratio watched (0: none yet) and
   // the last committed time at which the kinetic energy was above it.
