@@ -417,14 +417,14 @@ void registerLawRecords(CommandRegistry& r) {
       "joint's node or of a free end, a ruptured joint's included (the failed hinge stays, "
       "carrying no moment); next to a section that carries no moment the moment grows as V x, "
       "so Lb = Mu/Vu with Vu the shear capacity of the section (e.g. Vc + Vs by ACI 318); 0 "
-      "(default): the mesh's node spacing sets the shortest piece. SOFTening NEGAtive Mu Ks (after the LINEar record): "
-      "other values for negative moments; a hinge follows the law of the sign of its moment at "
-      "opening.",
+      "(default): the mesh's node spacing sets the shortest piece. SOFTening NEGAtive Mu Ks "
+      "(after the LINEar record): other values for negative moments; a hinge follows the law of "
+      "the sign of its moment at opening.",
       {text("LINEar/NEGAtive", ""), expr("Mu", "ultimate moment [kN m]"),
        expr("Ks", "softening modulus: moment per radian of jump [kN m/rad], negative"),
        expr("thetaR", "rupture rotation of the joint [rad] (optional)"),
        expr("Mr", "friction moment of the joint [kN m] (optional, 0)"),
-       expr("Lb", "shortest piece: no joint within Lb of a joint or a free end [m] (optional, 0)")}));
+       expr("Lb", "shortest piece: no joint within Lb of a joint or free end [m] (optional, 0)")}));
   r.add(subSpec(
       "SECTion",
       "SECTion RECTangular b h fc fy [Es [fu eu]]: a rectangular reinforced concrete section "
