@@ -20,6 +20,8 @@ namespace {
 
 // Relative tolerance under which the two end moments of a hinge element count as equal.
 constexpr double kTieTolerance = 1e-12;
+// Nodes nearer than this share of Lb stand at one place (a ruptured joint's).
+constexpr double kCoincident = 1e-9;
 
 struct Relative {
   int master = -1;
@@ -44,16 +46,29 @@ double pieceLength(const Model& model, const Element& e) {
   return mat && mat->softening ? mat->softening->pieceLength : 0.0;
 }
 
-// A node within the distance lb of an intact joint's node (in the reference
-// configuration: the distance along the material), other than that node
-// itself (a second member may break at a connection where one has). Next to a
-// broken section the moment grows as V x from zero, so a member that cannot
-// carry more shear than Vu cannot open a second hinge nearer than Mu/Vu: the
-// failed hinge there lies in the broken section's zone and stays as it is.
-bool nearJoint(const Model& model, int node, double lb) {
+// A node within the distance lb of a section that carries no moment (in the
+// reference configuration: the distance along the material): an intact
+// joint's node other than that node itself (a second member may break at a
+// connection where one has), or a free end other than one at the node's own
+// place (the piece a ruptured joint set free: the members left at the
+// connection may still break there). Next to a section with no moment the
+// moment grows as V x from zero, so a member that cannot carry more shear
+// than Vu cannot open a second hinge nearer than Mu/Vu: the failed hinge
+// there lies in that section's zone and stays as it is. A ruptured joint
+// leaves a free end where it was: were the failed hinges it kept from
+// jointing released then, they would become joints far beyond thetaR and
+// rupture at once, each setting free a piece shorter than Lb.
+bool nearJoint(const Model& model, const std::vector<int>& attached, int node, double lb) {
   if (!(lb > 0)) return false;
+  const Vec2 x = model.coord(node);
   for (const Joint& j : model.joints())
-    if (j.master != node && (model.coord(j.master) - model.coord(node)).norm() < lb) return true;
+    if (j.master != node && (model.coord(j.master) - x).norm() < lb) return true;
+  // attached may predate the joints' nodes made in this pass: none is free.
+  for (int n = 0; n < static_cast<int>(attached.size()); ++n) {
+    if (n == node || !freeEnd(model, n, attached[n])) continue;
+    const double d = (model.coord(n) - x).norm();
+    if (d < lb && d > kCoincident * lb) return true;
+  }
   return false;
 }
 
@@ -137,7 +152,7 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
     const double shortest = pieceLength(model, model.element(e));
     auto breaks = [&](int a) {
       return !taken[a] && !freeEnd(model, ends[a], attached[ends[a]]) &&
-             !nearJoint(model, ends[a], shortest);
+             !nearJoint(model, attached, ends[a], shortest);
     };
     if (!breaks(end)) end = 1 - end;
     if (!breaks(end)) {
@@ -267,7 +282,7 @@ bool jointsWhenFailed(const Model& model, const std::vector<int>& attached, cons
   const double shortest = pieceLength(model, e);
   for (int a = 0; a < 2; ++a)
     if (!taken[a] && !freeEnd(model, ends[a], attached[ends[a]]) &&
-        !nearJoint(model, ends[a], shortest))
+        !nearJoint(model, attached, ends[a], shortest))
       return true;
   return false;
 }

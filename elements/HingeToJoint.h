@@ -86,13 +86,14 @@ std::vector<CreatedJoint> hingeToJoint(Model& model, State& state,
 // pinned at both ends); one with joints at both ends, or whose other end is
 // free, gets none: its failed hinge stays failed (no moment, never back at Mu). No
 // joint forms at a node within the material's shortest piece Lb (SOFTening's) of
-// an intact joint's node: an end there does not break either. (Small
+// an intact joint's node or of a free end (a ruptured joint's pieces): an end
+// there does not break either. (Small
 // displacement elements keep their free embedded hinge: the failure phase of
 // the paper.) Returns the joints made.
 std::vector<CreatedJoint> jointFailedHinges(Model& model, State& state);
 // Whether a failed hinge of element e becomes a joint there: e is geometrically
 // exact and has an end that is neither a free end, jointed already, nor within
-// its material's Lb of an intact joint (attached: nodeAttachments(model),
+// its material's Lb of an intact joint or a free end (attached: nodeAttachments(model),
 // elements/Joints.h).
 bool jointsWhenFailed(const Model& model, const std::vector<int>& attached, const Element& e);
 

@@ -413,17 +413,18 @@ void registerLawRecords(CommandRegistry& r) {
       "l/EI; dissipated (energy account). Only where the joint is condensed into the "
       "element: a JOINt whose slave node has more than one element (or nodal data) with "
       "Mr > 0 is an error at its record. Lb: the shortest piece the member breaks into: a fully "
-      "softened hinge makes no joint at a node within Lb of an intact joint's node (the failed "
-      "hinge stays, carrying no moment); next to a broken section the moment grows as V x, so "
-      "Lb ~ Mu/Vu with Vu the shear the member carries; 0 (default): the mesh's node spacing "
-      "sets the shortest piece. SOFTening NEGAtive Mu Ks (after the LINEar record): "
-      "other values for negative moments; a hinge follows the law of the sign of its moment at "
-      "opening.",
+      "softened hinge makes no joint at a node within Lb (reference distance) of an intact "
+      "joint's node or of a free end, a ruptured joint's included (the failed hinge stays, "
+      "carrying no moment); next to a section that carries no moment the moment grows as V x, "
+      "so Lb = Mu/Vu with Vu the shear capacity of the section (e.g. Vc + Vs by ACI 318); 0 "
+      "(default): the mesh's node spacing sets the shortest piece. SOFTening NEGAtive Mu Ks "
+      "(after the LINEar record): other values for negative moments; a hinge follows the law of "
+      "the sign of its moment at opening.",
       {text("LINEar/NEGAtive", ""), expr("Mu", "ultimate moment [kN m]"),
        expr("Ks", "softening modulus: moment per radian of jump [kN m/rad], negative"),
        expr("thetaR", "rupture rotation of the joint [rad] (optional)"),
        expr("Mr", "friction moment of the joint [kN m] (optional, 0)"),
-       expr("Lb", "shortest piece: no joint within Lb of an intact joint [m] (optional, 0)")}));
+       expr("Lb", "shortest piece: no joint within Lb of a joint or free end [m] (optional, 0)")}));
   r.add(subSpec(
       "SECTion",
       "SECTion RECTangular b h fc fy [Es [fu eu]]: a rectangular reinforced concrete section "

@@ -446,7 +446,10 @@ TEST(JointFailedHinges, AFreePieceBreaksWhereItCarriesAMomentNeverAtAFreeEnd) {
 // spacing is the shortest piece: a rod of 0.25 m elements broke into pieces of
 // one element next to each broken section, and the six-storey fall ruptured
 // twice the joints at 288 elements as at 84.
-std::vector<CreatedJoint> failNextToAJoint(double lb, double h, int failing) {
+// ruptured: the joint at the middle has ruptured, its two pieces' ends there
+// free.
+std::vector<CreatedJoint> failNextToAJoint(double lb, double h, int failing,
+                                           bool ruptured = false) {
   MaterialSet mat = test::hingedRodMaterial(0.6);
   mat.softening->pieceLength = lb;
   Model m;
@@ -462,8 +465,10 @@ std::vector<CreatedJoint> failNextToAJoint(double lb, double h, int failing) {
   const int mid = n / 2;
   const int slave = m.addNode(m.coord(mid));
   m.element(mid).setNodes({slave, mid + 1});
-  m.joints().push_back(Joint{mid, slave, JointForm::Condensed});
-  EXPECT_EQ(installJoints(m), 1);
+  if (!ruptured) {
+    m.joints().push_back(Joint{mid, slave, JointForm::Condensed});
+    EXPECT_EQ(installJoints(m), 1);
+  }
   HingedBendingState failed;
   failed.hingeActive = failed.hingeFailed = true;
   failed.jump.alpha = failed.jump.xi = 0.4;
@@ -486,6 +491,26 @@ TEST(JointFailedHinges, NoJointWithinTheShortestPieceOfAnIntactJoint) {
   const std::vector<CreatedJoint> beyond = failNextToAJoint(0.6, 0.25, 6);
   ASSERT_EQ(beyond.size(), 1u);
   EXPECT_EQ(beyond[0].master, 7);  // x = 1.75 m, not node 6 at 0.5 m
+}
+
+// A ruptured joint leaves free ends, which carry no moment either: the failed
+// hinges it kept from jointing stay failed instead of becoming joints beyond
+// thetaR that rupture at once, each setting free a piece shorter than Lb (the
+// six-storey fall at 288 elements: 10-15 of its 46-59 ruptures).
+TEST(JointFailedHinges, NoJointWithinTheShortestPieceOfAFreeEnd) {
+  // The element next to the right piece's free end (x = 1.25-1.5 m) fails.
+  const std::vector<CreatedJoint> anywhere = failNextToAJoint(0, 0.25, 5, true);
+  ASSERT_EQ(anywhere.size(), 1u);  // without Lb: a piece of 0.25-0.5 m
+  EXPECT_TRUE(failNextToAJoint(0.6, 0.25, 5, true).empty());
+  // The left piece (x = 0.25-0.5 m): node 2 lies within 0.6 m of its free
+  // end at x = 1 m, node 1 beyond.
+  const std::vector<CreatedJoint> left = failNextToAJoint(0.6, 0.25, 1, true);
+  ASSERT_EQ(left.size(), 1u);
+  EXPECT_EQ(left[0].master, 1);
+  // Farther out (x = 1.5-1.75 m): the end beyond Lb breaks.
+  const std::vector<CreatedJoint> beyond = failNextToAJoint(0.6, 0.25, 6, true);
+  ASSERT_EQ(beyond.size(), 1u);
+  EXPECT_EQ(beyond[0].master, 7);
 }
 
 }  // namespace
