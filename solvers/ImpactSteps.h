@@ -59,6 +59,12 @@ class ImpactSteps {
   // A step was taken that was not checked (a static one, a located event's
   // sub-step): no proposal.
   void reset() { proposal_ = 0; }
+  // A failed step is cut to dt (AUTO,CUT halved the deck's step): a proposal
+  // not longer than dt would take the step again as it was, through the same
+  // iterates, so it is halved with it.
+  void cut(double dt) {
+    if (proposal_ > 0 && proposal_ <= dt) proposal_ *= 0.5;
+  }
 
   int rejected() const { return rejected_; }
 
