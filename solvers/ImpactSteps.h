@@ -32,7 +32,9 @@
 // contact is in such a step; the next step of the deck's DT (TIME) is then
 // taken in parts (Analysis::nextStepTime), which AUTO,CUT's cutting and
 // regrowth of DT leave as they are. No step is shortened below
-// kFloor of DT.
+// kFloor of DT. A proposed step that fails and is cut is halved with DT when
+// it is not longer than the halved DT (cut()): halving DT alone took it again
+// as it was.
 #include <istream>
 #include <ostream>
 #include <vector>
