@@ -32,7 +32,9 @@
 // contact is in such a step; the next step of the deck's DT (TIME) is then
 // taken in parts (Analysis::nextStepTime), which AUTO,CUT's cutting and
 // regrowth of DT leave as they are. No step is shortened below
-// kFloor of DT.
+// kFloor of DT. A proposed step that fails and is cut is halved with DT when
+// it is not longer than the halved DT (cut()): halving DT alone took it again
+// as it was.
 #include <istream>
 #include <ostream>
 #include <vector>
@@ -59,6 +61,12 @@ class ImpactSteps {
   // A step was taken that was not checked (a static one, a located event's
   // sub-step): no proposal.
   void reset() { proposal_ = 0; }
+  // A failed step is cut to dt (AUTO,CUT halved the deck's step): a proposal
+  // not longer than dt would take the step again as it was, through the same
+  // iterates, so it is halved with it.
+  void cut(double dt) {
+    if (proposal_ > 0 && proposal_ <= dt) proposal_ *= 0.5;
+  }
 
   int rejected() const { return rejected_; }
 

@@ -83,6 +83,7 @@ Flow ProblemRun::retryWithCut(const Macro& loop, const std::string& why) {
     stepsSinceCut_ = 0;
     analysis_->back();
     analysis_->setDt(dt);
+    analysis_->impactSteps().cut(dt);
     scalePathIncrement();
     log_ << "  cut    step to dt = " << fmt("%.4e", dt) << "\n";
     const Status st = analysis_->advance();

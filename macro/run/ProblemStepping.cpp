@@ -62,6 +62,7 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::op
     stepsSinceCut_ = 0;
     analysis_->back();
     analysis_->setDt(dt);
+    analysis_->impactSteps().cut(dt);
     scalePathIncrement();
     log_ << "  cut    step to dt = " << fmt("%.4e", dt) << "\n";
     st = analysis_->advance();
