@@ -265,9 +265,9 @@ bool MemberContact::evaluate(const ContactPair& pair, const Model& model, const 
   const double h = reach(pair, m);
   // Most candidates are apart (a twelfth carries a force): their law (the
   // dashpot's pair mass and rates) is not formed.
-  if (!touches(q0, q1, sd, h, held(m), rule)) return false;
+  if (!touches(q0, q1, sd, h, face(m), rule)) return false;
   return pairContact(q0, q1, sd, h, law(pair, s, q0, m), rule, wantTangent, force, tangent, nullptr,
-                     held(m));
+                     face(m));
 }
 
 PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, const State& s,
@@ -281,18 +281,18 @@ PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, 
     return out;
   }
   const int sd = side(m, q0);
-  if (full) *full = pairPenetration(q1, sd, distance(pair, m), held(m));
+  if (full) *full = pairPenetration(q1, sd, distance(pair, m), face(m));
   PairOutcome out;
   if (q0.x == q1.x && q0.a == q1.a && q0.b == q1.b) {
     // No step (the committed state itself): nothing slides or lets go; the
     // energy is that of the memory (so that the account sees no jump where a
     // commit in place or a topology change evaluates it).
-    out.p0 = out.p1 = pairPenetration(q1, sd, reach(pair, m), held(m));
+    out.p0 = out.p1 = pairPenetration(q1, sd, reach(pair, m), face(m));
     out.stretch = m ? m->stretch : 0.0;
     return out;
   }
-  out.p0 = pairPenetration(q0, sd, reach(pair, m), held(m));
-  out.p1 = pairPenetration(q1, sd, reach(pair, m), held(m));
+  out.p0 = pairPenetration(q0, sd, reach(pair, m), face(m));
+  out.p1 = pairPenetration(q1, sd, reach(pair, m), face(m));
   if (data_.mu <= 0) return out;  // frictionless: the penetrations tell all
   if (!(out.p1 > 0 || (rule.scheme == Scheme::MidPoint && out.p0 > 0))) {
     // Apart over the step (as pairContact decides): the friction spring lets
@@ -302,7 +302,7 @@ PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, 
   }
   PairVec f;
   PairMat k;
-  pairContact(q0, q1, sd, reach(pair, m), law(pair, s, q0, m), rule, false, f, k, &out, held(m));
+  pairContact(q0, q1, sd, reach(pair, m), law(pair, s, q0, m), rule, false, f, k, &out, face(m));
   return out;
 }
 
@@ -345,11 +345,11 @@ void MemberContact::motions(const Model& model, const State& s,
     const PairMemory* m = memory(s, pair.key());
     const int sd = side(m, q0);
     const double h = reach(pair, m);
-    const double p0 = pairPenetration(q0, sd, h, held(m)), p1 = pairPenetration(q1, sd, h, held(m));
+    const double p0 = pairPenetration(q0, sd, h, face(m)), p1 = pairPenetration(q1, sd, h, face(m));
     if (p0 <= 0 && p1 <= 0) continue;
     const PairLaw l = law(pair, s, q0, m);
-    out.push_back({p0, p1, pairPenetrationRate(q0, pairValues(s.vn, pair), sd, h, held(m)),
-                   pairPenetrationRate(q1, pairValues(s.v, pair), sd, h, held(m)), l.k,
+    out.push_back({p0, p1, pairPenetrationRate(q0, pairValues(s.vn, pair), sd, h, face(m)),
+                   pairPenetrationRate(q1, pairValues(s.v, pair), sd, h, face(m)), l.k,
                    l.restitution, l.q, l.c, pairMass(masses_, pair, q0)});
   }
 }
@@ -388,7 +388,7 @@ double MemberContact::commit(const Model& model, State& s, int& pushed,
       const double plain = std::max(m ? m->q : 0.0, o.p1);
       // A turn inside the step: the peak the pair's mass came back from.
       next.q = near ? pairLoadingPoint(data_, masses_, pair, s, q0, q1, side(m, q0), reach(pair, m),
-                                       held(m), plain, o.p1)
+                                       face(m), plain, o.p1)
                     : plain;
       crushed += crushingEnergy(data_.k, data_.restitution, plain, o.p1) -
                  crushingEnergy(data_.k, data_.restitution, next.q, o.p1);
@@ -398,7 +398,7 @@ double MemberContact::commit(const Model& model, State& s, int& pushed,
         if (next.side) next.side = -next.side;
         // Seen from the new side the penetration is smaller (the loading point
         // kept, so that the energy only drops).
-        const double seen = pairPenetration(q1, -was, reach(pair, m), held(&next));
+        const double seen = pairPenetration(q1, -was, reach(pair, m), face(&next));
         released += crushingEnergy(data_.k, data_.restitution, next.q, o.p1) -
                     crushingEnergy(data_.k, data_.restitution, next.q, seen);
         if (seen <= 0) next.q = 0;
@@ -412,7 +412,7 @@ double MemberContact::commit(const Model& model, State& s, int& pushed,
     // gained keeps it there), and when the offset is gone.
     const bool wasHeld = next.side != 0;
     if (next.side && (!near || next.offset <= 0 ||
-                      pairPenetration(q1, next.side, 0.0, true) < -kLetGo * next.h))
+                      pairPenetration(q1, next.side, 0.0, next.h) < -kLetGo * next.h))
       next.side = 0;
     // A held node can press on beyond the reach of the pair's boxes at the
     // committed positions alone (far on the wrong side beyond an end), where
@@ -423,7 +423,7 @@ double MemberContact::commit(const Model& model, State& s, int& pushed,
     const double after =
         kept && nearAfter
             ? crushingEnergy(data_.k, data_.restitution, next.q,
-                             pairPenetration(q1, side(&next, q1), reach(pair, &next), held(&next))) +
+                             pairPenetration(q1, side(&next, q1), reach(pair, &next), face(&next))) +
                   springFrictionEnergy(data_.k, next.stretch)
             : 0.0;
     committedEnergy_ += after;
@@ -495,7 +495,7 @@ void MemberContact::openPairs(const Model& model, State& s) const {
     // centre line of the member it was joined to) has no side of its own.
     const bool onSegment = pairPenetration(q1, pairSide(q1), pair.h) >= (1 - kOnSegment) * pair.h;
     const int sd = onSegment ? membersSide(pair, model, s, q1) : 0;
-    const double p = pairPenetration(q1, sd ? sd : pairSide(q1), pair.h, sd != 0);
+    const double p = pairPenetration(q1, sd ? sd : pairSide(q1), pair.h, sd ? pair.h : 0.0);
     if (p <= 0) continue;
     nextMemory_.push_back({pair.key(), 0.0, p, 0.0, pair.h, sd});
   }

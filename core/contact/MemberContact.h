@@ -53,6 +53,11 @@
 // with the span's h + |d| and with the rounded end's h - rho across the line,
 // where the pieces of a ruptured joint lie end to end), and a commit does not
 // turn it to the wrong side unless it went through by the full distance.
+// Inside the span it also meets the segment's end faces: its penetration
+// grows with its distance into the span from the nearer end (up to the full
+// contact distance), so that pieces pressed end to end bear on each other
+// instead of sliding their tips past each other (core/contact/PairContact.cpp
+// endFace).
 // (Seen from its side at t_n, a node that the first step took a hundredth of
 // a millimetre past the line was held on the wrong side from then on, and the
 // pieces of a ruptured joint ended crossed.)
@@ -196,13 +201,15 @@ class MemberContact {
   static int side(const PairMemory* m, const PairPositions& q0) {
     return m && m->side ? m->side : pairSide(q0);
   }
-  static bool held(const PairMemory* m) { return m && m->side; }
+  // A held pair's end faces scale with the contact distance it met at (0: not
+  // held; core/contact/PairContact.h).
+  static double face(const PairMemory* m) { return m && m->side ? m->h : 0.0; }
   // The pair touches at t_n+1, or under the mid-point scheme at t_n (as
   // pairContact decides): otherwise it carries no force over the step.
   static bool touches(const PairPositions& q0, const PairPositions& q1, int side, double h,
-                      bool held, const StepRule& rule) {
-    return pairPenetration(q1, side, h, held) > 0 ||
-           (rule.scheme == Scheme::MidPoint && pairPenetration(q0, side, h, held) > 0);
+                      double face, const StepRule& rule) {
+    return pairPenetration(q1, side, h, face) > 0 ||
+           (rule.scheme == Scheme::MidPoint && pairPenetration(q0, side, h, face) > 0);
   }
   static double reach(const ContactPair& pair, const PairMemory* m) {
     return m ? m->h - m->offset : pair.h;

@@ -93,8 +93,57 @@ void sidePenetration(const Vec4& z, int side, double h, bool wantHessian, Penetr
   out.H.bottomRightCorner<2, 2>() = -s * h22;
 }
 
+// A held node inside the span (the pieces of a ruptured joint): the end
+// faces. The side's penetration alone let a node on the centre line slide
+// into the span at p = h (about 0 with the whole distance offset): two pieces
+// lying end to end and pressed together slid their tips past each other,
+// each pushed only across the other's line, where the two held sides leave
+// no position to go to, and ended crossed (the six-storey fall: 2-8 cm).
+// Added to it, B(x), x the node's distance into the span from the nearer
+// end: x^2 / (2 w) up to w, then x - w / 2, turning over another w to its
+// cap W (w = kFaceRamp and W = the pair's full contact distance): B and its
+// slope are zero at the end, so that the penetration stays continuous in
+// value and slope with the held side's beyond the end; a held node then
+// enters the span only as far from the line (on its side) as B, is pushed
+// back out of it along the segment as well as across, and one clear of the
+// line by the full distance is not pushed.
+constexpr double kFaceRamp = 0.01;
+
+void endFace(const Vec4& z, double face, bool wantHessian, Penetration& out) {
+  const Vec2 r2 = z.tail<2>();
+  const double l = r2.norm();
+  if (l == 0) return;
+  Penetration x;  // the distance into the span from the nearer end
+  slipCoordinate(z, wantHessian, x);
+  if (x.p > 0.5 * l) {  // from b: l - c
+    x.p = l - x.p;
+    x.g = -x.g;
+    x.g.tail<2>() += r2 / l;
+    if (wantHessian) {
+      x.H = -x.H;
+      x.H.bottomRightCorner<2, 2>() += (Mat2::Identity() - r2 * r2.transpose() / (l * l)) / l;
+    }
+  }
+  const double w = kFaceRamp * face, cap = face;
+  if (x.p <= 0 || w <= 0) return;
+  double B, Bx, Bxx;  // B(x), B', B''
+  if (x.p < w) {
+    B = x.p * x.p / (2 * w), Bx = x.p / w, Bxx = 1 / w;
+  } else if (x.p <= cap) {
+    B = x.p - 0.5 * w, Bx = 1, Bxx = 0;
+  } else if (x.p < cap + w) {
+    const double y = x.p - cap;
+    B = x.p - 0.5 * w - y * y / (2 * w), Bx = 1 - y / w, Bxx = -1 / w;
+  } else {
+    B = cap, Bx = 0, Bxx = 0;
+  }
+  out.p += B;
+  out.g += Bx * x.g;
+  if (wantHessian) out.H += Bx * x.H + Bxx * x.g * x.g.transpose();
+}
+
 void penetration(const Vec4& z, int side, double h, bool wantHessian, Penetration& out,
-                 bool held = false) {
+                 double face = 0) {
   out.g.setZero();
   if (wantHessian) out.H.setZero();
   const Vec2 r1 = z.head<2>(), r2 = z.tail<2>();
@@ -109,7 +158,7 @@ void penetration(const Vec4& z, int side, double h, bool wantHessian, Penetratio
     // where the node crosses the line beyond the end (d = 0: value and slope
     // again), so that a node held end to end with the member (a ruptured
     // joint's pieces in line) meets no kink in its force there.
-    if (held && side * (r2.x() * r1.y() - r2.y() * r1.x()) < 0) {
+    if (face > 0 && side * (r2.x() * r1.y() - r2.y() * r1.x()) < 0) {
       const Vec2 r = xi < 0 ? r1 : Vec2(r1 - r2);
       Penetration end;  // -rho, -grad rho, -Hess rho
       endPenetration(r, xi > 1, 0.0, wantHessian, end);
@@ -143,6 +192,7 @@ void penetration(const Vec4& z, int side, double h, bool wantHessian, Penetratio
                   : endPenetration(r1 - r2, true, h, wantHessian, out);
   }
   sidePenetration(z, side, h, wantHessian, out);
+  if (face > 0) endFace(z, face, wantHessian, out);
 }
 
 Vec4 relative(const PairPositions& q) {
@@ -173,16 +223,16 @@ int pairSide(const PairPositions& q) {
   return r2.x() * r1.y() - r2.y() * r1.x() >= 0 ? 1 : -1;
 }
 
-double pairPenetration(const PairPositions& q, int side, double h, bool held) {
+double pairPenetration(const PairPositions& q, int side, double h, double face) {
   Penetration p;
-  penetration(relative(q), side, h, false, p, held);
+  penetration(relative(q), side, h, false, p, face);
   return p.p;
 }
 
 double pairPenetrationRate(const PairPositions& q, const PairPositions& v, int side, double h,
-                           bool held) {
+                           double face) {
   Penetration p;
-  penetration(relative(q), side, h, false, p, held);
+  penetration(relative(q), side, h, false, p, face);
   return p.g.dot(relative(v));
 }
 
@@ -218,14 +268,14 @@ Vec4 discreteGradient(const Vec4& z0, const Vec4& z1, double f0, double f1, cons
 
 bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, double h,
                  const PairLaw& law, const StepRule& rule, bool wantTangent, PairVec& force,
-                 PairMat& tangent, PairOutcome* outcome, bool held) {
+                 PairMat& tangent, PairOutcome* outcome, double face) {
   const Vec4 z0 = relative(q0), z1 = relative(q1);
   const double k = law.k;
   const bool midPoint = rule.scheme == Scheme::MidPoint;
   const bool rubs = law.mu > 0;
   Penetration e0, e1;
-  penetration(z0, side, h, false, e0, held);
-  penetration(z1, side, h, wantTangent && !midPoint, e1, held);
+  penetration(z0, side, h, false, e0, face);
+  penetration(z1, side, h, wantTangent && !midPoint, e1, face);
   const double p0 = e0.p, p1 = e1.p;
   if (outcome) *outcome = PairOutcome{p0, p1, 0.0, 0.0};
   // Out of contact over the step: no force, and the friction spring lets go.
@@ -283,7 +333,7 @@ bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, dou
     }
   } else {
     Penetration em;
-    penetration(0.5 * (z0 + z1), side, h, wantTangent, em, held);
+    penetration(0.5 * (z0 + z1), side, h, wantTangent, em, face);
     const Vec4 D =
         discreteGradient(z0, z1, p0, p1, em, e1.g, scale, w, wantTangent ? &wdD : nullptr);
     fz = w * D;

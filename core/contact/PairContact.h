@@ -21,14 +21,16 @@ struct PairPositions {
 // The side of the node relative to the line a->b: +1 left (or on it), -1 right.
 int pairSide(const PairPositions& q);
 // Penetration of the pair for the side s and contact distance h (see above);
-// held: the node is held on the side s (a ruptured joint's pair), also beyond
-// the segment's ends.
-double pairPenetration(const PairPositions& q, int side, double h, bool held = false);
+// face > 0: the node is held on the side s (a ruptured joint's pair), also
+// beyond the segment's ends, and meets the segment's end faces; face is the
+// pair's full contact distance (its reach h may be offset to about 0), which
+// scales the faces (core/contact/MemberContact.h).
+double pairPenetration(const PairPositions& q, int side, double h, double face = 0);
 
 // The rate of the pair's penetration p for the velocities v of its points
 // (dp/dt = grad p . dz/dt, z = (x - a, b - a)).
 double pairPenetrationRate(const PairPositions& q, const PairPositions& v, int side, double h,
-                           bool held = false);
+                           double face = 0);
 
 using PairZ = Eigen::Matrix<double, 4, 1>;  // z = (x - a, b - a)
 
@@ -55,6 +57,6 @@ struct PairOutcome {
 // written, when the pair carries no force.
 bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, double h,
                  const PairLaw& law, const StepRule& rule, bool wantTangent, PairVec& force,
-                 PairMat& tangent, PairOutcome* outcome = nullptr, bool held = false);
+                 PairMat& tangent, PairOutcome* outcome = nullptr, double face = 0);
 
 }  // namespace c2d

@@ -23,11 +23,11 @@ double pairMass(const std::vector<double>& masses, const ContactPair& pair,
 
 double pairLoadingPoint(const MemberContactData& data, const std::vector<double>& masses,
                         const ContactPair& pair, const State& s, const PairPositions& q0,
-                        const PairPositions& q1, int side, double h, bool held, double q,
+                        const PairPositions& q1, int side, double h, double face, double q,
                         double p1) {
   if (data.restitution >= 1 || p1 <= 0) return crushingLoadingPoint(q, p1);
-  const double r0 = pairPenetrationRate(q0, pairValues(s.vn, pair), side, h, held);
-  const double r1 = pairPenetrationRate(q1, pairValues(s.v, pair), side, h, held);
+  const double r0 = pairPenetrationRate(q0, pairValues(s.vn, pair), side, h, face);
+  const double r1 = pairPenetrationRate(q1, pairValues(s.v, pair), side, h, face);
   return crushingLoadingPoint(data.k, data.restitution, q, pairMass(masses, pair, q0), p1, r0, r1);
 }
 

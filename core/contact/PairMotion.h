@@ -32,7 +32,7 @@ double pairMass(const std::vector<double>& masses, const ContactPair& pair, cons
 // the rates of its penetration, from the loading point q at t_n.
 double pairLoadingPoint(const MemberContactData& data, const std::vector<double>& masses,
                         const ContactPair& pair, const State& s, const PairPositions& q0,
-                        const PairPositions& q1, int side, double h, bool held, double q,
+                        const PairPositions& q1, int side, double h, double face, double q,
                         double p1);
 
 }  // namespace c2d

@@ -20,6 +20,7 @@
 #include "core/contact/MemberCrossing.h"
 #include "core/contact/SpringFriction.h"
 #include "elements/Joints.h"
+#include "solvers/ProportionalLoad.h"
 #include "solvers/TimeIntegrator.h"
 #include "tests/unit/RunDeckSupport.h"
 
@@ -242,24 +243,34 @@ TEST(MemberContactPair, CrushingAndFrictionTangentsMatchFiniteDifferences) {
 
 TEST(MemberContactPair, HeldSideTangentsMatchFiniteDifferences) {
   // A node held on either side (the pairs of a ruptured joint), in every
-  // region: on the wrong side inside the span and beyond either end.
-  const double k = 3e3, hc = 0.12;
+  // region: on the wrong side inside the span, beyond either end, and inside
+  // the span near either end (the end faces: their ramp within 0.01 face,
+  // their cap at the face).
+  const double k = 3e3, hc = 0.12, face = 0.3;
+  std::vector<std::pair<PairPositions, PairPositions>> cases = pairCases();
+  const Vec2 a(0.1, -0.05), b(1.2, 0.15);
+  const Vec2 t = (b - a).normalized(), n(-t.y(), t.x());
+  for (double along : {0.0015, 0.006, 0.25, 0.3015})
+    for (double across : {-0.006, 0.003}) {
+      cases.push_back({{a - 0.002 * t, a, b}, {a + along * t + across * n, a, b}});
+      cases.push_back({{b + 0.002 * t, a, b}, {b - along * t + across * n, a + 0.001 * n, b}});
+    }
   int checked = 0;
   for (const TimeIntegrator& ti : {TimeIntegrator::statics(), TimeIntegrator::midPoint(0.2, 0)})
     for (const PairLaw& law : inelasticLaws(k, 9.0))
-      for (const auto& [q0, q1] : pairCases())
+      for (const auto& [q0, q1] : cases)
         for (int side : {1, -1}) {
           const StepRule rule = ti.rule(0.01);
           PairVec f, fp, fm;
           PairMat K, unused;
-          if (!pairContact(q0, q1, side, hc, law, rule, true, f, K, nullptr, true) || K.isZero())
+          if (!pairContact(q0, q1, side, hc, law, rule, true, f, K, nullptr, face) || K.isZero())
             continue;
           PairMat fd;
           const double h = 1e-7;
           for (int i = 0; i < 6; ++i) {
-            pairContact(q0, shifted(q1, i, h), side, hc, law, rule, false, fp, unused, nullptr, true);
+            pairContact(q0, shifted(q1, i, h), side, hc, law, rule, false, fp, unused, nullptr, face);
             pairContact(q0, shifted(q1, i, -h), side, hc, law, rule, false, fm, unused, nullptr,
-                        true);
+                        face);
             fd.col(i) = (fp - fm) / (2 * h);
           }
           EXPECT_LT((fd - K).cwiseAbs().maxCoeff(), 1e-5 * K.cwiseAbs().maxCoeff())
@@ -278,7 +289,7 @@ TEST(MemberContactPair, HeldSideIsContinuousAroundTheSegmentsEnds) {
   // on the line, in value and in slope; above it the rounded end holds.
   const Vec2 a(0, 0), b(1, 0);
   const double h = 0.01, eps = 1e-9;
-  auto p = [&](double x, double y) { return pairPenetration({Vec2(x, y), a, b}, 1, h, true); };
+  auto p = [&](double x, double y) { return pairPenetration({Vec2(x, y), a, b}, 1, h, 0.1); };
   EXPECT_NEAR(p(1 - eps, -0.003), h + 0.003, 1e-8);
   EXPECT_NEAR(p(1 + eps, -0.003), h + 0.003, 1e-8);
   EXPECT_NEAR(p(1.004, -0.003), h + (0.003 * 0.003 - 0.004 * 0.004) / 0.005, 1e-12);
@@ -301,6 +312,35 @@ TEST(MemberContactPair, HeldSideIsContinuousAroundTheSegmentsEnds) {
   }
   // Not held: the rounded end on both sides.
   EXPECT_NEAR(pairPenetration({Vec2(1.004, -0.003), a, b}, 1, h), h - 0.005, 1e-12);
+}
+
+TEST(MemberContactPair, AHeldNodeMeetsTheSegmentsEndFaces) {
+  // Held above a segment along x from 0 to 1 at the reach h = 0 (a ruptured
+  // joint's pair, its whole distance offset), face 0.1 (w = 0.001): a node on
+  // the line x inside the span from either end penetrates by x^2 / (2 w)
+  // within w, x - w / 2 beyond, up to the face, and is pushed back out along
+  // the segment as well as up; one clear of the line by the face is not
+  // pushed; not held, the node on the line has p = h = 0.
+  const Vec2 a(0, 0), b(1, 0);
+  const double face = 0.1, w = 0.001;
+  auto p = [&](double x, double y) { return pairPenetration({Vec2(x, y), a, b}, 1, 0.0, face); };
+  EXPECT_NEAR(p(0.0005, 0), 0.0005 * 0.0005 / (2 * w), 1e-15);
+  EXPECT_NEAR(p(0.003, 0), 0.003 - w / 2, 1e-15);
+  EXPECT_NEAR(p(0.997, 0), 0.003 - w / 2, 1e-15);
+  EXPECT_NEAR(p(0.003, -0.002), 0.003 - w / 2 + 0.002, 1e-15);
+  EXPECT_NEAR(p(0.2, 0), face, 1e-15);
+  EXPECT_LT(p(0.2, 0.1001), 0.0);
+  EXPECT_EQ(pairPenetration({Vec2(0.003, 0), a, b}, 1, 0.0), 0.0);
+  // The force on the node, -k grad p: out along the segment at the end a
+  // (-x) and at the end b (+x), and up.
+  const double step = 1e-7;
+  auto grad = [&](double x, double y) {
+    return Vec2((p(x + step, y) - p(x - step, y)) / (2 * step),
+                (p(x, y + step) - p(x, y - step)) / (2 * step));
+  };
+  EXPECT_NEAR(grad(0.003, 0).x(), 1.0, 1e-6);
+  EXPECT_NEAR(grad(0.997, 0).x(), -1.0, 1e-6);
+  EXPECT_NEAR(grad(0.003, 0).y(), -1.0, 1e-6);
 }
 
 TEST(MemberContactPair, MidPointWorkIsStoredPlusDissipatedEnergy) {
@@ -811,7 +851,10 @@ TEST(MemberContactModel, ARupturedJointsEndNodeIsHeldOnItsMembersSide) {
   for (int n = b; n <= b + 4; ++n) s.u(3 * n + 1) = -0.001;  // rod b moved down 1 mm
   ASSERT_TRUE(as.assemble(s, rule, factors, false));
   const double below = as.contactEnergy(s);
-  EXPECT_NEAR(below, 0.5 * 1e3 * 0.001 * 0.001, 1e-12);
+  // Rod a's end node is now 1 mm inside rod b's first element, on its line:
+  // it meets that element's end face (x - w / 2, w = 0.01 h).
+  const double face = 0.001 - 0.005 * 2 * std::sqrt(2.5e-4);
+  EXPECT_NEAR(below, 0.5 * 1e3 * (0.001 * 0.001 + face * face), 1e-12);
   as.commitContact(s);
   s.commit();
   EXPECT_EQ(pairOf(b, lastA)->side, 1);
@@ -830,19 +873,53 @@ TEST(MemberContactModel, ARupturedJointsEndNodeIsHeldOnItsMembersSide) {
   }
 }
 
+TEST(MemberContactModel, RupturedJointsPiecesPressedTipToTipDoNotPassEachOther) {
+  // A ruptured joint's two pieces lying end to end, kinked 0.1 rad at the
+  // joint (each end node on the other's end, held on the side its own piece
+  // lies), pressed together along their axes: piece a clamped at its far
+  // end, piece b's far end on a roller pushed by 2 kN (contact k = 2e3,
+  // distance 0.035 m). With the whole distance offset the pairs' reach is
+  // zero there: b's end node slid into a's span along a's line (pushed only
+  // across it, by k 0.1 x), and the pieces ended crossed, their tips 0.19 m
+  // past each other. The held end faces push it back out along the segment:
+  // the tips overlap by less than the force over k (0.6 mm).
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 50.0, 1.0, 1e-4);  // r = 0.0173
+  const int a = newRod(m, Vec2(-1, 0), Vec2(0, 0), 4);
+  const int b = newRod(m, Vec2(0, 0), Vec2(1, -0.1), 4);
+  m.bound(a) = {1, 1, 1};
+  m.bound(b + 4) = {0, 1, 1};
+  m.force(b + 4) = {-2.0, 0, 0};
+  m.memberContact() = MemberContactData{2e3, 1, -1};
+  Analysis an(m);
+  an.setLoadFunction(1, ProportionalLoad::table({{0.0, 0.0}, {0.2, 1.0}, {10.0, 1.0}}));
+  an.setIntegrator(TimeIntegrator::midPoint(0.1, 0));
+  an.setDt(0.01);
+  State& s = an.state();
+  for (int step = 0; step < 100; ++step) {
+    ASSERT_TRUE(solveStep(an)) << "step " << step;
+    an.commit();
+  }
+  EXPECT_TRUE(findCrossings(m, s).empty());
+  const double overlap = position(m, s, a + 4).x() - position(m, s, b).x();
+  EXPECT_LT(overlap, 2.0 / 2e3);
+}
+
 TEST(MemberContactModel, ACommitReleasesWhatAHeldPairNoLongerStores) {
   // Rod b's end node, held above rod a, ends a step beyond rod a's end and
-  // below its line (the held side's wedge presses it: p = |d| - e > 0) but
-  // farther from the segment than the contact distance: at the committed
-  // state alone the pair is apart. What it stored is released at the commit,
-  // so that the energy before the commit less the released equals the energy
-  // after it.
+  // below its line (the held side's wedge presses it: p = (d^2 - e^2) / rho
+  // > 0) but farther from the segment than the contact distance: at the
+  // committed state alone the pair is apart. What it stored is released at
+  // the commit, so that the energy before the commit less the released
+  // equals the energy after it. (Rod a's end node, inside rod b's tilted
+  // first element by 5.5 cm, is 3.3 cm from its line: beyond its end face's
+  // cap, the contact distance 3.16 cm.)
   RupturedCorner c;
   auto& [m, a, b, corner, s, rule, factors] = c;
   Assembler& as = *corner;
   as.openContacts(s);
-  s.u(3 * b + 0) = 0.03;
-  s.u(3 * b + 1) = -0.04;
+  s.u(3 * b + 0) = 0.04;
+  s.u(3 * b + 1) = -0.05;
   ASSERT_TRUE(as.assemble(s, rule, factors, false));
   const double before = as.contactEnergy(s);
   EXPECT_GT(before, 0.0);
