@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/Hinge.h"
 #include "elements/Joints.h"
 
 namespace c2d {
@@ -20,7 +21,9 @@ std::vector<MemberFold> foldedMembers(const Model& model, const State& state) {
     // rotation added at its end).
     const ElementKinematics kin = innermostKinematics(model.element(e), state);
     const double fold = std::abs(kin.d[5] - kin.d[2]);
-    if (fold > kQuarterTurn) out.push_back({e, {in.nodes()[0], in.nodes()[1]}, fold});
+    if (!(fold > kQuarterTurn)) continue;
+    const auto* carrier = dynamic_cast<const HingeCarrier*>(&in);
+    out.push_back({e, {in.nodes()[0], in.nodes()[1]}, fold, carrier && carrier->hinge().failed});
   }
   std::sort(out.begin(), out.end(),
             [](const MemberFold& a, const MemberFold& b) { return a.fold > b.fold; });

@@ -18,6 +18,11 @@ struct MemberFold {
   int element = -1;
   int nodes[2] = {-1, -1};  // the inner element's nodes (a joint's slave included)
   double fold = 0;          // |theta_b - theta_a| (rad)
+  // The member carries a failed hinge (fully softened, M = 0) that made no
+  // joint: the member had a joint at an end already, or the hinge lies
+  // within SOFTening's shortest piece Lb of a joint or a free end
+  // (elements/HingeToJoint.h). Nothing resists its turn.
+  bool failedHinge = false;
 };
 
 // The folded members of the model at state.u, most folded first.

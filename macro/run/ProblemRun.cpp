@@ -182,7 +182,12 @@ void ProblemRun::reportFolds() {
          << " is bent through " << fmt("%.3f", folds[i].fold) << " rad between its ends (nodes "
          << folds[i].nodes[0] + 1 << " and " << folds[i].nodes[1] + 1
          << ") at t = " << fmt("%.6e", analysis_->state().t)
-         << ": more than a quarter turn, which no RC member bends whole\n";
+         << ": more than a quarter turn, which no RC member bends whole"
+         << (folds[i].failedHinge ? " (about its failed hinge, which made no joint: the member "
+                                    "had a joint at an end, or the hinge lies within the "
+                                    "shortest piece Lb of a joint or a free end)"
+                                  : "")
+         << "\n";
 }
 
 RunSummary ProblemRun::summary() const {

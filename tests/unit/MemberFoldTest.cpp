@@ -1,7 +1,8 @@
 // elements/MemberFold: RC members (with a hinge law) bent through more than a
 // quarter turn between their ends are found, with the inner element's nodes
 // and the fold; members bent less, and elastic members however bent, are not.
-// A condensed joint's relative rotation counts at its end.
+// A condensed joint's relative rotation counts at its end; a failed hinge
+// that made no joint is named as the fold's cause.
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -56,6 +57,17 @@ TEST(MemberFold, OnlyRcMembersBentBeyondAQuarterTurn) {
   EXPECT_EQ(folds[0].nodes[1], 1);
   EXPECT_EQ(folds[1].element, 2);
   EXPECT_NEAR(folds[1].fold, 0.51 * std::numbers::pi, 1e-12);
+  EXPECT_FALSE(folds[0].failedHinge);
+  // Element 1's hinge fully softened (M = 0) without a joint: the fold says
+  // so (the log names it as the cause).
+  HingedBendingState failed;
+  failed.hingeActive = failed.hingeFailed = true;
+  failed.jump.alpha = failed.jump.xi = 2.0;
+  dynamic_cast<ReissnerFrame&>(m.element(0)).setSection(failed);
+  const std::vector<MemberFold> withFailed = foldedMembers(m, s);
+  ASSERT_EQ(withFailed.size(), 2u);
+  EXPECT_TRUE(withFailed[0].failedHinge);
+  EXPECT_FALSE(withFailed[1].failedHinge);
 
   // A condensed joint at node 1 of element 1 whose relative rotation takes
   // the inner end back to node 0's rotation: not folded.
