@@ -4,13 +4,11 @@
 // nonlinear members (decks/rc/column_schemes.inp).
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <sstream>
-#include <unistd.h>
 
-#include "macro/DeckRunner.h"
 #include "macro/run/EnergyWatch.h"
+#include "tests/unit/OutputTestSupport.h"
+#include "tests/unit/RunDeckSupport.h"
 
 namespace c2d {
 namespace {
@@ -71,22 +69,12 @@ TEST(EnergyWatch, TheRestartFileKeepsItsAccount) {
 TEST(EnergyWatch, NewmarksRuleSwingingAnRcMemberAboutNZeroIsWarnedAbout) {
   // decks/rc/column_schemes.inp: the same column under Newmark, then under
   // the mid-point scheme.
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                    ("c2d_energy_watch_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  DeckOptions opt;
-  opt.outDir = dir;
-  opt.quiet = true;
-  SolutionCommands commands;
-  std::ostringstream console;
-  const DeckOutcome o =
-      runDeck(std::string(C2D_SOURCE_DIR) + "/decks/rc/column_schemes.inp", opt, commands, console);
-  ASSERT_EQ(o.exitCode, 0) << o.message;
-  std::ifstream in(dir / "column_schemes.out");
-  std::stringstream log;
-  log << in.rdbuf();
-  std::filesystem::remove_all(dir);
-  const std::string text = log.str();
+  const testing::DeckTempDir dir;
+  const testing::DeckResult r = testing::runDeckText(
+      dir, "column_schemes.inp",
+      testing::readFile(std::string(C2D_SOURCE_DIR) + "/decks/rc/column_schemes.inp"));
+  ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
+  const std::string& text = r.log;
   const std::size_t second = text.find("RC column swinging about N = 0, energy conserving");
   ASSERT_NE(second, std::string::npos);
   const std::string newmark = text.substr(0, second), midPoint = text.substr(second);

@@ -43,6 +43,25 @@ PairPositions shifted(const PairPositions& q, int i, double h) {
   return r;
 }
 
+// The central differences of pairContact's force with respect to the
+// positions at t_n+1 (step 1e-7); ok: whether every evaluation carried a force.
+PairMat pairTangentByDifferences(const PairPositions& q0, const PairPositions& q1, int side,
+                                 double hc, const PairLaw& law, const StepRule& rule,
+                                 double face = 0, bool* ok = nullptr) {
+  const double h = 1e-7;
+  PairVec fp, fm;
+  PairMat fd, unused;
+  bool all = true;
+  for (int i = 0; i < 6; ++i) {
+    all &= pairContact(q0, shifted(q1, i, h), side, hc, law, rule, false, fp, unused, nullptr, face);
+    all &= pairContact(q0, shifted(q1, i, -h), side, hc, law, rule, false, fm, unused, nullptr,
+                       face);
+    fd.col(i) = (fp - fm) / (2 * h);
+  }
+  if (ok) *ok = all;
+  return fd;
+}
+
 double pairEnergy(const PairPositions& q, int side, double h, double k) {
   const double p = pairPenetration(q, side, h);
   return p > 0 ? 0.5 * k * p * p : 0.0;
@@ -83,17 +102,13 @@ TEST(MemberContactPair, TangentMatchesFiniteDifferencesUnderEveryRule) {
     for (const auto& [q0, q1] : pairCases()) {
       const StepRule rule = ti.rule(0.01);
       const int side = pairSide(q0);
-      PairVec f, fp, fm;
+      PairVec f;
       PairMat K, unused;
       const PairLaw law = dampedLaw(k, 9.0);
       if (!pairContact(q0, q1, side, hc, law, rule, true, f, K)) continue;
-      PairMat fd;
-      const double h = 1e-7;
-      for (int i = 0; i < 6; ++i) {
-        ASSERT_TRUE(pairContact(q0, shifted(q1, i, h), side, hc, law, rule, false, fp, unused));
-        ASSERT_TRUE(pairContact(q0, shifted(q1, i, -h), side, hc, law, rule, false, fm, unused));
-        fd.col(i) = (fp - fm) / (2 * h);
-      }
+      bool ok = false;
+      const PairMat fd = pairTangentByDifferences(q0, q1, side, hc, law, rule, 0, &ok);
+      ASSERT_TRUE(ok);
       EXPECT_LT((fd - K).cwiseAbs().maxCoeff(), 1e-6 * K.cwiseAbs().maxCoeff())
           << ti.describe() << " x0 " << q0.x.transpose() << " x1 " << q1.x.transpose() << "\nK\n"
           << K << "\nFD\n"
@@ -104,6 +119,7 @@ TEST(MemberContactPair, TangentMatchesFiniteDifferencesUnderEveryRule) {
         // Without the dashpot: the plain gradient of the energy.
         pairContact(q0, q1, side, hc, PairLaw{k}, rule, false, f, unused);
         PairVec g;
+        const double h = 1e-7;
         for (int i = 0; i < 6; ++i)
           g(i) = (pairEnergy(shifted(q1, i, h), side, hc, k) -
                   pairEnergy(shifted(q1, i, -h), side, hc, k)) /
@@ -149,13 +165,7 @@ TEST(MemberContactPair, NewmarkDashpotRampsInWhereThePairBeginsTouching) {
   for (double delta : {0.01, 0.05}) {
     const PairPositions q1 = entering(delta, hc);
     ASSERT_TRUE(pairContact(q0, q1, side, hc, law, rule, true, f, K));
-    PairMat fd;
-    const double h = 1e-7;
-    for (int i = 0; i < 6; ++i) {
-      pairContact(q0, shifted(q1, i, h), side, hc, law, rule, false, fp, unused);
-      pairContact(q0, shifted(q1, i, -h), side, hc, law, rule, false, fm, unused);
-      fd.col(i) = (fp - fm) / (2 * h);
-    }
+    const PairMat fd = pairTangentByDifferences(q0, q1, side, hc, law, rule);
     EXPECT_LT((fd - K).cwiseAbs().maxCoeff(), 1e-6 * K.cwiseAbs().maxCoeff())
         << "delta " << delta << "\nK\n"
         << K << "\nFD\n"
@@ -219,16 +229,10 @@ TEST(MemberContactPair, CrushingAndFrictionTangentsMatchFiniteDifferences) {
       for (const auto& [q0, q1] : pairCases()) {
         const StepRule rule = ti.rule(0.01);
         const int side = pairSide(q0);
-        PairVec f, fp, fm;
-        PairMat K, unused;
+        PairVec f;
+        PairMat K;
         if (!pairContact(q0, q1, side, hc, law, rule, true, f, K) || K.isZero()) continue;
-        PairMat fd;
-        const double h = 1e-7;
-        for (int i = 0; i < 6; ++i) {
-          pairContact(q0, shifted(q1, i, h), side, hc, law, rule, false, fp, unused);
-          pairContact(q0, shifted(q1, i, -h), side, hc, law, rule, false, fm, unused);
-          fd.col(i) = (fp - fm) / (2 * h);
-        }
+        const PairMat fd = pairTangentByDifferences(q0, q1, side, hc, law, rule);
         EXPECT_LT((fd - K).cwiseAbs().maxCoeff(), 1e-5 * K.cwiseAbs().maxCoeff())
             << ti.describe() << " q " << law.q << " mu " << law.mu << " stretch " << law.stretch
             << " x0 " << q0.x.transpose() << " x1 " << q1.x.transpose() << "\nK\n"
@@ -261,18 +265,11 @@ TEST(MemberContactPair, HeldSideTangentsMatchFiniteDifferences) {
       for (const auto& [q0, q1] : cases)
         for (int side : {1, -1}) {
           const StepRule rule = ti.rule(0.01);
-          PairVec f, fp, fm;
+          PairVec f;
           PairMat K, unused;
           if (!pairContact(q0, q1, side, hc, law, rule, true, f, K, nullptr, face) || K.isZero())
             continue;
-          PairMat fd;
-          const double h = 1e-7;
-          for (int i = 0; i < 6; ++i) {
-            pairContact(q0, shifted(q1, i, h), side, hc, law, rule, false, fp, unused, nullptr, face);
-            pairContact(q0, shifted(q1, i, -h), side, hc, law, rule, false, fm, unused, nullptr,
-                        face);
-            fd.col(i) = (fp - fm) / (2 * h);
-          }
+          const PairMat fd = pairTangentByDifferences(q0, q1, side, hc, law, rule, face);
           EXPECT_LT((fd - K).cwiseAbs().maxCoeff(), 1e-5 * K.cwiseAbs().maxCoeff())
               << ti.describe() << " side " << side << " x0 " << q0.x.transpose() << " x1 "
               << q1.x.transpose();
