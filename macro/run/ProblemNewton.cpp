@@ -60,6 +60,17 @@ bool usesLineSearch(const Macro& loop) {
 
 }  // namespace
 
+Status ProblemRun::cutStep(double dt) {
+  ++cuts_;
+  stepsSinceCut_ = 0;
+  analysis_->back();
+  analysis_->setDt(dt);
+  analysis_->impactSteps().cut(dt);
+  scalePathIncrement();
+  log_ << "  cut    step to dt = " << fmt("%.4e", dt) << "\n";
+  return analysis_->advance();
+}
+
 Flow ProblemRun::retryWithCut(const Macro& loop, const std::string& why) {
   const State& s = analysis_->state();
   std::ostringstream msg;
@@ -79,14 +90,7 @@ Flow ProblemRun::retryWithCut(const Macro& loop, const std::string& why) {
                           "; step cutting gave up at the minimum step " + fmt("%.4e", dtMin_) +
                           "\n" + historyText() +
                           advice(why, usesLineSearch(loop), unconverged ? iterations : 0));
-    ++cuts_;
-    stepsSinceCut_ = 0;
-    analysis_->back();
-    analysis_->setDt(dt);
-    analysis_->impactSteps().cut(dt);
-    scalePathIncrement();
-    log_ << "  cut    step to dt = " << fmt("%.4e", dt) << "\n";
-    const Status st = analysis_->advance();
+    const Status st = cutStep(dt);
     if (!st) throw AnalysisError(loop.record.fieldLoc(0).str() + ": error: " + st.why);
     const int n = loop.has(0) ? loop.numbers[0].evalInt(params_, "loop count") : 1;
     diverged_ = stalled_ = false;

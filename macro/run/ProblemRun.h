@@ -168,6 +168,10 @@ class ProblemRun {
                 int passes = 1);
   void safePoint();
   Flow retryWithCut(const Macro& loop, const std::string& why);
+  // Back to the committed state, the step cut to dt (a proposed shorter step
+  // through an impact halved with it: solvers/ImpactSteps), counted and logged,
+  // and begun again.
+  Status cutStep(double dt);
   [[noreturn]] void fail(const Macro& m, const std::string& what) const;
   // At a commit: the command that made it (current_), the step and time.
   [[noreturn]] void failAtCommit(const std::string& what) const;

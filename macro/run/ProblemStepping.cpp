@@ -58,14 +58,7 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::op
     log_ << "  *** step " << s.step + 1 << " not committed: " << st.why << "\n";
     if (dt < dtMin_)
       fail(m, st.why + "; step cutting gave up at the minimum step " + fmt("%.4e", dtMin_));
-    ++cuts_;
-    stepsSinceCut_ = 0;
-    analysis_->back();
-    analysis_->setDt(dt);
-    analysis_->impactSteps().cut(dt);
-    scalePathIncrement();
-    log_ << "  cut    step to dt = " << fmt("%.4e", dt) << "\n";
-    st = analysis_->advance();
+    st = cutStep(dt);
   }
   if (!st) fail(m, st.why);
   log_ << "  TIME   t = " << fmt("%.6e", s.t) << "  prop = " << fmt("%.6e", analysis_->loadFactor())
