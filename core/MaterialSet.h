@@ -46,9 +46,17 @@ struct SofteningData {
 struct RebarLayer {
   double depth = 0, area = 0;
 };
+// STIRrups Asw s [fyw]: the links of a SECTion, area Asw of their legs (m^2) at
+// spacing s (m) along the member, yield stress fyw (fy when not given): they
+// set the shear the member carries and from it the shortest piece it breaks
+// into (RcSection::shearCapacity, shortestPiece).
+struct Stirrups {
+  double area = 0, spacing = 0, fy = 0;
+};
 struct RcSectionData {
   double b = 0, h = 0, fc = 0, fy = 0, Es = 0, fu = 0, eu = 0;
   std::vector<RebarLayer> bars;
+  std::optional<Stirrups> stirrups;
 };
 
 // Where a softening hinge opens: at the one-point element's midpoint when its

@@ -20,8 +20,6 @@ namespace {
 
 // Relative tolerance under which the two end moments of a hinge element count as equal.
 constexpr double kTieTolerance = 1e-12;
-// Nodes nearer than this share of Lb stand at one place (a ruptured joint's).
-constexpr double kCoincident = 1e-9;
 
 struct Relative {
   int master = -1;
@@ -64,12 +62,7 @@ bool nearJoint(const Model& model, const std::vector<int>& attached, int node, d
   for (const Joint& j : model.joints())
     if (j.master != node && (model.coord(j.master) - x).norm() < lb) return true;
   // attached may predate the joints' nodes made in this pass: none is free.
-  for (int n = 0; n < static_cast<int>(attached.size()); ++n) {
-    if (n == node || !freeEnd(model, n, attached[n])) continue;
-    const double d = (model.coord(n) - x).norm();
-    if (d < lb && d > kCoincident * lb) return true;
-  }
-  return false;
+  return nearFreeEnd(model, attached, node, lb);
 }
 
 // Ends of an element that already carry a joint (its wrappers' slave ends).

@@ -53,17 +53,31 @@ bool condensable(const Model& model, const Joint& joint) {
   return condensableWith(model, joint, attachedTo(model, joint.slave));
 }
 
-std::vector<int> nodeAttachments(const Model& model) {
+std::vector<int> nodeAttachments(const Model& model, const std::vector<char>& gone) {
   std::vector<int> attached(model.numNodes(), 0);
   for (int e = 0; e < model.numElements(); ++e)
     if (model.hasElement(e))
       for (int node : model.element(e).nodes()) ++attached[node];
-  for (const Joint& j : model.joints()) attached[j.master] = attached[j.slave] = 2;
+  for (std::size_t k = 0; k < model.joints().size(); ++k)
+    if (k >= gone.size() || !gone[k])
+      attached[model.joints()[k].master] = attached[model.joints()[k].slave] = 2;
   return attached;
 }
 
 bool freeEnd(const Model& model, int node, int attachments) {
   return attachments == 1 && model.bound(node)[2] == 0 && model.force(node)[2] == 0;
+}
+
+bool nearFreeEnd(const Model& model, const std::vector<int>& attached, int node, double lb) {
+  if (!(lb > 0)) return false;
+  constexpr double kCoincident = 1e-9;  // of lb: nodes at one place (a ruptured joint's)
+  const Vec2 x = model.coord(node);
+  for (int n = 0; n < static_cast<int>(attached.size()); ++n) {
+    if (n == node || !freeEnd(model, n, attached[n])) continue;
+    const double d = (model.coord(n) - x).norm();
+    if (d < lb && d > kCoincident * lb) return true;
+  }
+  return false;
 }
 
 double jointFriction(const Model& model, int node) {
@@ -237,8 +251,9 @@ std::vector<RupturedJoint> ruptureJoints(Model& model, State& state) {
   if (model.joints().empty()) return out;
   std::vector<char> gone(model.joints().size(), 0);
   bool synced = false;
-  std::vector<int> holder, wrapper;
+  std::vector<int> holder, wrapper, attached;
   bool indexed = false;  // a rupture of a condensed joint changes the wrappers
+  bool counted = false;  // attached: nodeAttachments without the joints gone
   for (std::size_t k = 0; k < model.joints().size(); ++k) {
     const Joint& joint = model.joints()[k];
     if (!indexed) {
@@ -272,6 +287,13 @@ std::vector<RupturedJoint> ruptureJoints(Model& model, State& state) {
         penetration(*g, model.coord(joint.master).y() +
                             state.un[static_cast<Eigen::Index>(joint.master) * kNodeDofs + 1]) > 0)
       continue;
+    if (const double lb = mat->softening->pieceLength; lb > 0) {
+      if (!counted) {
+        attached = nodeAttachments(model, gone);
+        counted = true;
+      }
+      if (nearFreeEnd(model, attached, joint.master, lb)) continue;
+    }
     if (!synced) {  // the slave nodes' state from the joints, before any is removed
       syncSlaveNodes(model, state);
       synced = true;
@@ -281,6 +303,7 @@ std::vector<RupturedJoint> ruptureJoints(Model& model, State& state) {
       indexed = false;
     }
     gone[k] = 1;
+    counted = false;
     out.push_back(RupturedJoint{joint.master, joint.slave, element, rotation, limit});
   }
   if (out.empty()) return out;

@@ -48,12 +48,20 @@ std::unique_ptr<Element> withoutJoint(std::unique_ptr<Element> el, int slave);
 std::vector<JointedElement*> jointedElements(Model& model);
 std::vector<const JointedElement*> jointedElements(const Model& model);
 
-// Per node: the element ends at it, a joint's master and slave counting two.
-std::vector<int> nodeAttachments(const Model& model);
+// Per node: the element ends at it, a joint's master and slave counting two
+// (but for the joints k with gone[k] set: removed in the pass under way).
+std::vector<int> nodeAttachments(const Model& model, const std::vector<char>& gone = {});
 // A free end: a node that one element end holds and no joint, its rotation
 // free and unloaded by a nodal moment (attachments: nodeAttachments' count).
 // It carries no moment: no member breaks there, and no joint forms at it.
 bool freeEnd(const Model& model, int node, int attachments);
+// Whether a free end other than one at the node's own place (the pieces of a
+// joint ruptured there: the members left may still break at it) lies within
+// the distance lb of the node, in the reference configuration (the distance
+// along the material). Next to a free end the moment grows as V x from zero,
+// so a member that carries no more shear than Vu cannot break nearer than
+// Mu/Vu (SOFTening's or the section's shortest piece Lb).
+bool nearFreeEnd(const Model& model, const std::vector<int>& attached, int node, double lb);
 
 // A joint that ruptured: the two pieces separated at the slave node.
 struct RupturedJoint {
@@ -70,8 +78,12 @@ struct RupturedJoint {
 // becomes a node of its own, so the pieces separate in translation too. The
 // state is continuous (nothing moves, no velocity changes). A joint whose
 // master node penetrates the ground waits until the node leaves it (the new
-// node would bring a penalty force and energy of its own). Bumps the topology
-// version when anything ruptured.
+// node would bring a penalty force and energy of its own). A joint whose master
+// lies within its material's shortest piece Lb of a free end (nearFreeEnd: a
+// piece that a rupture nearby set free, the member's own end) does not
+// rupture: it turns on with its friction, so that no piece shorter than Lb
+// breaks off whatever the mesh (joints ruptured in this pass count). Bumps the
+// topology version when anything ruptured.
 std::vector<RupturedJoint> ruptureJoints(Model& model, State& state);
 
 // After elements were removed from the model (BLASt, REMOve): every joint left

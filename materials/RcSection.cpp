@@ -58,6 +58,9 @@ RcSection::RcSection(const RcSectionData& data) : d_(data) {
     if (!(r.depth > 0 && r.depth < d_.h)) bad("a bar layer lies outside the section (0 < depth < h)");
     if (!(r.area > 0)) bad("a bar layer's area must be positive");
   }
+  if (const auto& st = d_.stirrups;
+      st && !(st->area > 0 && st->spacing > 0 && st->fy > 0))
+    bad("the stirrups' area, spacing and yield stress must be positive");
   bars_[0] = d_.bars;
   bars_[1] = d_.bars;
   for (RebarLayer& r : bars_[1]) r.depth = d_.h - r.depth;
@@ -242,6 +245,23 @@ double RcSection::plasticRotation(double N, int sign) const {
 
 double RcSection::ruptureRotation() const {
   return std::max(zero_[0].xiF, zero_[1].xiF) + std::acos(1 / (1 + d_.eu));
+}
+
+double RcSection::shearCapacity(int sign) const {
+  if (!d_.stirrups) return 0.0;
+  double d = 0;  // the farthest bars from the compressed face
+  for (const RebarLayer& l : bars_[sign > 0 ? 0 : 1]) d = std::max(d, l.depth);
+  const double z = 0.9 * d;
+  const Stirrups& st = *d_.stirrups;
+  return std::min(st.area / st.spacing * z * st.fy, 0.3 * d_.b * z * d_.fc);
+}
+
+double RcSection::shortestPiece() const {
+  double lb = 0;
+  for (int sign : {1, -1})
+    if (const double vu = shearCapacity(sign); vu > 0)
+      lb = std::max(lb, zero_[sign > 0 ? 0 : 1].Mu / vu);
+  return lb;
 }
 
 RcSection::Points RcSection::rawPoints(double N, int sign) const {

@@ -104,6 +104,20 @@ class RcSection final : public MomentCapacity {
   // N = 0 (the larger sign's) plus acos(1/(1 + eu)), the turn of a tie
   // pinned there whose bars the turn stretches to eu (see README).
   double ruptureRotation() const;
+  // The shear the member carries with its stirrups (EC2 6.2.3, truss angle
+  // cot theta = 1, lever arm z = 0.9 d, d the depth of the tension bars
+  // farthest from the compressed face): the stirrups' yield Asw/s z fyw
+  // (6.8), bounded by the compression struts' crushing 0.3 b z fc (6.9 with
+  // nu1 = 0.6, the value 6.2.3(3) allows for fc <= 60 MPa: a ratio, so the
+  // rule needs no unit); 0 without stirrups. Concrete's own share (6.2.2)
+  // is not added: EC2 counts the stirrups alone in a member that has them.
+  double shearCapacity(int sign) const;
+  // The shortest piece a member of this section breaks into: next to a
+  // section carrying no moment (a joint broken, a free end) the moment grows
+  // as V x, so with the shear bounded by Vu a hinge cannot open nearer than
+  // Mu/Vu: Lb = the larger of Mu(0)/Vu of the two signs; 0 without stirrups
+  // (the mesh's node spacing sets the pieces, elements/Joints.h).
+  double shortestPiece() const;
 
   // The bending law at N (tabulated on [-squash, tension yield], monotone cubic
   // in N, constant beyond), with the moment-curvature points kept apart by

@@ -58,6 +58,7 @@ void deriveSectionLaws(MaterialSet& mat) {
       }
     }
     soft.thetaR = rc->ruptureRotation();
+    soft.pieceLength = rc->shortestPiece();
     mat.hardening = hard;
     mat.softening = soft;
     mat.hingeSite = HingeSite::Ends;

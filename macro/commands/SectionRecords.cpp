@@ -129,6 +129,7 @@ void bindSection(MeshContext& ctx, const Record& r, const CommandSpec& s, Materi
         r, 8,
         "the bars' fracture strain eu must exceed their yield strain fy/Es = " + str(d.fy / d.Es));
   d.bars = mat.section ? mat.section->bars : std::vector<RebarLayer>{};
+  d.stirrups = mat.section ? mat.section->stirrups : std::nullopt;
   mat.section = d;
   seen.section = &r;
 }
@@ -146,6 +147,26 @@ void bindRebar(MeshContext& ctx, const Record& r, MaterialSet& mat, LawRecords& 
     mat.section->bars.push_back({depth, area});
   }
   seen.rebar.push_back(&r);
+}
+
+void bindStirrups(MeshContext& ctx, const Record& r, MaterialSet& mat, LawRecords& seen) {
+  // STIRrups Asw s [fyw]: the numbers start at field 1 (or 2 after an empty field).
+  const std::string syntax = "STIRrups Asw s [fyw]";
+  if (seen.stirrups) failAt(r, 0, "STIRrups given twice in one MATErial set");
+  const std::size_t first = r.size() > 1 && r.text(1).empty() ? 2 : 1;
+  if (r.size() < first + 2) failAt(r, r.size(), "STIRrups needs Asw and s", "write " + syntax);
+  if (r.size() > first + 3) failAt(r, first + 3, "too many values: the record is '" + syntax + "'");
+  const double area = ctx.number(r, first), spacing = ctx.number(r, first + 1);
+  if (!(area > 0)) failAt(r, first, "the stirrups' area Asw must be positive");
+  if (!(spacing > 0)) failAt(r, first + 1, "the stirrups' spacing s must be positive");
+  double fyw = 0;  // 0: the bars' fy (finishLawRecords)
+  if (r.size() > first + 2 && !r.text(first + 2).empty()) {
+    fyw = ctx.number(r, first + 2);
+    if (!(fyw > 0)) failAt(r, first + 2, "the stirrups' yield stress fyw must be positive");
+  }
+  if (!mat.section) mat.section = RcSectionData{};
+  mat.section->stirrups = Stirrups{area, spacing, fyw};
+  seen.stirrups = &r;
 }
 
 void bindInteraction(MeshContext& ctx, const Record& r, const CommandSpec& s, MaterialSet& mat,
@@ -194,6 +215,8 @@ bool bindLawRecord(MeshContext& ctx, const Record& r, const CommandSpec& s, Mate
     bindSection(ctx, r, s, mat, seen);
   else if (key == "reba")
     bindRebar(ctx, r, mat, seen);
+  else if (key == "stir")
+    bindStirrups(ctx, r, mat, seen);
   else if (key == "inte")
     bindInteraction(ctx, r, s, mat, seen);
   else if (key == "hing")
@@ -213,6 +236,8 @@ void finishLawRecords(const Record& head, const LawRecords& seen, MaterialSet& m
            "SOFTening NEGAtive needs SOFTening LINEar (the positive moments')");
   if (!seen.rebar.empty() && !seen.section)
     failAt(*seen.rebar.front(), 0, "REBAr without SECTion", "give SECTion RECTangular b h fc fy");
+  if (seen.stirrups && !seen.section)
+    failAt(*seen.stirrups, 0, "STIRrups without SECTion", "give SECTion RECTangular b h fc fy");
   if (seen.section) {
     const Record& sec = *seen.section;
     const char* why = "SECTion derives the section's stiffnesses and laws";
@@ -224,6 +249,7 @@ void finishLawRecords(const Record& head, const LawRecords& seen, MaterialSet& m
     if (seen.rebar.empty())
       failAt(sec, 0, "SECTion needs its bars",
              "give REBAr d1 A1 [d2 A2 ...] (depth from the top face, area)");
+    if (auto& st = mat.section->stirrups; st && st->fy == 0) st->fy = mat.section->fy;
     std::size_t k = 0;  // the layers in the order of their records
     for (const Record* rb : seen.rebar) {
       const std::size_t first = rb->size() > 1 && rb->text(1).empty() ? 2 : 1;
@@ -338,6 +364,15 @@ void echoSection(std::ostream& os, const MaterialSet& m) {
     (void)c;
   }
   if (m.softening && m.softening->thetaR) line(os, "Rupture thetaR", *m.softening->thetaR);
+  if (const auto& st = d.stirrups) {
+    os << "      Shear (EC2 6.2.3, cot theta = 1, z = 0.9 d; Vu = min(Asw/s z fyw, 0.3 b z fc)):\n";
+    line(os, "Stirrups Asw", st->area);
+    line(os, "Stirrups s", st->spacing);
+    line(os, "Stirrups fyw", st->fy);
+    line(os, "Vu+", rc.shearCapacity(1));
+    line(os, "Vu-", rc.shearCapacity(-1));
+    line(os, "Shortest piece Lb", rc.shortestPiece());
+  }
   os << "      Interaction (N, Mu+, Mu-, My+, My-):\n";
   const double lo = -rc.squashLoad(), hi = rc.tensionYield();
   for (int i = 0; i <= 10; ++i) {
@@ -374,7 +409,8 @@ void echoLaws(std::ostream& os, const MaterialSet& m) {
     }
     if (m.softening->thetaR && !m.rc) line(os, "Rupture thetaR", *m.softening->thetaR);
     if (m.softening->Mr > 0) line(os, "Joint friction Mr", m.softening->Mr);
-    if (m.softening->pieceLength > 0) line(os, "Shortest piece Lb", m.softening->pieceLength);
+    if (m.softening->pieceLength > 0 && !m.rc)
+      line(os, "Shortest piece Lb", m.softening->pieceLength);
     if (m.hingeSite == HingeSite::Ends) os << "      Hinges             at the element ends\n";
   }
   if (!m.interaction.empty()) {
@@ -480,6 +516,24 @@ void registerLawRecords(CommandRegistry& r) {
       "layers.",
       {expr("d1", "depth of the layer from the top face [m]"),
        expr("A1", "area of the layer's bars [m^2]")}));
+  r.add(subSpec(
+      "STIRrups",
+      "STIRrups Asw s [fyw]: the links of a SECTion: the area Asw of their legs across the "
+      "section (two legs of 8 mm: 1.0e-4 m^2), their spacing s along the member and yield "
+      "stress fyw (default: the bars' fy). They set the shear the member carries (EC2 6.2.3 "
+      "with the truss angle cot theta = 1 and the lever arm z = 0.9 d, d the depth of the "
+      "farthest tension bars): Vu = min(Asw/s z fyw, 0.3 b z fc), the stirrups' yield "
+      "bounded by the struts' crushing (nu1 = 0.6); concrete's own share is not added, as "
+      "EC2 counts the stirrups alone where a member has them. From it the shortest piece the "
+      "member breaks into, Lb = the larger of Mu(0)/Vu of the two signs: next to a section "
+      "that carries no moment (a ruptured joint, a free end) the moment grows as V x, so no "
+      "hinge can reach Mu nearer than Mu/Vu. A joint within Lb of a free end does not "
+      "rupture (it turns on with its friction), and a failed midpoint hinge within Lb of an "
+      "intact joint or a free end makes no joint, as SOFTening's Lb. Without STIRrups Lb = 0 "
+      "and the mesh's node spacing sets the shortest piece. Echoed: Vu of either sign, Lb.",
+      {expr("Asw", "area of the stirrups' legs at one section [m^2]"),
+       expr("s", "spacing along the member [m]"),
+       expr("fyw", "stirrups' yield stress [kN/m^2]", "fy")}));
   r.add(subSpec(
       "INTEraction",
       "INTEraction CURVe N1 Mu1 N2 Mu2 ...: hand-given laws (HARDening, SOFTening) that follow "

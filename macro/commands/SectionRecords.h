@@ -3,6 +3,7 @@
 //   HARDening BILInear Mc My Kh1 Kh2 / HARDening NEGAtive Mc My Kh1 Kh2
 //   SOFTening LINEar Mu Ks [thetaR [Mr]] / SOFTening NEGAtive Mu Ks
 //   SECTion RECTangular b h fc fy [Es [fu eu]] with REBAr d1 A1 [d2 A2 ...]
+//     and STIRrups Asw s [fyw]
 //   INTEraction CURVe N1 Mu1 N2 Mu2 ...
 //   HINGes ENDS / HINGes MIDPoint
 // Their specs (--help), binding into a MaterialSet, the checks that need the
@@ -24,6 +25,7 @@ struct LawRecords {
   const Record* softeningNeg = nullptr;
   const Record* section = nullptr;
   std::vector<const Record*> rebar;
+  const Record* stirrups = nullptr;
   const Record* interaction = nullptr;
   const Record* hinges = nullptr;
 };

@@ -415,5 +415,53 @@ TEST(InelasticReissnerRupture, AJointOnTheGroundRupturesWhenItsNodeLeavesIt) {
   EXPECT_EQ(m.element(2).nodes()[0], slave);
 }
 
+// Next to a free end the moment grows as V x from zero, so no member breaks
+// within the shortest piece Lb ~ Mu/Vu of one (SOFTening's Lb, a SECTion's
+// from its STIRrups): a joint there turns on instead of rupturing, and the free
+// ends a rupture leaves count at once. A 1 m rod held at both ends, joints at
+// x = 0.25, 0.5, 0.75 m all past thetaR.
+std::vector<RupturedJoint> ruptureJointsOfHeldRod(double lb) {
+  FlyingRod rod(0.1);
+  Model& m = rod.m;
+  m.materials().at(1).softening->pieceLength = lb;
+  m.bound(0) = m.bound(4) = {1, 1, 1};
+  for (int i = 1; i <= 3; ++i) {
+    const int slave = m.addNode(m.coord(i));
+    m.element(i).setNodes({slave, i + 1});
+    m.joints().push_back(Joint{i, slave, JointForm::Condensed});
+  }
+  EXPECT_EQ(installJoints(m), 3);
+  for (JointedElement* j : jointedElements(m)) j->setRelativeState(0.3);
+  State s;
+  s.resize(m.numNodes());
+  return ruptureJoints(m, s);
+}
+
+TEST(InelasticReissnerRupture, NoRuptureWithinTheShortestPieceOfAFreeEnd) {
+  EXPECT_EQ(ruptureJointsOfHeldRod(0).size(), 3u);    // pieces of one element
+  EXPECT_EQ(ruptureJointsOfHeldRod(0.2).size(), 3u);  // the joints 0.25 m apart
+  // Lb = 0.3 m: the joint at x = 0.25 m ruptures first; the one at 0.5 m lies
+  // within Lb of the free ends it left and turns on; the one at 0.75 m does not.
+  const std::vector<RupturedJoint> held = ruptureJointsOfHeldRod(0.3);
+  ASSERT_EQ(held.size(), 2u);
+  EXPECT_EQ(held[0].master, 1);
+  EXPECT_EQ(held[1].master, 3);
+  // A pinned end is free too: with node 0 free to turn the joint at 0.25 m
+  // lies within Lb of it.
+  FlyingRod rod(0.1);
+  Model& m = rod.m;
+  m.materials().at(1).softening->pieceLength = 0.3;
+  const int slave = m.addNode(m.coord(1));
+  m.element(1).setNodes({slave, 2});
+  m.joints().push_back(Joint{1, slave, JointForm::Condensed});
+  ASSERT_EQ(installJoints(m), 1);
+  jointedElements(m).front()->setRelativeState(0.3);
+  State s;
+  s.resize(m.numNodes());
+  EXPECT_TRUE(ruptureJoints(m, s).empty());
+  m.materials().at(1).softening->pieceLength = 0.2;
+  EXPECT_EQ(ruptureJoints(m, s).size(), 1u);
+}
+
 }  // namespace
 }  // namespace c2d

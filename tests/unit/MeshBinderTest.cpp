@@ -8,6 +8,7 @@
 #include "macro/deck/DeckParser.h"
 #include "macro/deck/DeckReader.h"
 #include "macro/deck/MeshBinder.h"
+#include "materials/RcSection.h"
 #include "tests/unit/DeckTestSupport.h"
 
 namespace c2d {
@@ -310,6 +311,32 @@ TEST(MeshBinderMaterial, Errors) {
   } catch (const DeckError& e) {
     EXPECT_EQ(e.hint(), "did you mean 'DENSity'?");
   }
+}
+
+// SECTion with STIRrups: the shear the links carry sets the shortest piece Lb
+// of the member's softening law (materials/RcSection shortestPiece).
+TEST(MeshBinderMaterial, SectionStirrupsSetTheShortestPiece) {
+  const std::string sect =
+      "MATE,1\n FRAMe\n SECTion RECTangular 0.3 0.5 30e3 500e3\n REBAr 0.04 4e-4 0.45 9.42e-4\n";
+  std::ostringstream echo;
+  const Model m = build(sect + " STIRrups 1e-4 0.2\n\n", nullptr, &echo);
+  const MaterialSet& mat = *m.material(1);
+  ASSERT_TRUE(mat.rc && mat.softening);
+  EXPECT_NEAR(mat.rc->shearCapacity(1), 1e-4 / 0.2 * 0.9 * 0.45 * 500e3, 1e-9);
+  EXPECT_GT(mat.softening->pieceLength, 1.0);
+  EXPECT_EQ(mat.softening->pieceLength, mat.rc->shortestPiece());
+  EXPECT_NE(echo.str().find("Shortest piece Lb"), std::string::npos);
+  const Model without = build(sect + "\n");
+  EXPECT_EQ(without.material(1)->softening->pieceLength, 0.0);
+  // Its own yield stress.
+  const Model fyw = build(sect + " STIRrups,,1e-4,0.2,250e3\n\n");
+  EXPECT_NEAR(fyw.material(1)->rc->shearCapacity(1), 0.5 * mat.rc->shearCapacity(1), 1e-9);
+  expectBuildError(sect + " STIRrups 1e-4 0\n\n", 7, 16, "spacing s must be positive");
+  expectBuildError(sect + " STIRrups 1e-4\n\n", 7, 15, "STIRrups needs Asw and s");
+  expectBuildError(sect + " STIRrups 1e-4 0.2 5e5 9\n\n", 7, 24, "too many values");
+  expectBuildError(sect + " STIRrups 1e-4 0.2\n STIRrups 1e-4 0.2\n\n", 8, 2, "given twice");
+  expectBuildError("MATE,1\n FRAMe\n ELAS ISOT 1e6 0.2\n CROS SECT 1 1\n STIRrups 1e-4 0.2\n\n", 7,
+                   2, "STIRrups without SECTion");
 }
 
 TEST(MeshBinderJoints, CoincidentNodes) {

@@ -214,6 +214,28 @@ TEST(RcSection, StiffnessesAxialCapacitiesAndHinge) {
   EXPECT_NEAR(l.Kh2, (l.Mu - l.My) / (kpu - kpy), 1e-6 * l.Kh2);
 }
 
+// STIRrups (EC2 6.2.3, cot theta = 1): two legs of 8 mm at 0.2 m, fyw = 500
+// MPa, in the beam (tension bars at d = 0.45 m for positive moments, 0.46 m
+// upside down): Vu+ = 1.00531e-4/0.2 x 0.9 x 0.45 x 500e3 = 101.79 kN, Vu- =
+// 104.05 kN; the struts' 0.3 b z fc = 1093.5 kN do not bound them. Lb =
+// max(200.092/101.79, 92.476/104.05) = 1.966 m.
+TEST(RcSection, ShearCapacityAndShortestPieceAgainstHandCalculations) {
+  RcSectionData d = beam();
+  EXPECT_EQ(RcSection(d).shearCapacity(1), 0.0);
+  EXPECT_EQ(RcSection(d).shortestPiece(), 0.0);  // without stirrups: the mesh's
+  const double asw = 2 * M_PI * 0.004 * 0.004;
+  d.stirrups = Stirrups{asw, 0.2, 500e3};
+  const RcSection s(d);
+  EXPECT_NEAR(s.shearCapacity(1), 101.79, 0.01);
+  EXPECT_NEAR(s.shearCapacity(-1), 104.05, 0.01);
+  EXPECT_NEAR(s.shortestPiece(), 200.092 / 101.79, 1e-3);
+  // Heavy links: the struts crush first, 0.3 x 0.3 x 0.405 x 30e3.
+  d.stirrups = Stirrups{2e-3, 0.1, 500e3};
+  EXPECT_NEAR(RcSection(d).shearCapacity(1), 1093.5, 1e-9);
+  d.stirrups = Stirrups{asw, 0.0, 500e3};
+  EXPECT_THROW(RcSection{d}, std::invalid_argument);
+}
+
 TEST(RcSection, LawDerivativesWithRespectToN) {
   const RcSection s(beam());
   for (int sign : {1, -1})
