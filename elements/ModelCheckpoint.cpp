@@ -145,6 +145,9 @@ void writeModel(std::ostream& out, const Model& model) {
       putCount(out, sec->bars.size());
       for (const RebarLayer& r : sec->bars)
         for (double x : {r.depth, r.area}) put(out, x);
+      putBool(out, sec->stirrups.has_value());
+      if (const auto& st = sec->stirrups)
+        for (double x : {st->area, st->spacing, st->fy}) put(out, x);
     }
   }
   putTag(out, "ELEM");
@@ -273,6 +276,11 @@ Model readModel(std::istream& in, int minTopologyVersion) {
         r.depth = get<double>(in);
         r.area = get<double>(in);
         sec.bars.push_back(r);
+      }
+      if (getBool(in)) {
+        Stirrups st;
+        for (double* x : {&st.area, &st.spacing, &st.fy}) *x = get<double>(in);
+        sec.stirrups = st;
       }
       m.section = sec;
     }

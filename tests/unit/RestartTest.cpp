@@ -354,6 +354,7 @@ MATErial,1 column
   FRAMe
     SECTion RECTangular 0.5 0.5 30e3 500e3
     REBAr 0.05 1.2566e-3 0.45 1.2566e-3
+    STIRrups 1e-4 0.2
     DENSity,,2.5
     FINIte
 
@@ -396,6 +397,10 @@ TEST(Restart, RcMemberWithAnOpenEndHingeContinuesBitForBit) {
   // The save falls while the base hinge softens: its joint is in the model.
   const Loaded mid(first.out / "mid.rst");
   EXPECT_GT(mid.model.numNodes(), 5);
+  // The stirrups with the section: the shortest piece derived again.
+  ASSERT_TRUE(mid.model.material(1)->section->stirrups.has_value());
+  EXPECT_EQ(mid.model.material(1)->section->stirrups->spacing, 0.2);
+  EXPECT_GT(mid.model.material(1)->softening->pieceLength, 1.0);
   EXPECT_NE(first.log.find("hinge  opened"), std::string::npos);
   expectSameTail(readText(whole.out / "whole_tplot.csv"), readText(first.out / "first_tplot.csv"),
                  readText(rest.out / "rest_tplot.csv"));
