@@ -9,7 +9,7 @@
 
 namespace c2d {
 
-enum class Kinematics { Small, Finite };     // SMALl: geometrically linear; FINIte: Reissner
+enum class Kinematics { Small, Finite };  // SMALl: geometrically linear; FINIte: Reissner
 enum class MassType { Consistent, Lumped };
 
 // HARDening BILInear Mc My Kh1 Kh2: bending elastic to Mc, modulus Kh1 to My, Kh2 beyond;
@@ -70,15 +70,15 @@ class RcSection;
 
 struct MaterialSet {
   int number = 0;
-  std::string label;           // free text after MATErial,m
-  std::string elementType;     // "FRAMe" (the only type for now)
+  std::string label;        // free text after MATErial,m
+  std::string elementType;  // "FRAMe" (the only type for now)
   // ELAStic ISOTropic E nu; CROSs SECTion A Ixx Iyy Ixy J kappa (FEAPpv's record; kappa 0: 5/6)
   double E = 0, nu = 0, A = 0, I = 0, kappa = 5.0 / 6.0;
   // RESUltant STIFfness EA GA EI (overrides ELAS + CROS when given)
   std::optional<double> resEA, resGA, resEI;
-  bool shear = true;                       // SHEAr ON (Timoshenko) / OFF (Euler-Bernoulli)
+  bool shear = true;  // SHEAr ON (Timoshenko) / OFF (Euler-Bernoulli)
   Kinematics kinematics = Kinematics::Small;
-  double density = 0;                      // mass per unit volume
+  double density = 0;  // mass per unit volume
   MassType mass = MassType::Consistent;
   // DAMPing RAYLeigh 0 a1 / DAMPing RATIo zeta f: stiffness-proportional
   // damping of the section's strain rates, a1 in time units (s); 0: none

@@ -1,11 +1,11 @@
 #include "elements/HingeToJoint.h"
 
 #include <algorithm>
-#include <functional>
-#include <optional>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "core/Hinge.h"
@@ -68,9 +68,7 @@ bool nearJoint(const Model& model, const std::vector<int>& attached, int node, d
 // Ends of an element that already carry a joint (its wrappers' slave ends).
 std::array<bool, 2> jointedEnds(const Element& e) {
   std::array<bool, 2> ends{false, false};
-  for (auto* j = asJointed(&e); j;
-       j = asJointed(&j->inner()))
-    ends[j->slaveEnd()] = true;
+  for (auto* j = asJointed(&e); j; j = asJointed(&j->inner())) ends[j->slaveEnd()] = true;
   return ends;
 }
 
@@ -78,13 +76,13 @@ std::array<bool, 2> jointedEnds(const Element& e) {
   throw AnalysisError("HINGE2JOINT: element " + std::to_string(element + 1) + ": " + why);
 }
 
-
 // The joint-making shared by HINGE2JOINT and the joints of failed hinges:
 // elements for which wantsJoint() holds get a joint, elements for which
 // rebuild() holds (and those) are rebuilt as Reissner beams.
-std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
-                                  const std::function<bool(const Element&, const HingeInfo&)>& wantsJoint,
-                                  const std::function<bool(const Element&)>& rebuildAlways) {
+std::vector<CreatedJoint> convert(
+    Model& model, State& state, MemberLaws laws,
+    const std::function<bool(const Element&, const HingeInfo&)>& wantsJoint,
+    const std::function<bool(const Element&)>& rebuildAlways) {
   state.resize(model.numNodes());
   const StepRule statics{};
   const int ne = model.numElements();
@@ -113,8 +111,7 @@ std::vector<CreatedJoint> convert(Model& model, State& state, MemberLaws laws,
     Element& in = innermost(el);
     if (Status st = in.evaluate(innermostKinematics(el, state), statics, false, r, k); !st)
       fail(e, st.why);
-    for (auto* je = asJointed(&el); je;
-         je = asJointed(&je->inner()))
+    for (auto* je = asJointed(&el); je; je = asJointed(&je->inner()))
       slaves[je->slaveNode()] =
           Relative{je->masterNode(), je->committedRelativeRotation(),
                    je->committedRelativeVelocity(), je->committedRelativeAcceleration()};
@@ -298,8 +295,7 @@ std::vector<CreatedJoint> jointFailedHinges(Model& model, State& state) {
     else if (auto* c = dynamic_cast<const HingeCarrier*>(&innermost(model.element(e))))
       any = failed(model.element(e), c->hinge());
   if (!any) return {};
-  return convert(model, state, MemberLaws::Inelastic, failed,
-                 [](const Element&) { return false; });
+  return convert(model, state, MemberLaws::Inelastic, failed, [](const Element&) { return false; });
 }
 
 }  // namespace c2d

@@ -68,16 +68,25 @@ bool freeEnd(const Model& model, int node, int attachments) {
   return attachments == 1 && model.bound(node)[2] == 0 && model.force(node)[2] == 0;
 }
 
-bool nearFreeEnd(const Model& model, const std::vector<int>& attached, int node, double lb) {
-  if (!(lb > 0)) return false;
+int freeEndWithin(const Model& model, const std::vector<int>& attached, int node, double lb) {
+  if (!(lb > 0)) return -1;
   constexpr double kCoincident = 1e-9;  // of lb: nodes at one place (a ruptured joint's)
   const Vec2 x = model.coord(node);
+  int nearest = -1;
+  double best = lb;
   for (int n = 0; n < static_cast<int>(attached.size()); ++n) {
     if (n == node || !freeEnd(model, n, attached[n])) continue;
     const double d = (model.coord(n) - x).norm();
-    if (d < lb && d > kCoincident * lb) return true;
+    if (d < best && d > kCoincident * lb) {
+      best = d;
+      nearest = n;
+    }
   }
-  return false;
+  return nearest;
+}
+
+bool nearFreeEnd(const Model& model, const std::vector<int>& attached, int node, double lb) {
+  return freeEndWithin(model, attached, node, lb) >= 0;
 }
 
 double jointFriction(const Model& model, int node) {
@@ -123,9 +132,7 @@ std::vector<JointedElement*> jointedElements(Model& model) {
 std::vector<const JointedElement*> jointedElements(const Model& model) {
   std::vector<const JointedElement*> out;
   for (int e = 0; e < model.numElements(); ++e)
-    for (auto* j =
-             model.hasElement(e) ? asJointed(&model.element(e)) : nullptr;
-         j;
+    for (auto* j = model.hasElement(e) ? asJointed(&model.element(e)) : nullptr; j;
          j = asJointed(&j->inner()))
       out.push_back(j);
   return out;
@@ -200,8 +207,7 @@ std::vector<Joint> dissolveLooseJoints(Model& model, State& state) {
       if (joint.form == JointForm::Condensed)
         for (int e = 0; e < model.numElements() && holder < 0; ++e) {
           if (!model.hasElement(e)) continue;
-          for (auto* je = asJointed(&model.element(e)); je;
-               je = asJointed(&je->inner()))
+          for (auto* je = asJointed(&model.element(e)); je; je = asJointed(&je->inner()))
             if (je->slaveNode() == joint.slave) holder = e;
         }
       // Condensed: its element is gone, or nothing but it holds the master.
@@ -238,15 +244,14 @@ void jointHolders(const Model& model, std::vector<int>& holder, std::vector<int>
   for (int e = model.numElements() - 1; e >= 0; --e) {
     if (!model.hasElement(e)) continue;
     for (int n : model.element(e).nodes()) holder[n] = e;
-    for (auto* je = asJointed(&model.element(e)); je;
-         je = asJointed(&je->inner()))
+    for (auto* je = asJointed(&model.element(e)); je; je = asJointed(&je->inner()))
       wrapper[je->slaveNode()] = e;
   }
 }
 
 }  // namespace
 
-std::vector<RupturedJoint> ruptureJoints(Model& model, State& state) {
+std::vector<RupturedJoint> ruptureJoints(Model& model, State& state, std::vector<HeldJoint>* held) {
   std::vector<RupturedJoint> out;
   if (model.joints().empty()) return out;
   std::vector<char> gone(model.joints().size(), 0);
@@ -265,8 +270,7 @@ std::vector<RupturedJoint> ruptureJoints(Model& model, State& state) {
     if (joint.form == JointForm::Condensed) {
       element = wrapper[joint.slave];
       if (element >= 0)
-        for (auto* je = asJointed(&model.element(element)); je;
-             je = asJointed(&je->inner()))
+        for (auto* je = asJointed(&model.element(element)); je; je = asJointed(&je->inner()))
           if (je->slaveNode() == joint.slave) rotation = je->committedRelativeRotation();
     } else {
       element = holder[joint.slave];
@@ -292,7 +296,10 @@ std::vector<RupturedJoint> ruptureJoints(Model& model, State& state) {
         attached = nodeAttachments(model, gone);
         counted = true;
       }
-      if (nearFreeEnd(model, attached, joint.master, lb)) continue;
+      if (const int end = freeEndWithin(model, attached, joint.master, lb); end >= 0) {
+        if (held) held->push_back({joint.master, joint.slave, element, end, rotation, limit, lb});
+        continue;
+      }
     }
     if (!synced) {  // the slave nodes' state from the joints, before any is removed
       syncSlaveNodes(model, state);

@@ -62,6 +62,15 @@ bool freeEnd(const Model& model, int node, int attachments);
 // so a member that carries no more shear than Vu cannot break nearer than
 // Mu/Vu (SOFTening's or the section's shortest piece Lb).
 bool nearFreeEnd(const Model& model, const std::vector<int>& attached, int node, double lb);
+// The nearest such free end (-1: none within lb).
+int freeEndWithin(const Model& model, const std::vector<int>& attached, int node, double lb);
+
+// A joint past its rupture rotation that stays: within its material's
+// shortest piece Lb of the free end freeEnd (0-based node).
+struct HeldJoint {
+  int master = -1, slave = -1, element = -1, freeEnd = -1;
+  double rotation = 0, limit = 0, pieceLength = 0;
+};
 
 // A joint that ruptured: the two pieces separated at the slave node.
 struct RupturedJoint {
@@ -84,7 +93,9 @@ struct RupturedJoint {
 // rupture: it turns on with its friction, so that no piece shorter than Lb
 // breaks off whatever the mesh (joints ruptured in this pass count). Bumps the
 // topology version when anything ruptured.
-std::vector<RupturedJoint> ruptureJoints(Model& model, State& state);
+// held (optional) receives the joints past thetaR that stay so.
+std::vector<RupturedJoint> ruptureJoints(Model& model, State& state,
+                                         std::vector<HeldJoint>* held = nullptr);
 
 // After elements were removed from the model (BLASt, REMOve): every joint left
 // with a side that no element holds any more is dissolved (a condensed joint

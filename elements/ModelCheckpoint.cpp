@@ -7,9 +7,9 @@
 #include "core/output/Checkpoint.h"
 #include "elements/InelasticFrame.h"
 #include "elements/JointedElement.h"
-#include "materials/SectionLaws.h"
 #include "elements/LinearFrame.h"
 #include "elements/ReissnerFrame.h"
+#include "materials/SectionLaws.h"
 
 namespace c2d {
 
@@ -30,17 +30,24 @@ ElementKind kindOf(const Element& e) {
 std::unique_ptr<Element> build(ElementKind kind, const Model& model, int material,
                                const std::array<int, 2>& nodes) {
   const MaterialSet* mat = model.material(material);
-  if (!mat) throw CheckpointError("element of material set " + std::to_string(material) + ", which is not in the file");
+  if (!mat)
+    throw CheckpointError("element of material set " + std::to_string(material) +
+                          ", which is not in the file");
   for (int n : nodes)
-    if (n < 0 || n >= model.numNodes()) throw CheckpointError("element node " + std::to_string(n + 1) + " out of range");
+    if (n < 0 || n >= model.numNodes())
+      throw CheckpointError("element node " + std::to_string(n + 1) + " out of range");
   const Vec2& x1 = model.coord(nodes[0]);
   const Vec2& x2 = model.coord(nodes[1]);
   try {
     switch (kind) {
-      case ElementKind::Linear: return std::make_unique<LinearFrame>(*mat, nodes, x1, x2);
-      case ElementKind::Reissner: return std::make_unique<ReissnerFrame>(*mat, nodes, x1, x2);
-      case ElementKind::Inelastic: return std::make_unique<InelasticFrame>(*mat, nodes, x1, x2);
-      case ElementKind::Jointed: break;
+      case ElementKind::Linear:
+        return std::make_unique<LinearFrame>(*mat, nodes, x1, x2);
+      case ElementKind::Reissner:
+        return std::make_unique<ReissnerFrame>(*mat, nodes, x1, x2);
+      case ElementKind::Inelastic:
+        return std::make_unique<InelasticFrame>(*mat, nodes, x1, x2);
+      case ElementKind::Jointed:
+        break;
     }
   } catch (const std::invalid_argument& e) {
     throw CheckpointError(std::string("element cannot be rebuilt: ") + e.what());
@@ -62,7 +69,9 @@ void writeElement(std::ostream& out, const Element& element) {
     writeElement(out, j.inner());
   }
   const auto* c = dynamic_cast<const Checkpoint*>(&element);
-  if (!c) throw CheckpointError("element type '" + element.typeName() + "' cannot be written to a restart file");
+  if (!c)
+    throw CheckpointError("element type '" + element.typeName() +
+                          "' cannot be written to a restart file");
   c->writeState(out);
 }
 
@@ -78,13 +87,16 @@ std::unique_ptr<Element> readElement(std::istream& in, const Model& model) {
     const int slaveEnd = get<int>(in);
     const int master = get<int>(in);
     if (slaveEnd != 0 && slaveEnd != 1) throw CheckpointError("bad slave end of a jointed element");
-    if (master < 0 || master >= model.numNodes()) throw CheckpointError("joint master out of range");
+    if (master < 0 || master >= model.numNodes())
+      throw CheckpointError("joint master out of range");
     el = std::make_unique<JointedElement>(readElement(in, model), slaveEnd, master);
   } else {
     el = build(kind, model, material, nodes);
   }
   auto* c = dynamic_cast<Checkpoint*>(el.get());
-  if (!c) throw CheckpointError("element type '" + el->typeName() + "' cannot be read from a restart file");
+  if (!c)
+    throw CheckpointError("element type '" + el->typeName() +
+                          "' cannot be read from a restart file");
   c->readState(in);
   if (el->nodes() != nodes || el->materialNumber() != material)
     throw CheckpointError("element data do not match its header");
@@ -120,7 +132,8 @@ void writeModel(std::ostream& out, const Model& model) {
     put(out, m.mass);
     putBool(out, m.hardening.has_value());
     if (m.hardening) {
-      for (double x : {m.hardening->Mc, m.hardening->My, m.hardening->Kh1, m.hardening->Kh2}) put(out, x);
+      for (double x : {m.hardening->Mc, m.hardening->My, m.hardening->Kh1, m.hardening->Kh2})
+        put(out, x);
       putBool(out, m.hardening->negative.has_value());
       if (const auto& n = m.hardening->negative)
         for (double x : {n->Mc, n->My, n->Kh1, n->Kh2}) put(out, x);
@@ -269,7 +282,8 @@ Model readModel(std::istream& in, int minTopologyVersion) {
     }
     if (getBool(in)) {
       RcSectionData sec;
-      for (double* x : {&sec.b, &sec.h, &sec.fc, &sec.fy, &sec.Es, &sec.fu, &sec.eu}) *x = get<double>(in);
+      for (double* x : {&sec.b, &sec.h, &sec.fc, &sec.fy, &sec.Es, &sec.fu, &sec.eu})
+        *x = get<double>(in);
       const std::size_t layers = getCount(in);
       for (std::size_t i = 0; i < layers; ++i) {
         RebarLayer r;
@@ -349,7 +363,8 @@ Model readModel(std::istream& in, int minTopologyVersion) {
     b.elements.resize(getCount(in));
     for (int& e : b.elements) {
       e = get<int>(in);
-      if (e < 0 || e >= model.numElements()) throw CheckpointError("blast of an element out of range");
+      if (e < 0 || e >= model.numElements())
+        throw CheckpointError("blast of an element out of range");
     }
     model.blasts().push_back(std::move(b));
   }

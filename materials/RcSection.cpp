@@ -23,7 +23,8 @@ double increasingRoot(const std::function<double(double)>& f, double lo, double 
   double x = lo;
   for (int it = 0; it < 200; ++it) {
     const double width = hi - lo;
-    if (!(width > 4 * std::numeric_limits<double>::epsilon() * (std::abs(lo) + std::abs(hi)))) break;
+    if (!(width > 4 * std::numeric_limits<double>::epsilon() * (std::abs(lo) + std::abs(hi))))
+      break;
     x = fhi != flo ? lo - flo * width / (fhi - flo) : 0.5 * (lo + hi);
     if (!(x > lo && x < hi) || it % 4 == 3) x = 0.5 * (lo + hi);
     const double fx = f(x);
@@ -55,11 +56,11 @@ RcSection::RcSection(const RcSectionData& data) : d_(data) {
   if (!(d_.eu > d_.fy / d_.Es)) bad("bar fracture strain eu must exceed the yield strain fy/Es");
   if (d_.bars.empty()) bad("the section has no bars (REBAr)");
   for (const RebarLayer& r : d_.bars) {
-    if (!(r.depth > 0 && r.depth < d_.h)) bad("a bar layer lies outside the section (0 < depth < h)");
+    if (!(r.depth > 0 && r.depth < d_.h))
+      bad("a bar layer lies outside the section (0 < depth < h)");
     if (!(r.area > 0)) bad("a bar layer's area must be positive");
   }
-  if (const auto& st = d_.stirrups;
-      st && !(st->area > 0 && st->spacing > 0 && st->fy > 0))
+  if (const auto& st = d_.stirrups; st && !(st->area > 0 && st->spacing > 0 && st->fy > 0))
     bad("the stirrups' area, spacing and yield stress must be positive");
   bars_[0] = d_.bars;
   bars_[1] = d_.bars;
@@ -82,12 +83,11 @@ RcSection::RcSection(const RcSectionData& data) : d_(data) {
   // Nodes on [-Nc, 0] and [0, Nt] (N = 0 one of them: the laws echoed and
   // used at N = 0 are the section's), about as far apart on both sides.
   const double nLo = -squashLoad(), nHi = tensionYield();
-  const int below = std::clamp(static_cast<int>(std::lround((kTableNodes - 1) * -nLo / (nHi - nLo))), 4,
-                               kTableNodes - 5);
+  const int below = std::clamp(
+      static_cast<int>(std::lround((kTableNodes - 1) * -nLo / (nHi - nLo))), 4, kTableNodes - 5);
   std::vector<double> ns;
   for (int i = 0; i <= below; ++i) ns.push_back(nLo * (1 - static_cast<double>(i) / below));
-  for (int i = 1; i < kTableNodes - below; ++i)
-    ns.push_back(nHi * i / (kTableNodes - 1 - below));
+  for (int i = 1; i < kTableNodes - below; ++i) ns.push_back(nHi * i / (kTableNodes - 1 - below));
   ns[below] = 0.0;
   for (int k = 0; k < 2; ++k) {
     std::array<std::vector<double>, 6> v;

@@ -83,8 +83,8 @@ class RcSection final : public MomentCapacity {
   struct State {
     bool exists = false;  // false: none at this N (the axial force alone reaches it)
     double M = 0, kappa = 0;
-    double e0 = 0;      // strain of the compressed face
-    double depth = 0;   // neutral axis depth from the compressed face (inf: none)
+    double e0 = 0;     // strain of the compressed face
+    double depth = 0;  // neutral axis depth from the compressed face (inf: none)
   };
   // Cracking of the transformed uncracked section: the tension face at fct.
   State cracking(double N, int sign) const;

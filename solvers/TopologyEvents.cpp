@@ -1,5 +1,6 @@
 #include "solvers/TopologyEvents.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -91,17 +92,29 @@ bool TopologyEvents::afterCommit(Model& model, State& state) {
   }
   if (anyFailedHinge()) {
     for (const CreatedJoint& j : jointFailedHinges(model, state))
-      events.push_back({TopologyEvent::Kind::JointFormed, j.element, j.master, j.slave,
-                        j.relativeRotation, 0});
+      events.push_back(
+          {TopologyEvent::Kind::JointFormed, j.element, j.master, j.slave, j.relativeRotation, 0});
     index(model);  // the joints just made
   }
+  std::vector<HeldJoint> held;
   if (anyJointPastRupture(model, state))
-    for (const RupturedJoint& j : ruptureJoints(model, state))
+    for (const RupturedJoint& j : ruptureJoints(model, state, &held))
       events.push_back(
           {TopologyEvent::Kind::JointRuptured, j.element, j.master, j.slave, j.rotation, j.limit});
+  const bool changed = !events.empty();
+  for (const HeldJoint& h : held) {
+    if (std::find(heldReported_.begin(), heldReported_.end(), h.slave) != heldReported_.end())
+      continue;
+    heldReported_.push_back(h.slave);
+    TopologyEvent ev{
+        TopologyEvent::Kind::JointHeld, h.element, h.master, h.slave, h.rotation, h.limit};
+    ev.end = h.freeEnd;
+    ev.pieceLength = h.pieceLength;
+    events.push_back(ev);
+  }
   if (onEvent)
     for (const TopologyEvent& e : events) onEvent(e);
-  return !events.empty();
+  return changed;
 }
 
 }  // namespace c2d

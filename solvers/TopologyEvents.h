@@ -20,12 +20,16 @@ namespace c2d {
 class JointedElement;
 
 struct TopologyEvent {
-  enum class Kind { JointFormed, JointRuptured, HingeOpened, BarsFractured };
+  // JointHeld: a joint past its rupture rotation within its material's
+  // shortest piece of a free end (end: that node), reported once; the model
+  // does not change.
+  enum class Kind { JointFormed, JointRuptured, HingeOpened, BarsFractured, JointHeld };
   Kind kind = Kind::JointFormed;
   int element = -1;             // 0-based
   int master = -1, slave = -1;  // 0-based nodes
   double rotation = 0;          // the joint's relative rotation (rad)
-  double limit = 0;             // rupture rotation (ruptures)
+  double limit = 0;             // rupture rotation (ruptures, held joints)
+  double pieceLength = 0;       // the shortest piece Lb (held joints)
   // HingeOpened: end (0, 1), the end moment, Mu and N at opening, failure jump;
   // BarsFractured: end, the axial force, whether through a joint.
   int end = 0;
@@ -58,6 +62,7 @@ class TopologyEvents {
   // Of those, the elements whose failed hinge becomes a joint (jointsWhenFailed).
   std::vector<const HingeCarrier*> jointCarriers_;
   std::vector<const JointedElement*> wrappers_;
+  std::vector<int> heldReported_;  // slave nodes of the held joints reported
 };
 
 }  // namespace c2d

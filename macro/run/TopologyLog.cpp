@@ -23,11 +23,12 @@ void logTopologyEvent(std::ostream& log, const Model& model, double t, const Top
     case TopologyEvent::Kind::JointFormed: {
       ++counts.jointsFormed;
       log << "  joint  formed at t = " << num(t) << ": element " << ev.element + 1
-          << ", fully softened hinge, at node " << ev.master + 1 << " (slave node "
-          << ev.slave + 1 << "), relative rotation " << num(ev.rotation);
+          << ", fully softened hinge, at node " << ev.master + 1 << " (slave node " << ev.slave + 1
+          << "), relative rotation " << num(ev.rotation);
       // A member's second joint (elements/HingeToJoint.h): a link from now on.
       const JointedElement* j = asJointed(&model.element(ev.element));
-      if (j && asJointed(&j->inner())) log << "; its second: the member is a link pinned at both ends";
+      if (j && asJointed(&j->inner()))
+        log << "; its second: the member is a link pinned at both ends";
       log << "\n";
       break;
     }
@@ -37,6 +38,13 @@ void logTopologyEvent(std::ostream& log, const Model& model, double t, const Top
           << " separates at node " << ev.master + 1 << " (new node " << ev.slave + 1
           << "), relative rotation " << num(ev.rotation) << " beyond thetaR = " << num(ev.limit)
           << "\n";
+      break;
+    case TopologyEvent::Kind::JointHeld:
+      log << "  joint  held at t = " << num(t) << ": element " << ev.element + 1 << " at node "
+          << ev.master + 1 << ", relative rotation " << num(ev.rotation)
+          << " beyond thetaR = " << num(ev.limit)
+          << ", does not rupture: within the shortest piece Lb = " << num(ev.pieceLength)
+          << " of the free end at node " << ev.end + 1 << " (it turns on with its friction)\n";
       break;
     case TopologyEvent::Kind::HingeOpened:
       ++counts.hinges;
@@ -49,8 +57,8 @@ void logTopologyEvent(std::ostream& log, const Model& model, double t, const Top
       ++counts.fractures;
       log << "  bars   fractured at t = " << num(t) << ": element " << ev.element + 1
           << " separates at node " << ev.master + 1 << " (its end " << ev.end + 1 << ", new node "
-          << ev.slave + 1 << (ev.throughJoint ? ", through its joint" : "")
-          << "), axial force " << num(ev.axialForce) << "\n";
+          << ev.slave + 1 << (ev.throughJoint ? ", through its joint" : "") << "), axial force "
+          << num(ev.axialForce) << "\n";
       break;
   }
 }

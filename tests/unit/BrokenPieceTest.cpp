@@ -175,6 +175,26 @@ TEST(BrokenPiece, APieceFreedByARuptureInFlightKeepsItsEnergyAndFallsAtG) {
   }
 }
 
+// The same pendulum with a shortest piece Lb = 2 m: its joint lies 1.5 m from
+// either free end (the pin at node 1, the tip at node 4), so it does not
+// rupture past thetaR; the log says so once, naming the free end.
+TEST(BrokenPiece, AJointWithinTheShortestPieceOfAFreeEndIsHeldAndLoggedOnce) {
+  DeckTempDir dir;
+  std::string deck = kRupturedPendulum;
+  const std::string soft = "SOFTening LINEar 265 -723 0.5";
+  deck.replace(deck.find(soft), soft.size(), soft + " 0 2");
+  const DeckResult r = runDeckText(dir, "held.inp", deck);
+  ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message << r.log;
+  EXPECT_EQ(r.log.find("joint  ruptured"), std::string::npos) << r.log;
+  const std::string held = "element 2 at node 2, relative rotation ";
+  const std::size_t at = r.log.find("joint  held at t = ");
+  ASSERT_NE(at, std::string::npos) << r.log;
+  EXPECT_NE(r.log.find(held, at), std::string::npos);
+  EXPECT_NE(r.log.find("within the shortest piece Lb = 2.000000e+00 of the free end at node 1", at),
+            std::string::npos);
+  EXPECT_EQ(r.log.find("joint  held", at + 1), std::string::npos);  // once
+}
+
 // One element of a SECTion column (0.4 x 0.4 m) standing on its foot on a
 // ground with friction mu = 0.5, gravity tilted by 0.7 g (an incline steeper
 // than mu): the friction at the foot holds it back while gravity pulls its

@@ -221,9 +221,9 @@ TEST(InelasticReissnerV2, EndMomentThroughFailureToOneRadian) {
   EXPECT_EQ(events, 1);  // the failed hinge became a joint, once
   EXPECT_NEAR(an.state().u[3 * n + 2], 1.0, 1e-12);
   const Energy en = an.energy();
-  const double dissipated = kL * ((kMy * kMy - kMc * kMc) / (2 * kKh1) +
-                                  (kMu * kMu - kMy * kMy) / (2 * kKh2)) +
-                            kMu * kMu / (2 * -kKs);
+  const double dissipated =
+      kL * ((kMy * kMy - kMc * kMc) / (2 * kKh1) + (kMu * kMu - kMy * kMy) / (2 * kKh2)) +
+      kMu * kMu / (2 * -kKs);
   EXPECT_NEAR(en.dissipated, dissipated, 1e-7 * dissipated);
   EXPECT_NEAR(en.strain, 0, 1e-9 * dissipated);
   EXPECT_LT(worstBalance, 1e-8 * peak);
@@ -420,7 +420,8 @@ TEST(InelasticReissnerRupture, AJointOnTheGroundRupturesWhenItsNodeLeavesIt) {
 // from its STIRrups): a joint there turns on instead of rupturing, and the free
 // ends a rupture leaves count at once. A 1 m rod held at both ends, joints at
 // x = 0.25, 0.5, 0.75 m all past thetaR.
-std::vector<RupturedJoint> ruptureJointsOfHeldRod(double lb) {
+std::vector<RupturedJoint> ruptureJointsOfHeldRod(double lb,
+                                                  std::vector<HeldJoint>* held = nullptr) {
   FlyingRod rod(0.1);
   Model& m = rod.m;
   m.materials().at(1).softening->pieceLength = lb;
@@ -434,7 +435,7 @@ std::vector<RupturedJoint> ruptureJointsOfHeldRod(double lb) {
   for (JointedElement* j : jointedElements(m)) j->setRelativeState(0.3);
   State s;
   s.resize(m.numNodes());
-  return ruptureJoints(m, s);
+  return ruptureJoints(m, s, held);
 }
 
 TEST(InelasticReissnerRupture, NoRuptureWithinTheShortestPieceOfAFreeEnd) {
@@ -442,10 +443,19 @@ TEST(InelasticReissnerRupture, NoRuptureWithinTheShortestPieceOfAFreeEnd) {
   EXPECT_EQ(ruptureJointsOfHeldRod(0.2).size(), 3u);  // the joints 0.25 m apart
   // Lb = 0.3 m: the joint at x = 0.25 m ruptures first; the one at 0.5 m lies
   // within Lb of the free ends it left and turns on; the one at 0.75 m does not.
-  const std::vector<RupturedJoint> held = ruptureJointsOfHeldRod(0.3);
+  std::vector<HeldJoint> kept;
+  const std::vector<RupturedJoint> held = ruptureJointsOfHeldRod(0.3, &kept);
   ASSERT_EQ(held.size(), 2u);
   EXPECT_EQ(held[0].master, 1);
   EXPECT_EQ(held[1].master, 3);
+  // The one that stays names the free end that holds it for the log: node
+  // 1, the left piece's end at x = 0.25 m (the right piece's, its slave node,
+  // lies there too).
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_EQ(kept[0].master, 2);
+  EXPECT_EQ(kept[0].freeEnd, 1);
+  EXPECT_EQ(kept[0].pieceLength, 0.3);
+  EXPECT_NEAR(kept[0].rotation, 0.3, 1e-15);
   // A pinned end is free too: with node 0 free to turn the joint at 0.25 m
   // lies within Lb of it.
   FlyingRod rod(0.1);

@@ -77,7 +77,8 @@ Hand handUltimate(const RcSectionData& d, int sign, double N) {
 
 Hand handYield(const RcSectionData& d, int sign, double N) {
   const double ey = d.fy / d.Es;
-  return handState(d, sign, N, [ey](double x, double dt) { return std::min(ey / (dt - x), kC2 / x); });
+  return handState(d, sign, N,
+                   [ey](double x, double dt) { return std::min(ey / (dt - x), kC2 / x); });
 }
 
 const double kA20 = M_PI * 0.01 * 0.01, kA16 = M_PI * 0.008 * 0.008;
@@ -105,7 +106,8 @@ RcSectionData beam() {
   return d;
 }
 
-void expectHand(const RcSection& s, int sign, double N, double xu, double Mu, double xy, double My) {
+void expectHand(const RcSection& s, int sign, double N, double xu, double Mu, double xy,
+                double My) {
   SCOPED_TRACE("sign " + std::to_string(sign) + ", N = " + std::to_string(N));
   const RcSectionData& d = s.data();
   const RcSection::State u = s.ultimate(N, sign), y = s.firstYield(N, sign);
@@ -134,8 +136,8 @@ TEST(RcSection, ColumnOfV20AgainstHandCalculations) {
   }
   // N = 0: the compression bars at 0.05 m sit next to the neutral axis, so
   // Mu is about T (d - d') + C (h/2 - beta x) with T = 4 A fy = 628.3 kN.
-  EXPECT_NEAR(s.ultimate(0, 1).M, 628.3 * 0.2 + 0.8095 * 30e3 * 0.5 * 0.05072 * (0.25 - 0.416 * 0.05072),
-              3.0);
+  EXPECT_NEAR(s.ultimate(0, 1).M,
+              628.3 * 0.2 + 0.8095 * 30e3 * 0.5 * 0.05072 * (0.25 - 0.416 * 0.05072), 3.0);
 }
 
 TEST(RcSection, UnsymmetricBeamAgainstHandCalculationsBothSigns) {
