@@ -159,12 +159,22 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
   }
   if (!missing || !wantTangent) return;
   // The pattern gets the candidates within a quarter of the search margin of
-  // contact: the pairs about to touch, not every pair of the search (whose
-  // couplings would only add fill to the factors).
+  // touching: the pairs about to touch, not every pair of the search (whose
+  // couplings would only add fill to the factors). Within by their
+  // penetration, not only by their boxes: the boxes of members lying along
+  // each other overlap far beyond it (the main example's pile: 880 pairs in
+  // the pattern by their boxes, 450 by their penetration, 140-170 touching).
   patternPairs_.clear();
   const double reserve = 0.25 * members_->margin();
-  for (const ContactPair& p : candidates)
-    if (swept_.reach(p, reserve)) patternPairs_.push_back(p.key());
+  // (The pairs with a force always: they are candidates, in the same order.)
+  std::size_t next = 0;
+  for (const ContactPair& p : candidates) {
+    const bool force =
+        next < contactForces_.size() && contactForces_[next].pair.key() == p.key();
+    if (force) ++next;
+    if (force || (swept_.reach(p, reserve) && members_->within(p, model_, s, reserve)))
+      patternPairs_.push_back(p.key());
+  }
   buildPattern();
   for (PairForce& pf : contactForces_) pf.slot = slotOf(pf.pair);
 }

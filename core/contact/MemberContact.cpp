@@ -272,6 +272,16 @@ bool MemberContact::evaluate(const ContactPair& pair, const Model& model, const 
   return true;
 }
 
+bool MemberContact::within(const ContactPair& pair, const Model& model, const State& s,
+                           double extra) const {
+  PairPositions q0, q1;
+  if (!positions(pair, model, s, q0, q1, slack_ + extra)) return false;
+  const PairMemory* m = memory(s, pair.key());
+  const int sd = side(m, q0);
+  const double h = reach(pair, m);
+  return pairPenetration(q1, sd, h, face(m)) > -extra || pairPenetration(q0, sd, h, face(m)) > -extra;
+}
+
 PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, const State& s,
                                    const StepRule& rule, double* full) const {
   PairPositions q0, q1;

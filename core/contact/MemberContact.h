@@ -169,6 +169,10 @@ class MemberContact {
     return positions(pair, model, s, q0, q1, extra);
   }
 
+  // The pair comes within extra of touching over the step to s: its
+  // penetration, as evaluate() sees it, exceeds -extra at t_n or t_n+1.
+  bool within(const ContactPair& pair, const Model& model, const State& s, double extra) const;
+
   double margin() const { return margin_; }
   // The most a pair's memory reaches beyond its contact distance: evaluate()
   // sees a pair whose swept boxes are within its distance plus this.

@@ -514,6 +514,44 @@ TEST(MemberContactModel, AssembledTangentMatchesFiniteDifferences) {
   }
 }
 
+TEST(MemberContactModel, ThePatternHoldsThePairsAboutToTouchOnly) {
+  // A bar pressed with one end onto a diagonal rod, its other end inside the
+  // box of the rod's segment but 0.21 from its line (contact distance 0.1,
+  // the pattern's reserve a quarter of the search margin, 0.06): the pattern
+  // couples the pressed node with the segment's ends and not the far one,
+  // whose coupling would only add fill to the factors (the boxes of members
+  // lying at an angle across each other overlap far beyond touching).
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 10, 1.0, 2.5e-3 / 3);  // r = 0.05
+  newRod(m, Vec2(0, 0), Vec2(1, 1), 2);
+  // 0.5 lower in the reference configuration (pairs within contact distance
+  // there never contact), displaced up into place.
+  const int bar = newRod(m, Vec2(0.1, -0.1), Vec2(0.25, -0.2), 1);
+  const int pressed = bar + 1;
+  m.memberContact() = MemberContactData{1e3, 0, -1};
+  Assembler as(m);
+  as.refresh();
+  State s;
+  s.resize(m.numNodes());
+  for (int n = bar; n <= pressed; ++n) s.u(3 * n + 1) = s.un(3 * n + 1) = 0.5;
+  const StepRule rule = TimeIntegrator::statics().rule(0);
+  const Eigen::VectorXd factors = Eigen::VectorXd::Zero(3 * m.numNodes());
+  ASSERT_TRUE(as.assemble(s, rule, factors, true));  // the pattern without pairs
+  ASSERT_TRUE(as.assemble(s, rule, factors, true));  // and with the pressed pair
+  const SparseMatrix& K = as.tangent();
+  auto coupled = [&](int a, int b) {
+    const int i = as.dofs().eq(a, 0), j = as.dofs().eq(b, 0);
+    for (SparseMatrix::InnerIterator it(K, j); it; ++it)
+      if (it.row() == i) return true;
+    return false;
+  };
+  const int segmentEnd = 1;  // the diagonal's middle node: end b of its first segment
+  ASSERT_TRUE(coupled(pressed, 0));
+  EXPECT_TRUE(coupled(pressed, segmentEnd));
+  EXPECT_FALSE(coupled(bar, 0));
+  EXPECT_FALSE(coupled(bar, segmentEnd));
+}
+
 // --- collisions ---------------------------------------------------------------
 
 struct Collision {
