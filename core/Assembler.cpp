@@ -169,8 +169,7 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
   // (The pairs with a force always: they are candidates, in the same order.)
   std::size_t next = 0;
   for (const ContactPair& p : candidates) {
-    const bool force =
-        next < contactForces_.size() && contactForces_[next].pair.key() == p.key();
+    const bool force = next < contactForces_.size() && contactForces_[next].pair.key() == p.key();
     if (force) ++next;
     if (force || (swept_.reach(p, reserve) && members_->within(p, model_, s, reserve)))
       patternPairs_.push_back(p.key());

@@ -279,7 +279,8 @@ bool MemberContact::within(const ContactPair& pair, const Model& model, const St
   const PairMemory* m = memory(s, pair.key());
   const int sd = side(m, q0);
   const double h = reach(pair, m);
-  return pairPenetration(q1, sd, h, face(m)) > -extra || pairPenetration(q0, sd, h, face(m)) > -extra;
+  return pairPenetration(q1, sd, h, face(m)) > -extra ||
+         pairPenetration(q0, sd, h, face(m)) > -extra;
 }
 
 PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, const State& s,
@@ -323,8 +324,8 @@ PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, 
 namespace {
 
 bool sameRule(const StepRule& a, const StepRule& b) {
-  return a.scheme == b.scheme && a.alpha == b.alpha && a.h == b.h && a.cv == b.cv &&
-         a.vv == b.vv && a.va == b.va && a.ca == b.ca && a.av == b.av && a.aa == b.aa;
+  return a.scheme == b.scheme && a.alpha == b.alpha && a.h == b.h && a.cv == b.cv && a.vv == b.vv &&
+         a.va == b.va && a.ca == b.ca && a.av == b.av && a.aa == b.aa;
 }
 
 bool sameMemory(const std::vector<PairMemory>& a, const std::vector<PairMemory>& b) {
@@ -345,8 +346,8 @@ bool keep(Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 }  // namespace
 
 const std::vector<MemberContact::StepOutcome>& MemberContact::outcomes(const Model& model,
-                                                                      const State& s,
-                                                                      const StepRule& rule) const {
+                                                                       const State& s,
+                                                                       const StepRule& rule) const {
   const std::vector<ContactPair>& pairs = candidates(model, s);
   // Every input kept is compared (and copied when it differs): no caller has
   // to say when the state changed.

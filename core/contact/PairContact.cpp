@@ -288,16 +288,17 @@ bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, dou
   PairStep step;
   if (!pairTouches(q0, q1, side, h, rule, wantTangent, step, face)) {
     // Out of contact over the step: no force, and the friction spring lets go.
-    if (outcome) *outcome = PairOutcome{step.p0, step.p1, 0.0, springFrictionEnergy(law.k, law.stretch)};
+    if (outcome)
+      *outcome = PairOutcome{step.p0, step.p1, 0.0, springFrictionEnergy(law.k, law.stretch)};
     return false;
   }
   pairContact(step, side, h, law, rule, wantTangent, force, tangent, outcome, face);
   return true;
 }
 
-void pairContact(const PairStep& step, int side, double h, const PairLaw& law,
-                 const StepRule& rule, bool wantTangent, PairVec& force, PairMat& tangent,
-                 PairOutcome* outcome, double face) {
+void pairContact(const PairStep& step, int side, double h, const PairLaw& law, const StepRule& rule,
+                 bool wantTangent, PairVec& force, PairMat& tangent, PairOutcome* outcome,
+                 double face) {
   const Vec4& z0 = step.z0;
   const Vec4& z1 = step.z1;
   const double k = law.k;

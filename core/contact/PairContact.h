@@ -74,8 +74,8 @@ bool pairTouches(const PairPositions& q0, const PairPositions& q1, int side, dou
                  const StepRule& rule, bool wantTangent, PairStep& step, double face = 0);
 // The force (and tangent) of a pair that touches, from its step; the same
 // arguments as pairContact's.
-void pairContact(const PairStep& step, int side, double h, const PairLaw& law,
-                 const StepRule& rule, bool wantTangent, PairVec& force, PairMat& tangent,
-                 PairOutcome* outcome = nullptr, double face = 0);
+void pairContact(const PairStep& step, int side, double h, const PairLaw& law, const StepRule& rule,
+                 bool wantTangent, PairVec& force, PairMat& tangent, PairOutcome* outcome = nullptr,
+                 double face = 0);
 
 }  // namespace c2d
