@@ -22,6 +22,7 @@ bool Assembler::refresh() {
   dofs_ = DofMap(model_);
   stretch_.resize(0);  // until the next assembly: the committed stretches
   members_ = model_.memberContact() ? std::make_unique<MemberContact>(model_, dofs_) : nullptr;
+  swept_.forget();
   patternPairs_.clear();
   // With member contact the pattern waits for the first assembly, where the
   // pairs with a force are known: built here without them, it was built again
@@ -146,7 +147,9 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
   members_->assembling(rule);
   swept_.update(model_, s);
   const double extra = members_->slack();
-  for (const ContactPair& p : candidates) {
+  for (int i : swept_.near(s, candidates, members_->candidatesVersion(), extra,
+                           0.25 * members_->margin())) {
+    const ContactPair& p = candidates[i];
     if (!swept_.reach(p, extra)) continue;
     if (!members_->evaluate(p, model_, s, rule, wantTangent, f, k)) continue;
     const int slot = slotOf(p);
@@ -181,6 +184,7 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
 void Assembler::restartContactSearch() {
   if (!members_) return;
   members_ = std::make_unique<MemberContact>(model_, dofs_);
+  swept_.forget();
   patternPairs_.clear();
   buildPattern();
 }

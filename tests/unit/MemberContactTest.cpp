@@ -15,6 +15,7 @@
 
 #include "ContactTestSupport.h"
 #include "core/contact/ContactGrid.h"
+#include "core/contact/SweptBoxes.h"
 #include "core/contact/CrushingLaw.h"
 #include "core/contact/MemberContact.h"
 #include "core/contact/MemberCrossing.h"
@@ -550,6 +551,49 @@ TEST(MemberContactModel, ThePatternHoldsThePairsAboutToTouchOnly) {
   EXPECT_TRUE(coupled(pressed, segmentEnd));
   EXPECT_FALSE(coupled(bar, 0));
   EXPECT_FALSE(coupled(bar, segmentEnd));
+}
+
+TEST(MemberContactModel, TheStepsNearListHoldsEveryPairWithinReach) {
+  // Two crossing rods, the second moved across the first by Newton-like
+  // increments: every candidate within reach by its boxes is in the list
+  // SweptBoxes::near keeps, while the nodes move by less than a quarter of
+  // its slack and after a move beyond (when it is found afresh; kept for
+  // good, it missed the pairs the crossing point reached).
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 10, 1.0, 2.5e-3 / 3);  // r = 0.05
+  newRod(m, Vec2(0, 0), Vec2(2, 0), 8);
+  const int bar = newRod(m, Vec2(0.3, -0.6), Vec2(1.2, -1.1), 6);  // displaced up below
+  m.memberContact() = MemberContactData{1e3, 0, -1};
+  Assembler as(m);
+  as.refresh();
+  const MemberContact& mc = *as.memberContact();
+  State s;
+  s.resize(m.numNodes());
+  for (int n = bar; n < m.numNodes(); ++n) s.u(3 * n + 1) = s.un(3 * n + 1) = 0.8;
+  SweptBoxes swept;
+  const double slack = 0.25 * mc.margin();
+  int reached = 0;
+  for (int iteration = 0; iteration < 40; ++iteration) {
+    // Steps down and along of a third of the list's slack: the list is kept
+    // for some and found afresh after a few, between the candidates' searches.
+    const double dy = -slack / 3, dx = 0.1 * slack * std::sin(iteration);
+    for (int n = bar; n < m.numNodes(); ++n) {
+      s.u(3 * n) += dx;
+      s.u(3 * n + 1) += dy;
+    }
+    const auto& candidates = mc.candidates(m, s);
+    swept.update(m, s);
+    const std::vector<int>& near =
+        swept.near(s, candidates, mc.candidatesVersion(), mc.slack(), slack);
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      if (!swept.reach(candidates[i], mc.slack())) continue;
+      ++reached;
+      EXPECT_TRUE(std::find(near.begin(), near.end(), static_cast<int>(i)) != near.end())
+          << "iteration " << iteration << ", pair " << candidates[i].node << "-"
+          << candidates[i].element;
+    }
+  }
+  EXPECT_GT(reached, 40);  // the rods were within reach in every iteration
 }
 
 // --- collisions ---------------------------------------------------------------
