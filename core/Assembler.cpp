@@ -22,6 +22,7 @@ bool Assembler::refresh() {
   dofs_ = DofMap(model_);
   stretch_.resize(0);  // until the next assembly: the committed stretches
   members_ = model_.memberContact() ? std::make_unique<MemberContact>(model_, dofs_) : nullptr;
+  swept_.forget();
   patternPairs_.clear();
   // With member contact the pattern waits for the first assembly, where the
   // pairs with a force are known: built here without them, it was built again
@@ -146,7 +147,9 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
   members_->assembling(rule);
   swept_.update(model_, s);
   const double extra = members_->slack();
-  for (const ContactPair& p : candidates) {
+  for (int i : swept_.near(s, candidates, members_->candidatesVersion(), extra,
+                           0.25 * members_->margin())) {
+    const ContactPair& p = candidates[i];
     if (!swept_.reach(p, extra)) continue;
     if (!members_->evaluate(p, model_, s, rule, wantTangent, f, k)) continue;
     const int slot = slotOf(p);
@@ -159,12 +162,21 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
   }
   if (!missing || !wantTangent) return;
   // The pattern gets the candidates within a quarter of the search margin of
-  // contact: the pairs about to touch, not every pair of the search (whose
-  // couplings would only add fill to the factors).
+  // touching: the pairs about to touch, not every pair of the search (whose
+  // couplings would only add fill to the factors). Within by their
+  // penetration, not only by their boxes: the boxes of members lying along
+  // each other overlap far beyond it (the main example's pile: 880 pairs in
+  // the pattern by their boxes, 450 by their penetration, 140-170 touching).
   patternPairs_.clear();
   const double reserve = 0.25 * members_->margin();
-  for (const ContactPair& p : candidates)
-    if (swept_.reach(p, reserve)) patternPairs_.push_back(p.key());
+  // (The pairs with a force always: they are candidates, in the same order.)
+  std::size_t next = 0;
+  for (const ContactPair& p : candidates) {
+    const bool force = next < contactForces_.size() && contactForces_[next].pair.key() == p.key();
+    if (force) ++next;
+    if (force || (swept_.reach(p, reserve) && members_->within(p, model_, s, reserve)))
+      patternPairs_.push_back(p.key());
+  }
   buildPattern();
   for (PairForce& pf : contactForces_) pf.slot = slotOf(pf.pair);
 }
@@ -172,6 +184,7 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
 void Assembler::restartContactSearch() {
   if (!members_) return;
   members_ = std::make_unique<MemberContact>(model_, dofs_);
+  swept_.forget();
   patternPairs_.clear();
   buildPattern();
 }

@@ -14,9 +14,9 @@
 //
 // Member contact couples a node with the ends of an element segment: its pairs
 // are in the pattern too. The pattern holds the candidate pairs of the contact
-// search (core/contact/MemberContact.h) that are within a quarter of the search margin
-// of contact (so the pairs that come into contact over the next steps are
-// mostly there already) and is rebuilt, with the current candidates, only when
+// search (core/contact/MemberContact.h) whose penetration is within a quarter of the
+// search margin of touching (so the pairs that come into contact over the next
+// steps are mostly there already) and is rebuilt, with the current candidates, only when
 // a pair carrying a force is not in it; structureVersion() then changes and the
 // solver analyses the new pattern.
 #include <array>

@@ -265,9 +265,22 @@ bool MemberContact::evaluate(const ContactPair& pair, const Model& model, const 
   const double h = reach(pair, m);
   // Most candidates are apart (a twelfth carries a force): their law (the
   // dashpot's pair mass and rates) is not formed.
-  if (!touches(q0, q1, sd, h, face(m), rule)) return false;
-  return pairContact(q0, q1, sd, h, law(pair, s, q0, m), rule, wantTangent, force, tangent, nullptr,
-                     face(m));
+  PairStep step;
+  if (!pairTouches(q0, q1, sd, h, rule, wantTangent, step, face(m))) return false;
+  pairContact(step, sd, h, law(pair, s, q0, m), rule, wantTangent, force, tangent, nullptr,
+              face(m));
+  return true;
+}
+
+bool MemberContact::within(const ContactPair& pair, const Model& model, const State& s,
+                           double extra) const {
+  PairPositions q0, q1;
+  if (!positions(pair, model, s, q0, q1, slack_ + extra)) return false;
+  const PairMemory* m = memory(s, pair.key());
+  const int sd = side(m, q0);
+  const double h = reach(pair, m);
+  return pairPenetration(q1, sd, h, face(m)) > -extra ||
+         pairPenetration(q0, sd, h, face(m)) > -extra;
 }
 
 PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, const State& s,
@@ -291,10 +304,12 @@ PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, 
     out.stretch = m ? m->stretch : 0.0;
     return out;
   }
-  out.p0 = pairPenetration(q0, sd, reach(pair, m), face(m));
-  out.p1 = pairPenetration(q1, sd, reach(pair, m), face(m));
+  PairStep step;
+  const bool touching = pairTouches(q0, q1, sd, reach(pair, m), rule, false, step, face(m));
+  out.p0 = step.p0;
+  out.p1 = step.p1;
   if (data_.mu <= 0) return out;  // frictionless: the penetrations tell all
-  if (!(out.p1 > 0 || (rule.scheme == Scheme::MidPoint && out.p0 > 0))) {
+  if (!touching) {
     // Apart over the step (as pairContact decides): the friction spring lets
     // go, and the law is not formed.
     out.slipped = springFrictionEnergy(data_.k, m ? m->stretch : 0.0);
@@ -302,15 +317,70 @@ PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, 
   }
   PairVec f;
   PairMat k;
-  pairContact(q0, q1, sd, reach(pair, m), law(pair, s, q0, m), rule, false, f, k, &out, face(m));
+  pairContact(step, sd, reach(pair, m), law(pair, s, q0, m), rule, false, f, k, &out, face(m));
   return out;
+}
+
+namespace {
+
+bool sameRule(const StepRule& a, const StepRule& b) {
+  return a.scheme == b.scheme && a.alpha == b.alpha && a.h == b.h && a.cv == b.cv && a.vv == b.vv &&
+         a.va == b.va && a.ca == b.ca && a.av == b.av && a.aa == b.aa;
+}
+
+bool sameMemory(const std::vector<PairMemory>& a, const std::vector<PairMemory>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                    [](const PairMemory& x, const PairMemory& y) {
+                      return x.key == y.key && x.q == y.q && x.offset == y.offset &&
+                             x.stretch == y.stretch && x.h == y.h && x.side == y.side;
+                    });
+}
+
+// Assigns b to a and tells whether they were equal already.
+bool keep(Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  if (a.size() == b.size() && a == b) return true;
+  a = b;
+  return false;
+}
+
+}  // namespace
+
+const std::vector<MemberContact::StepOutcome>& MemberContact::outcomes(const Model& model,
+                                                                       const State& s,
+                                                                       const StepRule& rule) const {
+  const std::vector<ContactPair>& pairs = candidates(model, s);
+  // Every input kept is compared (and copied when it differs): no caller has
+  // to say when the state changed.
+  bool same = outcomesValid_ && outcomesVersion_ == candidatesVersion_ &&
+              sameRule(outcomesRule_, rule) && outcomesSlack_ == slack_;
+  same = keep(outcomesU_, s.u) && same;
+  same = keep(outcomesUn_, s.un) && same;
+  same = keep(outcomesVn_, s.vn) && same;
+  same = keep(outcomesAn_, s.an) && same;
+  if (same && sameMemory(outcomesPairs_, s.pairs)) return outcomes_;
+  // With the room of the memory and of the candidates: steps allocate nothing
+  // while the contacts change little.
+  if (outcomesPairs_.capacity() < s.pairs.capacity()) outcomesPairs_.reserve(s.pairs.capacity());
+  outcomesPairs_.assign(s.pairs.begin(), s.pairs.end());
+  if (outcomes_.capacity() < candidates_.capacity()) outcomes_.reserve(candidates_.capacity());
+  outcomesVersion_ = candidatesVersion_;
+  outcomesRule_ = rule;
+  outcomesSlack_ = slack_;
+  outcomes_.resize(pairs.size());
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    outcomes_[i].outcome = outcome(pairs[i], model, s, rule, &outcomes_[i].full);
+  outcomesValid_ = true;
+  return outcomes_;
 }
 
 double MemberContact::energy(const Model& model, const State& s) const {
   double w = 0;
-  for (const ContactPair& pair : candidates(model, s)) {
+  const std::vector<StepOutcome>& found = outcomes(model, s, lastRule_);
+  const std::vector<ContactPair>& pairs = candidates(model, s);
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const ContactPair& pair = pairs[i];
     const PairMemory* m = memory(s, pair.key());
-    const PairOutcome o = outcome(pair, model, s, lastRule_);
+    const PairOutcome& o = found[i].outcome;
     w += crushingEnergy(data_.k, data_.restitution, m ? m->q : 0.0, o.p1) +
          springFrictionEnergy(data_.k, o.stretch);
   }
@@ -374,10 +444,12 @@ double MemberContact::commit(const Model& model, State& s, int& pushed,
   double released = 0, letGo = 0, crushed = 0;
   committedEnergy_ = 0;
   PairPositions q0, q1;
-  for (const ContactPair& pair : pairs) {
+  const std::vector<StepOutcome>& found = outcomes(model, s, lastRule_);
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const ContactPair& pair = pairs[i];
     const PairMemory* m = memory(s, pair.key());
-    double full = 0;
-    const PairOutcome o = outcome(pair, model, s, lastRule_, &full);
+    const double full = found[i].full;
+    const PairOutcome& o = found[i].outcome;
     const bool near = positions(pair, model, s, q0, q1, slack_);
     PairMemory next{pair.key(), 0.0, 0.0, o.stretch, distance(pair, m), m ? m->side : 0};
     bool flipped = false;

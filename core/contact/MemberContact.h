@@ -169,6 +169,10 @@ class MemberContact {
     return positions(pair, model, s, q0, q1, extra);
   }
 
+  // The pair comes within extra of touching over the step to s: its
+  // penetration, as evaluate() sees it, exceeds -extra at t_n or t_n+1.
+  bool within(const ContactPair& pair, const Model& model, const State& s, double extra) const;
+
   double margin() const { return margin_; }
   // The most a pair's memory reaches beyond its contact distance: evaluate()
   // sees a pair whose swept boxes are within its distance plus this.
@@ -196,6 +200,17 @@ class MemberContact {
   // contact distance, without offset, at t_n+1).
   PairOutcome outcome(const ContactPair& pair, const Model& model, const State& s,
                       const StepRule& rule, double* full = nullptr) const;
+  // outcome() of every candidate at s under rule, with its penetration at the
+  // full distance: a commit reads them twice at one state (the energy account's
+  // energy(), then commit()), so they are found once and kept while the
+  // candidates, the state's displacements, rates and pair memory and the rule
+  // are those they were found for.
+  struct StepOutcome {
+    PairOutcome outcome;
+    double full = 0;
+  };
+  const std::vector<StepOutcome>& outcomes(const Model& model, const State& s,
+                                           const StepRule& rule) const;
   static double distance(const ContactPair& pair, const PairMemory* m) { return m ? m->h : pair.h; }
   // The side the node is held on: the memory's, or the one it was on at t_n.
   static int side(const PairMemory* m, const PairPositions& q0) {
@@ -204,13 +219,6 @@ class MemberContact {
   // A held pair's end faces scale with the contact distance it met at (0: not
   // held; core/contact/PairContact.h).
   static double face(const PairMemory* m) { return m && m->side ? m->h : 0.0; }
-  // The pair touches at t_n+1, or under the mid-point scheme at t_n (as
-  // pairContact decides): otherwise it carries no force over the step.
-  static bool touches(const PairPositions& q0, const PairPositions& q1, int side, double h,
-                      double face, const StepRule& rule) {
-    return pairPenetration(q1, side, h, face) > 0 ||
-           (rule.scheme == Scheme::MidPoint && pairPenetration(q0, side, h, face) > 0);
-  }
   static double reach(const ContactPair& pair, const PairMemory* m) {
     return m ? m->h - m->offset : pair.h;
   }
@@ -235,6 +243,14 @@ class MemberContact {
   mutable std::vector<Box> anchor_;  // per node: its swept box at the last search
   mutable std::vector<ContactPair> candidates_;
   mutable std::vector<PairMemory> nextMemory_;  // commit's scratch
+  // outcomes() and what they were found for.
+  mutable std::vector<StepOutcome> outcomes_;
+  mutable bool outcomesValid_ = false;
+  mutable int outcomesVersion_ = -1;
+  mutable StepRule outcomesRule_;
+  mutable double outcomesSlack_ = 0;
+  mutable Eigen::VectorXd outcomesU_, outcomesUn_, outcomesVn_, outcomesAn_;
+  mutable std::vector<PairMemory> outcomesPairs_;
   // The rule of the last evaluation: the friction springs' stretches at a
   // trial state are those of the step that was assembled (as the ground's).
   mutable StepRule lastRule_;

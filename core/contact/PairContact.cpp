@@ -266,24 +266,50 @@ Vec4 discreteGradient(const Vec4& z0, const Vec4& z1, double f0, double f1, cons
 
 }  // namespace
 
+bool pairTouches(const PairPositions& q0, const PairPositions& q1, int side, double h,
+                 const StepRule& rule, bool wantTangent, PairStep& step, double face) {
+  const bool midPoint = rule.scheme == Scheme::MidPoint;
+  step.z0 = relative(q0);
+  step.z1 = relative(q1);
+  Penetration e0, e1;
+  penetration(step.z0, side, h, false, e0, face);
+  penetration(step.z1, side, h, wantTangent && !midPoint, e1, face);
+  step.p0 = e0.p;
+  step.p1 = e1.p;
+  step.g1 = e1.g;
+  // The Hessian at t_n+1 only where the force law reads it (static, Newmark).
+  if (wantTangent && !midPoint) step.H1 = e1.H;
+  return midPoint ? (step.p0 > 0 || step.p1 > 0) : step.p1 > 0;
+}
+
 bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, double h,
                  const PairLaw& law, const StepRule& rule, bool wantTangent, PairVec& force,
                  PairMat& tangent, PairOutcome* outcome, double face) {
-  const Vec4 z0 = relative(q0), z1 = relative(q1);
+  PairStep step;
+  if (!pairTouches(q0, q1, side, h, rule, wantTangent, step, face)) {
+    // Out of contact over the step: no force, and the friction spring lets go.
+    if (outcome)
+      *outcome = PairOutcome{step.p0, step.p1, 0.0, springFrictionEnergy(law.k, law.stretch)};
+    return false;
+  }
+  pairContact(step, side, h, law, rule, wantTangent, force, tangent, outcome, face);
+  return true;
+}
+
+void pairContact(const PairStep& step, int side, double h, const PairLaw& law, const StepRule& rule,
+                 bool wantTangent, PairVec& force, PairMat& tangent, PairOutcome* outcome,
+                 double face) {
+  const Vec4& z0 = step.z0;
+  const Vec4& z1 = step.z1;
   const double k = law.k;
   const bool midPoint = rule.scheme == Scheme::MidPoint;
   const bool rubs = law.mu > 0;
-  Penetration e0, e1;
-  penetration(z0, side, h, false, e0, face);
-  penetration(z1, side, h, wantTangent && !midPoint, e1, face);
-  const double p0 = e0.p, p1 = e1.p;
+  Penetration e1;
+  e1.p = step.p1;
+  e1.g = step.g1;
+  if (wantTangent && !midPoint) e1.H = step.H1;
+  const double p0 = step.p0, p1 = step.p1;
   if (outcome) *outcome = PairOutcome{p0, p1, 0.0, 0.0};
-  // Out of contact over the step: no force, and the friction spring lets go.
-  const bool touches = midPoint ? (p0 > 0 || p1 > 0) : p1 > 0;
-  if (!touches) {
-    if (outcome) outcome->slipped = springFrictionEnergy(k, law.stretch);
-    return false;
-  }
   // The normal law: w, its derivative dw w.r.t. p1, and the normal force N
   // (without the dissipative term) with dN/dp1.
   double w = 0, dw = 0;
@@ -367,7 +393,6 @@ bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, dou
     }
   }
   toPair(fz, wantTangent ? &kz : nullptr, force, wantTangent ? &tangent : nullptr);
-  return true;
 }
 
 }  // namespace c2d

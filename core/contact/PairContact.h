@@ -59,4 +59,23 @@ bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, dou
                  const PairLaw& law, const StepRule& rule, bool wantTangent, PairVec& force,
                  PairMat& tangent, PairOutcome* outcome = nullptr, double face = 0);
 
+// pairContact in two parts, so that a caller forms a pair's law only for a
+// pair that touches (most candidates of an assembly are apart): the pair's
+// relative positions and penetrations at t_n and t_n+1 (with the gradient at
+// t_n+1, and its Hessian where the force law needs it), as pairContact finds
+// them, and whether it touches over the step (carries a force).
+struct PairStep {
+  PairZ z0 = PairZ::Zero(), z1 = PairZ::Zero();
+  double p0 = 0, p1 = 0;
+  PairZ g1 = PairZ::Zero();
+  Eigen::Matrix4d H1 = Eigen::Matrix4d::Zero();
+};
+bool pairTouches(const PairPositions& q0, const PairPositions& q1, int side, double h,
+                 const StepRule& rule, bool wantTangent, PairStep& step, double face = 0);
+// The force (and tangent) of a pair that touches, from its step; the same
+// arguments as pairContact's.
+void pairContact(const PairStep& step, int side, double h, const PairLaw& law, const StepRule& rule,
+                 bool wantTangent, PairVec& force, PairMat& tangent, PairOutcome* outcome = nullptr,
+                 double face = 0);
+
 }  // namespace c2d

@@ -15,6 +15,7 @@
 
 #include "ContactTestSupport.h"
 #include "core/contact/ContactGrid.h"
+#include "core/contact/SweptBoxes.h"
 #include "core/contact/CrushingLaw.h"
 #include "core/contact/MemberContact.h"
 #include "core/contact/MemberCrossing.h"
@@ -512,6 +513,87 @@ TEST(MemberContactModel, AssembledTangentMatchesFiniteDifferences) {
     EXPECT_GE(active, 4) << ti.describe();
     EXPECT_LT(test::tangentError(m, s, ti.rule(0.05)), 1e-6) << ti.describe();
   }
+}
+
+TEST(MemberContactModel, ThePatternHoldsThePairsAboutToTouchOnly) {
+  // A bar pressed with one end onto a diagonal rod, its other end inside the
+  // box of the rod's segment but 0.21 from its line (contact distance 0.1,
+  // the pattern's reserve a quarter of the search margin, 0.06): the pattern
+  // couples the pressed node with the segment's ends and not the far one,
+  // whose coupling would only add fill to the factors (the boxes of members
+  // lying at an angle across each other overlap far beyond touching).
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 10, 1.0, 2.5e-3 / 3);  // r = 0.05
+  newRod(m, Vec2(0, 0), Vec2(1, 1), 2);
+  // 0.5 lower in the reference configuration (pairs within contact distance
+  // there never contact), displaced up into place.
+  const int bar = newRod(m, Vec2(0.1, -0.1), Vec2(0.25, -0.2), 1);
+  const int pressed = bar + 1;
+  m.memberContact() = MemberContactData{1e3, 0, -1};
+  Assembler as(m);
+  as.refresh();
+  State s;
+  s.resize(m.numNodes());
+  for (int n = bar; n <= pressed; ++n) s.u(3 * n + 1) = s.un(3 * n + 1) = 0.5;
+  const StepRule rule = TimeIntegrator::statics().rule(0);
+  const Eigen::VectorXd factors = Eigen::VectorXd::Zero(3 * m.numNodes());
+  ASSERT_TRUE(as.assemble(s, rule, factors, true));  // the pattern without pairs
+  ASSERT_TRUE(as.assemble(s, rule, factors, true));  // and with the pressed pair
+  const SparseMatrix& K = as.tangent();
+  auto coupled = [&](int a, int b) {
+    const int i = as.dofs().eq(a, 0), j = as.dofs().eq(b, 0);
+    for (SparseMatrix::InnerIterator it(K, j); it; ++it)
+      if (it.row() == i) return true;
+    return false;
+  };
+  const int segmentEnd = 1;  // the diagonal's middle node: end b of its first segment
+  ASSERT_TRUE(coupled(pressed, 0));
+  EXPECT_TRUE(coupled(pressed, segmentEnd));
+  EXPECT_FALSE(coupled(bar, 0));
+  EXPECT_FALSE(coupled(bar, segmentEnd));
+}
+
+TEST(MemberContactModel, TheStepsNearListHoldsEveryPairWithinReach) {
+  // Two crossing rods, the second moved across the first by Newton-like
+  // increments: every candidate within reach by its boxes is in the list
+  // SweptBoxes::near keeps, while the nodes move by less than a quarter of
+  // its slack and after a move beyond (when it is found afresh; kept for
+  // good, it missed the pairs the crossing point reached).
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 10, 1.0, 2.5e-3 / 3);  // r = 0.05
+  newRod(m, Vec2(0, 0), Vec2(2, 0), 8);
+  const int bar = newRod(m, Vec2(0.3, -0.6), Vec2(1.2, -1.1), 6);  // displaced up below
+  m.memberContact() = MemberContactData{1e3, 0, -1};
+  Assembler as(m);
+  as.refresh();
+  const MemberContact& mc = *as.memberContact();
+  State s;
+  s.resize(m.numNodes());
+  for (int n = bar; n < m.numNodes(); ++n) s.u(3 * n + 1) = s.un(3 * n + 1) = 0.8;
+  SweptBoxes swept;
+  const double slack = 0.25 * mc.margin();
+  int reached = 0;
+  for (int iteration = 0; iteration < 40; ++iteration) {
+    // Steps down and along of a third of the list's slack: the list is kept
+    // for some and found afresh after a few, between the candidates' searches.
+    const double dy = -slack / 3, dx = 0.1 * slack * std::sin(iteration);
+    for (int n = bar; n < m.numNodes(); ++n) {
+      s.u(3 * n) += dx;
+      s.u(3 * n + 1) += dy;
+    }
+    const auto& candidates = mc.candidates(m, s);
+    swept.update(m, s);
+    const std::vector<int>& near =
+        swept.near(s, candidates, mc.candidatesVersion(), mc.slack(), slack);
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      if (!swept.reach(candidates[i], mc.slack())) continue;
+      ++reached;
+      EXPECT_TRUE(std::find(near.begin(), near.end(), static_cast<int>(i)) != near.end())
+          << "iteration " << iteration << ", pair " << candidates[i].node << "-"
+          << candidates[i].element;
+    }
+  }
+  EXPECT_GT(reached, 40);  // the rods were within reach in every iteration
 }
 
 // --- collisions ---------------------------------------------------------------
