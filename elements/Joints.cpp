@@ -68,14 +68,21 @@ bool freeEnd(const Model& model, int node, int attachments) {
   return attachments == 1 && model.bound(node)[2] == 0 && model.force(node)[2] == 0;
 }
 
-int freeEndWithin(const Model& model, const std::vector<int>& attached, int node, double lb) {
+std::vector<int> freeEnds(const Model& model, const std::vector<int>& attached) {
+  std::vector<int> ends;
+  for (int n = 0; n < static_cast<int>(attached.size()); ++n)
+    if (freeEnd(model, n, attached[n])) ends.push_back(n);
+  return ends;
+}
+
+int freeEndWithin(const Model& model, const std::vector<int>& ends, int node, double lb) {
   if (!(lb > 0)) return -1;
   constexpr double kCoincident = 1e-9;  // of lb: nodes at one place (a ruptured joint's)
   const Vec2 x = model.coord(node);
   int nearest = -1;
   double best = lb;
-  for (int n = 0; n < static_cast<int>(attached.size()); ++n) {
-    if (n == node || !freeEnd(model, n, attached[n])) continue;
+  for (int n : ends) {
+    if (n == node) continue;
     const double d = (model.coord(n) - x).norm();
     if (d < best && d > kCoincident * lb) {
       best = d;
@@ -86,7 +93,7 @@ int freeEndWithin(const Model& model, const std::vector<int>& attached, int node
 }
 
 bool nearFreeEnd(const Model& model, const std::vector<int>& attached, int node, double lb) {
-  return freeEndWithin(model, attached, node, lb) >= 0;
+  return lb > 0 && freeEndWithin(model, freeEnds(model, attached), node, lb) >= 0;
 }
 
 double jointFriction(const Model& model, int node) {
@@ -256,9 +263,9 @@ std::vector<RupturedJoint> ruptureJoints(Model& model, State& state, std::vector
   if (model.joints().empty()) return out;
   std::vector<char> gone(model.joints().size(), 0);
   bool synced = false;
-  std::vector<int> holder, wrapper, attached;
+  std::vector<int> holder, wrapper, ends;
   bool indexed = false;  // a rupture of a condensed joint changes the wrappers
-  bool counted = false;  // attached: nodeAttachments without the joints gone
+  bool counted = false;  // ends: the free ends, the joints gone counted out
   for (std::size_t k = 0; k < model.joints().size(); ++k) {
     const Joint& joint = model.joints()[k];
     if (!indexed) {
@@ -293,10 +300,10 @@ std::vector<RupturedJoint> ruptureJoints(Model& model, State& state, std::vector
       continue;
     if (const double lb = mat->softening->pieceLength; lb > 0) {
       if (!counted) {
-        attached = nodeAttachments(model, gone);
+        ends = freeEnds(model, nodeAttachments(model, gone));
         counted = true;
       }
-      if (const int end = freeEndWithin(model, attached, joint.master, lb); end >= 0) {
+      if (const int end = freeEndWithin(model, ends, joint.master, lb); end >= 0) {
         if (held) held->push_back({joint.master, joint.slave, element, end, rotation, limit, lb});
         continue;
       }

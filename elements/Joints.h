@@ -62,8 +62,10 @@ bool freeEnd(const Model& model, int node, int attachments);
 // so a member that carries no more shear than Vu cannot break nearer than
 // Mu/Vu (SOFTening's or the section's shortest piece Lb).
 bool nearFreeEnd(const Model& model, const std::vector<int>& attached, int node, double lb);
-// The nearest such free end (-1: none within lb).
-int freeEndWithin(const Model& model, const std::vector<int>& attached, int node, double lb);
+// The free ends (attached: nodeAttachments), and the nearest of them to the
+// node within lb but not at its place (-1: none).
+std::vector<int> freeEnds(const Model& model, const std::vector<int>& attached);
+int freeEndWithin(const Model& model, const std::vector<int>& ends, int node, double lb);
 
 // A joint past its rupture rotation that stays: within its material's
 // shortest piece Lb of the free end freeEnd (0-based node).
