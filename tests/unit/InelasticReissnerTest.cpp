@@ -268,6 +268,14 @@ struct FlyingRod {
                                                       m.coord(i), m.coord(i + 1)));
     m.bound(0) = {1, 1, 0};
   }
+  // A condensed joint at interior node n: element n (nodes n, n + 1) moves to
+  // a slave of n. Returns the slave (installJoints makes the wrappers).
+  int jointAt(int n) {
+    const int slave = m.addNode(m.coord(n));
+    m.element(n).setNodes({slave, n + 1});
+    m.joints().push_back(Joint{n, slave, JointForm::Condensed});
+    return slave;
+  }
 };
 
 class InelasticReissnerFlight : public ::testing::TestWithParam<double> {};
@@ -394,9 +402,7 @@ TEST(InelasticReissnerRupture, AJointOnTheGroundRupturesWhenItsNodeLeavesIt) {
   m.bound(0) = {0, 0, 0};
   m.ground() = Ground{0.0, 1e5, 0.1};
   // Element 2 (nodes 2-3) on a slave of node 2.
-  const int slave = m.addNode(m.coord(2));
-  m.element(2).setNodes({slave, 3});
-  m.joints().push_back(Joint{2, slave, JointForm::Condensed});
+  const int slave = rod.jointAt(2);
   ASSERT_EQ(installJoints(m), 1);
   jointedElements(m).front()->setRelativeState(0.3);
   State s;
@@ -426,11 +432,7 @@ std::vector<RupturedJoint> ruptureJointsOfHeldRod(double lb,
   Model& m = rod.m;
   m.materials().at(1).softening->pieceLength = lb;
   m.bound(0) = m.bound(4) = {1, 1, 1};
-  for (int i = 1; i <= 3; ++i) {
-    const int slave = m.addNode(m.coord(i));
-    m.element(i).setNodes({slave, i + 1});
-    m.joints().push_back(Joint{i, slave, JointForm::Condensed});
-  }
+  for (int i = 1; i <= 3; ++i) rod.jointAt(i);
   EXPECT_EQ(installJoints(m), 3);
   for (JointedElement* j : jointedElements(m)) j->setRelativeState(0.3);
   State s;
@@ -461,9 +463,7 @@ TEST(InelasticReissnerRupture, NoRuptureWithinTheShortestPieceOfAFreeEnd) {
   FlyingRod rod(0.1);
   Model& m = rod.m;
   m.materials().at(1).softening->pieceLength = 0.3;
-  const int slave = m.addNode(m.coord(1));
-  m.element(1).setNodes({slave, 2});
-  m.joints().push_back(Joint{1, slave, JointForm::Condensed});
+  rod.jointAt(1);
   ASSERT_EQ(installJoints(m), 1);
   jointedElements(m).front()->setRelativeState(0.3);
   State s;
