@@ -56,12 +56,19 @@ bool TopologyEvents::anyJointPastRupture(const Model& model, const State& state)
   for (const auto& [number, mat] : model.materials())
     if (mat.softening && mat.softening->thetaR) limit = std::min(limit, *mat.softening->thetaR);
   if (model.joints().empty() || !(limit < std::numeric_limits<double>::infinity())) return false;
+  // A joint held within Lb of a free end stays held (free ends only grow in
+  // number, and Lb is measured in the reference configuration): it does not
+  // call for a rupture pass at every commit.
+  const auto held = [&](int slave) {
+    return std::find(heldReported_.begin(), heldReported_.end(), slave) != heldReported_.end();
+  };
   for (const JointedElement* j : wrappers_)
-    if (std::abs(j->committedRelativeRotation()) > limit) return true;
+    if (std::abs(j->committedRelativeRotation()) > limit && !held(j->slaveNode())) return true;
   for (const Joint& joint : model.joints())
     if (joint.form != JointForm::Condensed &&
         std::abs(state.un[static_cast<Eigen::Index>(joint.slave) * kNodeDofs + 2] -
-                 state.un[static_cast<Eigen::Index>(joint.master) * kNodeDofs + 2]) > limit)
+                 state.un[static_cast<Eigen::Index>(joint.master) * kNodeDofs + 2]) > limit &&
+        !held(joint.slave))
       return true;
   return false;
 }
@@ -104,7 +111,7 @@ bool TopologyEvents::afterCommit(Model& model, State& state) {
   const bool changed = !events.empty();
   for (const HeldJoint& h : held) {
     if (std::find(heldReported_.begin(), heldReported_.end(), h.slave) != heldReported_.end())
-      continue;
+      continue;  // another joint's pass found it again
     heldReported_.push_back(h.slave);
     TopologyEvent ev{
         TopologyEvent::Kind::JointHeld, h.element, h.master, h.slave, h.rotation, h.limit};
