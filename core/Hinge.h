@@ -12,6 +12,15 @@
 
 namespace c2d {
 
+// How far past its capacity (|M|/Mu - 1) a committed state may carry a member
+// before the run warns, naming the element and the time. Hinge events are
+// located to 1e-12 (solvers/HingeEvents.h); where the step's solution jumps
+// across Mu between two sub-steps (another branch of a contact or a law), the
+// hinge opens at the first state found past it, 1e-4 to 3e-4 past Mu in the
+// collapse decks, a small fraction of the scatter of a section's strength.
+// Beyond 0.1 % the result is not the model's.
+constexpr double kCapacityTolerance = 1e-3;
+
 struct HingeInfo {
   bool active = false;        // jump activated
   bool failed = false;        // fully softened: moment down to zero, a free hinge

@@ -30,7 +30,8 @@ struct OpenedHinge {
 bool endHingesDue(const Model& model);
 // Makes the joints; bumps the topology version when it made any.
 std::vector<OpenedHinge> openEndHinges(Model& model, State& state);
-// The largest |M|/Mu(N) of the hinges that joints carry (0: none).
-double endHingeRatio(const Model& model);
+// The largest |M|/Mu(N) of the hinges that joints carry (0: none), and the
+// element that carries it (-1: none).
+double endHingeRatio(const Model& model, int* element = nullptr);
 
 }  // namespace c2d

@@ -24,7 +24,7 @@ std::string ProblemRun::runState() const {
   put(out, hingeCount_);
   putBool(out, cutting_);
   for (double x :
-       {dtMin_, dtNominal_, maxMomentRatio_, peakGroundForce_,
+       {dtMin_, dtNominal_, capacity_.maxRatio(), peakGroundForce_,
         peakGroundTime_, peakKinetic_, restRatio_, lastMoving_, deepest_.depth, deepestTime_})
     put(out, x);
   for (int x : {stepsSinceCut_, cuts_, topology_.jointsFormed, topology_.jointsRuptured, removed_,
@@ -44,7 +44,8 @@ void ProblemRun::setRunState(const std::string& bytes) {
     throw CheckpointError("hinge steps do not match the element count");
   hingeCount_ = get<int>(in);
   cutting_ = getBool(in);
-  for (double* x : {&dtMin_, &dtNominal_, &maxMomentRatio_,
+  double maxMomentRatio = 0;
+  for (double* x : {&dtMin_, &dtNominal_, &maxMomentRatio,
                     &peakGroundForce_, &peakGroundTime_, &peakKinetic_, &restRatio_, &lastMoving_,
                     &deepest_.depth, &deepestTime_})
     *x = get<double>(in);
@@ -53,6 +54,7 @@ void ProblemRun::setRunState(const std::string& bytes) {
     *x = get<int>(in);
   if (deepest_.node >= model_.numNodes())
     throw CheckpointError("the deepest node is not in the model");
+  capacity_.setMaxRatio(maxMomentRatio);
   energy_.load(in);
   dynamicSeen_ = getBool(in);
 }

@@ -204,7 +204,7 @@ RunSummary ProblemRun::summary() const {
   s.gainTime = energy_.gainTime();
   s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   s.dynamic = dynamicSeen_;
-  s.maxMomentRatio = maxMomentRatio_;
+  s.maxMomentRatio = capacity_.maxRatio();
   s.jointsFormed = topology_.jointsFormed;
   s.jointsRuptured = topology_.jointsRuptured;
   s.removed = removed_;
@@ -425,10 +425,11 @@ void ProblemRun::onCommit() {
   }
   for (const auto& [e, h] : analysis_->hingeCarriers()) {
     const HingeInfo info = h->hinge();
-    if (info.ultimate > 0)
-      maxMomentRatio_ = std::max(maxMomentRatio_, std::abs(info.moment) / info.ultimate);
+    if (info.ultimate > 0) capacity_.observe(e, std::abs(info.moment) / info.ultimate, s.t, log_);
   }
-  maxMomentRatio_ = std::max(maxMomentRatio_, endHingeRatio(model_));
+  int endElement = -1;
+  const double endRatio = endHingeRatio(model_, &endElement);
+  capacity_.observe(endElement, endRatio, s.t, log_);
   if (history_) history_->record(*analysis_);
   if (model_.ground()) {
     const double f = groundForce(model_, analysis_->assembler().dofs(), s);

@@ -14,6 +14,7 @@
 #include "core/Debris.h"
 #include "core/Model.h"
 #include "macro/deck/Deck.h"
+#include "macro/run/CapacityWatch.h"
 #include "macro/run/EnergyWatch.h"
 #include "macro/run/RunCursor.h"
 #include "macro/run/RunOutputs.h"
@@ -234,7 +235,7 @@ class ProblemRun {
   int crossings_ = 0;
   int folded_ = 0;
   int blastsNotMade_ = 0;
-  double maxMomentRatio_ = 0;
+  CapacityWatch capacity_;
   EnergyWatch energy_;
   bool dynamicSeen_ = false;
   // TIME,REST: the kinetic energy's peak, the ratio watched (0: none yet) and

@@ -72,6 +72,7 @@ TEST(RcDecks, ColumnReachesTheSectionsUltimateMomentAtItsAxialForce) {
     EXPECT_NEAR(peak, mu, 2e-5 * mu) << tag;
   }
   EXPECT_EQ(r.log.find("max |M|/Mu 1.0000") != std::string::npos, true);
+  EXPECT_EQ(r.log.find("past its capacity"), std::string::npos);  // macro/run/CapacityWatch.h
   // STRE,HINGe lists the base hinge's joint: softening at N = 0 and +500 kN,
   // failed at -3000 kN (the smallest failure jump).
   auto count = [&](const std::string& text) {
