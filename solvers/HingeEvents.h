@@ -45,7 +45,8 @@ class HingeEvents {
   // the step (info.converged false, info.hingeActivated set). `handled` tells
   // whether it did.
   Status afterConvergence(IterationInfo& info, bool lineSearch, bool& handled);
-  // At every commit: the demand of the committed state.
+  // At every commit: the localization zones of the hinges open in the
+  // committed state (elements/LocalizationZones.h), and its demand.
   void committed();
   bool locating() const { return locating_; }
 
