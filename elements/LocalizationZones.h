@@ -27,16 +27,30 @@
 // (its element can open a new one) and the joint's own rule takes over
 // (elements/HingeToJoint.h nearJoint). Small-displacement elements (the
 // paper's failure phase) and hinges at the element ends are not concerned.
+#include <vector>
+
 #include "core/MaterialSet.h"
 #include "core/Model.h"
 
 namespace c2d {
 
+class ReissnerFrame;
+
 // The zone length of a material's midpoint hinges (m; 0: no zone).
 double zoneLength(const MaterialSet& mat);
 
 // Sets every geometrically exact element's held flag from the hinges of the
-// last evaluated (committed) state. Returns the number of elements held.
-int holdLocalizationZones(Model& model);
+// last evaluated (committed) state. Returns the number of elements held. Its
+// work lists are kept between calls: no allocation once sized (a commit's).
+class LocalizationZones {
+ public:
+  int hold(Model& model);
+
+ private:
+  std::vector<ReissnerFrame*> frame_;  // per element: a midpoint-hinge frame, else null
+  std::vector<int> first_, second_;    // per node: the (first two) elements holding it
+  std::vector<int> count_;             // per node: how many elements hold it
+  std::vector<char> jointNode_, held_;
+};
 
 }  // namespace c2d

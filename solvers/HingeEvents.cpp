@@ -72,7 +72,7 @@ double HingeEvents::maxDemand(int& element) {
 void HingeEvents::committed() {
   // The zones of the hinges open in the committed state hold their members'
   // other elements from the next evaluation on (elements/LocalizationZones.h).
-  holdLocalizationZones(an_.model());
+  zones_.hold(an_.model());
   int e = -1;
   committedDemand_ = maxDemand(e);
 }

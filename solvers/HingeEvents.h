@@ -24,6 +24,7 @@
 
 #include "core/Error.h"
 #include "core/Hinge.h"
+#include "elements/LocalizationZones.h"
 
 namespace c2d {
 
@@ -79,6 +80,7 @@ class HingeEvents {
   Analysis& an_;
   std::vector<std::pair<int, HingeCarrier*>> carriers_;
   int carriersVersion_ = -1;
+  LocalizationZones zones_;     // one softening hinge per localization zone
   double committedDemand_ = 0;  // max demand at the last commit
   bool locating_ = false;       // inside locate(): no nested events
   bool solved_ = false;         // the state is the converged end of a sub-step

@@ -60,10 +60,10 @@ TEST(LocalizationZones, HoldTheMembersElementsWithinTheZoneOfAnOpenHinge) {
   p.emplace_back(1.0, 0.125);
   p.emplace_back(1.0, 0.25);
   Model m = chain(p, 0.3);
-  EXPECT_EQ(holdLocalizationZones(m), 0);  // no hinge open
+  EXPECT_EQ(LocalizationZones().hold(m), 0);  // no hinge open
   openHinge(m, 3);
   // Midpoints 0.125 and 0.25 m from the hinge's: held; 0.375 m: not.
-  EXPECT_EQ(holdLocalizationZones(m), 4);
+  EXPECT_EQ(LocalizationZones().hold(m), 4);
   EXPECT_EQ(heldElements(m), (std::set<int>{1, 2, 4, 5}));
   // At the last element before the corner: the member ends there.
   openHinge(m, 3);
@@ -71,18 +71,18 @@ TEST(LocalizationZones, HoldTheMembersElementsWithinTheZoneOfAnOpenHinge) {
   closed.hingeActive = false;
   frame(m, 3).setSection(closed);
   openHinge(m, 7);
-  holdLocalizationZones(m);
+  LocalizationZones().hold(m);
   EXPECT_EQ(heldElements(m), (std::set<int>{5, 6}));
   // Lb = 0: no zone (the laws as the paper gives them).
   m.materials().at(1).softening->pieceLength = 0;
-  EXPECT_EQ(holdLocalizationZones(m), 0);
+  EXPECT_EQ(LocalizationZones().hold(m), 0);
   // A joint ends the member: element 6 moved to a slave of node 6.
   m.materials().at(1).softening->pieceLength = 0.3;
   const int slave = m.addNode(m.coord(6));
   m.element(6).setNodes({slave, 7});
   m.joints().push_back(Joint{6, slave, JointForm::Condensed});
   ASSERT_EQ(installJoints(m), 1);
-  holdLocalizationZones(m);
+  LocalizationZones().hold(m);
   EXPECT_EQ(heldElements(m), (std::set<int>{6}));  // not 5, across the joint
 }
 
