@@ -17,6 +17,7 @@
 #include "elements/ReissnerFrame.h"
 #include "solvers/Analysis.h"
 #include "solvers/TimeIntegrator.h"
+#include "core/StepRule.h"
 #include "tests/unit/ElementTestSupport.h"
 
 namespace c2d {
@@ -84,6 +85,42 @@ TEST(LocalizationZones, HoldTheMembersElementsWithinTheZoneOfAnOpenHinge) {
   ASSERT_EQ(installJoints(m), 1);
   LocalizationZones().hold(m);
   EXPECT_EQ(heldElements(m), (std::set<int>{6}));  // not 5, across the joint
+}
+
+// A held element bent past Mu: its moment stays at Mu (the plastic curvature
+// takes the rest), it reports no demand, and its tangent is the residual's
+// derivative (static and mid-point rules, an element turned by 0.7 rad).
+TEST(LocalizationZones, AHeldElementStaysAtMuWithItsTangentExact) {
+  const MaterialSet mat = test::hingedRodMaterial(10.0);
+  const Vec2 x1(0.3, -0.2), x2 = x1 + 0.25 * Vec2(std::cos(0.7), std::sin(0.7));
+  StepRule stat, mid;
+  mid.scheme = Scheme::MidPoint;
+  mid.alpha = 0.1;
+  mid.ca = 4 / (1e-2 * 1e-2);
+  mid.av = -4 / 1e-2;
+  mid.aa = -1;
+  for (const StepRule* rule : {&stat, &mid}) {
+    ReissnerFrame e(mat, {0, 1}, x1, x2);
+    e.setHeld(true);
+    ElementKinematics kin;
+    kin.d.setZero();
+    kin.dn.setZero();
+    kin.vn.setZero();
+    kin.an.setZero();
+    kin.d(2) = -0.04;  // curvature 0.16/0.25 = 0.64: EI K = 640, far past Mu = 2.4
+    kin.d(5) = 0.12;
+    ElemVec r;
+    ElemMat k;
+    ASSERT_TRUE(e.evaluate(kin, *rule, true, r, k));
+    EXPECT_NEAR(e.section().M, 2.4, 1e-12);
+    EXPECT_EQ(e.hingeDemand(), 0.0);
+    EXPECT_FALSE(e.hinge().active);
+    const ElemMat fd = test::centralDifferenceTangent(e, kin, *rule, 1e-7);
+    EXPECT_LT((k - fd).norm(), 1e-6 * k.norm());
+    e.setHeld(false);  // released: the same state opens its hinge
+    ASSERT_TRUE(e.evaluate(kin, *rule, true, r, k));
+    EXPECT_GT(e.hingeDemand(), 1.0);
+  }
 }
 
 // A rod of 1 m in n FINIte elements (the hinged rod's laws, softening modulus
