@@ -303,7 +303,7 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
   const std::array<double, 2> ends = trial_.section.endHinge;  // opened in this trial
   HingedBendingResponse bend;
   const double kappa1 = (kin.d(5) - kin.d(2)) / length_ - e0_(2);
-  if (Status st = law_.respond(kappa1, length_, from, openSign, bend, N1); !st) return st;
+  if (Status st = law_.respond(kappa1, length_, from, openSign, bend, N1, held_); !st) return st;
   const double m1 = bend.state.M;
   const double kappaN = (kin.dn(5) - kin.dn(2)) / length_ - e0_(2);
   // The section's dashpot (materials/SectionDamping.h): f = a1/h times the
@@ -394,19 +394,19 @@ double ReissnerFrame::fractureDemand() const {
   return axial_->fractureDemand(axial_->strain(trial_.forces.N, trial_.axial));
 }
 
-double ReissnerFrame::hingeDemand() const {
-  return std::max(law_.demand(trial_.section), fractureDemand());
-}
+double ReissnerFrame::bendingDemand() const { return held_ ? 0.0 : law_.demand(trial_.section); }
+
+double ReissnerFrame::hingeDemand() const { return std::max(bendingDemand(), fractureDemand()); }
 
 void ReissnerFrame::activateHinge() {
-  if (fractureDemand() > law_.demand(trial_.section))
+  if (fractureDemand() > bendingDemand())
     trial_.fracture = 1;
-  else
+  else if (!held_)
     law_.open(trial_.section);
 }
 
 int ReissnerFrame::earlyEnd() const {
-  return law_.demand(trial_.section) >= fractureDemand() ? law_.criticalEnd(trial_.section) : -1;
+  return bendingDemand() >= fractureDemand() ? law_.criticalEnd(trial_.section) : -1;
 }
 
 void ReissnerFrame::activateHingeAt(int end) { law_.openEnd(trial_.section, end); }

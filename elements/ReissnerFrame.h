@@ -110,6 +110,12 @@ class ReissnerFrame final : public Element,
   bool fractureDue() const override { return committed_.fracture == 1; }
   void fractureDone() override { committed_.fracture = trial_.fracture = 2; }
 
+  // In the localization zone of another element's open hinge (elements/
+  // LocalizationZones.h): no hinge of its own opens, and its moment is held at
+  // Mu (HingedBending::respond). Set by the solver from the committed state.
+  void setHeld(bool held) { held_ = held; }
+  bool held() const { return held_; }
+
   double length() const { return length_; }
   const HingedBending& bendingLaw() const { return law_; }
   // Section history at the last evaluated state; setSection() sets both the
@@ -168,6 +174,7 @@ class ReissnerFrame final : public Element,
   // dSigma/dd at d.
   ElemVec axialStrainGradient(const ElemVec& d) const;
   double fractureDemand() const;
+  double bendingDemand() const;  // the hinge's |M|/Mu; 0 when held
 
   std::array<int, 2> nodes_;
   int materialNumber_ = 0;
@@ -178,6 +185,7 @@ class ReissnerFrame final : public Element,
   Vec3 e0_ = Vec3::Zero();
   HingedBending law_;
   std::optional<AxialCapacity> axial_;  // RC sections
+  bool held_ = false;                   // in another hinge's localization zone
   double axialTangent_ = 0;             // dN/dSigma of the last evaluation
   ElemVec axialGradient_ = ElemVec::Zero();  // dN/dd of the last evaluation
   SectionDamping damping_;  // DAMPing: the section's dashpot in dynamics

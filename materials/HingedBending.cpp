@@ -75,7 +75,8 @@ BendingResponse HingedBending::bulk(const BendingState& from, double kappa, doub
 }
 
 Status HingedBending::respond(double kappaD, double l, const HingedBendingState& from,
-                              double openSign, HingedBendingResponse& out, double N) const {
+                              double openSign, HingedBendingResponse& out, double N,
+                              bool held) const {
   const double EI = bending_[0].EI();
   HingedBendingState& to = out.state;
   to = from;
@@ -88,6 +89,7 @@ Status HingedBending::respond(double kappaD, double l, const HingedBendingState&
     to.bulk = r.state;
     to.hingeFailed = false;
     out.tangent = r.tangent;
+    if (held && softening_[0] && site_ == HingeSite::Midpoint) holdAtUltimate(kappaD, out);
     return std::isfinite(to.M) ? Status::success()
                                : Status::failure("bending section: non-finite moment");
   }
@@ -132,6 +134,20 @@ Status HingedBending::respond(double kappaD, double l, const HingedBendingState&
   return std::isfinite(to.M) && std::isfinite(out.tangent)
              ? Status::success()
              : Status::failure("bending section: non-finite moment");
+}
+
+void HingedBending::holdAtUltimate(double kappaD, HingedBendingResponse& out) const {
+  HingedBendingState& to = out.state;
+  const int sign = to.M < 0 ? -1 : 1;
+  const double mu = ultimate(sign, to.N);
+  if (!(std::abs(to.M) > mu)) return;
+  // M = EI (kappaD - kp) = sign Mu: the plastic curvature takes the rest.
+  const double kp = kappaD - sign * mu / EI();
+  to.bulk.xi += std::abs(kp - to.bulk.kp);
+  to.bulk.kp = kp;
+  to.M = sign * mu;
+  out.tangent = 0;
+  out.dN = capacity_ ? sign * capacity_->at(sign, to.N).dMu : 0.0;
 }
 
 HingedBending::MidPointMoment HingedBending::midPointMoment(const HingedBendingState& from,

@@ -112,9 +112,13 @@ class HingedBending {
   // Response at curvature kappaD of an element of length l from the committed
   // history `from`, at axial force N. openSign = +-1 opens the (midpoint) hinge
   // in this evaluation (the solver decides when), with the sign of the moment
-  // at activation; 0 leaves an inactive hinge closed.
+  // at activation; 0 leaves an inactive hinge closed. held: the section lies in
+  // the localization zone of another element's open hinge (elements/
+  // LocalizationZones.h) and opens none of its own; its closed hinge holds the
+  // moment at Mu(N) (perfectly plastic: the bulk's plastic curvature takes the
+  // rest, M dkp >= 0) instead of hardening past it.
   Status respond(double kappaD, double l, const HingedBendingState& from, double openSign,
-                 HingedBendingResponse& out, double N = 0) const;
+                 HingedBendingResponse& out, double N = 0, bool held = false) const;
 
   // |M|/Mu of a state whose hinge could still open (the larger end's for
   // hinges at the ends); 0 otherwise.
@@ -161,6 +165,8 @@ class HingedBending {
   double energyDensity(const HingedBendingState& s) const { return 0.5 * s.M * s.M / EI(); }
 
  private:
+  // A held section past Mu(N): back to the moment Mu(N), tangent zero.
+  void holdAtUltimate(double kappaD, HingedBendingResponse& out) const;
   // The bulk's return map at N, with dM/dN.
   BendingResponse bulk(const BendingState& from, double kappa, double N, double& dMdN) const;
   // The hinge's law of moments of `sign` at N (the law as given without a capacity).

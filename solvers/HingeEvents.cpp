@@ -5,6 +5,7 @@
 
 #include "elements/JointedElement.h"
 #include "elements/Joints.h"
+#include "elements/LocalizationZones.h"
 #include "solvers/Analysis.h"
 
 namespace c2d {
@@ -69,6 +70,9 @@ double HingeEvents::maxDemand(int& element) {
 }
 
 void HingeEvents::committed() {
+  // The zones of the hinges open in the committed state hold their members'
+  // other elements from the next evaluation on (elements/LocalizationZones.h).
+  zones_.hold(an_.model());
   int e = -1;
   committedDemand_ = maxDemand(e);
 }

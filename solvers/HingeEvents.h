@@ -24,6 +24,7 @@
 
 #include "core/Error.h"
 #include "core/Hinge.h"
+#include "elements/LocalizationZones.h"
 
 namespace c2d {
 
@@ -45,7 +46,8 @@ class HingeEvents {
   // the step (info.converged false, info.hingeActivated set). `handled` tells
   // whether it did.
   Status afterConvergence(IterationInfo& info, bool lineSearch, bool& handled);
-  // At every commit: the demand of the committed state.
+  // At every commit: the localization zones of the hinges open in the
+  // committed state (elements/LocalizationZones.h), and its demand.
   void committed();
   bool locating() const { return locating_; }
 
@@ -78,6 +80,7 @@ class HingeEvents {
   Analysis& an_;
   std::vector<std::pair<int, HingeCarrier*>> carriers_;
   int carriersVersion_ = -1;
+  LocalizationZones zones_;     // one softening hinge per localization zone
   double committedDemand_ = 0;  // max demand at the last commit
   bool locating_ = false;       // inside locate(): no nested events
   bool solved_ = false;         // the state is the converged end of a sub-step

@@ -455,7 +455,12 @@ void registerLawRecords(CommandRegistry& r) {
       "(it turns on with its friction; the log says so once); next to a section that carries "
       "no moment the moment grows as V x, "
       "so Lb = Mu/Vu with Vu the shear capacity of the section (e.g. Vc + Vs by ACI 318); 0 "
-      "(default): the mesh's node spacing sets the shortest piece. SOFTening NEGAtive Mu Ks "
+      "(default): the mesh's node spacing sets the shortest piece. With FINIte kinematics Lb "
+      "is also a midpoint hinge's localization zone: no second hinge opens in the same member "
+      "(elements in line, no joint between) within Lb of an open one (element midpoints, "
+      "reference distance); the elements there hold their moment at Mu (perfectly plastic) "
+      "instead (a SECTion with HINGes MIDPoint and no STIRrups: its depth h). SOFTening "
+      "NEGAtive Mu Ks "
       "(after the LINEar record): other values for negative moments; a hinge follows the law of "
       "the sign of its moment at opening.",
       {text("LINEar/NEGAtive", ""), expr("Mu", "ultimate moment [kN m]"),

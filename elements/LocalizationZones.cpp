@@ -1,0 +1,94 @@
+#include "elements/LocalizationZones.h"
+
+#include <cmath>
+
+#include "elements/Joints.h"
+#include "elements/ReissnerFrame.h"
+
+namespace c2d {
+
+namespace {
+
+// Two elements at a node continue one member when their axes (reference
+// configuration) are in line within this cosine (about 8 degrees).
+constexpr double kInLine = 0.99;
+
+ReissnerFrame* midpointFrame(Element& e) {
+  auto* r = dynamic_cast<ReissnerFrame*>(&innermost(e));
+  if (!r || !r->bendingLaw().hasHinge() || r->bendingLaw().site() != HingeSite::Midpoint)
+    return nullptr;
+  return r;
+}
+
+}  // namespace
+
+double zoneLength(const MaterialSet& mat) {
+  if (!mat.softening) return 0;
+  if (mat.softening->pieceLength > 0) return mat.softening->pieceLength;
+  return mat.section ? mat.section->h : 0.0;
+}
+
+int LocalizationZones::hold(Model& model) {
+  const int ne = model.numElements(), nn = model.numNodes();
+  frame_.assign(ne, nullptr);
+  bool anyOpen = false;
+  for (int e = 0; e < ne; ++e)
+    if (model.hasElement(e) && (frame_[e] = midpointFrame(model.element(e)))) {
+      frame_[e]->setHeld(false);
+      const MaterialSet* mat = model.material(frame_[e]->materialNumber());
+      anyOpen = anyOpen || (frame_[e]->section().hingeActive && mat && zoneLength(*mat) > 0);
+    }
+  if (!anyOpen) return 0;
+  // Per node: the elements whose innermost element holds it (a joint's slave
+  // is the jointed element's node: a joint ends the member).
+  first_.assign(nn, -1);
+  second_.assign(nn, -1);
+  count_.assign(nn, 0);
+  for (int e = 0; e < ne; ++e)
+    if (model.hasElement(e))
+      for (int n : innermost(model.element(e)).nodes()) {
+        (count_[n] == 0 ? first_[n] : second_[n]) = e;
+        ++count_[n];
+      }
+  jointNode_.assign(nn, 0);
+  held_.assign(ne, 0);
+  for (const Joint& j : model.joints()) jointNode_[j.master] = jointNode_[j.slave] = 1;
+  const auto axis = [&](int e) {
+    const auto n = innermost(model.element(e)).nodes();
+    return (model.coord(n[1]) - model.coord(n[0])).normalized();
+  };
+  // The member's next element past element e's node n (-1: the member ends).
+  const auto next = [&](int e, int n) {
+    if (jointNode_[n] || count_[n] != 2) return -1;
+    const int f = first_[n] == e ? second_[n] : first_[n];
+    if (f == e || !frame_[f] || std::abs(axis(e).dot(axis(f))) < kInLine) return -1;
+    return f;
+  };
+  for (int h = 0; h < ne; ++h) {
+    if (!frame_[h] || !frame_[h]->section().hingeActive) continue;
+    const MaterialSet* mat = model.material(frame_[h]->materialNumber());
+    const double zone = mat ? zoneLength(*mat) : 0.0;
+    if (!(zone > 0)) continue;
+    for (int side = 0; side < 2; ++side) {
+      int e = h, n = innermost(model.element(h)).nodes()[side];
+      double reach = 0.5 * frame_[h]->length();  // from the hinge to node n
+      for (int f = next(e, n); f >= 0; f = next(e, n)) {
+        if (reach + 0.5 * frame_[f]->length() >= zone) break;
+        held_[f] = 1;
+        reach += frame_[f]->length();
+        const auto fn = innermost(model.element(f)).nodes();
+        n = fn[0] == n ? fn[1] : fn[0];
+        e = f;
+      }
+    }
+  }
+  int count = 0;
+  for (int e = 0; e < ne; ++e)
+    if (frame_[e] && held_[e] && !frame_[e]->section().hingeActive) {
+      frame_[e]->setHeld(true);
+      ++count;
+    }
+  return count;
+}
+
+}  // namespace c2d

@@ -1,0 +1,56 @@
+#pragma once
+// One softening hinge per localization zone (the collapse phase's midpoint
+// hinges in geometrically exact elements, elements/ReissnerFrame).
+//
+// A midpoint hinge localizes the member's failure in one element, and the
+// moment next to it is bounded by the hinge's: as it softens, the moment along
+// the member falls with it. Without a bound, every element of a member whose
+// moment reaches Mu together opens a hinge of its own, each softening with its
+// own law, so a finer mesh gives a member more hinges and more softening
+// rotation (the six-storey fall opened 70, 125 and 182 hinges at 84, 288 and
+// 576 elements, most next to another open hinge in the same member). So no
+// second hinge opens within the zone length of an open one in the same member:
+// an element there is held (ReissnerFrame::setHeld): it opens no hinge and its
+// moment stays at most Mu (materials/HingedBending: perfectly plastic at Mu
+// instead of hardening past it; the zone's hinge takes the rotation).
+//
+// The zone length of an open hinge is its material's shortest piece Lb
+// (SOFTening's fifth value or a SECTion's STIRrups, Mu/Vu: the nearest a
+// second hinge can open next to a section whose moment falls), else a SECTion's
+// depth h (the plastic hinge length is of the order of h), else none (hinges
+// anywhere: the laws as the paper gives them). A member is a chain of elements
+// meeting two by two at nodes with no joint, in line within kInLine in the
+// reference configuration; distances are along it, in the reference
+// configuration, between the elements' midpoints: an element is held when its
+// midpoint lies nearer than the zone length to the open hinge's. Open hinges
+// count whether softening or failed; a hinge that became a joint is closed
+// (its element can open a new one) and the joint's own rule takes over
+// (elements/HingeToJoint.h nearJoint). Small-displacement elements (the
+// paper's failure phase) and hinges at the element ends are not concerned.
+#include <vector>
+
+#include "core/MaterialSet.h"
+#include "core/Model.h"
+
+namespace c2d {
+
+class ReissnerFrame;
+
+// The zone length of a material's midpoint hinges (m; 0: no zone).
+double zoneLength(const MaterialSet& mat);
+
+// Sets every geometrically exact element's held flag from the hinges of the
+// last evaluated (committed) state. Returns the number of elements held. Its
+// work lists are kept between calls: no allocation once sized (a commit's).
+class LocalizationZones {
+ public:
+  int hold(Model& model);
+
+ private:
+  std::vector<ReissnerFrame*> frame_;  // per element: a midpoint-hinge frame, else null
+  std::vector<int> first_, second_;    // per node: the (first two) elements holding it
+  std::vector<int> count_;             // per node: how many elements hold it
+  std::vector<char> jointNode_, held_;
+};
+
+}  // namespace c2d
