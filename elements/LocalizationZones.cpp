@@ -31,14 +31,14 @@ double zoneLength(const MaterialSet& mat) {
 int LocalizationZones::hold(Model& model) {
   const int ne = model.numElements(), nn = model.numNodes();
   frame_.assign(ne, nullptr);
-  bool anyOpen = false;
+  bool anyZone = false;
   for (int e = 0; e < ne; ++e)
     if (model.hasElement(e) && (frame_[e] = midpointFrame(model.element(e)))) {
       frame_[e]->setHeld(false);
       const MaterialSet* mat = model.material(frame_[e]->materialNumber());
-      anyOpen = anyOpen || (frame_[e]->section().hingeActive && mat && zoneLength(*mat) > 0);
+      anyZone = anyZone || (mat && zoneLength(*mat) > 0);
     }
-  if (!anyOpen) return 0;
+  if (!anyZone) return 0;
   // Per node: the elements whose innermost element holds it (a joint's slave
   // is the jointed element's node: a joint ends the member).
   first_.assign(nn, -1);
@@ -64,22 +64,36 @@ int LocalizationZones::hold(Model& model) {
     if (f == e || !frame_[f] || std::abs(axis(e).dot(axis(f))) < kInLine) return -1;
     return f;
   };
+  // Holds the member's elements from element f on, entered at its node n at
+  // the distance reach (m) from the zone's origin, while their midpoints lie
+  // nearer than zone.
+  const auto holdFrom = [&](int f, int n, double reach, double zone) {
+    for (int e = f; e >= 0; e = next(e, n)) {
+      if (reach + 0.5 * frame_[e]->length() >= zone) break;
+      held_[e] = 1;
+      reach += frame_[e]->length();
+      const auto en = innermost(model.element(e)).nodes();
+      n = en[0] == n ? en[1] : en[0];
+    }
+  };
+  const auto zoneOf = [&](int e) {
+    const MaterialSet* mat = model.material(frame_[e]->materialNumber());
+    return mat ? zoneLength(*mat) : 0.0;
+  };
   for (int h = 0; h < ne; ++h) {
-    if (!frame_[h] || !frame_[h]->section().hingeActive) continue;
-    const MaterialSet* mat = model.material(frame_[h]->materialNumber());
-    const double zone = mat ? zoneLength(*mat) : 0.0;
+    if (!frame_[h]) continue;
+    const double zone = zoneOf(h);
     if (!(zone > 0)) continue;
+    const auto nodes = innermost(model.element(h)).nodes();
     for (int side = 0; side < 2; ++side) {
-      int e = h, n = innermost(model.element(h)).nodes()[side];
-      double reach = 0.5 * frame_[h]->length();  // from the hinge to node n
-      for (int f = next(e, n); f >= 0; f = next(e, n)) {
-        if (reach + 0.5 * frame_[f]->length() >= zone) break;
-        held_[f] = 1;
-        reach += frame_[f]->length();
-        const auto fn = innermost(model.element(f)).nodes();
-        n = fn[0] == n ? fn[1] : fn[0];
-        e = f;
-      }
+      const int n = nodes[side];
+      if (frame_[h]->section().hingeActive)  // an open hinge: from its midpoint
+        holdFrom(next(h, n), n, 0.5 * frame_[h]->length(), zone);
+      // An end that carries no moment: the element alone holds the node, its
+      // rotation is free and no nodal moment loads it (a free or pinned end,
+      // or a joint's node: the joint carries none).
+      if (count_[n] == 1 && model.bound(n)[2] == 0 && model.force(n)[2] == 0)
+        holdFrom(h, n, 0.0, zone);
     }
   }
   int count = 0;

@@ -23,10 +23,23 @@
 // reference configuration; distances are along it, in the reference
 // configuration, between the elements' midpoints: an element is held when its
 // midpoint lies nearer than the zone length to the open hinge's. Open hinges
-// count whether softening or failed; a hinge that became a joint is closed
-// (its element can open a new one) and the joint's own rule takes over
-// (elements/HingeToJoint.h nearJoint). Small-displacement elements (the
-// paper's failure phase) and hinges at the element ends are not concerned.
+// count whether softening or failed.
+//
+// An element end that carries no moment holds its zone the same way, from the
+// end node: a free or pinned end (the element alone holds the node, its
+// rotation free and no nodal moment on it), and the nodes of a joint (made
+// from a midpoint or an end hinge, or given) where the element alone holds
+// its side of it (a joint's slave; its master unless other members meet
+// there and carry the moment between them). Next to such a section the
+// moment grows as V x from zero, so within Mu/Vu of it no second hinge
+// forms: a hinge that became a joint hands its zone to the joint (on both
+// sides), and a ruptured joint's pieces hold theirs from their free ends, so
+// no failed hinge (which would turn freely: elements/HingeToJoint.h nearJoint
+// makes no joint there) opens within Lb of a joint or a free end. A hinge
+// open there before (one that opened before the joint formed) stays open.
+// The zone is the element's material's. Joint friction (SOFTening's Mr) is
+// not counted (the moment grows from Mr << Mu). Small-displacement elements
+// (the paper's failure phase) and hinges at the element ends are not held.
 #include <vector>
 
 #include "core/MaterialSet.h"

@@ -61,6 +61,7 @@ TEST(LocalizationZones, HoldTheMembersElementsWithinTheZoneOfAnOpenHinge) {
   p.emplace_back(1.0, 0.125);
   p.emplace_back(1.0, 0.25);
   Model m = chain(p, 0.3);
+  m.bound(0) = m.bound(10) = {0, 0, 1};  // ends clamped: they carry moment
   EXPECT_EQ(LocalizationZones().hold(m), 0);  // no hinge open
   openHinge(m, 3);
   // Midpoints 0.125 and 0.25 m from the hinge's: held; 0.375 m: not.
@@ -83,8 +84,57 @@ TEST(LocalizationZones, HoldTheMembersElementsWithinTheZoneOfAnOpenHinge) {
   m.element(6).setNodes({slave, 7});
   m.joints().push_back(Joint{6, slave, JointForm::Condensed});
   ASSERT_EQ(installJoints(m), 1);
+  m.bound(0) = m.bound(10) = {0, 0, 1};
   LocalizationZones().hold(m);
-  EXPECT_EQ(heldElements(m), (std::set<int>{6}));  // not 5, across the joint
+  // The joint carries no moment: it holds its zone on both sides (4 and 5 at
+  // the master, 6 at the slave; 7's hinge is open), element 6 also 7's.
+  EXPECT_EQ(heldElements(m), (std::set<int>{4, 5, 6}));
+  closed = frame(m, 7).section();
+  closed.hingeActive = false;
+  frame(m, 7).setSection(closed);
+  LocalizationZones().hold(m);
+  EXPECT_EQ(heldElements(m), (std::set<int>{4, 5, 6, 7}));  // the corner ends it
+}
+
+// An end that carries no moment holds its zone as an open hinge does: a free
+// end, a pinned end, a joint's nodes (next to them the moment grows as V x
+// from zero, and within Lb = Mu/Vu it cannot reach Mu); a clamped end, a
+// nodal moment or a connection of more members does not.
+TEST(LocalizationZones, EndsThatCarryNoMomentHoldTheirZones) {
+  std::vector<Vec2> p;
+  for (int i = 0; i <= 8; ++i) p.emplace_back(0.125 * i, 0);
+  Model m = chain(p, 0.3);
+  // Free at both ends: 0.0625 and 0.1875 m from each, held; 0.3125: not.
+  EXPECT_EQ(LocalizationZones().hold(m), 4);
+  EXPECT_EQ(heldElements(m), (std::set<int>{0, 1, 6, 7}));
+  m.bound(0) = {1, 1, 0};  // pinned: the same
+  m.bound(8) = {0, 0, 1};  // clamped: none
+  LocalizationZones().hold(m);
+  EXPECT_EQ(heldElements(m), (std::set<int>{0, 1}));
+  m.force(0)[2] = 1.0;  // a nodal moment at the pin: none
+  EXPECT_EQ(LocalizationZones().hold(m), 0);
+  // A corner at node 8 (a second element there, its far end clamped): the
+  // elements at a node carry its moment between them.
+  m.force(0)[2] = 0;
+  m.bound(0) = {0, 0, 1};
+  m.bound(8) = {0, 0, 0};
+  const int tip = m.addNode(Vec2(1.0, 0.125));
+  m.setElement(8, std::make_unique<ReissnerFrame>(m.materials().at(1), std::array{8, tip},
+                                                  m.coord(8), m.coord(tip)));
+  m.bound(tip) = {0, 0, 1};
+  EXPECT_EQ(LocalizationZones().hold(m), 0);
+  // A joint at node 4 (element 4 moved to a slave there): elements 2, 3 and
+  // 4, 5 held; a hinge open within the zone (one opened before the joint) is
+  // not held and holds its own.
+  const int slave = m.addNode(m.coord(4));
+  m.element(4).setNodes({slave, 5});
+  m.joints().push_back(Joint{4, slave, JointForm::Condensed});
+  ASSERT_EQ(installJoints(m), 1);
+  LocalizationZones().hold(m);
+  EXPECT_EQ(heldElements(m), (std::set<int>{2, 3, 4, 5}));
+  openHinge(m, 5);
+  LocalizationZones().hold(m);
+  EXPECT_EQ(heldElements(m), (std::set<int>{2, 3, 4, 6, 7}));
 }
 
 // A held element bent past Mu: its moment stays at Mu (the plastic curvature
@@ -191,6 +241,12 @@ TEST(LocalizationZones, OneHingePerZoneInARodWhoseAdjacentElementsWouldBothOpen)
   // the held elements stay at Mu at most.
   EXPECT_GT(zoned.opened.size(), 0u);
   EXPECT_EQ(pairsWithin(zoned.opened, 0.3), 0);
+  // None within 0.3 m of the pinned end or the free tip (neither carries a
+  // moment): element 4 (midpoint 0.28 m from the pin) opened without that.
+  for (int e : zoned.opened) {
+    EXPECT_GE(0.0625 * (e + 0.5), 0.3) << "element " << e;
+    EXPECT_LE(0.0625 * (e + 0.5), 0.7) << "element " << e;
+  }
   EXPECT_LT(zoned.worstRatio, 1 + 1e-6);
   EXPECT_LT(zoned.balance, 1e-8);
   EXPECT_LT(free.worstRatio, 1 + 1e-6);
