@@ -110,8 +110,8 @@ class ReissnerFrame final : public Element,
   bool fractureDue() const override { return committed_.fracture == 1; }
   void fractureDone() override { committed_.fracture = trial_.fracture = 2; }
 
-  // In the localization zone of another element's open hinge (elements/
-  // LocalizationZones.h): no hinge of its own opens, and its moment is held at
+  // In the localization zone of another element's open hinge, of a joint or of
+  // a free end (elements/LocalizationZones.h): no hinge of its own opens, and its moment is held at
   // Mu (HingedBending::respond). Set by the solver from the committed state.
   void setHeld(bool held) { held_ = held; }
   bool held() const { return held_; }
@@ -185,7 +185,7 @@ class ReissnerFrame final : public Element,
   Vec3 e0_ = Vec3::Zero();
   HingedBending law_;
   std::optional<AxialCapacity> axial_;  // RC sections
-  bool held_ = false;                   // in another hinge's localization zone
+  bool held_ = false;                   // in a localization zone
   double axialTangent_ = 0;             // dN/dSigma of the last evaluation
   ElemVec axialGradient_ = ElemVec::Zero();  // dN/dd of the last evaluation
   SectionDamping damping_;  // DAMPing: the section's dashpot in dynamics

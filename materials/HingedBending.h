@@ -113,8 +113,8 @@ class HingedBending {
   // history `from`, at axial force N. openSign = +-1 opens the (midpoint) hinge
   // in this evaluation (the solver decides when), with the sign of the moment
   // at activation; 0 leaves an inactive hinge closed. held: the section lies in
-  // the localization zone of another element's open hinge (elements/
-  // LocalizationZones.h) and opens none of its own; its closed hinge holds the
+  // the localization zone of another element's open hinge, of a joint or of a
+  // free end (elements/LocalizationZones.h) and opens none of its own; its closed hinge holds the
   // moment at Mu(N) (perfectly plastic: the bulk's plastic curvature takes the
   // rest, M dkp >= 0) instead of hardening past it.
   Status respond(double kappaD, double l, const HingedBendingState& from, double openSign,
