@@ -40,7 +40,9 @@ int LocalizationZones::hold(Model& model) {
     }
   if (!anyZone) return 0;
   // Per node: the elements whose innermost element holds it (a joint's slave
-  // is the jointed element's node: a joint ends the member).
+  // is the jointed element's node, so a joint ends the member it cuts; a
+  // member that goes on through a joint's master, as a column through a
+  // connection whose beam has a joint, is not cut).
   first_.assign(nn, -1);
   second_.assign(nn, -1);
   count_.assign(nn, 0);
@@ -50,16 +52,14 @@ int LocalizationZones::hold(Model& model) {
         (count_[n] == 0 ? first_[n] : second_[n]) = e;
         ++count_[n];
       }
-  jointNode_.assign(nn, 0);
   held_.assign(ne, 0);
-  for (const Joint& j : model.joints()) jointNode_[j.master] = jointNode_[j.slave] = 1;
   const auto axis = [&](int e) {
     const auto n = innermost(model.element(e)).nodes();
     return (model.coord(n[1]) - model.coord(n[0])).normalized();
   };
   // The member's next element past element e's node n (-1: the member ends).
   const auto next = [&](int e, int n) {
-    if (jointNode_[n] || count_[n] != 2) return -1;
+    if (count_[n] != 2) return -1;
     const int f = first_[n] == e ? second_[n] : first_[n];
     if (f == e || !frame_[f] || std::abs(axis(e).dot(axis(f))) < kInLine) return -1;
     return f;

@@ -19,8 +19,10 @@
 // second hinge can open next to a section whose moment falls), else a SECTion's
 // depth h (the plastic hinge length is of the order of h), else none (hinges
 // anywhere: the laws as the paper gives them). A member is a chain of elements
-// meeting two by two at nodes with no joint, in line within kInLine in the
-// reference configuration; distances are along it, in the reference
+// meeting two by two at nodes (a joint's slave is the jointed element's own
+// node: a joint cuts the member; one that goes on through a joint's master,
+// e.g. a column through a connection whose beam has a joint, is not cut), in
+// line within kInLine in the reference configuration; distances are along it, in the reference
 // configuration, between the elements' midpoints: an element is held when its
 // midpoint lies nearer than the zone length to the open hinge's. Open hinges
 // count whether softening or failed.
@@ -63,7 +65,7 @@ class LocalizationZones {
   std::vector<ReissnerFrame*> frame_;  // per element: a midpoint-hinge frame, else null
   std::vector<int> first_, second_;    // per node: the (first two) elements holding it
   std::vector<int> count_;             // per node: how many elements hold it
-  std::vector<char> jointNode_, held_;
+  std::vector<char> held_;
 };
 
 }  // namespace c2d

@@ -96,6 +96,26 @@ TEST(LocalizationZones, HoldTheMembersElementsWithinTheZoneOfAnOpenHinge) {
   EXPECT_EQ(heldElements(m), (std::set<int>{4, 5, 6, 7}));  // the corner ends it
 }
 
+// A member goes on through a joint's master: a column through a connection
+// whose beam has a joint (the beam's end on a slave at the column's node).
+TEST(LocalizationZones, AMemberGoesOnThroughAJointsMaster) {
+  std::vector<Vec2> p;
+  for (int i = 0; i <= 8; ++i) p.emplace_back(0.125 * i, 0);
+  Model m = chain(p, 0.3);
+  m.bound(0) = m.bound(8) = {0, 0, 1};
+  const int slave = m.addNode(m.coord(2)), top = m.addNode(Vec2(0.25, 0.125));
+  m.bound(top) = {0, 0, 1};
+  m.setElement(8, std::make_unique<ReissnerFrame>(m.materials().at(1), std::array{slave, top},
+                                                  m.coord(slave), m.coord(top)));
+  m.joints().push_back(Joint{2, slave, JointForm::Condensed});
+  ASSERT_EQ(installJoints(m), 1);
+  openHinge(m, 3);
+  LocalizationZones().hold(m);
+  // 1 and 2 left of the hinge (through node 2), 4 and 5 right; the beam's
+  // element 8 from its jointed end.
+  EXPECT_EQ(heldElements(m), (std::set<int>{1, 2, 4, 5, 8}));
+}
+
 // An end that carries no moment holds its zone as an open hinge does: a free
 // end, a pinned end, a joint's nodes (next to them the moment grows as V x
 // from zero, and within Lb = Mu/Vu it cannot reach Mu); a clamped end, a
