@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "core/Model.h"
+#include "core/StepRule.h"
 #include "elements/Joints.h"
 #include "elements/LocalizationZones.h"
 #include "elements/ReissnerFrame.h"
 #include "solvers/Analysis.h"
 #include "solvers/TimeIntegrator.h"
-#include "core/StepRule.h"
 #include "tests/unit/ElementTestSupport.h"
 
 namespace c2d {
@@ -61,7 +61,7 @@ TEST(LocalizationZones, HoldTheMembersElementsWithinTheZoneOfAnOpenHinge) {
   p.emplace_back(1.0, 0.125);
   p.emplace_back(1.0, 0.25);
   Model m = chain(p, 0.3);
-  m.bound(0) = m.bound(10) = {0, 0, 1};  // ends clamped: they carry moment
+  m.bound(0) = m.bound(10) = {0, 0, 1};       // ends clamped: they carry moment
   EXPECT_EQ(LocalizationZones().hold(m), 0);  // no hinge open
   openHinge(m, 3);
   // Midpoints 0.125 and 0.25 m from the hinge's: held; 0.375 m: not.
