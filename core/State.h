@@ -27,6 +27,7 @@ struct PairMemory {
   // The side of the segment the node is held on while it has not cleared the
   // centre line (+1 left, -1 right; 0: the side it was on at t_n).
   int side = 0;
+  bool operator==(const PairMemory&) const = default;
 };
 
 struct State {

@@ -65,6 +65,7 @@ struct StepRule {
   double h = 0;
   double cv = 0, vv = 0, va = 0;
   double ca = 0, av = 0, aa = 0;
+  bool operator==(const StepRule&) const = default;
   bool dynamic() const { return scheme != Scheme::Static; }
   // Rotations advance by the Cayley rule: under the mid-point scheme.
   bool rotationsByCayley() const { return scheme == Scheme::MidPoint; }

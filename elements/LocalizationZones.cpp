@@ -92,8 +92,9 @@ int LocalizationZones::hold(Model& model) {
       // An end that carries no moment: the element alone holds the node, its
       // rotation is free and no nodal moment loads it (a free or pinned end,
       // or a joint's node: the joint carries none).
-      if (count_[n] == 1 && model.bound(n)[2] == 0 && model.force(n)[2] == 0)
-        holdFrom(h, n, 0.0, zone);
+      // (count_ counts a joint's slave and master as nodes of their own
+      // elements: a joint's node held by one element is such an end.)
+      if (freeEnd(model, n, count_[n])) holdFrom(h, n, 0.0, zone);
     }
   }
   int count = 0;

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/Hinge.h"
 #include "core/output/AtomicFile.h"
 #include "macro/studies/CurveOverlay.h"
 #include "macro/deck/DeckParser.h"
@@ -205,6 +206,13 @@ std::vector<std::string> runWarnings(const RunSummary& s) {
                   s.memberContact ? "the member contact was too soft for an impact, or the "
                                     "pieces of a ruptured joint slid through each other"
                                   : "CONTact MEMBers,,k keeps them apart");
+    out.push_back(buf);
+  }
+  if (s.maxMomentRatio > 1 + kCapacityTolerance) {
+    std::snprintf(buf, sizeof buf,
+                  "warning: a member carried |M|/Mu = %.4f, past its capacity by more than "
+                  "%.1f %% (the element and the time in the log)",
+                  s.maxMomentRatio, 100 * kCapacityTolerance);
     out.push_back(buf);
   }
   if (s.folded > 0) {

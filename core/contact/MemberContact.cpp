@@ -323,19 +323,6 @@ PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, 
 
 namespace {
 
-bool sameRule(const StepRule& a, const StepRule& b) {
-  return a.scheme == b.scheme && a.alpha == b.alpha && a.h == b.h && a.cv == b.cv && a.vv == b.vv &&
-         a.va == b.va && a.ca == b.ca && a.av == b.av && a.aa == b.aa;
-}
-
-bool sameMemory(const std::vector<PairMemory>& a, const std::vector<PairMemory>& b) {
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
-                    [](const PairMemory& x, const PairMemory& y) {
-                      return x.key == y.key && x.q == y.q && x.offset == y.offset &&
-                             x.stretch == y.stretch && x.h == y.h && x.side == y.side;
-                    });
-}
-
 // Assigns b to a and tells whether they were equal already.
 bool keep(Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   if (a.size() == b.size() && a == b) return true;
@@ -352,12 +339,12 @@ const std::vector<MemberContact::StepOutcome>& MemberContact::outcomes(const Mod
   // Every input kept is compared (and copied when it differs): no caller has
   // to say when the state changed.
   bool same = outcomesValid_ && outcomesVersion_ == candidatesVersion_ &&
-              sameRule(outcomesRule_, rule) && outcomesSlack_ == slack_;
+              outcomesRule_ == rule && outcomesSlack_ == slack_;
   same = keep(outcomesU_, s.u) && same;
   same = keep(outcomesUn_, s.un) && same;
   same = keep(outcomesVn_, s.vn) && same;
   same = keep(outcomesAn_, s.an) && same;
-  if (same && sameMemory(outcomesPairs_, s.pairs)) return outcomes_;
+  if (same && outcomesPairs_ == s.pairs) return outcomes_;
   // With the room of the memory and of the candidates: steps allocate nothing
   // while the contacts change little.
   if (outcomesPairs_.capacity() < s.pairs.capacity()) outcomesPairs_.reserve(s.pairs.capacity());

@@ -278,6 +278,14 @@ TEST(RunOutcome, SummaryWordsTheEnergyErrorAndWarnsWhenTheBalanceDoesNotClose) {
   EXPECT_TRUE(
       contains(runWarnings(s)[3], "warning: in this run a node went deeper into the ground"))
       << runWarnings(s)[3];
+  // A member past its capacity beyond the tolerance (macro/run/CapacityWatch.h): a fifth;
+  // within it, none.
+  s.maxMomentRatio = 1.0003;
+  EXPECT_EQ(runWarnings(s).size(), 4u);
+  s.maxMomentRatio = 1.004;
+  ASSERT_EQ(runWarnings(s).size(), 5u);
+  EXPECT_TRUE(contains(runWarnings(s)[2], "warning: a member carried |M|/Mu = 1.0040"))
+      << runWarnings(s)[2];
 }
 
 }  // namespace
