@@ -22,7 +22,6 @@ bool Assembler::refresh() {
   dofs_ = DofMap(model_);
   stretch_.resize(0);  // until the next assembly: the committed stretches
   members_ = model_.memberContact() ? std::make_unique<MemberContact>(model_, dofs_) : nullptr;
-  swept_.forget();
   patternPairs_.clear();
   // With member contact the pattern waits for the first assembly, where the
   // pairs with a force are known: built here without them, it was built again
@@ -145,12 +144,10 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
   PairVec f;
   PairMat k;
   members_->assembling(rule);
-  swept_.update(model_, s);
   const double extra = members_->slack();
-  for (int i : swept_.near(s, candidates, members_->candidatesVersion(), extra,
-                           0.25 * members_->margin())) {
+  for (int i : members_->nearby(model_, s, extra)) {
     const ContactPair& p = candidates[i];
-    if (!swept_.reach(p, extra)) continue;
+    if (!members_->sweptReach(p, extra)) continue;
     if (!members_->evaluate(p, model_, s, rule, wantTangent, f, k)) continue;
     const int slot = slotOf(p);
     missing = missing || slot < 0;
@@ -174,7 +171,7 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
   for (const ContactPair& p : candidates) {
     const bool force = next < contactForces_.size() && contactForces_[next].pair.key() == p.key();
     if (force) ++next;
-    if (force || (swept_.reach(p, reserve) && members_->within(p, model_, s, reserve)))
+    if (force || (members_->sweptReach(p, reserve) && members_->within(p, model_, s, reserve)))
       patternPairs_.push_back(p.key());
   }
   buildPattern();
@@ -184,7 +181,6 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
 void Assembler::restartContactSearch() {
   if (!members_) return;
   members_ = std::make_unique<MemberContact>(model_, dofs_);
-  swept_.forget();
   patternPairs_.clear();
   buildPattern();
 }

@@ -29,7 +29,6 @@
 #include "core/contact/MemberContact.h"
 #include "core/Model.h"
 #include "core/State.h"
-#include "core/contact/SweptBoxes.h"
 #include "core/SparseMatrix.h"
 
 namespace c2d {
@@ -151,7 +150,6 @@ class Assembler {
   double forceScale_ = 0;
 
   std::unique_ptr<MemberContact> members_;
-  SweptBoxes swept_;  // the nodes' boxes over the step, per assembly: the pairs' first test
   int pushedThrough_ = 0;
   double pushedThroughEnergy_ = 0;
   std::vector<std::uint64_t> patternPairs_;   // sorted keys of the pairs in the pattern

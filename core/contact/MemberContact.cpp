@@ -353,21 +353,41 @@ const std::vector<MemberContact::StepOutcome>& MemberContact::outcomes(const Mod
   outcomesVersion_ = candidatesVersion_;
   outcomesRule_ = rule;
   outcomesSlack_ = slack_;
-  outcomes_.resize(pairs.size());
-  for (std::size_t i = 0; i < pairs.size(); ++i)
-    outcomes_[i].outcome = outcome(pairs[i], model, s, rule, &outcomes_[i].full);
+  outcomes_.clear();
+  for (int i : touching(model, s)) {
+    StepOutcome& o = outcomes_.emplace_back();
+    o.index = i;
+    o.outcome = outcome(pairs[i], model, s, rule, &o.full);
+  }
   outcomesValid_ = true;
   return outcomes_;
+}
+
+const std::vector<int>& MemberContact::touching(const Model& model, const State& s) const {
+  const std::vector<ContactPair>& pairs = candidates(model, s);
+  touching_.clear();
+  for (int i : nearby(model, s, slack_))
+    if (swept_.reach(pairs[i], slack_)) touching_.push_back(i);
+  // The pairs in memory out of reach (a friction spring or a held side let
+  // go), in key order as the candidates are.
+  const auto within = static_cast<std::ptrdiff_t>(touching_.size());
+  for (const PairMemory& m : s.pairs) {
+    const auto it = std::lower_bound(pairs.begin(), pairs.end(), m.key,
+                                     [](const ContactPair& p, std::uint64_t k) { return p.key() < k; });
+    if (it != pairs.end() && it->key() == m.key && !swept_.reach(*it, slack_))
+      touching_.push_back(static_cast<int>(it - pairs.begin()));
+  }
+  std::inplace_merge(touching_.begin(), touching_.begin() + within, touching_.end());
+  return touching_;
 }
 
 double MemberContact::energy(const Model& model, const State& s) const {
   double w = 0;
   const std::vector<StepOutcome>& found = outcomes(model, s, lastRule_);
   const std::vector<ContactPair>& pairs = candidates(model, s);
-  for (std::size_t i = 0; i < pairs.size(); ++i) {
-    const ContactPair& pair = pairs[i];
-    const PairMemory* m = memory(s, pair.key());
-    const PairOutcome& o = found[i].outcome;
+  for (const StepOutcome& f : found) {
+    const PairMemory* m = memory(s, pairs[f.index].key());
+    const PairOutcome& o = f.outcome;
     w += crushingEnergy(data_.k, data_.restitution, m ? m->q : 0.0, o.p1) +
          springFrictionEnergy(data_.k, o.stretch);
   }
@@ -380,7 +400,9 @@ double MemberContact::dissipation(const Model& model, const State& s, const Step
   if (!damped && !crushes && data_.mu <= 0) return 0;
   double d = 0;
   PairPositions q0, q1;
-  for (const ContactPair& pair : candidates(model, s)) {
+  const std::vector<ContactPair>& pairs = candidates(model, s);
+  for (int i : touching(model, s)) {
+    const ContactPair& pair = pairs[i];
     const PairMemory* m = memory(s, pair.key());
     const PairOutcome o = outcome(pair, model, s, rule);
     const double q = m ? m->q : 0.0;
@@ -397,7 +419,9 @@ double MemberContact::dissipation(const Model& model, const State& s, const Step
 void MemberContact::motions(const Model& model, const State& s,
                             std::vector<ContactMotion>& out) const {
   PairPositions q0, q1;
-  for (const ContactPair& pair : candidates(model, s)) {
+  const std::vector<ContactPair>& pairs = candidates(model, s);
+  for (int i : touching(model, s)) {
+    const ContactPair& pair = pairs[i];
     if (!positions(pair, model, s, q0, q1, slack_)) continue;
     const PairMemory* m = memory(s, pair.key());
     const int sd = side(m, q0);
@@ -431,12 +455,11 @@ double MemberContact::commit(const Model& model, State& s, int& pushed,
   double released = 0, letGo = 0, crushed = 0;
   committedEnergy_ = 0;
   PairPositions q0, q1;
-  const std::vector<StepOutcome>& found = outcomes(model, s, lastRule_);
-  for (std::size_t i = 0; i < pairs.size(); ++i) {
-    const ContactPair& pair = pairs[i];
+  for (const StepOutcome& f : outcomes(model, s, lastRule_)) {
+    const ContactPair& pair = pairs[f.index];
     const PairMemory* m = memory(s, pair.key());
-    const double full = found[i].full;
-    const PairOutcome& o = found[i].outcome;
+    const double full = f.full;
+    const PairOutcome& o = f.outcome;
     const bool near = positions(pair, model, s, q0, q1, slack_);
     PairMemory next{pair.key(), 0.0, 0.0, o.stretch, distance(pair, m), m ? m->side : 0};
     bool flipped = false;

@@ -80,23 +80,15 @@
 
 #include "core/contact/ContactGrid.h"
 #include "core/contact/ContactMotion.h"
+#include "core/contact/ContactPair.h"
 #include "core/contact/PairContact.h"
+#include "core/contact/SweptBoxes.h"
 #include "core/DofMap.h"
 #include "core/Model.h"
 #include "core/State.h"
 #include "core/StepRule.h"
 
 namespace c2d {
-
-// One node-segment pair of the model.
-struct ContactPair {
-  int node = -1, element = -1;
-  int a = -1, b = -1;  // the element's nodes
-  double h = 0;        // contact distance
-  std::uint64_t key() const {
-    return (static_cast<std::uint64_t>(node) << 32) | static_cast<std::uint32_t>(element);
-  }
-};
 
 // For every node: the representative of the nodes tied to it by joints.
 std::vector<int> jointGroups(const Model& model);
@@ -164,10 +156,17 @@ class MemberContact {
     seg.add(q.b.x(), q.b.y());
     return Box::point(q.x.x(), q.x.y()).inflated(pair.h + slack_).overlaps(seg);
   }
-  bool near(const ContactPair& pair, const Model& model, const State& s, double extra) const {
-    PairPositions q0, q1;
-    return positions(pair, model, s, q0, q1, extra);
+  // The candidates (indices into candidates(), ascending) whose swept boxes
+  // over the step to s may come within their contact distance plus extra: a
+  // superset, kept over a step's iterations while the nodes move little
+  // (core/contact/SweptBoxes.h). sweptReach() is the exact test of one of
+  // them, at the state of the last call.
+  const std::vector<int>& nearby(const Model& model, const State& s, double extra) const {
+    const std::vector<ContactPair>& pairs = candidates(model, s);
+    swept_.update(model, s);
+    return swept_.near(s, pairs, candidatesVersion_, extra, 0.25 * margin_);
   }
+  bool sweptReach(const ContactPair& pair, double extra) const { return swept_.reach(pair, extra); }
 
   // The pair comes within extra of touching over the step to s: its
   // penetration, as evaluate() sees it, exceeds -extra at t_n or t_n+1.
@@ -200,17 +199,24 @@ class MemberContact {
   // contact distance, without offset, at t_n+1).
   PairOutcome outcome(const ContactPair& pair, const Model& model, const State& s,
                       const StepRule& rule, double* full = nullptr) const;
-  // outcome() of every candidate at s under rule, with its penetration at the
+  // outcome() of every pair touching() at s under rule, with its penetration at the
   // full distance: a commit reads them twice at one state (the energy account's
   // energy(), then commit()), so they are found once and kept while the
   // candidates, the state's displacements, rates and pair memory and the rule
   // are those they were found for.
   struct StepOutcome {
+    int index = -1;  // the pair's in candidates()
     PairOutcome outcome;
     double full = 0;
   };
   const std::vector<StepOutcome>& outcomes(const Model& model, const State& s,
                                            const StepRule& rule) const;
+  // The candidates that may touch over the step to s (swept boxes within
+  // their distance plus the slack: positions() true) or have a memory
+  // (indices, ascending): the passes over the pairs at a commit visit these
+  // alone, the others having no force, energy or memory (the main example's
+  // pile: 2600 candidates, 300-450 of these).
+  const std::vector<int>& touching(const Model& model, const State& s) const;
   static double distance(const ContactPair& pair, const PairMemory* m) { return m ? m->h : pair.h; }
   // The side the node is held on: the memory's, or the one it was on at t_n.
   static int side(const PairMemory* m, const PairPositions& q0) {
@@ -243,6 +249,8 @@ class MemberContact {
   mutable std::vector<Box> anchor_;  // per node: its swept box at the last search
   mutable std::vector<ContactPair> candidates_;
   mutable std::vector<PairMemory> nextMemory_;  // commit's scratch
+  mutable SweptBoxes swept_;                    // nearby()
+  mutable std::vector<int> touching_;           // touching()'s
   // outcomes() and what they were found for.
   mutable std::vector<StepOutcome> outcomes_;
   mutable bool outcomesValid_ = false;

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/contact/ContactGrid.h"
-#include "core/contact/MemberContact.h"
+#include "core/contact/ContactPair.h"
 #include "core/Model.h"
 #include "core/State.h"
 
@@ -33,9 +33,6 @@ class SweptBoxes {
   // 320 within reach).
   const std::vector<int>& near(const State& s, const std::vector<ContactPair>& candidates,
                                int version, double extra, double slack);
-  // A new member contact (its candidates' versions start again): near()
-  // finds its list afresh.
-  void forget() { nearVersion_ = -1; }
 
   // The pair's swept boxes are within its contact distance plus extra.
   bool reach(const ContactPair& pair, double extra) const {

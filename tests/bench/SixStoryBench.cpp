@@ -11,7 +11,13 @@
 //    back, with ground contact only (kmem = 0) and as shipped with member
 //    contact (kmem = 1e5), with the ratio of their CPU times (target: at most 1.5)
 //    and each run's steps, iterations, cuts, factorizations and CPU time per
-//    iteration (counters suffixed _ground and _members).
+//    iteration (counters suffixed _ground and _members);
+//  - SixStoryDemolitionMemberContactEnsemble: the same over the main example's
+//    ensemble (decks/collapse/six_story_demolition_ensemble.inp) cut to six
+//    jittered samples, their CPU times summed. One history's ratio is itself
+//    a sample: the jittered runs of one deck spread by 10-20 % in steps and
+//    iterations, and the unjittered main example's ground-only run is among
+//    the shortest of its ensemble.
 // Counters: steps, Newton iterations, factorizations, seconds per iteration.
 // Run: build/tests/benchmarks --benchmark_filter=SixStory
 #include <benchmark/benchmark.h>
@@ -38,14 +44,17 @@ void BM_SixStoryDemolition(benchmark::State& st) {
   runDeck(st, c2d::bench::sourceDeck("collapse", "six_story_demolition.inp"));
 }
 
-// The main example as a copy whose member contact stiffness is kmem and whose
-// include is named by absolute path (the copy lives in a scratch directory);
-// empty when the source deck is not found (the decks are found from the
-// source file's path as the compiler gave it, which may be relative to the
-// build directory).
-std::filesystem::path demolitionDeck(const std::string& kmem) {
+// The main example (or its ensemble, name) as a copy whose member contact
+// stiffness is kmem, whose ENSEmble has `samples` samples (0: as it is) and
+// whose include is named by absolute path (the copy lives in a scratch
+// directory); empty when the source deck is not found (the decks are found
+// from the source file's path as the compiler gave it, which may be relative
+// to the build directory).
+std::filesystem::path demolitionDeck(const std::string& kmem,
+                                     const char* name = "six_story_demolition.inp",
+                                     int samples = 0) {
   const std::filesystem::path source =
-      std::filesystem::absolute(c2d::bench::sourceDeck("collapse", "six_story_demolition.inp"));
+      std::filesystem::absolute(c2d::bench::sourceDeck("collapse", name));
   if (!std::filesystem::exists(source)) return {};
   std::ifstream in(source);
   std::stringstream text;
@@ -57,26 +66,31 @@ std::filesystem::path demolitionDeck(const std::string& kmem) {
     deck.replace(at, deck.find('\n', at) - at, by);
   };
   replaceLine("  kmem = ", "  kmem = " + kmem);
+  if (samples > 0) replaceLine("ENSEmble,,", "ENSEmble,," + std::to_string(samples) + ",1");
   replaceLine("INCLude,six_story_fall.inc",
               "INCLude," + (source.parent_path() / "six_story_fall.inc").string());
   const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("c2d_bench_kmem_" + kmem);
+      std::filesystem::temp_directory_path() /
+      ("c2d_bench_kmem_" + kmem + (samples > 0 ? "_ensemble" : ""));
   std::filesystem::create_directories(dir);
   const std::filesystem::path copy = dir / "six_story_demolition.inp";
   std::ofstream(copy) << deck;
   return copy;
 }
 
-void BM_SixStoryDemolitionMemberContact(benchmark::State& st) {
+// The deck without and with member contact, back to back: the ratio of their
+// CPU times and each one's counters.
+void memberContactRatio(benchmark::State& st, const char* name, int samples) {
   SolutionCommands commands;
   double seconds[2] = {0, 0};
   for (auto _ : st) {
     int k = 0;
     for (const char* kmem : {"0", "1e5"}) {
-      const std::filesystem::path deck = demolitionDeck(kmem);
+      const std::filesystem::path deck = demolitionDeck(kmem, name, samples);
       if (deck.empty()) {
-        st.SkipWithError(
-            "no deck collapse/six_story_demolition.inp (run from the build's tests directory)");
+        st.SkipWithError(("no deck collapse/" + std::string(name) +
+                          " (run from the build's tests directory)")
+                             .c_str());
         return;
       }
       DeckOptions opt;
@@ -102,6 +116,14 @@ void BM_SixStoryDemolitionMemberContact(benchmark::State& st) {
     }
   }
   st.counters["ratio"] = seconds[0] > 0 ? seconds[1] / seconds[0] : 0.0;
+}
+
+void BM_SixStoryDemolitionMemberContact(benchmark::State& st) {
+  memberContactRatio(st, "six_story_demolition.inp", 0);
+}
+
+void BM_SixStoryDemolitionMemberContactEnsemble(benchmark::State& st) {
+  memberContactRatio(st, "six_story_demolition_ensemble.inp", 6);
 }
 
 // The mesh study deck with its sweep cut down to the 288-element mesh and its
@@ -132,3 +154,6 @@ BENCHMARK(BM_SixStoryWorkflow)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_SixStoryStatic)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_SixStoryDemolition)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_SixStoryDemolitionMemberContact)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_SixStoryDemolitionMemberContactEnsemble)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);

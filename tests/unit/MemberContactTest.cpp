@@ -596,6 +596,34 @@ TEST(MemberContactModel, TheStepsNearListHoldsEveryPairWithinReach) {
   EXPECT_GT(reached, 40);  // the rods were within reach in every iteration
 }
 
+TEST(MemberContactModel, APairInMemoryOutOfReachLetsGoOfItsFrictionSpring) {
+  // A commit's passes visit the pairs that may touch and those in memory
+  // (MemberContact::touching): a pair whose node has left the segment's reach
+  // with its friction spring stretched lets go of it, the spring's energy
+  // counted as dissipated, and its memory is dropped.
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 10, 1.0, 2.5e-3 / 3);  // r = 0.05
+  newRod(m, Vec2(0, 0), Vec2(2, 0), 8);
+  const int bar = newRod(m, Vec2(0.9, 0.2), Vec2(0.9, 1.2), 4);  // its lowest node 0.2 above
+  const double k = 1e3, stretch = 0.01;
+  m.memberContact() = MemberContactData{k, 0, -1, 1, 0.5};
+  Assembler as(m);
+  as.refresh();
+  const MemberContact& mc = *as.memberContact();
+  State s;
+  s.resize(m.numNodes());
+  const std::vector<ContactPair>& candidates = mc.candidates(m, s);
+  const auto pair = std::find_if(candidates.begin(), candidates.end(),
+                                 [&](const ContactPair& p) { return p.node == bar; });
+  ASSERT_NE(pair, candidates.end());  // a candidate of the search's margin
+  s.pairs = {PairMemory{pair->key(), 0.0, 0.0, stretch, pair->h, 0}};
+  mc.openPairs(m, s);
+  const StepRule rule = TimeIntegrator::midPoint(0, 0).rule(0.01);
+  EXPECT_NEAR(as.contactDissipation(s, rule), springFrictionEnergy(k, stretch), 1e-15);
+  as.commitContact(s);
+  EXPECT_TRUE(s.pairs.empty());
+}
+
 // --- collisions ---------------------------------------------------------------
 
 struct Collision {
