@@ -133,7 +133,6 @@ void Assembler::buildPattern() {
 void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool wantTangent) {
   contactForces_.clear();
   if (!members_) return;
-  const std::vector<ContactPair>& candidates = members_->candidates(model_, s);
   auto slotOf = [&](const ContactPair& p) {
     const auto it = std::lower_bound(patternPairs_.begin(), patternPairs_.end(), p.key());
     return it != patternPairs_.end() && *it == p.key()
@@ -145,7 +144,9 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
   PairMat k;
   members_->assembling(rule);
   const double extra = members_->slack();
-  for (int i : members_->nearby(model_, s, extra)) {
+  const MemberContact::Nearby nearby = members_->nearby(model_, s, extra);
+  const std::vector<ContactPair>& candidates = nearby.candidates;
+  for (int i : nearby.near) {
     const ContactPair& p = candidates[i];
     if (!members_->sweptReach(p, extra)) continue;
     if (!members_->evaluate(p, model_, s, rule, wantTangent, f, k)) continue;

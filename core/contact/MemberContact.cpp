@@ -199,6 +199,26 @@ bool MemberContact::valid(const Model& model, const State& s) const {
   return true;
 }
 
+bool MemberContact::validBoxes() const {
+  if (!searched_) return false;
+  for (int n = 0; n < static_cast<int>(usedNode_.size()); ++n) {
+    if (!usedNode_[n]) continue;
+    const Box& a = anchor_[n];
+    const Box& b = swept_.box(n);
+    if (b.x0 < a.x0 - margin_ || b.x1 > a.x1 + margin_ || b.y0 < a.y0 - margin_ ||
+        b.y1 > a.y1 + margin_)
+      return false;
+  }
+  return true;
+}
+
+MemberContact::Nearby MemberContact::nearby(const Model& model, const State& s,
+                                            double extra) const {
+  swept_.update(model, s);
+  if (!validBoxes()) search(model, s);
+  return {candidates_, swept_.near(s, candidates_, candidatesVersion_, extra, 0.25 * margin_)};
+}
+
 void MemberContact::search(const Model& model, const State& s) const {
   const int ne = static_cast<int>(live_.size());
   for (int n = 0; n < model.numNodes(); ++n) {
@@ -364,9 +384,10 @@ const std::vector<MemberContact::StepOutcome>& MemberContact::outcomes(const Mod
 }
 
 const std::vector<int>& MemberContact::touching(const Model& model, const State& s) const {
-  const std::vector<ContactPair>& pairs = candidates(model, s);
+  const Nearby found = nearby(model, s, slack_);
+  const std::vector<ContactPair>& pairs = found.candidates;
   touching_.clear();
-  for (int i : nearby(model, s, slack_))
+  for (int i : found.near)
     if (swept_.reach(pairs[i], slack_)) touching_.push_back(i);
   // The pairs in memory out of reach (a friction spring or a held side let
   // go), in key order as the candidates are.
@@ -384,7 +405,7 @@ const std::vector<int>& MemberContact::touching(const Model& model, const State&
 double MemberContact::energy(const Model& model, const State& s) const {
   double w = 0;
   const std::vector<StepOutcome>& found = outcomes(model, s, lastRule_);
-  const std::vector<ContactPair>& pairs = candidates(model, s);
+  const std::vector<ContactPair>& pairs = candidates_;  // as outcomes() found them
   for (const StepOutcome& f : found) {
     const PairMemory* m = memory(s, pairs[f.index].key());
     const PairOutcome& o = f.outcome;
@@ -400,8 +421,9 @@ double MemberContact::dissipation(const Model& model, const State& s, const Step
   if (!damped && !crushes && data_.mu <= 0) return 0;
   double d = 0;
   PairPositions q0, q1;
-  const std::vector<ContactPair>& pairs = candidates(model, s);
-  for (int i : touching(model, s)) {
+  const std::vector<int>& visit = touching(model, s);
+  const std::vector<ContactPair>& pairs = candidates_;  // as touching() found them
+  for (int i : visit) {
     const ContactPair& pair = pairs[i];
     const PairMemory* m = memory(s, pair.key());
     const PairOutcome o = outcome(pair, model, s, rule);
@@ -419,8 +441,9 @@ double MemberContact::dissipation(const Model& model, const State& s, const Step
 void MemberContact::motions(const Model& model, const State& s,
                             std::vector<ContactMotion>& out) const {
   PairPositions q0, q1;
-  const std::vector<ContactPair>& pairs = candidates(model, s);
-  for (int i : touching(model, s)) {
+  const std::vector<int>& visit = touching(model, s);
+  const std::vector<ContactPair>& pairs = candidates_;  // as touching() found them
+  for (int i : visit) {
     const ContactPair& pair = pairs[i];
     if (!positions(pair, model, s, q0, q1, slack_)) continue;
     const PairMemory* m = memory(s, pair.key());
@@ -449,13 +472,14 @@ PairLaw MemberContact::law(const ContactPair& pair, const State& s, const PairPo
 
 double MemberContact::commit(const Model& model, State& s, int& pushed,
                              double& pushedEnergy) const {
-  const std::vector<ContactPair>& pairs = candidates(model, s);
+  const std::vector<StepOutcome>& found = outcomes(model, s, lastRule_);
+  const std::vector<ContactPair>& pairs = candidates_;  // as outcomes() found them
   nextMemory_.clear();
   if (nextMemory_.capacity() < pairs.size()) nextMemory_.reserve(2 * pairs.size());
   double released = 0, letGo = 0, crushed = 0;
   committedEnergy_ = 0;
   PairPositions q0, q1;
-  for (const StepOutcome& f : outcomes(model, s, lastRule_)) {
+  for (const StepOutcome& f : found) {
     const ContactPair& pair = pairs[f.index];
     const PairMemory* m = memory(s, pair.key());
     const double full = f.full;

@@ -156,16 +156,18 @@ class MemberContact {
     seg.add(q.b.x(), q.b.y());
     return Box::point(q.x.x(), q.x.y()).inflated(pair.h + slack_).overlaps(seg);
   }
-  // The candidates (indices into candidates(), ascending) whose swept boxes
+  // The candidates at s, and those (indices, ascending) whose swept boxes
   // over the step to s may come within their contact distance plus extra: a
   // superset, kept over a step's iterations while the nodes move little
-  // (core/contact/SweptBoxes.h). sweptReach() is the exact test of one of
-  // them, at the state of the last call.
-  const std::vector<int>& nearby(const Model& model, const State& s, double extra) const {
-    const std::vector<ContactPair>& pairs = candidates(model, s);
-    swept_.update(model, s);
-    return swept_.near(s, pairs, candidatesVersion_, extra, 0.25 * margin_);
-  }
+  // (core/contact/SweptBoxes.h). One pass over the nodes forms their boxes
+  // and tells whether the candidates hold (as candidates() does).
+  // sweptReach() is the exact test of one of them, at the state of the last
+  // call.
+  struct Nearby {
+    const std::vector<ContactPair>& candidates;
+    const std::vector<int>& near;
+  };
+  Nearby nearby(const Model& model, const State& s, double extra) const;
   bool sweptReach(const ContactPair& pair, double extra) const { return swept_.reach(pair, extra); }
 
   // The pair comes within extra of touching over the step to s: its
@@ -186,6 +188,8 @@ class MemberContact {
  private:
   void search(const Model& model, const State& s) const;
   bool valid(const Model& model, const State& s) const;
+  // valid() from the swept boxes of the last nearby().
+  bool validBoxes() const;
   // The pair's positions at t_n and t_n+1, and whether its swept boxes are
   // within contact distance (plus extra).
   bool positions(const ContactPair& pair, const Model& model, const State& s, PairPositions& q0,

@@ -7,23 +7,32 @@ namespace c2d {
 void SweptBoxes::update(const Model& model, const State& s) {
   const int nn = model.numNodes();
   box_.resize(nn);
+  const bool sized = nearUn_.size() == s.un.size() && nearU_.size() == s.u.size();
+  bool same = sized;
+  double moved = 0;
   for (int n = 0; n < nn; ++n) {
     // As MemberContact::positions forms them, to the bit.
     const Vec2& X = model.coord(n);
     Box b = Box::point(X.x() + s.un[3 * n], X.y() + s.un[3 * n + 1]);
     b.add(X.x() + s.u[3 * n], X.y() + s.u[3 * n + 1]);
     box_[n] = b;
+    if (!sized) continue;
+    same = same && s.un[3 * n] == nearUn_[3 * n] && s.un[3 * n + 1] == nearUn_[3 * n + 1] &&
+           s.un[3 * n + 2] == nearUn_[3 * n + 2];
+    // (A NaN stays: no list is kept for it.)
+    for (const double d : {std::abs(s.u[3 * n] - nearU_[3 * n]),
+                           std::abs(s.u[3 * n + 1] - nearU_[3 * n + 1])})
+      if (d > moved || d != d) moved = d;
   }
+  sameStart_ = same && 3 * static_cast<Eigen::Index>(nn) == s.un.size();
+  moved_ = moved;
 }
 
 const std::vector<int>& SweptBoxes::near(const State& s,
                                          const std::vector<ContactPair>& candidates, int version,
                                          double extra, double slack) {
-  bool kept = version == nearVersion_ && extra == nearExtra_ && slack == nearSlack_ &&
-              nearUn_.size() == s.un.size() && nearU_.size() == s.u.size() && nearUn_ == s.un;
-  const double moved = 0.25 * slack;
-  for (Eigen::Index i = 0; kept && i + 1 < s.u.size(); i += 3)
-    kept = std::abs(s.u[i] - nearU_[i]) <= moved && std::abs(s.u[i + 1] - nearU_[i + 1]) <= moved;
+  const bool kept = version == nearVersion_ && extra == nearExtra_ && slack == nearSlack_ &&
+                    sameStart_ && moved_ <= 0.25 * slack;
   if (kept) return near_;
   // With the candidates' room: steps allocate nothing while the contacts
   // change little.
@@ -33,6 +42,8 @@ const std::vector<int>& SweptBoxes::near(const State& s,
     if (reach(candidates[i], extra + slack)) near_.push_back(static_cast<int>(i));
   nearU_ = s.u;
   nearUn_ = s.un;
+  sameStart_ = true;
+  moved_ = 0;
   nearVersion_ = version;
   nearExtra_ = extra;
   nearSlack_ = slack;

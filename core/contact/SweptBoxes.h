@@ -19,11 +19,14 @@ namespace c2d {
 
 class SweptBoxes {
  public:
-  // The boxes of every node at the state s (allocates only when nodes were added).
+  // The boxes of every node at the state s (allocates only when nodes were
+  // added), and in the same pass how far the nodes have moved from the state
+  // near() last found its list for.
   void update(const Model& model, const State& s);
+  const Box& box(int node) const { return box_[node]; }
 
-  // The candidates (indices) that may pass reach(pair, extra) at s, after
-  // update(s): those within extra + slack at the state the list was found
+  // The candidates (indices, ascending) that may pass reach(pair, extra) at
+  // s, after update(s): those within extra + slack at the state the list was found
   // for, kept while the candidates (their version) and the positions at t_n
   // are the same and no node's position at t_n+1 has moved by more than a
   // quarter of the slack from that state's (a box grows by at most that a
@@ -48,6 +51,10 @@ class SweptBoxes {
   // near() and what it was found for.
   std::vector<int> near_;
   Eigen::VectorXd nearU_, nearUn_;
+  // update()'s: the positions at t_n are near()'s, and the largest move of a
+  // position at t_n+1 from near()'s (a coordinate).
+  bool sameStart_ = false;
+  double moved_ = 0;
   int nearVersion_ = -1;
   double nearExtra_ = -1, nearSlack_ = -1;
 };
