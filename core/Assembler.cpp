@@ -147,9 +147,8 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
   const MemberContact::Nearby nearby = members_->nearby(model_, s, extra);
   const std::vector<ContactPair>& candidates = nearby.candidates;
   for (int i : nearby.near) {
+    if (!members_->evaluate(i, model_, s, rule, wantTangent, f, k)) continue;
     const ContactPair& p = candidates[i];
-    if (!members_->sweptReach(p, extra)) continue;
-    if (!members_->evaluate(p, model_, s, rule, wantTangent, f, k)) continue;
     const int slot = slotOf(p);
     missing = missing || slot < 0;
     contactForces_.push_back({p, slot, f, k});

@@ -199,6 +199,21 @@ bool MemberContact::valid(const Model& model, const State& s) const {
   return true;
 }
 
+namespace {
+
+// Assigns b to a and tells whether they were equal already.
+bool keep(Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  if (a.size() == b.size() && a == b) return true;
+  a = b;
+  return false;
+}
+
+Vec2 position(const Model& model, const Eigen::VectorXd& u, int n) {
+  return Vec2(model.coord(n).x() + u[3 * n], model.coord(n).y() + u[3 * n + 1]);
+}
+
+}  // namespace
+
 bool MemberContact::validBoxes() const {
   if (!searched_) return false;
   for (int n = 0; n < static_cast<int>(usedNode_.size()); ++n) {
@@ -216,6 +231,18 @@ MemberContact::Nearby MemberContact::nearby(const Model& model, const State& s,
                                             double extra) const {
   swept_.update(model, s);
   if (!validBoxes()) search(model, s);
+  // Every input compared (and copied when it differs).
+  bool same = startCandidates_ == candidatesVersion_;
+  same = keep(startUn_, s.un) && same;
+  same = keep(startVn_, s.vn) && same;
+  same = keep(startAn_, s.an) && same;
+  if (!same || startPairs_ != s.pairs) {
+    ++startVersion_;
+    startCandidates_ = candidatesVersion_;
+    if (startPairs_.capacity() < s.pairs.capacity()) startPairs_.reserve(s.pairs.capacity());
+    startPairs_.assign(s.pairs.begin(), s.pairs.end());
+    if (start_.size() < candidates_.size()) start_.resize(candidates_.capacity());
+  }
   return {candidates_, swept_.near(s, candidates_, candidatesVersion_, extra, 0.25 * margin_)};
 }
 
@@ -272,23 +299,45 @@ const PairMemory* MemberContact::memory(const State& s, std::uint64_t key) {
   return it != s.pairs.end() && it->key == key ? &*it : nullptr;
 }
 
-bool MemberContact::evaluate(const ContactPair& pair, const Model& model, const State& s,
-                             const StepRule& rule, bool wantTangent, PairVec& force,
-                             PairMat& tangent) const {
+bool MemberContact::evaluate(int index, const Model& model, const State& s, const StepRule& rule,
+                             bool wantTangent, PairVec& force, PairMat& tangent) const {
   lastRule_ = rule;
-  PairPositions q0, q1;
+  const ContactPair& pair = candidates_[index];
   // The memory only of a pair within reach (slack_: the most a memory's
-  // contact distance exceeds its pair's present one).
-  if (!positions(pair, model, s, q0, q1, slack_)) return false;
-  const PairMemory* m = memory(s, pair.key());
-  const int sd = side(m, q0);
-  const double h = reach(pair, m);
-  // Most candidates are apart (a twelfth carries a force): their law (the
-  // dashpot's pair mass and rates) is not formed.
+  // contact distance exceeds its pair's present one); the swept boxes'
+  // test is positions()'s.
+  if (!swept_.reach(pair, slack_)) return false;
+  PairStart& start = start_[index];
+  if (start.version != startVersion_) {
+    start.version = startVersion_;
+    const PairMemory* m = memory(s, pair.key());
+    start.remembered = m != nullptr;
+    if (m) start.memory = *m;
+    start.q0 = {position(model, s.un, pair.node), position(model, s.un, pair.a),
+                position(model, s.un, pair.b)};
+    start.side = side(m, start.q0);
+    start.reach = reach(pair, m);
+    start.face = face(m);
+    PairStep step;
+    pairStart(start.q0, start.side, start.reach, step, start.face);
+    start.z0 = step.z0;
+    start.p0 = step.p0;
+    start.lawFound = false;
+  }
   PairStep step;
-  if (!pairTouches(q0, q1, sd, h, rule, wantTangent, step, face(m))) return false;
-  pairContact(step, sd, h, law(pair, s, q0, m), rule, wantTangent, force, tangent, nullptr,
-              face(m));
+  step.z0 = start.z0;
+  step.p0 = start.p0;
+  const PairPositions q1{position(model, s.u, pair.node), position(model, s.u, pair.a),
+                         position(model, s.u, pair.b)};
+  if (!pairTouches(q1, start.side, start.reach, rule, wantTangent, step, start.face)) return false;
+  // Most candidates are apart (a twelfth carries a force): their law (the
+  // dashpot's pair mass and rates) is formed once one touches.
+  if (!start.lawFound) {
+    start.law = law(pair, s, start.q0, start.remembered ? &start.memory : nullptr);
+    start.lawFound = true;
+  }
+  pairContact(step, start.side, start.reach, start.law, rule, wantTangent, force, tangent, nullptr,
+              start.face);
   return true;
 }
 
@@ -340,17 +389,6 @@ PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, 
   pairContact(step, sd, reach(pair, m), law(pair, s, q0, m), rule, false, f, k, &out, face(m));
   return out;
 }
-
-namespace {
-
-// Assigns b to a and tells whether they were equal already.
-bool keep(Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-  if (a.size() == b.size() && a == b) return true;
-  a = b;
-  return false;
-}
-
-}  // namespace
 
 const std::vector<MemberContact::StepOutcome>& MemberContact::outcomes(const Model& model,
                                                                        const State& s,

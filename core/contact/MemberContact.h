@@ -111,9 +111,12 @@ class MemberContact {
   const std::vector<ContactPair>& candidates(const Model& model, const State& s) const;
   int candidatesVersion() const { return candidatesVersion_; }
 
-  // Force and tangent of a candidate pair at s (false: no force), with the
-  // pair's memory in s.pairs.
-  bool evaluate(const ContactPair& pair, const Model& model, const State& s, const StepRule& rule,
+  // Force and tangent of the candidate pair `index` of the last nearby(), at
+  // its state s (false: no force), with the pair's memory in s.pairs. What
+  // the pair's step start gives (its memory, side, reach, penetration at
+  // t_n and law) is found at its first evaluation in the step and kept over
+  // the step's iterations (nearby() tells when the start changes).
+  bool evaluate(int index, const Model& model, const State& s, const StepRule& rule,
                 bool wantTangent, PairVec& force, PairMat& tangent) const;
 
   // Stored energy at the trial state s (sides and memory from its committed
@@ -254,6 +257,24 @@ class MemberContact {
   mutable std::vector<ContactPair> candidates_;
   mutable std::vector<PairMemory> nextMemory_;  // commit's scratch
   mutable SweptBoxes swept_;                    // nearby()
+  // What a candidate keeps over a step's iterations (evaluate()).
+  struct PairStart {
+    int version = -1;  // the startVersion_ it was found at
+    PairMemory memory;
+    bool remembered = false;  // memory holds the pair's
+    PairPositions q0;
+    int side = 0;
+    double reach = 0, face = 0, p0 = 0;
+    PairZ z0 = PairZ::Zero();
+    bool lawFound = false;
+    PairLaw law;
+  };
+  mutable std::vector<PairStart> start_;  // per candidate
+  // The step start the kept ones belong to: changes with the candidates and
+  // the state's positions, rates and pair memory at t_n.
+  mutable int startVersion_ = 0, startCandidates_ = -1;
+  mutable Eigen::VectorXd startUn_, startVn_, startAn_;
+  mutable std::vector<PairMemory> startPairs_;
   mutable std::vector<int> touching_;           // touching()'s
   // outcomes() and what they were found for.
   mutable std::vector<StepOutcome> outcomes_;

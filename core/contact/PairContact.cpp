@@ -268,13 +268,23 @@ Vec4 discreteGradient(const Vec4& z0, const Vec4& z1, double f0, double f1, cons
 
 bool pairTouches(const PairPositions& q0, const PairPositions& q1, int side, double h,
                  const StepRule& rule, bool wantTangent, PairStep& step, double face) {
-  const bool midPoint = rule.scheme == Scheme::MidPoint;
+  pairStart(q0, side, h, step, face);
+  return pairTouches(q1, side, h, rule, wantTangent, step, face);
+}
+
+void pairStart(const PairPositions& q0, int side, double h, PairStep& step, double face) {
   step.z0 = relative(q0);
-  step.z1 = relative(q1);
-  Penetration e0, e1;
+  Penetration e0;
   penetration(step.z0, side, h, false, e0, face);
-  penetration(step.z1, side, h, wantTangent && !midPoint, e1, face);
   step.p0 = e0.p;
+}
+
+bool pairTouches(const PairPositions& q1, int side, double h, const StepRule& rule,
+                 bool wantTangent, PairStep& step, double face) {
+  const bool midPoint = rule.scheme == Scheme::MidPoint;
+  step.z1 = relative(q1);
+  Penetration e1;
+  penetration(step.z1, side, h, wantTangent && !midPoint, e1, face);
   step.p1 = e1.p;
   step.g1 = e1.g;
   // The Hessian at t_n+1 only where the force law reads it (static, Newmark).

@@ -72,6 +72,11 @@ struct PairStep {
 };
 bool pairTouches(const PairPositions& q0, const PairPositions& q1, int side, double h,
                  const StepRule& rule, bool wantTangent, PairStep& step, double face = 0);
+// The same in two parts: what the positions at t_n give (z0, p0), which a
+// step's iterations keep, and the rest from the positions at t_n+1.
+void pairStart(const PairPositions& q0, int side, double h, PairStep& step, double face = 0);
+bool pairTouches(const PairPositions& q1, int side, double h, const StepRule& rule,
+                 bool wantTangent, PairStep& step, double face = 0);
 // The force (and tangent) of a pair that touches, from its step; the same
 // arguments as pairContact's.
 void pairContact(const PairStep& step, int side, double h, const PairLaw& law, const StepRule& rule,
