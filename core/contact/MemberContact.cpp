@@ -299,6 +299,35 @@ const PairMemory* MemberContact::memory(const State& s, std::uint64_t key) {
   return it != s.pairs.end() && it->key == key ? &*it : nullptr;
 }
 
+MemberContact::PairStart& MemberContact::startOf(int index, const Model& model,
+                                                 const State& s) const {
+  PairStart& start = start_[index];
+  if (start.version == startVersion_) return start;
+  const ContactPair& pair = candidates_[index];
+  start.version = startVersion_;
+  const PairMemory* m = memory(s, pair.key());
+  start.remembered = m != nullptr;
+  if (m) start.memory = *m;
+  start.q0 = {position(model, s.un, pair.node), position(model, s.un, pair.a),
+              position(model, s.un, pair.b)};
+  start.side = side(m, start.q0);
+  start.reach = reach(pair, m);
+  start.face = face(m);
+  PairStep step;
+  pairStart(start.q0, start.side, start.reach, step, start.face);
+  start.z0 = step.z0;
+  start.p0 = step.p0;
+  start.lawFound = false;
+  return start;
+}
+
+void MemberContact::formLaw(PairStart& start, const ContactPair& pair, const State& s) const {
+  if (start.lawFound) return;
+  start.law = law(pair, s, start.q0, start.remembered ? &start.memory : nullptr);
+  start.mass = pairMass(masses_, pair, start.q0);
+  start.lawFound = true;
+}
+
 bool MemberContact::evaluate(int index, const Model& model, const State& s, const StepRule& rule,
                              bool wantTangent, PairVec& force, PairMat& tangent) const {
   lastRule_ = rule;
@@ -307,23 +336,7 @@ bool MemberContact::evaluate(int index, const Model& model, const State& s, cons
   // contact distance exceeds its pair's present one); the swept boxes'
   // test is positions()'s.
   if (!swept_.reach(pair, slack_)) return false;
-  PairStart& start = start_[index];
-  if (start.version != startVersion_) {
-    start.version = startVersion_;
-    const PairMemory* m = memory(s, pair.key());
-    start.remembered = m != nullptr;
-    if (m) start.memory = *m;
-    start.q0 = {position(model, s.un, pair.node), position(model, s.un, pair.a),
-                position(model, s.un, pair.b)};
-    start.side = side(m, start.q0);
-    start.reach = reach(pair, m);
-    start.face = face(m);
-    PairStep step;
-    pairStart(start.q0, start.side, start.reach, step, start.face);
-    start.z0 = step.z0;
-    start.p0 = step.p0;
-    start.lawFound = false;
-  }
+  PairStart& start = startOf(index, model, s);
   PairStep step;
   step.z0 = start.z0;
   step.p0 = start.p0;
@@ -332,10 +345,7 @@ bool MemberContact::evaluate(int index, const Model& model, const State& s, cons
   if (!pairTouches(q1, start.side, start.reach, rule, wantTangent, step, start.face)) return false;
   // Most candidates are apart (a twelfth carries a force): their law (the
   // dashpot's pair mass and rates) is formed once one touches.
-  if (!start.lawFound) {
-    start.law = law(pair, s, start.q0, start.remembered ? &start.memory : nullptr);
-    start.lawFound = true;
-  }
+  formLaw(start, pair, s);
   pairContact(step, start.side, start.reach, start.law, rule, wantTangent, force, tangent, nullptr,
               start.face);
   return true;
@@ -352,29 +362,34 @@ bool MemberContact::within(const ContactPair& pair, const Model& model, const St
          pairPenetration(q0, sd, h, face(m)) > -extra;
 }
 
-PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, const State& s,
+PairOutcome MemberContact::outcome(int index, const Model& model, const State& s,
                                    const StepRule& rule, double* full) const {
+  const ContactPair& pair = candidates_[index];
   PairPositions q0, q1;
-  const PairMemory* m = memory(s, pair.key());
   if (!positions(pair, model, s, q0, q1, slack_)) {  // apart: a friction spring lets go
+    const PairMemory* m = memory(s, pair.key());
     if (full) *full = 0;
     PairOutcome out;
     if (m) out.slipped = springFrictionEnergy(data_.k, m->stretch);
     return out;
   }
-  const int sd = side(m, q0);
-  if (full) *full = pairPenetration(q1, sd, distance(pair, m), face(m));
+  PairStart& start = startOf(index, model, s);
+  const PairMemory* m = start.remembered ? &start.memory : nullptr;
+  const int sd = start.side;
+  if (full) *full = pairPenetration(q1, sd, distance(pair, m), start.face);
   PairOutcome out;
   if (q0.x == q1.x && q0.a == q1.a && q0.b == q1.b) {
     // No step (the committed state itself): nothing slides or lets go; the
     // energy is that of the memory (so that the account sees no jump where a
     // commit in place or a topology change evaluates it).
-    out.p0 = out.p1 = pairPenetration(q1, sd, reach(pair, m), face(m));
+    out.p0 = out.p1 = pairPenetration(q1, sd, start.reach, start.face);
     out.stretch = m ? m->stretch : 0.0;
     return out;
   }
   PairStep step;
-  const bool touching = pairTouches(q0, q1, sd, reach(pair, m), rule, false, step, face(m));
+  step.z0 = start.z0;
+  step.p0 = start.p0;
+  const bool touching = pairTouches(q1, sd, start.reach, rule, false, step, start.face);
   out.p0 = step.p0;
   out.p1 = step.p1;
   if (data_.mu <= 0) return out;  // frictionless: the penetrations tell all
@@ -386,14 +401,15 @@ PairOutcome MemberContact::outcome(const ContactPair& pair, const Model& model, 
   }
   PairVec f;
   PairMat k;
-  pairContact(step, sd, reach(pair, m), law(pair, s, q0, m), rule, false, f, k, &out, face(m));
+  formLaw(start, pair, s);
+  pairContact(step, sd, start.reach, start.law, rule, false, f, k, &out, start.face);
   return out;
 }
 
 const std::vector<MemberContact::StepOutcome>& MemberContact::outcomes(const Model& model,
                                                                        const State& s,
                                                                        const StepRule& rule) const {
-  const std::vector<ContactPair>& pairs = candidates(model, s);
+  candidates(model, s);  // their version, compared below
   // Every input kept is compared (and copied when it differs): no caller has
   // to say when the state changed.
   bool same = outcomesValid_ && outcomesVersion_ == candidatesVersion_ &&
@@ -415,7 +431,7 @@ const std::vector<MemberContact::StepOutcome>& MemberContact::outcomes(const Mod
   for (int i : touching(model, s)) {
     StepOutcome& o = outcomes_.emplace_back();
     o.index = i;
-    o.outcome = outcome(pairs[i], model, s, rule, &o.full);
+    o.outcome = outcome(i, model, s, rule, &o.full);
   }
   outcomesValid_ = true;
   return outcomes_;
@@ -464,7 +480,7 @@ double MemberContact::dissipation(const Model& model, const State& s, const Step
   for (int i : visit) {
     const ContactPair& pair = pairs[i];
     const PairMemory* m = memory(s, pair.key());
-    const PairOutcome o = outcome(pair, model, s, rule);
+    const PairOutcome o = outcome(i, model, s, rule);
     const double q = m ? m->q : 0.0;
     if (crushes) d += CrushingLaw(data_.k, data_.restitution, q).dissipated(o.p0, o.p1);
     if (damped && positions(pair, model, s, q0, q1, slack_))
@@ -484,15 +500,16 @@ void MemberContact::motions(const Model& model, const State& s,
   for (int i : visit) {
     const ContactPair& pair = pairs[i];
     if (!positions(pair, model, s, q0, q1, slack_)) continue;
-    const PairMemory* m = memory(s, pair.key());
-    const int sd = side(m, q0);
-    const double h = reach(pair, m);
-    const double p0 = pairPenetration(q0, sd, h, face(m)), p1 = pairPenetration(q1, sd, h, face(m));
+    PairStart& start = startOf(i, model, s);
+    const int sd = start.side;
+    const double h = start.reach, f = start.face;
+    const double p0 = start.p0, p1 = pairPenetration(q1, sd, h, f);
     if (p0 <= 0 && p1 <= 0) continue;
-    const PairLaw l = law(pair, s, q0, m);
-    out.push_back({p0, p1, pairPenetrationRate(q0, pairValues(s.vn, pair), sd, h, face(m)),
-                   pairPenetrationRate(q1, pairValues(s.v, pair), sd, h, face(m)), l.k,
-                   l.restitution, l.q, l.c, pairMass(masses_, pair, q0)});
+    formLaw(start, pair, s);
+    const PairLaw& l = start.law;
+    out.push_back({p0, p1, pairPenetrationRate(q0, pairValues(s.vn, pair), sd, h, f),
+                   pairPenetrationRate(q1, pairValues(s.v, pair), sd, h, f), l.k, l.restitution,
+                   l.q, l.c, start.mass});
   }
 }
 

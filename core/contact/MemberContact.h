@@ -200,12 +200,11 @@ class MemberContact {
   bool excluded(int node, int element, const Model& model) const;
   // The pair's memory at the last commit (null: none).
   static const PairMemory* memory(const State& s, std::uint64_t key);
-  // Contact distance of a pair with the memory m (or none): the distance it
-  // met at, less its offset.
-  // The pair's step at s under the rule (and its penetration at the full
-  // contact distance, without offset, at t_n+1).
-  PairOutcome outcome(const ContactPair& pair, const Model& model, const State& s,
-                      const StepRule& rule, double* full = nullptr) const;
+  // The step at s under the rule of the candidate `index` of the last
+  // nearby() (and its penetration at the full contact distance, without
+  // offset, at t_n+1).
+  PairOutcome outcome(int index, const Model& model, const State& s, const StepRule& rule,
+                      double* full = nullptr) const;
   // outcome() of every pair touching() at s under rule, with its penetration at the
   // full distance: a commit reads them twice at one state (the energy account's
   // energy(), then commit()), so they are found once and kept while the
@@ -266,9 +265,14 @@ class MemberContact {
     int side = 0;
     double reach = 0, face = 0, p0 = 0;
     PairZ z0 = PairZ::Zero();
-    bool lawFound = false;
+    bool lawFound = false;  // law and mass formed
     PairLaw law;
+    double mass = 0;  // the pair's (core/contact/PairMotion.h)
   };
+  // The kept step start of the candidate `index` of the last nearby() at s
+  // (found now when not kept), and its law.
+  PairStart& startOf(int index, const Model& model, const State& s) const;
+  void formLaw(PairStart& start, const ContactPair& pair, const State& s) const;
   mutable std::vector<PairStart> start_;  // per candidate
   // The step start the kept ones belong to: changes with the candidates and
   // the state's positions, rates and pair memory at t_n.
