@@ -14,7 +14,8 @@
 //    iteration (counters suffixed _ground and _members);
 //  - SixStoryDemolitionMemberContactEnsemble: the same over the main example's
 //    ensemble (decks/collapse/six_story_demolition_ensemble.inp) cut to six
-//    jittered samples, their CPU times summed. One history's ratio is itself
+//    jittered samples, their CPU times summed (sample by sample, each
+//    without and then with member contact). One history's ratio is itself
 //    a sample: the jittered runs of one deck spread by 10-20 % in steps and
 //    iterations, and the unjittered main example's ground-only run is among
 //    the shortest of its ensemble.
@@ -79,41 +80,52 @@ std::filesystem::path demolitionDeck(const std::string& kmem,
 }
 
 // The deck without and with member contact, back to back: the ratio of their
-// CPU times and each one's counters.
+// CPU times and each one's counters. An ensemble's samples are run one at a
+// time (shards), each without and then with member contact, so that a slow
+// stretch of a shared machine weighs on both alike.
 void memberContactRatio(benchmark::State& st, const char* name, int samples) {
   SolutionCommands commands;
-  double seconds[2] = {0, 0};
+  const char* kmem[2] = {"0", "1e5"};
+  const int parts = samples > 0 ? samples : 1;
+  double seconds[2] = {0, 0}, steps[2] = {0, 0}, iterations[2] = {0, 0}, cuts[2] = {0, 0},
+         factorizations[2] = {0, 0};
   for (auto _ : st) {
-    int k = 0;
-    for (const char* kmem : {"0", "1e5"}) {
-      const std::filesystem::path deck = demolitionDeck(kmem, name, samples);
-      if (deck.empty()) {
-        st.SkipWithError(("no deck collapse/" + std::string(name) +
-                          " (run from the build's tests directory)")
-                             .c_str());
-        return;
+    for (int part = 1; part <= parts; ++part)
+      for (int k = 0; k < 2; ++k) {
+        const std::filesystem::path deck = demolitionDeck(kmem[k], name, samples);
+        if (deck.empty()) {
+          st.SkipWithError(("no deck collapse/" + std::string(name) +
+                            " (run from the build's tests directory)")
+                               .c_str());
+          return;
+        }
+        DeckOptions opt;
+        opt.outDir = deck.parent_path() / "out";
+        opt.quiet = true;
+        opt.shard = part;
+        opt.shards = parts;
+        std::ostringstream out;
+        const std::clock_t start = std::clock();
+        const DeckOutcome o = c2d::runDeck(deck.string(), opt, commands, out);
+        seconds[k] += static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+        if (o.exitCode != 0) {
+          st.SkipWithError(o.message.c_str());
+          return;
+        }
+        steps[k] += o.total.steps;
+        iterations[k] += o.total.iterations;
+        cuts[k] += o.total.cuts;
+        factorizations[k] += o.total.factorizations;
       }
-      DeckOptions opt;
-      opt.outDir = deck.parent_path() / "out";
-      opt.quiet = true;
-      std::ostringstream out;
-      const std::clock_t start = std::clock();
-      const DeckOutcome o = c2d::runDeck(deck.string(), opt, commands, out);
-      seconds[k] = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
-      if (o.exitCode != 0) {
-        st.SkipWithError(o.message.c_str());
-        return;
-      }
-      const std::string suffix = k == 0 ? "_ground" : "_members";
-      st.counters["steps" + suffix] = o.total.steps;
-      st.counters["newton_its" + suffix] = o.total.iterations;
-      st.counters["cuts" + suffix] = o.total.cuts;
-      st.counters["factorizations" + suffix] = o.total.factorizations;
-      st.counters["cpu_s" + suffix] = seconds[k];
-      st.counters["us_per_it" + suffix] =
-          o.total.iterations > 0 ? 1e6 * seconds[k] / o.total.iterations : 0.0;
-      ++k;
-    }
+  }
+  for (int k = 0; k < 2; ++k) {
+    const std::string suffix = k == 0 ? "_ground" : "_members";
+    st.counters["steps" + suffix] = steps[k];
+    st.counters["newton_its" + suffix] = iterations[k];
+    st.counters["cuts" + suffix] = cuts[k];
+    st.counters["factorizations" + suffix] = factorizations[k];
+    st.counters["cpu_s" + suffix] = seconds[k];
+    st.counters["us_per_it" + suffix] = iterations[k] > 0 ? 1e6 * seconds[k] / iterations[k] : 0.0;
   }
   st.counters["ratio"] = seconds[0] > 0 ? seconds[1] / seconds[0] : 0.0;
 }
