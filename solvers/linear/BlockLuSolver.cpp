@@ -17,6 +17,8 @@ constexpr double kMaxPivotCondition = 1e12;
 // tangents this solver is for (diagonal blocks dominant) stay near 1.
 constexpr double kMaxGrowth = 1e4;
 constexpr int kB = 3;  // equations per block at most
+// The work blocks are indexed as one array of doubles.
+static_assert(sizeof(Eigen::Matrix3d) == kB * kB * sizeof(double));
 
 double norm1(const Eigen::Matrix3d& m) { return m.cwiseAbs().colwise().sum().maxCoeff(); }
 }  // namespace
@@ -127,14 +129,13 @@ Status BlockLuSolver::analyze(const SparseMatrix& A, bool /*symmetric*/) {
   n_ = pattern_.size();
   makeBlocks(n_);
   symbolic(orderBlocks(A));
-  // Where each entry of A goes in its block column's work blocks.
+  // Where each entry of A goes in its block column's work blocks (the blocks
+  // lie one after the other, column-major each).
   target_.resize(A.nonZeros());
-  offset_.resize(A.nonZeros());
   for (int c = 0; c < n_; ++c)
     for (int q = A.outerIndexPtr()[c]; q < A.outerIndexPtr()[c + 1]; ++q) {
       const int r = A.innerIndexPtr()[q];
-      target_[q] = blockOf_[r];
-      offset_[q] = slot_[r] + kB * slot_[c];
+      target_[q] = kB * kB * blockOf_[r] + slot_[r] + kB * slot_[c];
     }
   return Status::success();
 }
@@ -159,7 +160,8 @@ Status BlockLuSolver::factorize(const SparseMatrix& A) {
         d(l, l) = 1;  // a padding equation: identity
         continue;
       }
-      for (int q = Ap[c]; q < Ap[c + 1]; ++q) work_[target_[q]].data()[offset_[q]] = Ax[q];
+      double* work = work_.front().data();
+      for (int q = Ap[c]; q < Ap[c + 1]; ++q) work[target_[q]] = Ax[q];
     }
     // Block column k of U by the unit lower triangle of the columns before.
     for (int q = Up_[k]; q < Up_[k + 1]; ++q) {

@@ -50,8 +50,9 @@ class BlockLuSolver final : public LinearSolver {
   std::vector<int> members_;       // equations of block b: members_[3b..3b+2], -1 pads
   std::vector<int> blockOf_;       // block (in factor order) of each equation
   std::vector<int> slot_;          // its row or column within the block
-  std::vector<int> target_;        // per entry of A: block of its row (factor order)
-  std::vector<int> offset_;        // and its place within that block (column-major)
+  // Per entry of A: its place in work_ (the block of its row, in factor
+  // order, and its place within that block, column-major).
+  std::vector<int> target_;
   std::vector<int> Lp_, Li_;       // block rows below the diagonal, per block column
   std::vector<int> Up_, Ui_;       // block rows above the diagonal, per block column
   std::vector<Block> Lx_, Ux_, Dinv_, work_;
