@@ -169,7 +169,10 @@ Status BlockLuSolver::factorize(const SparseMatrix& A) {
       Block& u = Ux_[q];
       u = work_[j];
       largestU = std::max(largestU, u.cwiseAbs().maxCoeff());
-      for (int p = Lp_[j]; p < Lp_[j + 1]; ++p) work_[Li_[p]].noalias() -= Lx_[p] * u;
+      // u held in a local copy: the compiler keeps it in registers over the
+      // column (work_ and Ux_ could alias as far as it knows).
+      const Block uj = u;
+      for (int p = Lp_[j]; p < Lp_[j + 1]; ++p) work_[Li_[p]].noalias() -= Lx_[p] * uj;
     }
     Block& inv = Dinv_[k];
     inv = d.inverse();
