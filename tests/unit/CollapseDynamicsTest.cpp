@@ -20,6 +20,7 @@
 #include "elements/ReissnerFrame.h"
 #include "solvers/Analysis.h"
 #include "solvers/TimeIntegrator.h"
+#include "tests/unit/ContactTestSupport.h"
 
 namespace c2d {
 namespace {
@@ -872,12 +873,7 @@ TEST(GroundContact, AssembledTangentWithContactMatchesFiniteDifferences) {
     as.refresh();
     State s;
     s.resize(m.numNodes());
-    for (int i = 0; i < s.u.size(); ++i) {
-      s.un(i) = 0.01 * std::sin(1.3 * i);
-      s.u(i) = s.un(i) + 0.02 * std::cos(0.7 * i);
-      s.vn(i) = 0.3 * std::sin(2.1 * i);
-      s.an(i) = std::cos(0.4 * i);
-    }
+    test::scatteredState(s, 0.01, 0.02);
     const StepRule rule = ti.rule(0.05);
     const Eigen::VectorXd ones = Eigen::VectorXd::Ones(s.u.size());
     ASSERT_TRUE(as.assemble(s, rule, ones, true).ok);

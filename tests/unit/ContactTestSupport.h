@@ -5,11 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
 #include "core/Assembler.h"
 #include "core/Model.h"
+#include "core/State.h"
 #include "elements/ReissnerFrame.h"
 #include "solvers/Analysis.h"
 
@@ -47,6 +49,17 @@ inline int addRod(Model& m, int from, const Vec2& to, int n, int mat = 1) {
     prev = node;
   }
   return prev;
+}
+
+// The tangent tests' state: positions at t_n of amplitude u0 and a step of
+// amplitude du, both varying from dof to dof, and rates at t_n.
+inline void scatteredState(State& s, double u0, double du) {
+  for (int i = 0; i < s.u.size(); ++i) {
+    s.un(i) = u0 * std::sin(1.3 * i);
+    s.u(i) = s.un(i) + du * std::cos(0.7 * i);
+    s.vn(i) = 0.3 * std::sin(2.1 * i);
+    s.an(i) = std::cos(0.4 * i);
+  }
 }
 
 // A rod from a to b in a new chain of nodes; returns its first node.

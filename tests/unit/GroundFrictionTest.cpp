@@ -71,12 +71,7 @@ TEST(GroundFriction, AssembledTangentMatchesFiniteDifferences) {
     State s;
     s.resize(m.numNodes());
     s.dt = 0.05;
-    for (int i = 0; i < s.u.size(); ++i) {
-      s.un(i) = 0.01 * std::sin(1.3 * i);
-      s.u(i) = s.un(i) + 0.006 * std::cos(0.7 * i);
-      s.vn(i) = 0.3 * std::sin(2.1 * i);
-      s.an(i) = std::cos(0.4 * i);
-    }
+    test::scatteredState(s, 0.01, 0.006);
     // Springs that stick at some nodes and slide at others.
     for (int n = 0; n < m.numNodes(); ++n) s.stretch(n) = 0.004 * std::sin(3.1 * n);
     int inContact = 0;

@@ -493,12 +493,7 @@ TEST(MemberContactModel, AssembledTangentMatchesFiniteDifferences) {
         TimeIntegrator::midPoint(0.1, 0.05), TimeIntegrator::midPoint(0, 0)}) {
     State s;
     s.resize(m.numNodes());
-    for (int i = 0; i < s.u.size(); ++i) {
-      s.un(i) = 0.004 * std::sin(1.3 * i);
-      s.u(i) = s.un(i) + 0.006 * std::cos(0.7 * i);
-      s.vn(i) = 0.3 * std::sin(2.1 * i);
-      s.an(i) = std::cos(0.4 * i);
-    }
+    test::scatteredState(s, 0.004, 0.006);
     for (int n = bar; n < bar + 5; ++n) {
       s.un(3 * n + 1) += 0.5;
       s.u(3 * n + 1) += 0.5;
@@ -530,12 +525,7 @@ TEST(MemberContactModel, APairsKeptStepStartFollowsTheStateAtTn) {
   m.memberContact() = MemberContactData{5e3, 0.5, -1, 0.5, 0.3};
   State s;
   s.resize(m.numNodes());
-  for (int i = 0; i < s.u.size(); ++i) {
-    s.un(i) = 0.004 * std::sin(1.3 * i);
-    s.u(i) = s.un(i) + 0.006 * std::cos(0.7 * i);
-    s.vn(i) = 0.3 * std::sin(2.1 * i);
-    s.an(i) = std::cos(0.4 * i);
-  }
+  test::scatteredState(s, 0.004, 0.006);
   for (int n = bar; n < m.numNodes(); ++n) {
     s.un(3 * n + 1) += 0.5;
     s.u(3 * n + 1) += 0.5;
