@@ -184,21 +184,6 @@ bool MemberContact::excluded(int node, int element, const Model& model) const {
   return false;
 }
 
-bool MemberContact::valid(const Model& model, const State& s) const {
-  if (!searched_) return false;
-  for (int n = 0; n < model.numNodes(); ++n) {
-    if (!usedNode_[n]) continue;
-    const Box& a = anchor_[n];
-    const Vec2& X = model.coord(n);
-    for (const Eigen::VectorXd* u : {&s.un, &s.u}) {
-      const double x = X.x() + (*u)[3 * n], y = X.y() + (*u)[3 * n + 1];
-      if (x < a.x0 - margin_ || x > a.x1 + margin_ || y < a.y0 - margin_ || y > a.y1 + margin_)
-        return false;
-    }
-  }
-  return true;
-}
-
 namespace {
 
 // Assigns b to a and tells whether they were equal already.
@@ -214,7 +199,7 @@ Vec2 position(const Model& model, const Eigen::VectorXd& u, int n) {
 
 }  // namespace
 
-bool MemberContact::validBoxes() const {
+bool MemberContact::valid() const {
   if (!searched_) return false;
   for (int n = 0; n < static_cast<int>(usedNode_.size()); ++n) {
     if (!usedNode_[n]) continue;
@@ -229,8 +214,7 @@ bool MemberContact::validBoxes() const {
 
 MemberContact::Nearby MemberContact::nearby(const Model& model, const State& s,
                                             double extra) const {
-  swept_.update(model, s);
-  if (!validBoxes()) search(model, s);
+  candidates(model, s);
   // Every input compared (and copied when it differs).
   bool same = startCandidates_ == candidatesVersion_;
   same = keep(startUn_, s.un) && same;
@@ -288,7 +272,8 @@ void MemberContact::search(const Model& model, const State& s) const {
 
 const std::vector<ContactPair>& MemberContact::candidates(const Model& model,
                                                           const State& s) const {
-  if (!valid(model, s)) search(model, s);
+  swept_.update(model, s);
+  if (!valid()) search(model, s);
   return candidates_;
 }
 
@@ -475,18 +460,21 @@ double MemberContact::dissipation(const Model& model, const State& s, const Step
   if (!damped && !crushes && data_.mu <= 0) return 0;
   double d = 0;
   PairPositions q0, q1;
-  const std::vector<int>& visit = touching(model, s);
-  const std::vector<ContactPair>& pairs = candidates_;  // as touching() found them
-  for (int i : visit) {
-    const ContactPair& pair = pairs[i];
+  const std::vector<StepOutcome>& found = outcomes(model, s, rule);
+  const std::vector<ContactPair>& pairs = candidates_;  // as outcomes() found them
+  for (const StepOutcome& f : found) {
+    const ContactPair& pair = pairs[f.index];
     const PairMemory* m = memory(s, pair.key());
-    const PairOutcome o = outcome(i, model, s, rule);
+    const PairOutcome& o = f.outcome;
     const double q = m ? m->q : 0.0;
     if (crushes) d += CrushingLaw(data_.k, data_.restitution, q).dissipated(o.p0, o.p1);
-    if (damped && positions(pair, model, s, q0, q1, slack_))
-      d += damperDissipation(law(pair, s, q0, m).c,
+    if (damped && positions(pair, model, s, q0, q1, slack_)) {
+      PairStart& start = startOf(f.index, model, s);
+      formLaw(start, pair, s);
+      d += damperDissipation(start.law.c,
                              CrushingLaw(data_.k, data_.restitution, std::max(q, o.p0)).ps, o.p0,
                              o.p1, rule);
+    }
     d += o.slipped;
   }
   return d;

@@ -107,7 +107,8 @@ class MemberContact {
   // t_n+1, inflated by the contact distance, overlap), and more: the list is
   // found with boxes inflated by a margin and kept while no node has moved
   // beyond its box of that search by more than the margin. Sorted by key.
-  // Changes only when candidatesVersion() does.
+  // Changes only when candidatesVersion() does. Forms the nodes' swept boxes
+  // at s on the way (what sweptReach() reads).
   const std::vector<ContactPair>& candidates(const Model& model, const State& s) const;
   int candidatesVersion() const { return candidatesVersion_; }
 
@@ -162,8 +163,7 @@ class MemberContact {
   // The candidates at s, and those (indices, ascending) whose swept boxes
   // over the step to s may come within their contact distance plus extra: a
   // superset, kept over a step's iterations while the nodes move little
-  // (core/contact/SweptBoxes.h). One pass over the nodes forms their boxes
-  // and tells whether the candidates hold (as candidates() does).
+  // (core/contact/SweptBoxes.h).
   // sweptReach() is the exact test of one of them, at the state of the last
   // call.
   struct Nearby {
@@ -190,9 +190,9 @@ class MemberContact {
 
  private:
   void search(const Model& model, const State& s) const;
-  bool valid(const Model& model, const State& s) const;
-  // valid() from the swept boxes of the last nearby().
-  bool validBoxes() const;
+  // The candidates hold for the nodes' swept boxes (swept_, just formed): no
+  // node has left its box of the last search by more than the margin.
+  bool valid() const;
   // The pair's positions at t_n and t_n+1, and whether its swept boxes are
   // within contact distance (plus extra).
   bool positions(const ContactPair& pair, const Model& model, const State& s, PairPositions& q0,
@@ -206,8 +206,8 @@ class MemberContact {
   PairOutcome outcome(int index, const Model& model, const State& s, const StepRule& rule,
                       double* full = nullptr) const;
   // outcome() of every pair touching() at s under rule, with its penetration at the
-  // full distance: a commit reads them twice at one state (the energy account's
-  // energy(), then commit()), so they are found once and kept while the
+  // full distance: a commit reads them three times at one state (the energy
+  // account's energy() and dissipation(), then commit()), so they are found once and kept while the
   // candidates, the state's displacements, rates and pair memory and the rule
   // are those they were found for.
   struct StepOutcome {
@@ -234,6 +234,23 @@ class MemberContact {
   static double reach(const ContactPair& pair, const PairMemory* m) {
     return m ? m->h - m->offset : pair.h;
   }
+  // What a candidate keeps over a step's iterations (evaluate(), outcome(), motions()).
+  struct PairStart {
+    int version = -1;  // the startVersion_ it was found at
+    PairMemory memory;
+    bool remembered = false;  // memory holds the pair's
+    PairPositions q0;
+    int side = 0;
+    double reach = 0, face = 0, p0 = 0;
+    PairZ z0 = PairZ::Zero();
+    bool lawFound = false;  // law and mass formed
+    PairLaw law;
+    double mass = 0;  // the pair's (core/contact/PairMotion.h)
+  };
+  // The kept step start of the candidate `index` of the last nearby() at s
+  // (found now when not kept), and its law.
+  PairStart& startOf(int index, const Model& model, const State& s) const;
+  void formLaw(PairStart& start, const ContactPair& pair, const State& s) const;
   // The pair's law at s (its dashpot for the masses at t_n: q0).
   PairLaw law(const ContactPair& pair, const State& s, const PairPositions& q0,
               const PairMemory* m) const;
@@ -256,23 +273,6 @@ class MemberContact {
   mutable std::vector<ContactPair> candidates_;
   mutable std::vector<PairMemory> nextMemory_;  // commit's scratch
   mutable SweptBoxes swept_;                    // nearby()
-  // What a candidate keeps over a step's iterations (evaluate()).
-  struct PairStart {
-    int version = -1;  // the startVersion_ it was found at
-    PairMemory memory;
-    bool remembered = false;  // memory holds the pair's
-    PairPositions q0;
-    int side = 0;
-    double reach = 0, face = 0, p0 = 0;
-    PairZ z0 = PairZ::Zero();
-    bool lawFound = false;  // law and mass formed
-    PairLaw law;
-    double mass = 0;  // the pair's (core/contact/PairMotion.h)
-  };
-  // The kept step start of the candidate `index` of the last nearby() at s
-  // (found now when not kept), and its law.
-  PairStart& startOf(int index, const Model& model, const State& s) const;
-  void formLaw(PairStart& start, const ContactPair& pair, const State& s) const;
   mutable std::vector<PairStart> start_;  // per candidate
   // The step start the kept ones belong to: changes with the candidates and
   // the state's positions, rates and pair memory at t_n.
