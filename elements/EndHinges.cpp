@@ -111,16 +111,14 @@ std::vector<OpenedHinge> openEndHinges(Model& model, State& state) {
 double endHingeRatio(const Model& model, int* element) {
   double ratio = 0;
   if (element) *element = -1;
-  for (int e = 0; e < model.numElements(); ++e)
-    for (auto* j = model.hasElement(e) ? asJointed(&model.element(e)) : nullptr; j;
-         j = asJointed(&j->inner()))
-      if (j->hingeLaw()) {
-        // A spent hinge is a joint with friction Mr, not a capacity Mu(N).
-        const HingeInfo h = j->hingeInfo();
-        if (h.failed || h.ultimate <= 0 || std::abs(h.moment) / h.ultimate <= ratio) continue;
-        ratio = std::abs(h.moment) / h.ultimate;
-        if (element) *element = e;
-      }
+  forEachJointed(model, [&](int e, const JointedElement* j) {
+    if (!j->hingeLaw()) return;
+    // A spent hinge is a joint with friction Mr, not a capacity Mu(N).
+    const HingeInfo h = j->hingeInfo();
+    if (h.failed || h.ultimate <= 0 || std::abs(h.moment) / h.ultimate <= ratio) return;
+    ratio = std::abs(h.moment) / h.ultimate;
+    if (element) *element = e;
+  });
   return ratio;
 }
 

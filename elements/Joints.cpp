@@ -129,19 +129,13 @@ ElementKinematics innermostKinematics(const Element& e, const State& state) {
 
 std::vector<JointedElement*> jointedElements(Model& model) {
   std::vector<JointedElement*> out;
-  for (int e = 0; e < model.numElements(); ++e)
-    for (auto* j = model.hasElement(e) ? asJointed(&model.element(e)) : nullptr; j;
-         j = asJointed(&j->inner()))
-      out.push_back(j);
+  forEachJointed(model, [&](int, JointedElement* j) { out.push_back(j); });
   return out;
 }
 
 std::vector<const JointedElement*> jointedElements(const Model& model) {
   std::vector<const JointedElement*> out;
-  for (int e = 0; e < model.numElements(); ++e)
-    for (auto* j = model.hasElement(e) ? asJointed(&model.element(e)) : nullptr; j;
-         j = asJointed(&j->inner()))
-      out.push_back(j);
+  forEachJointed(model, [&](int, const JointedElement* j) { out.push_back(j); });
   return out;
 }
 

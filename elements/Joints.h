@@ -47,6 +47,15 @@ std::unique_ptr<Element> withoutJoint(std::unique_ptr<Element> el, int slave);
 // (borrowed pointers, valid until the element list changes).
 std::vector<JointedElement*> jointedElements(Model& model);
 std::vector<const JointedElement*> jointedElements(const Model& model);
+// Calls f(e, j) for every jointed element j of element e (Model or const
+// Model), wrappers inside wrappers included, outermost first.
+template <class ModelT, class F>
+void forEachJointed(ModelT& model, F&& f) {
+  for (int e = 0; e < model.numElements(); ++e)
+    for (auto* j = model.hasElement(e) ? asJointed(&model.element(e)) : nullptr; j;
+         j = asJointed(&j->inner()))
+      f(e, j);
+}
 
 // Per node: the element ends at it, a joint's master and slave counting two
 // (but for the joints k with gone[k] set: removed in the pass under way).
