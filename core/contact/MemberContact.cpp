@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 
 #include "core/contact/ContactDamper.h"
@@ -186,9 +187,14 @@ bool MemberContact::excluded(int node, int element, const Model& model) const {
 
 namespace {
 
-// Assigns b to a and tells whether they were equal already.
+// Assigns b to a and tells whether they were the same already, to the bit
+// (what decides that a result found from a still holds; memcmp, not ==: the
+// comparison runs at every assembly).
 bool keep(Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-  if (a.size() == b.size() && a == b) return true;
+  if (a.size() == b.size() &&
+      (b.size() == 0 ||
+       std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(b.size())) == 0))
+    return true;
   a = b;
   return false;
 }

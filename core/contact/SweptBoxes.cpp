@@ -1,6 +1,7 @@
 #include "core/contact/SweptBoxes.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace c2d {
 
@@ -8,7 +9,11 @@ void SweptBoxes::update(const Model& model, const State& s) {
   const int nn = model.numNodes();
   box_.resize(nn);
   const bool sized = nearUn_.size() == s.un.size() && nearU_.size() == s.u.size();
-  bool same = sized;
+  // The positions at t_n the same to the bit as near()'s (memcmp: at every assembly).
+  const bool same =
+      sized && (s.un.size() == 0 ||
+                std::memcmp(s.un.data(), nearUn_.data(),
+                            sizeof(double) * static_cast<std::size_t>(s.un.size())) == 0);
   double moved = 0;
   for (int n = 0; n < nn; ++n) {
     // As MemberContact::positions forms them, to the bit.
@@ -17,8 +22,6 @@ void SweptBoxes::update(const Model& model, const State& s) {
     b.add(X.x() + s.u[3 * n], X.y() + s.u[3 * n + 1]);
     box_[n] = b;
     if (!sized) continue;
-    same = same && s.un[3 * n] == nearUn_[3 * n] && s.un[3 * n + 1] == nearUn_[3 * n + 1] &&
-           s.un[3 * n + 2] == nearUn_[3 * n + 2];
     // (A NaN stays: no list is kept for it.)
     for (const double d : {std::abs(s.u[3 * n] - nearU_[3 * n]),
                            std::abs(s.u[3 * n + 1] - nearU_[3 * n + 1])})
