@@ -142,9 +142,9 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
   bool missing = false;
   PairVec f;
   PairMat k;
-  members_->assembling(rule);
   const double extra = members_->slack();
   const MemberContact::Nearby nearby = members_->nearby(model_, s, extra);
+  members_->assembling(rule, !nearby.reach.empty());
   const std::vector<ContactPair>& candidates = nearby.candidates;
   for (int i : nearby.near) {
     if (!members_->evaluate(i, model_, s, rule, wantTangent, f, k)) continue;

@@ -233,7 +233,36 @@ MemberContact::Nearby MemberContact::nearby(const Model& model, const State& s,
     startPairs_.assign(s.pairs.begin(), s.pairs.end());
     if (start_.size() < candidates_.size()) start_.resize(candidates_.capacity());
   }
-  return {candidates_, swept_.near(s, candidates_, candidatesVersion_, extra, 0.25 * margin_)};
+  const double slack = 0.25 * margin_;
+  const std::vector<int>& reach = swept_.near(s, candidates_, candidatesVersion_, extra, slack);
+  if (swept_.listVersion() != nearList_) {
+    // Found afresh at s: of its pairs, those that may touch while it holds
+    // (each node within sqrt(2) SweptBoxes::holds of its place at s). Most
+    // of the pairs within reach by their boxes are members lying along each
+    // other (the main example's pile: 320 an assembly, 150 touching).
+    near_.clear();
+    const double move = std::sqrt(2.0) * SweptBoxes::holds(slack);
+    for (int i : reach)
+      if (mayTouch(i, model, s, move)) near_.push_back(i);
+    nearList_ = swept_.listVersion();
+    nearStart_ = startVersion_;
+  }
+  // A step start found anew under a kept list: every pair within reach.
+  return {candidates_, reach, nearStart_ == startVersion_ ? near_ : reach};
+}
+
+bool MemberContact::mayTouch(int index, const Model& model, const State& s, double move) const {
+  const PairStart& start = startOf(index, model, s);
+  if (start.remembered || start.p0 > 0) return true;
+  const ContactPair& pair = candidates_[index];
+  const Vec2 r1 = position(model, s.u, pair.node) - position(model, s.u, pair.a);
+  const Vec2 r2 = position(model, s.u, pair.b) - position(model, s.u, pair.a);
+  const double l2 = r2.squaredNorm(), h = start.reach;
+  if (!(l2 > 16 * move * move) || !(h > 2.5 * move)) return true;
+  const double d = start.side * (r2.x() * r1.y() - r2.y() * r1.x());  // on its side: > 0
+  const double xi = std::clamp(r1.dot(r2) / l2, 0.0, 1.0);
+  const double dist = (r1 - xi * r2).norm();
+  return !(d > 0 && dist > h + 2.5 * move);
 }
 
 void MemberContact::search(const Model& model, const State& s) const {

@@ -160,14 +160,17 @@ class MemberContact {
     seg.add(q.b.x(), q.b.y());
     return Box::point(q.x.x(), q.x.y()).inflated(pair.h + slack_).overlaps(seg);
   }
-  // The candidates at s, and those (indices, ascending) whose swept boxes
-  // over the step to s may come within their contact distance plus extra: a
-  // superset, kept over a step's iterations while the nodes move little
-  // (core/contact/SweptBoxes.h).
-  // sweptReach() is the exact test of one of them, at the state of the last
-  // call.
+  // The candidates at s; those (indices, ascending) whose swept boxes over
+  // the step to s may come within their contact distance plus extra (reach: a
+  // superset, kept over a step's iterations while the nodes move little,
+  // core/contact/SweptBoxes.h); and of these the ones that may touch (near:
+  // all but the pairs that neither touch at t_n nor can come to touch while
+  // the list holds, see mayTouch). evaluate() finds no force on a pair of
+  // reach that is not near. sweptReach() is the exact test of one of them,
+  // at the state of the last call.
   struct Nearby {
     const std::vector<ContactPair>& candidates;
+    const std::vector<int>& reach;
     const std::vector<int>& near;
   };
   Nearby nearby(const Model& model, const State& s, double extra) const;
@@ -181,10 +184,12 @@ class MemberContact {
   // The most a pair's memory reaches beyond its contact distance: evaluate()
   // sees a pair whose swept boxes are within its distance plus this.
   double slack() const { return slack_; }
-  // An assembly under `rule` begins (the rule the friction stretches of its
-  // trial state belong to, as evaluate() notes it).
-  void assembling(const StepRule& rule) const {
-    if (lastRule_.scheme != rule.scheme || lastRule_.alpha != rule.alpha) lastRule_ = rule;
+  // An assembly under `rule` is made (the rule the friction stretches of its
+  // trial state belong to, as evaluate() notes it), its nearby() list of
+  // pairs within reach empty or not (evaluate() notes the rule of every one).
+  void assembling(const StepRule& rule, bool reached) const {
+    if (reached || lastRule_.scheme != rule.scheme || lastRule_.alpha != rule.alpha)
+      lastRule_ = rule;
   }
   double radius(int element) const { return elementRadius_[element]; }
 
@@ -247,6 +252,17 @@ class MemberContact {
     PairLaw law;
     double mass = 0;  // the pair's (core/contact/PairMotion.h)
   };
+  // The candidate `index` (of the last nearby(), at s) may touch while each
+  // of its nodes moves by at most `move` from its position at s: it touches
+  // at t_n, or has a memory (a held side, end faces, a contact distance of
+  // its own), or at s lies closer than its contact distance h plus 2.5 move,
+  // or across its segment's line from its side at t_n, or its segment is
+  // shorter than 4 move or h shorter than 2.5 move. Otherwise its
+  // penetration stays below -move / 2: the distance from the node to the
+  // segment changes by at most 2 move, and its signed distance from the
+  // segment's line too, so that the node cannot reach the span on the line's
+  // other side (where the penetration is h plus that distance).
+  bool mayTouch(int index, const Model& model, const State& s, double move) const;
   // The kept step start of the candidate `index` of the last nearby() at s
   // (found now when not kept), and its law.
   PairStart& startOf(int index, const Model& model, const State& s) const;
@@ -279,6 +295,10 @@ class MemberContact {
   mutable int startVersion_ = 0, startCandidates_ = -1;
   mutable Eigen::VectorXd startUn_, startVn_, startAn_;
   mutable std::vector<PairMemory> startPairs_;
+  // nearby()'s pairs that may touch, and the list of SweptBoxes and the step
+  // start they were found for.
+  mutable std::vector<int> near_;
+  mutable int nearList_ = -1, nearStart_ = -1;
   mutable std::vector<int> touching_;           // touching()'s
   // outcomes() and what they were found for.
   mutable std::vector<StepOutcome> outcomes_;

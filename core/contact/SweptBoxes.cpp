@@ -35,7 +35,7 @@ const std::vector<int>& SweptBoxes::near(const State& s,
                                          const std::vector<ContactPair>& candidates, int version,
                                          double extra, double slack) {
   const bool kept = version == nearVersion_ && extra == nearExtra_ && slack == nearSlack_ &&
-                    sameStart_ && moved_ <= 0.25 * slack;
+                    sameStart_ && moved_ <= holds(slack);
   if (kept) return near_;
   // With the candidates' room: steps allocate nothing while the contacts
   // change little.
@@ -50,6 +50,7 @@ const std::vector<int>& SweptBoxes::near(const State& s,
   nearVersion_ = version;
   nearExtra_ = extra;
   nearSlack_ = slack;
+  ++listVersion_;
   return near_;
 }
 

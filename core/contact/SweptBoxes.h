@@ -36,6 +36,12 @@ class SweptBoxes {
   // 320 within reach).
   const std::vector<int>& near(const State& s, const std::vector<ContactPair>& candidates,
                                int version, double extra, double slack);
+  // Counts the lists near() has found: a new value, a list found afresh at
+  // the state of the call.
+  int listVersion() const { return listVersion_; }
+  // The most a node's coordinate moves from the state a list was found at
+  // while near() keeps it.
+  static double holds(double slack) { return 0.25 * slack; }
 
   // The pair's swept boxes are within its contact distance plus extra.
   bool reach(const ContactPair& pair, double extra) const {
@@ -56,6 +62,7 @@ class SweptBoxes {
   bool sameStart_ = false;
   double moved_ = 0;
   int nearVersion_ = -1;
+  int listVersion_ = 0;
   double nearExtra_ = -1, nearSlack_ = -1;
 };
 

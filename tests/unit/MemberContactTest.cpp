@@ -648,6 +648,84 @@ TEST(MemberContactModel, TheStepsNearListHoldsEveryPairWithinReach) {
   EXPECT_GT(reached, 40);  // the rods were within reach in every iteration
 }
 
+TEST(MemberContactModel, TheNearListHoldsEveryPairThatTouches) {
+  // A bar wandering over a rod's end in Newton-like increments (random, up
+  // to the list's hold), round its end, across its line and into its span
+  // from either side, steps committed now and then: every pair evaluate()
+  // finds a force on is in nearby()'s near list, kept over the step's
+  // iterations, and the list leaves out pairs its boxes keep (those that
+  // cannot touch while it holds: MemberContact::mayTouch).
+  Model m;
+  m.materials()[1] = rod(1, 1e4, 1e4, 10, 1.0, 2.5e-3 / 3);  // r = 0.05
+  newRod(m, Vec2(0, 0), Vec2(2, 0), 8);
+  const int bar = newRod(m, Vec2(2.3, -0.4), Vec2(2.3, -1.0), 3);
+  m.memberContact() = MemberContactData{1e3, 0, -1};
+  Assembler as(m);
+  as.refresh();
+  const MemberContact& mc = *as.memberContact();
+  State s;
+  s.resize(m.numNodes());
+  const double hold = SweptBoxes::holds(0.25 * mc.margin());
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> step(-hold, hold);
+  const StepRule rule = TimeIntegrator::midPoint(0, 0).rule(0.01);
+  PairVec f;
+  PairMat k;
+  int touched = 0, left = 0;
+  for (int iteration = 0; iteration < 3000; ++iteration) {
+    // Round the rod's end (2, 0) at 0.3 from it and through its span, by a
+    // drift of a fifth of the hold and a scatter of a third.
+    const double angle = 0.002 * iteration;
+    const Vec2 target(2.0 - 1.2 * std::sin(angle), 0.3 * std::cos(3 * angle) - 0.4 * std::cos(angle));
+    const Vec2 x(m.coord(bar).x() + s.u(3 * bar), m.coord(bar).y() + s.u(3 * bar + 1));
+    Vec2 drift = target - x;
+    if (drift.norm() > 0.2 * hold) drift *= 0.2 * hold / drift.norm();
+    for (int n = bar; n < m.numNodes(); ++n) {
+      s.u(3 * n) += drift.x() + step(random) / 3;
+      s.u(3 * n + 1) += drift.y() + step(random) / 3;
+    }
+    if (iteration % 7 == 0) s.commit();  // a new step: the lists found afresh
+    const MemberContact::Nearby nearby = mc.nearby(m, s, mc.slack());
+    left += static_cast<int>(nearby.reach.size() - nearby.near.size());
+    for (std::size_t i = 0; i < nearby.candidates.size(); ++i) {
+      if (!mc.evaluate(static_cast<int>(i), m, s, rule, false, f, k)) continue;
+      ++touched;
+      EXPECT_TRUE(std::binary_search(nearby.near.begin(), nearby.near.end(), static_cast<int>(i)))
+          << "iteration " << iteration << ", pair " << nearby.candidates[i].node << "-"
+          << nearby.candidates[i].element;
+    }
+  }
+  EXPECT_GT(touched, 100);  // the bar pressed on the rod on both sides
+  EXPECT_GT(left, 1000);    // and the list left out pairs its boxes kept
+  // A node beside the rod's line beyond its end at t_n, across the line at
+  // the step's first iterate (0.5 from it), then into the span by less than
+  // the hold: from the side it came from it presses (the penetration h plus
+  // its distance), and the list, found at the first iterate, holds it.
+  State c;
+  c.resize(m.numNodes());
+  const auto place = [&](State& st, bool committed, double x, double y) {
+    for (int n = bar; n < m.numNodes(); ++n) {
+      st.u(3 * n) = x - m.coord(bar).x();
+      st.u(3 * n + 1) = y - m.coord(bar).y() - 0.3 * (n - bar);
+    }
+    if (committed) st.commit();
+  };
+  place(c, true, 2.3, 0.02);
+  place(c, false, 2.0 + 0.4 * hold, -0.5);
+  (void)mc.nearby(m, c, mc.slack());  // found here
+  place(c, false, 2.0 - 0.4 * hold, -0.5);
+  const MemberContact::Nearby nearby = mc.nearby(m, c, mc.slack());
+  int pressed = 0;
+  for (std::size_t i = 0; i < nearby.candidates.size(); ++i) {
+    if (nearby.candidates[i].node != bar ||
+        !mc.evaluate(static_cast<int>(i), m, c, rule, false, f, k))
+      continue;
+    ++pressed;
+    EXPECT_TRUE(std::binary_search(nearby.near.begin(), nearby.near.end(), static_cast<int>(i)));
+  }
+  EXPECT_EQ(pressed, 1);
+}
+
 TEST(MemberContactModel, APairInMemoryOutOfReachLetsGoOfItsFrictionSpring) {
   // A commit's passes visit the pairs that may touch and those in memory
   // (MemberContact::touching): a pair whose node has left the segment's reach
