@@ -117,6 +117,7 @@ void BlockLuSolver::symbolic(const std::vector<std::vector<int>>& adjacent) {
     Ui_.insert(Ui_.end(), above[k].begin(), above[k].end());
   }
   Lx_.assign(Li_.size(), Block::Zero());
+  zeroL_.assign(Li_.size(), 1);
   Ux_.assign(Ui_.size(), Block::Zero());
   Dinv_.assign(nb_, Block::Zero());
   work_.assign(nb_, Block::Zero());
@@ -170,9 +171,15 @@ Status BlockLuSolver::factorize(const SparseMatrix& A) {
       u = work_[j];
       largestU = std::max(largestU, u.cwiseAbs().maxCoeff());
       // u held in a local copy: the compiler keeps it in registers over the
-      // column (work_ and Ux_ could alias as far as it knows).
+      // column (work_ and Ux_ could alias as far as it knows). A zero block of
+      // U or L changes nothing (but the sign of a zero): the pile of a
+      // collapse couples pairs of members that do not touch, whose blocks
+      // are zero (a sixth of U's and a quarter of the products in the main
+      // example with member contact).
       const Block uj = u;
-      for (int p = Lp_[j]; p < Lp_[j + 1]; ++p) work_[Li_[p]].noalias() -= Lx_[p] * uj;
+      if (uj.isZero(0)) continue;
+      for (int p = Lp_[j]; p < Lp_[j + 1]; ++p)
+        if (!zeroL_[p]) work_[Li_[p]].noalias() -= Lx_[p] * uj;
     }
     Block& inv = Dinv_[k];
     inv = d.inverse();
@@ -188,7 +195,10 @@ Status BlockLuSolver::factorize(const SparseMatrix& A) {
           "block-lu: a pivot block is singular to working precision (no pivoting between blocks)");
     }
     largestU = std::max(largestU, d.cwiseAbs().maxCoeff());
-    for (int p = Lp_[k]; p < Lp_[k + 1]; ++p) Lx_[p].noalias() = work_[Li_[p]] * inv;
+    for (int p = Lp_[k]; p < Lp_[k + 1]; ++p) {
+      Lx_[p].noalias() = work_[Li_[p]] * inv;
+      zeroL_[p] = Lx_[p].isZero(0);
+    }
   }
   if (!(largestU <= kMaxGrowth * largestA)) {
     notStable_ = true;

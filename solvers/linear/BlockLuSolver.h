@@ -56,6 +56,7 @@ class BlockLuSolver final : public LinearSolver {
   std::vector<int> Lp_, Li_;       // block rows below the diagonal, per block column
   std::vector<int> Up_, Ui_;       // block rows above the diagonal, per block column
   std::vector<Block> Lx_, Ux_, Dinv_, work_;
+  std::vector<char> zeroL_;        // per block of L: all its entries zero
   std::vector<BlockVec> y_;
   bool factored_ = false;
   bool notStable_ = false;
