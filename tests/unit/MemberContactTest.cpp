@@ -605,6 +605,16 @@ TEST(MemberContactModel, ThePatternHoldsThePairsAboutToTouchOnly) {
   EXPECT_FALSE(coupled(bar, segmentEnd));
 }
 
+// A rod from (0, 0) to (2, 0) in 8 elements and a bar from a to b in n (r =
+// 0.05 both), with member contact k = 1e3: the bar's first node.
+int rodAndBar(Model& m, const Vec2& a, const Vec2& b, int n) {
+  m.materials()[1] = rod(1, 1e4, 1e4, 10, 1.0, 2.5e-3 / 3);
+  newRod(m, Vec2(0, 0), Vec2(2, 0), 8);
+  const int bar = newRod(m, a, b, n);
+  m.memberContact() = MemberContactData{1e3, 0, -1};
+  return bar;
+}
+
 TEST(MemberContactModel, TheStepsNearListHoldsEveryPairWithinReach) {
   // Two crossing rods, the second moved across the first by Newton-like
   // increments: every candidate within reach by its boxes is in the list
@@ -612,10 +622,7 @@ TEST(MemberContactModel, TheStepsNearListHoldsEveryPairWithinReach) {
   // its slack and after a move beyond (when it is found afresh; kept for
   // good, it missed the pairs the crossing point reached).
   Model m;
-  m.materials()[1] = rod(1, 1e4, 1e4, 10, 1.0, 2.5e-3 / 3);  // r = 0.05
-  newRod(m, Vec2(0, 0), Vec2(2, 0), 8);
-  const int bar = newRod(m, Vec2(0.3, -0.6), Vec2(1.2, -1.1), 6);  // displaced up below
-  m.memberContact() = MemberContactData{1e3, 0, -1};
+  const int bar = rodAndBar(m, Vec2(0.3, -0.6), Vec2(1.2, -1.1), 6);  // displaced up below
   Assembler as(m);
   as.refresh();
   const MemberContact& mc = *as.memberContact();
@@ -656,10 +663,7 @@ TEST(MemberContactModel, TheNearListHoldsEveryPairThatTouches) {
   // iterations, and the list leaves out pairs its boxes keep (those that
   // cannot touch while it holds: MemberContact::mayTouch).
   Model m;
-  m.materials()[1] = rod(1, 1e4, 1e4, 10, 1.0, 2.5e-3 / 3);  // r = 0.05
-  newRod(m, Vec2(0, 0), Vec2(2, 0), 8);
-  const int bar = newRod(m, Vec2(2.3, -0.4), Vec2(2.3, -1.0), 3);
-  m.memberContact() = MemberContactData{1e3, 0, -1};
+  const int bar = rodAndBar(m, Vec2(2.3, -0.4), Vec2(2.3, -1.0), 3);
   Assembler as(m);
   as.refresh();
   const MemberContact& mc = *as.memberContact();
