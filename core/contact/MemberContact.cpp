@@ -239,7 +239,8 @@ MemberContact::Nearby MemberContact::nearby(const Model& model, const State& s,
     // Found afresh at s: of its pairs, those that may touch while it holds
     // (each node within sqrt(2) SweptBoxes::holds of its place at s). Most
     // of the pairs within reach by their boxes are members lying along each
-    // other (the main example's pile: 320 an assembly, 150 touching).
+    // other (the main example with member contact, per assembly over the
+    // run: 341 within reach, 141 that may touch, 48 touching).
     near_.clear();
     const double move = std::sqrt(2.0) * SweptBoxes::holds(slack);
     for (int i : reach)
