@@ -173,4 +173,9 @@ class Model {
   int topologyVersion_ = 0;
 };
 
+// Node n's position under the displacements u (per node dof, as State holds them).
+inline Vec2 nodePosition(const Model& model, const Eigen::VectorXd& u, int n) {
+  return Vec2(model.coord(n).x() + u[kNodeDofs * n], model.coord(n).y() + u[kNodeDofs * n + 1]);
+}
+
 }  // namespace c2d

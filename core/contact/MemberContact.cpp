@@ -199,10 +199,6 @@ bool keep(Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   return false;
 }
 
-Vec2 position(const Model& model, const Eigen::VectorXd& u, int n) {
-  return Vec2(model.coord(n).x() + u[3 * n], model.coord(n).y() + u[3 * n + 1]);
-}
-
 }  // namespace
 
 bool MemberContact::valid() const {
@@ -242,6 +238,7 @@ MemberContact::Nearby MemberContact::nearby(const Model& model, const State& s,
     // other (the main example with member contact, per assembly over the
     // run: 341 within reach, 141 that may touch, 48 touching).
     near_.clear();
+    if (near_.capacity() < reach.capacity()) near_.reserve(reach.capacity());  // none in a step
     const double move = std::sqrt(2.0) * SweptBoxes::holds(slack);
     for (int i : reach)
       if (mayTouch(i, model, s, move)) near_.push_back(i);
@@ -256,8 +253,8 @@ bool MemberContact::mayTouch(int index, const Model& model, const State& s, doub
   const PairStart& start = startOf(index, model, s);
   if (start.remembered || start.p0 > 0) return true;
   const ContactPair& pair = candidates_[index];
-  const Vec2 r1 = position(model, s.u, pair.node) - position(model, s.u, pair.a);
-  const Vec2 r2 = position(model, s.u, pair.b) - position(model, s.u, pair.a);
+  const Vec2 r1 = nodePosition(model, s.u, pair.node) - nodePosition(model, s.u, pair.a);
+  const Vec2 r2 = nodePosition(model, s.u, pair.b) - nodePosition(model, s.u, pair.a);
   const double l2 = r2.squaredNorm(), h = start.reach;
   if (!(l2 > 16 * move * move) || !(h > 2.5 * move)) return true;
   const double d = start.side * (r2.x() * r1.y() - r2.y() * r1.x());  // on its side: > 0
@@ -266,15 +263,11 @@ bool MemberContact::mayTouch(int index, const Model& model, const State& s, doub
   return !(d > 0 && dist > h + 2.5 * move);
 }
 
-void MemberContact::search(const Model& model, const State& s) const {
+void MemberContact::search(const Model& model) const {
   const int ne = static_cast<int>(live_.size());
-  for (int n = 0; n < model.numNodes(); ++n) {
-    if (!usedNode_[n]) continue;
-    const Vec2& X = model.coord(n);
-    Box b = Box::point(X.x() + s.un[3 * n], X.y() + s.un[3 * n + 1]);
-    b.add(X.x() + s.u[3 * n], X.y() + s.u[3 * n + 1]);
-    anchor_[n] = b;
-  }
+  // The nodes' swept boxes at s (candidates() has just formed them).
+  for (int n = 0; n < model.numNodes(); ++n)
+    if (usedNode_[n]) anchor_[n] = swept_.box(n);
   boxes_.resize(ne);
   for (int i = 0; i < ne; ++i) {
     const int e = live_[i];
@@ -309,7 +302,7 @@ void MemberContact::search(const Model& model, const State& s) const {
 const std::vector<ContactPair>& MemberContact::candidates(const Model& model,
                                                           const State& s) const {
   swept_.update(model, s);
-  if (!valid()) search(model, s);
+  if (!valid()) search(model);
   return candidates_;
 }
 
@@ -329,8 +322,8 @@ MemberContact::PairStart& MemberContact::startOf(int index, const Model& model,
   const PairMemory* m = memory(s, pair.key());
   start.remembered = m != nullptr;
   if (m) start.memory = *m;
-  start.q0 = {position(model, s.un, pair.node), position(model, s.un, pair.a),
-              position(model, s.un, pair.b)};
+  start.q0 = {nodePosition(model, s.un, pair.node), nodePosition(model, s.un, pair.a),
+              nodePosition(model, s.un, pair.b)};
   start.side = side(m, start.q0);
   start.reach = reach(pair, m);
   start.face = face(m);
@@ -361,8 +354,8 @@ bool MemberContact::evaluate(int index, const Model& model, const State& s, cons
   PairStep step;
   step.z0 = start.z0;
   step.p0 = start.p0;
-  const PairPositions q1{position(model, s.u, pair.node), position(model, s.u, pair.a),
-                         position(model, s.u, pair.b)};
+  const PairPositions q1{nodePosition(model, s.u, pair.node), nodePosition(model, s.u, pair.a),
+                         nodePosition(model, s.u, pair.b)};
   if (!pairTouches(q1, start.side, start.reach, rule, wantTangent, step, start.face)) return false;
   // Most candidates are apart (a twelfth carries a force): their law (the
   // dashpot's pair mass and rates) is formed once one touches.
@@ -462,6 +455,7 @@ const std::vector<int>& MemberContact::touching(const Model& model, const State&
   const Nearby found = nearby(model, s, slack_);
   const std::vector<ContactPair>& pairs = found.candidates;
   touching_.clear();
+  if (touching_.capacity() < pairs.capacity()) touching_.reserve(pairs.capacity());
   for (int i : found.near)
     if (swept_.reach(pairs[i], slack_)) touching_.push_back(i);
   // The pairs in memory out of reach (a friction spring or a held side let

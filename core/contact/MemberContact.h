@@ -194,7 +194,8 @@ class MemberContact {
   double radius(int element) const { return elementRadius_[element]; }
 
  private:
-  void search(const Model& model, const State& s) const;
+  // The candidates found afresh around the nodes' swept boxes (swept_, just formed).
+  void search(const Model& model) const;
   // The candidates hold for the nodes' swept boxes (swept_, just formed): no
   // node has left its box of the last search by more than the margin.
   bool valid() const;
@@ -222,11 +223,11 @@ class MemberContact {
   };
   const std::vector<StepOutcome>& outcomes(const Model& model, const State& s,
                                            const StepRule& rule) const;
-  // The candidates that may touch over the step to s (swept boxes within
-  // their distance plus the slack: positions() true) or have a memory
-  // (indices, ascending): the passes over the pairs at a commit visit these
-  // alone, the others having no force, energy or memory (the main example's
-  // pile: 2600 candidates, 300-450 of these).
+  // The candidates that may touch over the step to s (nearby()'s near list,
+  // with swept boxes within their distance plus the slack: positions() true)
+  // or have a memory (indices, ascending): the passes over the pairs at a
+  // commit visit these alone, the others having no force, energy or memory
+  // (the main example's pile: 2600 candidates, 300-450 of these).
   const std::vector<int>& touching(const Model& model, const State& s) const;
   static double distance(const ContactPair& pair, const PairMemory* m) { return m ? m->h : pair.h; }
   // The side the node is held on: the memory's, or the one it was on at t_n.
@@ -321,11 +322,10 @@ class MemberContact {
 // Inline: evaluated for every candidate at every assembly.
 inline bool MemberContact::positions(const ContactPair& pair, const Model& model, const State& s,
                               PairPositions& q0, PairPositions& q1, double extra) const {
-  auto at = [&](const Eigen::VectorXd& u, int n) {
-    return Vec2(model.coord(n).x() + u[3 * n], model.coord(n).y() + u[3 * n + 1]);
-  };
-  q0 = {at(s.un, pair.node), at(s.un, pair.a), at(s.un, pair.b)};
-  q1 = {at(s.u, pair.node), at(s.u, pair.a), at(s.u, pair.b)};
+  q0 = {nodePosition(model, s.un, pair.node), nodePosition(model, s.un, pair.a),
+        nodePosition(model, s.un, pair.b)};
+  q1 = {nodePosition(model, s.u, pair.node), nodePosition(model, s.u, pair.a),
+        nodePosition(model, s.u, pair.b)};
   Box node = Box::point(q0.x.x(), q0.x.y()), seg = Box::point(q0.a.x(), q0.a.y());
   node.add(q1.x.x(), q1.x.y());
   seg.add(q0.b.x(), q0.b.y());

@@ -49,9 +49,7 @@ std::vector<MemberCrossing> findCrossings(const Model& model, const State& s) {
     if (model.hasElement(e)) live.push_back(e);
   const int ne = static_cast<int>(live.size());
   const std::vector<int> group = jointGroups(model);
-  auto at = [&](int n) {
-    return Vec2(model.coord(n).x() + s.u[3 * n], model.coord(n).y() + s.u[3 * n + 1]);
-  };
+  auto at = [&](int n) { return nodePosition(model, s.u, n); };
   std::vector<Box> boxes(ne);
   for (int i = 0; i < ne; ++i) {
     const auto nodes = model.element(live[i]).nodes();

@@ -17,9 +17,9 @@ void SweptBoxes::update(const Model& model, const State& s) {
   double moved = 0;
   for (int n = 0; n < nn; ++n) {
     // As MemberContact::positions forms them, to the bit.
-    const Vec2& X = model.coord(n);
-    Box b = Box::point(X.x() + s.un[3 * n], X.y() + s.un[3 * n + 1]);
-    b.add(X.x() + s.u[3 * n], X.y() + s.u[3 * n + 1]);
+    const Vec2 x0 = nodePosition(model, s.un, n), x1 = nodePosition(model, s.u, n);
+    Box b = Box::point(x0.x(), x0.y());
+    b.add(x1.x(), x1.y());
     box_[n] = b;
     if (!sized) continue;
     // (A NaN stays: no list is kept for it.)
