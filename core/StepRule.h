@@ -14,7 +14,7 @@
 //   2 tan(dtheta/2) = dt ((1/2 + beta) omega_{n+1} + (1/2 - beta) omega_n).
 // With it the geometrically exact beam's algorithmic forces conserve energy and
 // angular momentum together (elements/ReissnerFrame.h); with additive rates no
-// energy conserving force can (docs/design-notes.md). A rotation increment must
+// energy conserving force can (docs/history.md). A rotation increment must
 // stay below pi in magnitude within one step.
 #include <array>
 #include <cmath>

@@ -12,7 +12,7 @@
 // (19.5k -> 16.4k iterations, 212 -> 399 cuts); joint wrappers found without
 // dynamic casts (3.9 % -> 0.5 % of the felling, results bit for bit). This
 // benchmark afterwards: felling 5.8 s at load 1.4, 6.9 s at load 2;
-// implosion 5.0 s and 5.8 s (docs/design-notes.md, Open problems). On the
+// implosion 5.0 s and 5.8 s (docs/open-problems.md). On the
 // ground with friction and crushing impacts (mu = 0.5, e = 0.3), one run on
 // the quiet machine with SixStoryDemolition: felling 5.27 s (18.2k
 // iterations, 547 cuts), implosion 3.94 s (13.3k, 364 cuts); the main

@@ -3,7 +3,7 @@
 // each run on to rest) with `collapse2d run -j 2`: its runs split over two
 // processes and merged. Counter: runs per minute of wall time. The full
 // ensemble (felling_ensemble.inp, 3 x 20) is timed from the command line
-// (docs/design-notes.md, "Ensembles").
+// (docs/history.md, "Ensembles").
 // Run: build/tests/benchmarks --benchmark_filter=Ensemble
 #include <benchmark/benchmark.h>
 

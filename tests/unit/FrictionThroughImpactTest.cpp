@@ -8,7 +8,7 @@
 // mid-point scheme (DYNAmic,ENERgy) and Newmark's. Before the stick
 // element's dashpot (core/contact/SpringFriction.h) friction took 0.29 mu N,
 // the stick spring too soft to build mu N within the 2 ms contact, and the
-// bar came to rest 0.51 m on (docs/design-notes.md, "Ground friction").
+// bar came to rest 0.51 m on (docs/history.md, "Ground friction").
 #include <gtest/gtest.h>
 
 #include <algorithm>
