@@ -14,6 +14,7 @@
 #include "macro/run/Interrupt.h"
 #include "macro/deck/Limits.h"
 #include "macro/deck/ParameterNote.h"
+#include "macro/deck/Suggest.h"
 #include "macro/studies/PlanTable.h"
 #include "macro/run/StaleOutputs.h"
 #include "macro/studies/Sweep.h"
@@ -252,6 +253,41 @@ std::vector<std::string> runWarnings(const RunSummary& s) {
 
 namespace {
 
+// A name a study sets for each run cannot be given from outside the deck too:
+// the study's tables and file names would show values the runs did not take.
+void refuseOverride(const Parameters& params, const std::string& name, const Record& rec,
+                    const std::string& how) {
+  if (!params.overridden(name)) return;
+  throw DeckError(rec[0].loc,
+                  "'" + name + "' is " + how + " by this study for each run: it cannot also be given "
+                  "from outside the deck (--set, params)",
+                  rec.excerpt(rec[0].loc), "give the study's values here, or drop this name from the given ones");
+}
+
+// A value given from outside the deck (--set) whose name no PARAmeter record
+// of the deck assigns: it would change nothing, silently.
+class UnusedParameter : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+void checkOverridesUsed(const Parameters& params, const std::string& path) {
+  const std::vector<std::string> unused = params.overridesUnused();
+  if (unused.empty()) return;
+  const std::string hint = didYouMean(unused[0], params.names());
+  throw UnusedParameter(path + ": parameter '" + unused[0] +
+                        "' is given (--set, params) but no PARAmeter record of the deck assigns it" +
+                        (hint.empty() ? std::string() : ": " + hint));
+}
+
+// " given q=15 mu=0.3": the values given from outside (--set), so that parts
+// of a study run with other values are not merged as one study.
+std::string givenText(const std::map<std::string, double>& given) {
+  std::string s;
+  for (const auto& [name, v] : given) s += (s.empty() ? " given " : " ") + name + "=" + exactNumber(v);
+  return s;
+}
+
 // Walks the top-level items: PARAmeter blocks, problems, loops, sweeps. In the
 // check pass every problem is bound only (and what names its run is noted); in
 // the run pass bound and run.
@@ -289,6 +325,7 @@ class Walker {
         for (int i = 0; i < n; ++i) walk(loop->body, params);
       } else if (const auto* sweep = std::get_if<TopSweep>(&item)) {
         // The swept names may not be set again by the deck (Parameters::protect).
+        for (const SweepVariable& v : sweep->variables) refuseOverride(params, v.name, v.record, "swept");
         const std::vector<SweepValues> sets = sweepRuns(*sweep, params);
         const std::string by = "swept by the SWEEp of line " + std::to_string(sweep->head.loc.line);
         for (const SweepValues& set : sets) {
@@ -335,6 +372,7 @@ class Walker {
   // from the same parameter table, with its drawn values set (and protected).
   void walkEnsemble(const TopEnsemble& e, Parameters& params) {
     if (!ensembleHead_) ensembleHead_ = &e.head;
+    for (const DrawRecord& d : e.draws) refuseOverride(params, d.name, d.record, "drawn");
     const EnsembleSpec spec = evaluateEnsemble(e, params);
     const Parameters base = params;
     const std::string by = "drawn by the ENSEmble of line " + std::to_string(e.head.loc.line);
@@ -538,10 +576,12 @@ std::string fileList(const std::vector<std::filesystem::path>& files) {
 
 }  // namespace
 
-DeckPlan planDeck(const std::string& path, const SolutionCommands& commands) {
+DeckPlan planDeck(const std::string& path, const SolutionCommands& commands,
+                  const std::map<std::string, double>& given) {
   const Deck deck = parseDeck(path);
   std::ostringstream discard;
   Parameters params;
+  params.setOverrides(given);
   const DeckOptions options;
   Walker check(commands, options, discard, nullptr, {});
   check.walk(deck.items, params);
@@ -585,8 +625,10 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     // Check pass: bind everything with a scratch parameter table, log discarded.
     std::ostringstream discard;
     Parameters checkParams;
+    checkParams.setOverrides(options.params);
     Walker check(commands, options, discard, nullptr, {}, stem, &warnings);
     check.walk(deck.items, checkParams);
+    checkOverridesUsed(checkParams, path);
     const std::vector<RunPlan> plans = planRuns(check.infos(), stem);
     const auto& infos = check.infos();
     const bool ensemble =
@@ -608,9 +650,12 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
                                        (options.logName.empty() ? partStem + ".out" : options.logName));
     log->stream() << "  collapse2d  " << path << "\n";
     for (const DeckWarning& w : warnings.list()) log->stream() << w.str() << "\n";
+    for (const auto& [name, v] : options.params)
+      log->stream() << "  given: " << name << " = " << exactNumber(v) << " (in place of the deck's value)\n";
     DeckOptions runOptions = options;
     runOptions.safePoint = [&log] { log->check(); };
     Parameters params;
+    params.setOverrides(options.params);
     Walker runner(commands, runOptions, log->stream(), &out, plans, stem);
     const std::vector<std::string> swept = sweptNames(check.infos());
     if (ensemble)
@@ -651,8 +696,8 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
       }
       if (options.shards > 1 && (runner.planTable() || runner.ensembleTable()))
         writeShardManifest(dir, partStem,
-                           {path, deckFingerprint(path), options.shard, options.shards,
-                            static_cast<int>(plans.size()), runner.ensembleTable() ? "ensemble" : "plans",
+                           {path, deckFingerprint(path) + givenText(options.params), options.shard,
+                            options.shards, static_cast<int>(plans.size()), runner.ensembleTable() ? "ensemble" : "plans",
                             swept, runner.title(), runner.overlay().numRuns()});
     } catch (...) {
       kept = runner.kept();
@@ -686,8 +731,13 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     printWarnings();
     outcome.exitCode = kExitDeckError;
     outcome.message = e.what();
+    outcome.errorAt = e.loc();
     keepLog("failed", e.what());
     outcome.message += keptText();
+  } catch (const UnusedParameter& e) {
+    printWarnings();
+    outcome.exitCode = kExitUsage;
+    outcome.message = e.what();
   } catch (const AnalysisError& e) {
     outcome.exitCode = kExitAnalysisFailed;
     keepLog("failed", e.what());

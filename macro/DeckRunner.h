@@ -3,6 +3,8 @@
 // the top-level loops (all deck errors reported before computing), then run.
 #include <filesystem>
 #include <functional>
+#include <map>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -22,6 +24,11 @@ struct DeckOptions {
   // --shard i/n: only the runs k (0-based over the deck) with k mod n == i - 1;
   // the deck's own outputs (log, plans table, overlays) are named <stem>_part<i>of<n>.
   int shard = 1, shards = 1;
+  // --set NAME=VALUE (collapse2d.run's params): a value given in place of the
+  // one the deck's PARAmeter records assign to NAME (Parameters::setOverrides);
+  // a name no record assigns is a usage error, a name a SWEEp or an ENSEmble
+  // sets for each run a deck error at its record.
+  std::map<std::string, double> params;
   // Called at every safe point of a run (the log's write check; tests).
   std::function<void()> safePoint;
 };
@@ -40,6 +47,7 @@ enum ExitCode : int {
 struct DeckOutcome {
   int exitCode = kExitOk;
   std::string message;  // the error, when there is one
+  std::optional<SourceLoc> errorAt;  // a deck error's location
   RunSummary total;     // summed over every problem run
   int runs = 0;
   std::vector<DeckWarning> warnings;  // printed on stderr and in the log
@@ -74,7 +82,9 @@ struct DeckPlan {
   int runs = 0;
   bool study = false;
 };
-DeckPlan planDeck(const std::string& path, const SolutionCommands& commands);
+// `params`: the values given from outside the deck (DeckOptions::params).
+DeckPlan planDeck(const std::string& path, const SolutionCommands& commands,
+                  const std::map<std::string, double>& params = {});
 
 // The log line after a shard's last run (macro/studies/ParallelRuns.h joins the
 // logs of the parts at it).

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include "macro/studies/BatchRunner.h"
 #include "macro/DeckRunner.h"
 #include "macro/commands/Help.h"
+#include "macro/deck/Parameters.h"
 #include "macro/studies/Shard.h"
 #include "macro/studies/Merge.h"
 #include "macro/studies/ParallelRuns.h"
@@ -39,6 +41,9 @@ void usage(std::ostream& os) {
         "options:\n"
         "  -o DIR          write the outputs in DIR (default: the current directory)\n"
         "  -q, --quiet     no progress line and no summary\n"
+        "  --set NAME=VALUE  give the parameter NAME this value in place of the one the\n"
+        "                  deck's PARAmeter records assign (repeatable; a name no record\n"
+        "                  assigns is a usage error, a swept or drawn name a deck error)\n"
         "  -j N            (run) decks run at the same time (default 1)\n"
         "  --timeout S     (run) stop a deck that runs longer than S seconds (SIGTERM,\n"
         "                  then SIGKILL 5 s later); the table says \"timed out\"\n"
@@ -73,6 +78,19 @@ int deckOption(int argc, char** argv, int& i, c2d::DeckOptions& options) {
     options.outDir = argv[++i];
   } else if (a == "-q" || a == "--quiet") {
     options.quiet = true;
+  } else if (a == "--set" && i + 1 < argc) {
+    const std::string nv = argv[++i];
+    const std::size_t eq = nv.find('=');
+    const std::string name = nv.substr(0, eq);
+    char* end = nullptr;
+    const double value = eq == std::string::npos ? 0.0 : std::strtod(nv.c_str() + eq + 1, &end);
+    if (eq == std::string::npos || !c2d::Parameters::validName(name) || end == nv.c_str() + eq + 1 ||
+        *end != '\0' || !std::isfinite(value)) {
+      std::cerr << "collapse2d: --set needs NAME=VALUE (a parameter name and a finite number), not '"
+                << nv << "'\n";
+      return -1;
+    }
+    options.params[name] = value;
   } else if (a == "--solver" && i + 1 < argc) {
     options.solver = argv[++i];
     if (!c2d::makeLinearSolver(options.solver)) {

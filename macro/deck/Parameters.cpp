@@ -29,7 +29,36 @@ void Parameters::assign(std::string_view name, double value, const Field& at) {
                         ": a PARAmeter record may not set it again (every run would take this "
                         "value while the tables, file names and log show the study's)",
                     at.excerpt(), "give this value another name");
+  if (overrides_) {
+    const std::string key = toLower(name);
+    if (const auto it = overrides_->values.find(key); it != overrides_->values.end()) {
+      overrides_->assigned[key] = true;
+      value = it->second;
+    }
+  }
   set(name, value, at.loc);
+}
+
+void Parameters::setOverrides(const std::map<std::string, double>& values) {
+  overrides_.reset();
+  if (values.empty()) return;
+  overrides_ = std::make_shared<Overrides>();
+  for (const auto& [name, v] : values) {
+    overrides_->values[toLower(name)] = v;
+    overrides_->assigned[toLower(name)] = false;
+  }
+}
+
+bool Parameters::overridden(std::string_view name) const {
+  return overrides_ && overrides_->values.count(toLower(name)) != 0;
+}
+
+std::vector<std::string> Parameters::overridesUnused() const {
+  std::vector<std::string> out;
+  if (overrides_)
+    for (const auto& [name, used] : overrides_->assigned)
+      if (!used) out.push_back(name);
+  return out;
 }
 
 void Parameters::protect(std::string_view name, std::string by) {

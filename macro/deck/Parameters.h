@@ -4,6 +4,7 @@
 // Each name keeps where it was last set (the record of its assignment or
 // sweep), so that an error about a value a parameter gave can say where.
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -35,6 +36,15 @@ class Parameters {
   std::optional<double> find(std::string_view name) const;
   // Where a defined name was last set; nullopt when unknown or not defined.
   std::optional<SourceLoc> origin(std::string_view name) const;
+  // Values given from outside the deck (--set NAME=VALUE, collapse2d.run's
+  // params), keys in lower case: an assignment of such a name by a deck record
+  // (assign) takes the given value instead of its own, so that everything the
+  // deck computes from it follows. Copies of this table share the record of
+  // which names a record assigned (overridesUnused).
+  void setOverrides(const std::map<std::string, double>& values);
+  bool overridden(std::string_view name) const;
+  // The given names no deck record assigned so far (lower case, sorted).
+  std::vector<std::string> overridesUnused() const;
   // Defined names (lower case, sorted), e.g. for "did you mean" hints.
   std::vector<std::string> names() const;
   std::size_t size() const { return values_.size(); }
@@ -50,6 +60,11 @@ class Parameters {
   std::map<std::string, double> values_;      // keys in lower case
   std::map<std::string, SourceLoc> origins_;  // of the names set with a location
   std::map<std::string, std::string> protected_;  // keys in lower case
+  struct Overrides {
+    std::map<std::string, double> values;  // keys in lower case
+    std::map<std::string, bool> assigned;   // by a deck record
+  };
+  std::shared_ptr<Overrides> overrides_;  // shared by the copies of the table
 };
 
 }  // namespace c2d

@@ -2,6 +2,7 @@
 
 #include <csignal>
 #include <cstring>
+#include <memory>
 
 namespace c2d {
 
@@ -23,6 +24,22 @@ void installInterruptHandlers() {
   sa.sa_flags = SA_RESETHAND;
   sigaction(SIGINT, &sa, nullptr);
   sigaction(SIGTERM, &sa, nullptr);
+}
+
+struct ScopedInterruptHandlers::Saved {
+  struct sigaction interrupt, terminate;
+};
+
+ScopedInterruptHandlers::ScopedInterruptHandlers() : saved_(std::make_unique<Saved>()) {
+  sigaction(SIGINT, nullptr, &saved_->interrupt);
+  sigaction(SIGTERM, nullptr, &saved_->terminate);
+  received = 0;
+  installInterruptHandlers();
+}
+
+ScopedInterruptHandlers::~ScopedInterruptHandlers() {
+  sigaction(SIGINT, &saved_->interrupt, nullptr);
+  sigaction(SIGTERM, &saved_->terminate, nullptr);
 }
 
 int pendingInterrupt() { return received; }

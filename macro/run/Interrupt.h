@@ -7,6 +7,7 @@
 //
 // The flag the handler sets is the one piece of global state of the program: a
 // signal handler can reach nothing else.
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -14,6 +15,20 @@ namespace c2d {
 
 // Installs the handlers of SIGINT and SIGTERM (main, and each child of a batch).
 void installInterruptHandlers();
+// The same handlers for the time of one scope, the ones before restored when it
+// ends (a host program with handlers of its own: the Python module), with any
+// signal received before it forgotten. Not for two scopes at once.
+class ScopedInterruptHandlers {
+ public:
+  ScopedInterruptHandlers();
+  ~ScopedInterruptHandlers();
+  ScopedInterruptHandlers(const ScopedInterruptHandlers&) = delete;
+  ScopedInterruptHandlers& operator=(const ScopedInterruptHandlers&) = delete;
+
+ private:
+  struct Saved;
+  std::unique_ptr<Saved> saved_;  // the sigaction records stay out of this header
+};
 // The signal received and not yet acted on, 0 when none.
 int pendingInterrupt();
 // Forget a received signal (tests).

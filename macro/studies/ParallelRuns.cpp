@@ -71,7 +71,7 @@ int runDeckInParallel(const std::string& deck, const BatchOptions& options,
                       const SolutionCommands& commands, std::ostream& out, std::ostream& err) {
   DeckPlan plan;
   try {
-    plan = planDeck(deck, commands);
+    plan = planDeck(deck, commands, options.deck.params);
   } catch (const DeckError& e) {
     err << e.what() << "\n";
     return kExitDeckError;
