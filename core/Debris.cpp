@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/Brace.h"
 #include "core/FloorLoad.h"
 #include "core/contact/GroundContact.h"
 #include "core/contact/MemberContact.h"
@@ -68,6 +69,11 @@ std::vector<MassPiece> massPieces(const Model& model, const State& state) {
     if (m <= 0) continue;
     const auto n = model.element(e).nodes();
     const double a = position(model, state, n[0]).x(), b = position(model, state, n[1]).x();
+    if (isBrace(model.element(e))) {  // a wall's mass lies at the frame's nodes
+      pieces.push_back({a, a, 0.5 * m});
+      pieces.push_back({b, b, 0.5 * m});
+      continue;
+    }
     pieces.push_back({std::min(a, b), std::max(a, b), m});
   }
   const std::vector<char> held = model.heldNodes();
@@ -92,13 +98,22 @@ std::vector<double> pieceMassAtNodes(const Model& model) {
     if (a >= 0 && b >= 0 && a < nn && b < nn) parent[root(a)] = root(b);
   };
   for (int e = 0; e < model.numElements(); ++e)
-    if (model.hasElement(e)) join(model.element(e).nodes()[0], model.element(e).nodes()[1]);
+    if (model.hasElement(e) && !isBrace(model.element(e)))  // a strut joins no pieces
+      join(model.element(e).nodes()[0], model.element(e).nodes()[1]);
   for (const Joint& j : model.joints()) join(j.master, j.slave);
   std::vector<double> mass(static_cast<std::size_t>(nn), 0.0);
   const std::vector<double> carried = carriedMass(model);
   for (int e = 0; e < model.numElements(); ++e)
-    if (model.hasElement(e))
-      mass[root(model.element(e).nodes()[0])] += std::max(0.0, elementMass(model, e, carried));
+    if (model.hasElement(e)) {
+      const auto n = model.element(e).nodes();
+      const double m = std::max(0.0, elementMass(model, e, carried));
+      if (isBrace(model.element(e))) {
+        mass[root(n[0])] += 0.5 * m;
+        mass[root(n[1])] += 0.5 * m;
+      } else {
+        mass[root(n[0])] += m;
+      }
+    }
   const std::vector<char> held = model.heldNodes();
   for (int n = 0; n < nn; ++n)
     if (held[n] && model.hasCoord(n)) mass[root(n)] += nodalPointMass(model, n);

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "core/Brace.h"
 #include "core/Hinge.h"
 #include "elements/InelasticFrame.h"
 #include "elements/JointedElement.h"
@@ -95,7 +96,7 @@ std::vector<CreatedJoint> convert(
   std::vector<ElemVec> endForces(ne, ElemVec::Zero());
   std::map<int, Relative> slaves;  // slave node -> its joint's master and relative state
   for (int e = 0; e < ne; ++e) {
-    if (!model.hasElement(e)) continue;
+    if (!model.hasElement(e) || isBrace(model.element(e))) continue;  // struts stay as they are
     Element& el = model.element(e);
     const auto* carrier = dynamic_cast<const HingeCarrier*>(&innermost(el));
     joint[e] = carrier && wantsJoint(el, carrier->hinge());

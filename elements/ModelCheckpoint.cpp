@@ -6,6 +6,7 @@
 
 #include "core/output/Checkpoint.h"
 #include "elements/InelasticFrame.h"
+#include "elements/InfillStrut.h"
 #include "elements/JointedElement.h"
 #include "elements/LinearFrame.h"
 #include "elements/ReissnerFrame.h"
@@ -17,10 +18,12 @@ namespace {
 
 using namespace checkpoint;
 
-enum class ElementKind : std::uint8_t { Linear = 1, Reissner = 2, Inelastic = 3, Jointed = 4 };
+// Strut: an infill strut, whose construction data are its state (no material set).
+enum class ElementKind : std::uint8_t { Linear = 1, Reissner = 2, Inelastic = 3, Jointed = 4, Strut = 5 };
 
 ElementKind kindOf(const Element& e) {
   if (dynamic_cast<const JointedElement*>(&e)) return ElementKind::Jointed;
+  if (dynamic_cast<const InfillStrut*>(&e)) return ElementKind::Strut;
   if (dynamic_cast<const InelasticFrame*>(&e)) return ElementKind::Inelastic;
   if (dynamic_cast<const ReissnerFrame*>(&e)) return ElementKind::Reissner;
   if (dynamic_cast<const LinearFrame*>(&e)) return ElementKind::Linear;
@@ -47,6 +50,7 @@ std::unique_ptr<Element> build(ElementKind kind, const Model& model, int materia
       case ElementKind::Inelastic:
         return std::make_unique<InelasticFrame>(*mat, nodes, x1, x2);
       case ElementKind::Jointed:
+      case ElementKind::Strut:
         break;
     }
   } catch (const std::invalid_argument& e) {
@@ -77,7 +81,7 @@ void writeElement(std::ostream& out, const Element& element) {
 
 std::unique_ptr<Element> readElement(std::istream& in, const Model& model) {
   const auto kind = get<ElementKind>(in);
-  if (kind < ElementKind::Linear || kind > ElementKind::Jointed)
+  if (kind < ElementKind::Linear || kind > ElementKind::Strut)
     throw CheckpointError("unknown element kind " + std::to_string(static_cast<int>(kind)));
   const int material = get<int>(in);
   std::array<int, 2> nodes{};
@@ -90,6 +94,8 @@ std::unique_ptr<Element> readElement(std::istream& in, const Model& model) {
     if (master < 0 || master >= model.numNodes())
       throw CheckpointError("joint master out of range");
     el = std::make_unique<JointedElement>(readElement(in, model), slaveEnd, master);
+  } else if (kind == ElementKind::Strut) {
+    el = std::make_unique<InfillStrut>();
   } else {
     el = build(kind, model, material, nodes);
   }

@@ -300,6 +300,7 @@ Status Analysis::commitEvaluated() {
   syncRates();
   for (auto& el : model_.elements())
     if (el) el->commit();
+  infill_.afterCommit(model_, state_.t);
   hinges_.committed();
   account_.released(assembler_.commitContact(state_));
   if (path_) {

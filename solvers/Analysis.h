@@ -21,6 +21,7 @@
 #include "solvers/ConvergenceTest.h"
 #include "solvers/EnergyAccount.h"
 #include "solvers/HingeEvents.h"
+#include "solvers/InfillEvents.h"
 #include "solvers/ImpactSteps.h"
 #include "solvers/linear/LinearSolver.h"
 #include "solvers/MemberRemoval.h"
@@ -126,6 +127,9 @@ class Analysis {
   std::function<void()> onCommit;
   // Joints formed and ruptured during the run (after a commit; set onEvent to hear of them).
   TopologyEvents& topologyEvents() { return topology_; }
+
+  // Infill panels crushed during the run (after a commit; set onEvent to hear of them).
+  InfillEvents& infillEvents() { return infill_; }
 
   // The step control through impacts (on by default in dynamics).
   ImpactSteps& impactSteps() { return impacts_; }
@@ -244,6 +248,7 @@ class Analysis {
   HingeEvents hinges_;
   TopologyEvents topology_;
   MemberRemoval removal_;
+  InfillEvents infill_;
   ImpactSteps impacts_;
   double stepEnd_ = 0;  // end of the step TIME began (sub-steps end on landing times before it)
   bool predicted_ = false;      // the current step started from the prediction

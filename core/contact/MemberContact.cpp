@@ -5,6 +5,7 @@
 #include <cstring>
 #include <numeric>
 
+#include "core/Brace.h"
 #include "core/contact/ContactDamper.h"
 #include "core/contact/CrushingLaw.h"
 #include "core/NodeMass.h"
@@ -114,7 +115,7 @@ MemberContact::MemberContact(const Model& model, const DofMap& dofs)
     : data_(*model.memberContact()) {
   const int nn = model.numNodes();
   for (int e = 0; e < model.numElements(); ++e)
-    if (model.hasElement(e)) live_.push_back(e);
+    if (model.hasElement(e) && !isBrace(model.element(e))) live_.push_back(e);  // struts strike nothing
   const int ne = static_cast<int>(live_.size());
   group_ = jointGroups(model);
   masses_ = translationalMasses(model);

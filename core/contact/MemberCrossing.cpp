@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 
+#include "core/Brace.h"
 #include "core/contact/ContactGrid.h"
 #include "core/contact/MemberContact.h"
 
@@ -46,7 +47,7 @@ void nearEnd(const std::array<int, 2>& n, const Vec2& a, const Vec2& b, double t
 std::vector<MemberCrossing> findCrossings(const Model& model, const State& s) {
   std::vector<int> live;
   for (int e = 0; e < model.numElements(); ++e)
-    if (model.hasElement(e)) live.push_back(e);
+    if (model.hasElement(e) && !isBrace(model.element(e))) live.push_back(e);
   const int ne = static_cast<int>(live.size());
   const std::vector<int> group = jointGroups(model);
   auto at = [&](int n) { return nodePosition(model, s.u, n); };

@@ -22,13 +22,7 @@ void applyBlasts(MeshContext& ctx, const MeshCommand& cmd) {
     ctx.maxFields(r, 5, syntax);
     const double t = ctx.number(r, 0);
     if (!std::isfinite(t) || t < 0) failAt(r, 0, "the blast time must be zero or positive");
-    const int n1 = ctx.elementNumber(r, 1);
-    int n2 = ctx.integer(r, 2, "last element");
-    int inc = ctx.integer(r, 3, "element increment");
-    if (n2 == 0) n2 = n1;
-    if (inc == 0) inc = 1;
-    if (n2 < n1) failAt(r, 2, "the last element " + std::to_string(n2) + " comes before the first");
-    if (inc < 0) failAt(r, 3, "the element increment must be positive");
+    const auto [n1, n2, inc] = ctx.elementRange(r, 1, false);
     const double td = ctx.number(r, 4);
     if (!std::isfinite(td) || td < 0)
       failAt(r, 4, "the release time td must be zero or positive",

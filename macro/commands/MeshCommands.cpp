@@ -31,7 +31,8 @@ void applyNoPrint(MeshContext& ctx, const MeshCommand&) { ctx.print = false; }
 std::vector<MeshCommandEntry> meshCommandTable() {
   std::vector<MeshCommandEntry> t;
   for (auto family : {geometryCommandTable, materialCommandTable, nodalCommandTable,
-                      contactCommandTable, loadCommandTable, blastCommandTable})
+                      contactCommandTable, loadCommandTable, blastCommandTable,
+                      infillCommandTable})
     for (auto& e : family()) t.push_back(std::move(e));
   t.push_back({meshSpec("PRINt", "Echo the mesh data in the log (default).", {}), applyPrint});
   t.push_back({meshSpec("NOPRint", "Stop echoing the mesh data in the log.", {}), applyNoPrint});
@@ -93,6 +94,8 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
     if ((x2 - x1).norm() == 0) failAt(r, 3, what + " has zero length");
     model.setElement(num - 1, makeElement(*mat, {pe.nodes[0] - 1, pe.nodes[1] - 1}, x1, x2));
   }
+
+  for (auto& f : ctx.afterElements) f(ctx);
 
   // MATErial given again: its existing elements (not rebuilt above) take the
   // new data with their state. A change of kinematics is refused at the record;
@@ -179,6 +182,7 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
   if (ctx.topologyChanged) model.bumpTopology();
   ctx.elements.clear();
   ctx.changedMaterials.clear();
+  ctx.afterElements.clear();
   ctx.deferred.clear();
   ctx.joints.clear();
   ctx.referencedNodes.clear();

@@ -75,6 +75,9 @@ struct MeshContext {
   };
   std::vector<PendingJoint> joints;
 
+  // Parts built on the members once the elements are (INFIll's struts), in
+  // deck order, before the deferred commands (which may name their elements).
+  std::vector<std::function<void(MeshContext&)>> afterElements;
   // Edge and coordinate commands, run in deck order once the mesh is complete.
   std::vector<std::function<void(MeshContext&)>> deferred;
   // Nodes given loads or boundary codes: they must get coordinates.
@@ -124,8 +127,17 @@ struct MeshContext {
   // Node n must exist (grows the model when counting): positive, within numnp
   // and within DeckLimits; field i of r locates the error.
   void ensureNode(long long n, const Record& r, std::size_t i);
-  int elementNumber(const Record& r, std::size_t i);
+  // withinNumel: refuse a number beyond numel (false: a number that may name a
+  // part numbered after the deck's elements, an INFIll strut; checked when the
+  // mesh is complete).
+  int elementNumber(const Record& r, std::size_t i, bool withinNumel = true);
   int materialNumber(const Record& r, std::size_t i);
+  // The stepped element range "n1 n2 inc" in fields i, i+1, i+2 (n2 empty:
+  // n1; inc empty: 1), checked (withinNumel: as elementNumber's).
+  struct ElementRange {
+    int n1 = 0, n2 = 0, inc = 1;
+  };
+  ElementRange elementRange(const Record& r, std::size_t i, bool withinNumel = true);
   // DeckError when the record has more than max fields.
   void maxFields(const Record& r, std::size_t max, std::string_view syntax) const;
 };
@@ -144,6 +156,7 @@ std::vector<MeshCommandEntry> geometryCommandTable();  // COORdinates ELEMents B
 std::vector<MeshCommandEntry> materialCommandTable();  // MATErial
 std::vector<MeshCommandEntry> nodalCommandTable();     // BOUNdary FORCe DISPlacement FPROportional E... C...
 std::vector<MeshCommandEntry> contactCommandTable();   // CONTact
+std::vector<MeshCommandEntry> infillCommandTable();    // INFIll
 void registerMeshCommands(CommandRegistry& registry);
 // Element types (FRAMe) and material sub-records (ELAStic, CROSs, ...).
 void registerMaterialSubRecords(CommandRegistry& registry);

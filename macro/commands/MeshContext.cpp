@@ -49,12 +49,12 @@ int MeshContext::node(const Record& r, std::size_t i, std::string_view what) {
   return n;
 }
 
-int MeshContext::elementNumber(const Record& r, std::size_t i) {
+int MeshContext::elementNumber(const Record& r, std::size_t i, bool withinNumel) {
   const int e = integer(r, i, "element number");
   if (e < 1)
     throw DeckError(r.fieldLoc(i), "element number must be positive, got " + std::to_string(e),
                     r.excerpt(r.fieldLoc(i)));
-  if (maxElements > 0 && e > maxElements)
+  if (withinNumel && maxElements > 0 && e > maxElements)
     throw DeckError(
         r.fieldLoc(i),
         "element " + std::to_string(e) + " is beyond numel = " + std::to_string(maxElements) +
@@ -76,6 +76,20 @@ int MeshContext::materialNumber(const Record& r, std::size_t i) {
                     r.excerpt(r.fieldLoc(i)), "raise nummat, or set it to 0 to have them counted");
   checkNumber(r, i, m, DeckLimits::kMaxMaterials, "material set");
   return m;
+}
+
+MeshContext::ElementRange MeshContext::elementRange(const Record& r, std::size_t i,
+                                                   bool withinNumel) {
+  ElementRange g;
+  g.n1 = elementNumber(r, i, withinNumel);
+  g.n2 = integer(r, i + 1, "last element");
+  g.inc = integer(r, i + 2, "element increment");
+  if (g.n2 == 0) g.n2 = g.n1;
+  if (g.inc == 0) g.inc = 1;
+  if (g.n2 < g.n1)
+    failAt(r, i + 1, "the last element " + std::to_string(g.n2) + " comes before the first");
+  if (g.inc < 0) failAt(r, i + 2, "the element increment must be positive");
+  return g;
 }
 
 void MeshContext::setCoordOrigin(int n, const Record& r) {

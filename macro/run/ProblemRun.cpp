@@ -120,6 +120,11 @@ void ProblemRun::run() {
       hingeStep_[ev.element] = analysis_->state().step;
     logTopologyEvent(log_, model_, analysis_->state().t, ev, topology_);
   };
+  analysis_->infillEvents().onEvent = [this](const InfillEvent& ev) {
+    log_ << "  infill panel " << ev.panel << " crushed at t = " << fmt("%.6e", ev.time)
+         << ": strut element " << ev.element + 1 << " gone, element " << ev.partner + 1
+         << " goes once unloaded; the panel no longer braces its bay\n";
+  };
   analysis_->removals().onEvent = [this](const RemovalEvent& ev) {
     removed_ += static_cast<int>(ev.elements.size());
     const RemovalLog line = removalLog(ev);
