@@ -32,7 +32,7 @@ std::vector<MeshCommandEntry> meshCommandTable() {
   std::vector<MeshCommandEntry> t;
   for (auto family : {geometryCommandTable, materialCommandTable, nodalCommandTable,
                       contactCommandTable, loadCommandTable, blastCommandTable,
-                      infillCommandTable})
+                      infillCommandTable, weakenCommandTable})
     for (auto& e : family()) t.push_back(std::move(e));
   t.push_back({meshSpec("PRINt", "Echo the mesh data in the log (default).", {}), applyPrint});
   t.push_back({meshSpec("NOPRint", "Stop echoing the mesh data in the log.", {}), applyNoPrint});
@@ -183,6 +183,7 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
   ctx.elements.clear();
   ctx.changedMaterials.clear();
   ctx.afterElements.clear();
+  ctx.weakened.clear();
   ctx.deferred.clear();
   ctx.joints.clear();
   ctx.referencedNodes.clear();

@@ -80,6 +80,8 @@ struct MeshContext {
   std::vector<std::function<void(MeshContext&)>> afterElements;
   // Edge and coordinate commands, run in deck order once the mesh is complete.
   std::vector<std::function<void(MeshContext&)>> deferred;
+  // Elements weakened (WEAKen; deck numbers) and the line of the record.
+  std::map<int, int> weakened;
   // Nodes given loads or boundary codes: they must get coordinates.
   std::map<int, Record> referencedNodes;
 
@@ -157,6 +159,7 @@ std::vector<MeshCommandEntry> materialCommandTable();  // MATErial
 std::vector<MeshCommandEntry> nodalCommandTable();     // BOUNdary FORCe DISPlacement FPROportional E... C...
 std::vector<MeshCommandEntry> contactCommandTable();   // CONTact
 std::vector<MeshCommandEntry> infillCommandTable();    // INFIll
+std::vector<MeshCommandEntry> weakenCommandTable();    // WEAKen
 void registerMeshCommands(CommandRegistry& registry);
 // Element types (FRAMe) and material sub-records (ELAStic, CROSs, ...).
 void registerMaterialSubRecords(CommandRegistry& registry);

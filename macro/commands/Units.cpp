@@ -208,6 +208,7 @@ const std::vector<Data>& data() {
       {S::Mesh, "mass", "node, ng [-]; m1, m2 [t]; m3 [t m^2]"},
       {S::Mesh, "blas", "t [s]; n1, n2, inc [-]; td [s]"},
       {S::Mesh, "infi", "n1 n2 n3 n4, ng, dn [-]"},
+      {S::Mesh, "weak", "factor, n1, n2, inc [-]"},
       {S::Mesh, "para", "the expression's (a parameter has the unit of the fields it is used in)"},
       {S::Mesh, "feap", "numnp numel nummat ndm ndf nen [-]"},
       {S::Mesh, "swee", "the values' (those of the fields the parameter is used in)"},

@@ -1,0 +1,145 @@
+// WEAKen: a weakened material set is the original scaled exactly (SECTion:
+// stiffnesses, moments at the scaled axial force, axial and shear capacities,
+// rotations kept, mass kept; hand-given laws likewise), a weakened cantilever's
+// curve is the original's times the factor, an infill strut keeps the share of
+// its law, and the records' errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "elements/InfillStrut.h"
+#include "materials/RcSection.h"
+#include "materials/WeakenedSet.h"
+#include "tests/unit/MeshBuildSupport.h"
+#include "tests/unit/RunDeckSupport.h"
+
+namespace c2d {
+namespace {
+
+const char* kSection =
+    "MATE,1 column\n FRAMe\n SECTion RECTangular 0.5 0.5 30e3 500e3 200e6\n"
+    " REBAr 0.05 1.2566e-3 0.45 1.2566e-3\n STIRrups 1e-4 0.15\n DENSity,,2.5\n\n";
+
+const char* kHand =
+    "MATE,1 beam\n FRAMe\n ELAStic ISOTropic 30e6 0.2\n CROSs SECTion 0.12 1.6e-3\n"
+    " DENSity,,2.5\n HARDening BILInear 40 60 1000 100\n SOFTening LINEar 70 -500 0.3 2\n"
+    " INTEraction CURVe -2000 90 0 70 500 20\n\n";
+
+std::string cantilever(const std::string& material) {
+  return "COOR\n 1 1 0 0\n 4 0 0 3\n\n" + material + "ELEM\n 1 1 1 1 2\n 3 1 1 3 4\n\n";
+}
+
+void expectRel(double got, double want, double rtol, const char* what) {
+  EXPECT_NEAR(got, want, rtol * std::max(std::abs(want), 1e-300)) << what;
+}
+
+TEST(WeakenedSet, SectionScalesStiffnessAndEveryCapacityExactly) {
+  const Model m = testing::buildMesh(cantilever(kSection));
+  const MaterialSet& a = *m.material(1);
+  const double f = 0.4;
+  const MaterialSet w = weakenedSet(a, f, 7);
+  EXPECT_EQ(w.number, 7);
+  expectRel(w.EA(), f * a.EA(), 1e-12, "EA");
+  expectRel(w.GA(), f * a.GA(), 1e-12, "GA");
+  expectRel(w.EI(), f * a.EI(), 1e-12, "EI");
+  expectRel(w.rhoA(), a.rhoA(), 1e-12, "mass per length");
+  ASSERT_TRUE(w.rc && a.rc);
+  expectRel(w.rc->squashLoad(), f * a.rc->squashLoad(), 1e-12, "squash load");
+  expectRel(w.rc->tensionYield(), f * a.rc->tensionYield(), 1e-12, "tension yield");
+  for (int sign : {1, -1}) {
+    expectRel(w.rc->shearCapacity(sign), f * a.rc->shearCapacity(sign), 1e-12, "Vu");
+    for (double N : {-3000.0, -500.0, 0.0, 200.0}) {
+      const MomentLaw lw = w.capacity->at(sign, f * N), la = a.capacity->at(sign, N);
+      expectRel(lw.Mc, f * la.Mc, 1e-9, "Mc");
+      expectRel(lw.My, f * la.My, 1e-9, "My");
+      expectRel(lw.Mu, f * la.Mu, 1e-9, "Mu");
+      expectRel(lw.Kh1, f * la.Kh1, 1e-9, "Kh1");
+      expectRel(lw.Kh2, f * la.Kh2, 1e-9, "Kh2");
+      expectRel(lw.xiF, la.xiF, 1e-9, "failure jump");
+    }
+  }
+  expectRel(*w.softening->thetaR, *a.softening->thetaR, 1e-12, "rupture rotation");
+  expectRel(w.softening->pieceLength, a.softening->pieceLength, 1e-12, "shortest piece");
+  EXPECT_THROW(weakenedSet(a, 0, 8), std::invalid_argument);
+  EXPECT_THROW(weakenedSet(a, 1.2, 8), std::invalid_argument);
+}
+
+TEST(WeakenedSet, HandGivenLawsScaleExactly) {
+  const Model m = testing::buildMesh(cantilever(kHand));
+  const MaterialSet& a = *m.material(1);
+  const double f = 0.25;
+  const MaterialSet w = weakenedSet(a, f, 2);
+  expectRel(w.EA(), f * a.EA(), 1e-14, "EA");
+  expectRel(w.GA(), f * a.GA(), 1e-14, "GA");
+  expectRel(w.EI(), f * a.EI(), 1e-14, "EI");
+  expectRel(w.rhoA(), a.rhoA(), 1e-14, "mass");
+  expectRel(w.hardening->My, f * a.hardening->My, 1e-14, "My");
+  expectRel(w.softening->Mu, f * a.softening->Mu, 1e-14, "Mu");
+  expectRel(w.softening->Ks, f * a.softening->Ks, 1e-14, "Ks");
+  expectRel(w.softening->Mr, f * a.softening->Mr, 1e-14, "Mr");
+  expectRel(*w.softening->thetaR, *a.softening->thetaR, 1e-14, "thetaR");
+  for (double N : {-1500.0, 0.0, 300.0})
+    expectRel(w.capacity->at(1, f * N).Mu, f * a.capacity->at(1, N).Mu, 1e-12, "Mu(N)");
+}
+
+// A cantilever pushed at its tip past its base hinge's peak, with and without
+// WEAKen 0.5: the base moment of the weakened one is half the other's at
+// every step (elastic, hardening, the hinge and its softening).
+TEST(WeakenDeck, WeakenedCantileverCurveIsTheOriginalsTimesTheFactor) {
+  auto deck = [](const std::string& weaken) {
+    return std::string("FEAP * * cantilever\n 0 0 0 2 3 2\n") + cantilever(kSection) + weaken +
+           "BOUN\n 1 0 1 1 1\n 4 0 1 0 0\n\nDISP\n 4 0 1 0 0\n\nEND\nBATCh\n PROP,,1\n TPLOt\n"
+           " DT,,0.001\n LOOP,,60\n TIME\n LOOP,,30\n TANG,,1\n NEXT\n NEXT\nEND\n\n"
+           "reac,1,3\n\nSTOP\n";
+  };
+  testing::DeckTempDir d1, d2;
+  const auto a = testing::runDeckText(d1, "a.inp", deck(""));
+  const auto b = testing::runDeckText(d2, "b.inp", deck("WEAKen\n 0.5 1 3\n\n"));
+  ASSERT_EQ(a.outcome.exitCode, 0) << a.outcome.message;
+  ASSERT_EQ(b.outcome.exitCode, 0) << b.outcome.message;
+  const auto ma = testing::readCsv(a.out / "a_tplot.csv").column("reac_1_3");
+  const auto mb = testing::readCsv(b.out / "b_tplot.csv").column("reac_1_3");
+  ASSERT_EQ(ma.size(), mb.size());
+  ASSERT_GT(ma.size(), 50u);
+  double peak = 0;
+  for (std::size_t i = 0; i < ma.size(); ++i) {
+    peak = std::max(peak, std::abs(ma[i]));
+    EXPECT_NEAR(mb[i], 0.5 * ma[i], 1e-6 * std::abs(ma[i]) + 1e-9) << "step " << i;
+  }
+  EXPECT_GT(peak, 0.95 * 269.128);  // past Mu(0) of the section (decks/rc/column_capacity.inp)
+  EXPECT_NE(b.log.find("set 1 -> set 2"), std::string::npos);
+}
+
+TEST(WeakenCommand, InfillStrutKeepsTheShareOfItsLaw) {
+  const std::string frame =
+      "COOR\n 1 0 0 0\n 2 0 5 0\n 3 0 5 3\n 4 0 0 3\n\n"
+      "ELEM\n 1 1 1 1 4\n 2 1 1 2 3\n 3 1 2 4 3\n\n"
+      "MATE,1\n FRAMe\n ELAStic ISOTropic 30e6 0.2\n CROSs SECTion 0.16 2.133333333333e-3\n\n"
+      "MATE,2\n FRAMe\n ELAStic ISOTropic 30e6 0.2\n CROSs SECTion 0.15 3.125e-3\n\n"
+      "INFIll,,0.2,4000\n 1 2 3 4\n\n";
+  const Model a = testing::buildMesh(frame);
+  const Model b = testing::buildMesh(frame + "WEAKen\n 0.3 5\n\n");
+  const auto& sa = dynamic_cast<const InfillStrut&>(a.element(4));
+  const auto& sb = dynamic_cast<const InfillStrut&>(b.element(4));
+  EXPECT_NEAR(sb.data().law.stiffness(), 0.3 * sa.data().law.stiffness(), 1e-9);
+  EXPECT_NEAR(sb.data().law.strength(), 0.3 * sa.data().law.strength(), 1e-12);
+  // The panel's other strut (element 4) keeps its law.
+  EXPECT_EQ(dynamic_cast<const InfillStrut&>(b.element(3)).data().law.strength(),
+            dynamic_cast<const InfillStrut&>(a.element(3)).data().law.strength());
+}
+
+TEST(WeakenCommand, Errors) {
+  const std::string c = cantilever(kHand);
+  const int l = 20;  // the first record after the cantilever's mesh
+  testing::expectMeshError(c + "WEAKen\n 0 1\n\n", l + 1, 2, "share kept must lie in (0, 1]");
+  testing::expectMeshError(c + "WEAKen\n 1.5 1\n\n", l + 1, 2, "share kept must lie in (0, 1]");
+  testing::expectMeshError(c + "WEAKen\n 0.5 4\n\n", l + 1, 6, "element 4 is not defined");
+  testing::expectMeshError(c + "WEAKen\n 0.5 1 5\n\n", l + 1, 8, "element 4 is not defined");
+  testing::expectMeshError(c + "WEAKen\n 0.5 1 3\n 0.7 2\n\n", l + 2, 6, "already weakened");
+  testing::expectMeshError(c + "WEAKen\n 0.5 3 1\n\n", l + 1, 8, "comes before the first");
+  testing::expectMeshError(c + "WEAKen\n\n", l, 1, "needs data records");
+  testing::expectMeshError(c + "WEAKen\n 0.5 1 2 1 9\n\n", l + 1, 12, "too many fields");
+}
+
+}  // namespace
+}  // namespace c2d
