@@ -29,6 +29,7 @@ namespace {
 // What the check pass learns about each run, to name it before anything runs.
 struct RunInfo {
   SweepValues sweep;                     // empty outside a SWEEp
+  std::string planName;                  // the SWEEp's PLAN name of its value set, if any
   std::map<std::string, double> params;  // the parameter table as the problem starts
   int plan = 0;                          // an ensemble's plan (1-based), 0 outside one
   int sample = 0, samples = 0;           // its sample 1..samples, 0 outside an ensemble
@@ -40,7 +41,14 @@ struct RunPlan {
   std::string stem, label;
   int plan = 0, sample = 0;
   DrawnValues drawn;
+  std::string planName;  // the SWEEp's PLAN name, if any
 };
+
+// A named plan's tag and label is its name; else its swept values.
+std::string planTag(const RunInfo& r) { return r.planName.empty() ? sweepTag(r.sweep) : r.planName; }
+std::string planLabel(const SweepValues& sweep, const std::string& name) {
+  return name.empty() ? sweepLabel(sweep) : name;
+}
 
 // "_s07" for sample 7 of 20 (as many digits as the count).
 std::string sampleTag(int sample, int samples) {
@@ -72,19 +80,20 @@ std::vector<RunPlan> planRuns(const std::vector<RunInfo>& runs, const std::strin
   for (std::size_t k = 0; k < n; ++k) {
     const RunInfo& r = runs[k];
     const std::string sample = r.sample > 0 ? sampleTag(r.sample, r.samples) : std::string();
-    plans[k].stem = fitFileStem(!r.sweep.empty()       ? stem + "_" + sweepTag(r.sweep) + sample
+    plans[k].stem = fitFileStem(!r.sweep.empty()       ? stem + "_" + planTag(r) + sample
                                 : r.sample > 0         ? stem + sample
                                 : n > 1                ? stem + "_" + std::to_string(k + 1)
                                                        : stem);
     plans[k].plan = r.plan;
     plans[k].sample = r.sample;
     plans[k].drawn = r.drawn;
+    plans[k].planName = r.planName;
     ++uses[plans[k].stem];
   }
   for (std::size_t k = 0; k < n; ++k)
     if ((!runs[k].sweep.empty() || runs[k].sample > 0) && uses[plans[k].stem] > 1)
       plans[k].stem = fitFileStem(stem + "_" + std::to_string(k + 1) +
-                                  (runs[k].sweep.empty() ? "" : "_" + sweepTag(runs[k].sweep)) +
+                                  (runs[k].sweep.empty() ? "" : "_" + planTag(runs[k])) +
                                   (runs[k].sample > 0 ? sampleTag(runs[k].sample, runs[k].samples) : ""));
 
   std::set<std::string> names;
@@ -106,7 +115,7 @@ std::vector<RunPlan> planRuns(const std::vector<RunInfo>& runs, const std::strin
   }
   for (std::size_t k = 0; k < n; ++k) {
     plans[k].label =
-        !runs[k].sweep.empty() ? sweepLabel(runs[k].sweep)
+        !runs[k].sweep.empty() ? planLabel(runs[k].sweep, runs[k].planName)
         : runs[k].sample > 0   ? std::string()
                                : paramLabel(differing, runs[k]);
     if (runs[k].sample > 0)
@@ -327,9 +336,12 @@ class Walker {
         // The swept names may not be set again by the deck (Parameters::protect).
         for (const SweepVariable& v : sweep->variables) refuseOverride(params, v.name, v.record, "swept");
         const std::vector<SweepValues> sets = sweepRuns(*sweep, params);
+        const std::vector<std::string> names = sweepPlanNames(*sweep);
         const std::string by = "swept by the SWEEp of line " + std::to_string(sweep->head.loc.line);
-        for (const SweepValues& set : sets) {
+        for (std::size_t k = 0; k < sets.size(); ++k) {
+          const SweepValues& set = sets[k];
           sweep_ = set;
+          planName_ = k < names.size() ? names[k] : std::string();
           for (const auto& [name, x] : sweep_) {
             params.set(name, x);
             params.protect(name, by);
@@ -338,6 +350,7 @@ class Walker {
         }
         for (const SweepVariable& v : sweep->variables) params.unprotect(v.name);
         sweep_.clear();
+        planName_.clear();
       } else if (const auto* e = std::get_if<TopEnsemble>(&item)) {
         walkEnsemble(*e, params);
       } else {
@@ -413,7 +426,7 @@ class Walker {
     ro.solver = options_.solver;
     ro.sample = sample_;
     if (!execute_) {
-      RunInfo info{sweep_, {}, sample_ ? plan_ : 0, sample_ ? sample_->sample : 0, samples_, {}};
+      RunInfo info{sweep_, planName_, {}, sample_ ? plan_ : 0, sample_ ? sample_->sample : 0, samples_, {}};
       for (const std::string& n : params.names()) info.params[n] = params.get(n);
       ro.warnings = warnings_;
       ProblemRun run(p, params, commands_, ro, log_);
@@ -434,7 +447,7 @@ class Walker {
     // A count that depends on what ran (PARA inside a BATCh loop) may give more
     // runs than the check pass planned: they are numbered on.
     if (static_cast<std::size_t>(runs_) > plans_.size())
-      plans_.push_back({stem_ + "_" + std::to_string(runs_), "run " + std::to_string(runs_), 0, 0, {}});
+      plans_.push_back({stem_ + "_" + std::to_string(runs_), "run " + std::to_string(runs_), 0, 0, {}, {}});
     // A shard runs every n-th run only (runs k with k mod n == i - 1, k from 0).
     if (options_.shards > 1 && (runs_ - 1) % options_.shards != options_.shard - 1) return;
     const RunPlan plan = plans_.at(static_cast<std::size_t>(runs_ - 1));
@@ -462,7 +475,7 @@ class Walker {
     // A run of a study (SWEEp, ENSEmble) that fails is reported and the study
     // goes on; elsewhere a failure ends the deck.
     const bool inStudy = (!sweep_.empty() && planTable_) || (sample_ && ensembleTable_);
-    PlanRow row{runs_, ro.stem, sweep_, true, {}, {}};
+    PlanRow row{runs_, ro.stem, sweep_, true, {}, {}, plan.planName};
     try {
       run.bind(true);
       try {
@@ -487,8 +500,8 @@ class Walker {
     row.debris = run.debris();
     if (planTable_ && !sample_) planTable_->add(row);
     if (ensembleTable_ && sample_)
-      ensembleTable_->add(
-          {runs_, plan.plan, plan.sample, ro.stem, sweep_, plan.drawn, row.ok, row.reason, row.debris});
+      ensembleTable_->add({runs_, plan.plan, plan.sample, ro.stem, sweep_, plan.drawn, row.ok, row.reason,
+                           row.debris, plan.planName});
     const RunSummary s = run.summary();
     total_.steps += s.steps;
     total_.iterations += s.iterations;
@@ -528,7 +541,7 @@ class Walker {
       for (const std::string& w : warnings) std::cerr << ro.stem << ": " << w << "\n" << std::flush;
     // An ensemble's plans are overlaid by their first sample.
     if (!brief)
-      overlay_.add(runs_, sample_ ? sweepLabel(sweep_) : plan.label, p.title,
+      overlay_.add(runs_, sample_ ? planLabel(sweep_, plan.planName) : plan.label, p.title,
                    run.outputs().curves(run.history()));
   }
 
@@ -542,6 +555,7 @@ class Walker {
   Warnings* warnings_;
   std::vector<RunInfo> infos_;
   SweepValues sweep_;
+  std::string planName_;  // the PLAN name of the sweep's value set walked
   const SampleDraws* sample_ = nullptr;  // the ensemble's sample being walked
   int samples_ = 0, plan_ = 0;           // its sample count; the ensemble plans walked
   std::optional<EnsembleTable> ensembleTable_;
@@ -658,10 +672,12 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     params.setOverrides(options.params);
     Walker runner(commands, runOptions, log->stream(), &out, plans, stem);
     const std::vector<std::string> swept = sweptNames(check.infos());
+    const bool named =
+        std::any_of(infos.begin(), infos.end(), [](const RunInfo& r) { return !r.planName.empty(); });
     if (ensemble)
-      runner.setEnsembleTable(EnsembleTable(swept, drawnNames(check.infos())));
+      runner.setEnsembleTable(EnsembleTable(swept, drawnNames(check.infos()), named));
     else if (!swept.empty())
-      runner.setPlanTable(PlanTable(swept));
+      runner.setPlanTable(PlanTable(swept, named));
     std::string studySummary;
     try {
       if (!plans.empty()) runner.walk(deck.items, params);

@@ -107,18 +107,33 @@ struct Rect {
 
 }  // namespace
 
+namespace {
+
+// The font size and squeeze (textLength, 0: none) that keep text within maxWidth.
+std::pair<double, double> fittedFont(std::string_view text, double fontSize, double maxWidth) {
+  const double natural = textWidth(text, fontSize);
+  if (maxWidth <= 0 || natural <= maxWidth) return {fontSize, 0.0};
+  const double font = std::max(0.6 * fontSize, fontSize * maxWidth / natural);
+  return {font, textWidth(text, font) > maxWidth * (1 + 1e-9) ? maxWidth : 0.0};
+}
+
+std::string fitAttributes(double font, double squeeze) {
+  std::string o = " font-size=\"" + px(font) + "\"";
+  if (squeeze > 0) o += " textLength=\"" + px(squeeze) + "\" lengthAdjust=\"spacingAndGlyphs\"";
+  return o;
+}
+
+}  // namespace
+
+std::string svgFittedText(std::string_view text, double cx, double y, double fontSize, double maxWidth,
+                          std::string_view attributes) {
+  const auto [font, squeeze] = fittedFont(text, fontSize, maxWidth);
+  return "<text " + std::string(attributes) + " x=\"" + px(cx) + "\" y=\"" + px(y) + "\"" +
+         fitAttributes(font, squeeze) + " text-anchor=\"middle\">" + xmlEscape(text) + "</text>\n";
+}
+
 std::string svgTitle(std::string_view title, double cx, double y, double fontSize, double maxWidth) {
-  const double natural = textWidth(title, fontSize);
-  double font = fontSize;
-  bool squeeze = false;
-  if (maxWidth > 0 && natural > maxWidth) {
-    font = std::max(0.6 * fontSize, fontSize * maxWidth / natural);
-    squeeze = textWidth(title, font) > maxWidth * (1 + 1e-9);
-  }
-  std::string o = "<text class=\"title\" x=\"" + px(cx) + "\" y=\"" + px(y) + "\" font-size=\"" + px(font) +
-                  "\" text-anchor=\"middle\"";
-  if (squeeze) o += " textLength=\"" + px(maxWidth) + "\" lengthAdjust=\"spacingAndGlyphs\"";
-  return o + ">" + xmlEscape(title) + "</text>\n";
+  return svgFittedText(title, cx, y, fontSize, maxWidth, "class=\"title\"");
 }
 
 std::string xmlEscape(std::string_view text) {
@@ -311,11 +326,15 @@ std::string SvgChart::svg() const {
   for (const Series& s : series_) anyName = anyName || !s.name.empty();
   const bool showLegend = legend_.value_or(anyName) && n > 0;
   const double legPad = 8, legRowH = 18, legSample = 32;
+  Layout f = layout(0);
+  // A legend entry is never wider than the plot leaves it: a longer one is set
+  // smaller, then squeezed (as a title is).
+  const double legTextMax = std::max(40.0, f.R - f.L - 16 - 2 * legPad - legSample - 7);
   double legTextW = 0;
   for (const Series& s : series_) legTextW = std::max(legTextW, textWidth(s.name, kFontLegend));
+  legTextW = std::min(legTextW, legTextMax);
   const double boxW = legPad + legSample + 7 + legTextW + legPad, boxH = 2 * 5 + n * legRowH;
 
-  Layout f = layout(0);
   Rect box{};
   if (showLegend) {
     const double inset = 8;
@@ -463,8 +482,10 @@ std::string SvgChart::svg() const {
         o << "<path stroke=\"" << xmlEscape(color) << "\" stroke-width=\"1.2\" fill=\"white\" d=\"" << m.str()
           << "\"/>\n";
       }
-      o << "<text x=\"" << px(x0 + legSample + 7) << "\" y=\"" << px(cy + 0.36 * kFontLegend) << "\">"
-        << xmlEscape(s.name) << "</text>\n";
+      const auto [font, squeeze] = fittedFont(s.name, kFontLegend, legTextW);
+      o << "<text x=\"" << px(x0 + legSample + 7) << "\" y=\"" << px(cy + 0.36 * kFontLegend) << "\""
+        << (font < kFontLegend ? fitAttributes(font, squeeze) : std::string()) << ">" << xmlEscape(s.name)
+        << "</text>\n";
     }
     o << "</g>\n";
   }

@@ -27,6 +27,10 @@ std::string xmlEscape(std::string_view text);
 // 60 % of fontSize) and, if it still does not fit, squeezed to maxWidth
 // (textLength), so that neither edge of the picture clips it.
 std::string svgTitle(std::string_view title, double cx, double y, double fontSize, double maxWidth);
+// The same for any centred line of text: attributes (class, fill) go into the
+// element as given.
+std::string svgFittedText(std::string_view text, double cx, double y, double fontSize, double maxWidth,
+                          std::string_view attributes);
 
 struct SeriesStyle {
   std::string color;     // any SVG color; empty: from the palette by series index

@@ -7,6 +7,7 @@
 
 #include "core/output/SvgNumber.h"
 #include "core/output/AtomicFile.h"
+#include "core/output/SvgChart.h"
 
 namespace c2d {
 
@@ -20,21 +21,6 @@ std::string shortNum(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", v);
   return buf;
-}
-
-std::string escape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '<')
-      o += "&lt;";
-    else if (c == '>')
-      o += "&gt;";
-    else if (c == '&')
-      o += "&amp;";
-    else
-      o += c;
-  }
-  return o;
 }
 
 Vec2 position(const Model& model, const State& s, int n) {
@@ -150,15 +136,14 @@ std::string debrisSvg(const Model& model, const State& state, const DebrisFigure
   o << "<text x=\"" << px(kWidth - kRight) << "\" y=\"" << px(histBottom + 32)
     << "\" text-anchor=\"end\">x [m]</text>\n";
   // Title and figures.
-  o << "<text class=\"title\" x=\"" << px(0.5 * kWidth) << "\" y=\"22\" font-size=\"15\" "
-    << "text-anchor=\"middle\">" << escape(title) << "</text>\n";
+  o << svgTitle(title, 0.5 * kWidth, 22, 15, kWidth - 20);
   std::string line = "beyond the footprint: left " + shortNum(d.left) + " m, right " +
                      shortNum(d.right) + " m; height " + shortNum(d.height) + " m";
   if (d.site)
     line += "; " + std::string(d.outside() ? "OUTSIDE the site, " : "inside the site, ") +
             shortNum(d.outsideMass) + " t outside";
-  o << "<text class=\"figures\" x=\"" << px(0.5 * kWidth) << "\" y=\"42\" text-anchor=\"middle\""
-    << (d.outside() ? " fill=\"#D62728\"" : "") << ">" << escape(line) << "</text>\n";
+  o << svgFittedText(line, 0.5 * kWidth, 42, 12, kWidth - 20,
+                     d.outside() ? "class=\"figures\" fill=\"#D62728\"" : "class=\"figures\"");
   o << "</svg>\n";
   return o.str();
 }

@@ -12,14 +12,31 @@ using namespace meshspec;
 
 namespace {
 
-// BLASt: t n1 n2 inc td. Elements are built when the mesh is complete, so the
-// records are checked and added then (in deck order).
+// The ON field of a BLASt record: 1 (absent or empty) the record blasts, 0 it
+// does not (a plan of a study without this blast). Any other value is an error,
+// so that a shifted field is not read as a switch.
+bool blastOn(const MeshContext& ctx, const Record& r) {
+  if (r.text(5).empty()) return true;
+  const double on = ctx.number(r, 5);
+  if (on != 0 && on != 1)
+    failAt(r, 5, "the ON field of a BLASt record is 1 (blast) or 0 (no blast), not " + r.text(5),
+           "a parameter that is 0 or 1 in each plan switches a blast of a study on or off");
+  return on == 1;
+}
+
+// BLASt: t n1 n2 inc td on. Elements are built when the mesh is complete, so the
+// records are checked and added then (in deck order). A record switched off is
+// echoed as such and checked no further: a plan may leave its numbers unset.
 void applyBlasts(MeshContext& ctx, const MeshCommand& cmd) {
-  const std::string syntax = "t n1 n2 inc td";
+  const std::string syntax = "t n1 n2 inc td on";
   if (cmd.data.empty())
     failAt(cmd.head, 0, "BLASt needs data records '" + syntax + "' up to a blank record");
   for (const Record& r : cmd.data) {
-    ctx.maxFields(r, 5, syntax);
+    ctx.maxFields(r, 6, syntax);
+    if (!blastOn(ctx, r)) {
+      if (auto* os = ctx.out()) *os << "      BLASt  off (ON = 0): " << r.lineText() << "\n";
+      continue;
+    }
     const double t = ctx.number(r, 0);
     if (!std::isfinite(t) || t < 0) failAt(r, 0, "the blast time must be zero or positive");
     const auto [n1, n2, inc] = ctx.elementRange(r, 1, false);
@@ -75,10 +92,16 @@ std::vector<MeshCommandEntry> blastCommandTable() {
            "One log line per blast (a blast the run never reaches is warned at its end); the "
            "energy they carried is booked as dissipated, the work of the released forces as "
            "external. Under arc length a blast happens at "
-           "the first step past its time. REMOve,ELEMents removes at the current time.",
-           {}, "t n1 n2 inc td",
+           "the first step past its time. REMOve,ELEMents removes at the current time. "
+           "The ON field switches a record off (0; 1 or empty: on): a study whose plans blast "
+           "different column lines gives each line a record and each plan its switches "
+           "(SWEEp), and a record switched off blasts nothing, is checked no further and is "
+           "not warned about; DETOnators draw for the records that are on, blast_1, blast_2, "
+           "... in their order.",
+           {}, "t n1 n2 inc td on",
            {expr("t", "blast time"), expr("n1", "first element"), expr("n2", "last element", "n1"),
-            expr("inc", "element step", "1"), expr("td", "release time of the forces", "0")}),
+            expr("inc", "element step", "1"), expr("td", "release time of the forces", "0"),
+            expr("on", "1: this record blasts, 0: it does not", "1")}),
        applyBlasts});
   return t;
 }

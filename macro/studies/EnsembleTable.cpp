@@ -36,7 +36,7 @@ int EnsembleTable::failed() const {
 }
 
 std::string EnsembleTable::header() const {
-  std::string h = "run,plan,sample,stem";
+  std::string h = named_ ? "run,plan,sample,stem,name" : "run,plan,sample,stem";
   for (const std::string& n : swept_) appendCell(h, csvCell(n));
   for (const std::string& n : drawn_) appendCell(h, csvCell(n));
   h += ",status,reason,";
@@ -54,6 +54,7 @@ std::string EnsembleTable::csv() const {
     appendCell(out, std::to_string(r.plan));
     appendCell(out, std::to_string(r.sample));
     appendCell(out, csvCell(r.stem));
+    if (named_) appendCell(out, csvCell(r.name));
     for (const std::string& n : swept_) {
       out += ',';
       for (const auto& [name, v] : r.sweep)
@@ -99,11 +100,15 @@ EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount) 
     throw std::runtime_error(
         "its header is not an ensemble table's (run,plan,sample,stem,...,status,reason,...,cover)");
   const auto firstDebris = static_cast<std::size_t>(status - head.begin()) + 2;
-  const std::size_t values = static_cast<std::size_t>(status - head.begin()) - 4;
+  // The plans' names, when the sweep names them, come after the stem.
+  data.named = head[4] == "name";
+  const std::size_t first = data.named ? 5 : 4;
+  const std::size_t values = static_cast<std::size_t>(status - head.begin()) - first;
   if (sweptCount > values)
     throw std::runtime_error("its header has fewer value columns than swept names");
-  data.swept.assign(head.begin() + 4, head.begin() + 4 + static_cast<long>(sweptCount));
-  data.drawn.assign(head.begin() + 4 + static_cast<long>(sweptCount), status);
+  data.swept.assign(head.begin() + static_cast<long>(first),
+                    head.begin() + static_cast<long>(first + sweptCount));
+  data.drawn.assign(head.begin() + static_cast<long>(first + sweptCount), status);
   const std::string debrisHeader = debrisCsvHeader();
   const std::vector<std::string> debrisNames = splitCsv(debrisHeader);
   if (head.size() != firstDebris + debrisNames.size() + 1 ||
@@ -134,11 +139,12 @@ EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount) 
     r.plan = static_cast<int>(*plan);
     r.sample = static_cast<int>(*sample);
     r.stem = c[3];
+    if (data.named) r.name = c[4];
     // A value a run does not have (a plan with fewer BLASt records) is empty: NaN.
-    for (std::size_t i = 4; i < 4 + values; ++i) {
+    for (std::size_t i = first; i < first + values; ++i) {
       const auto v = c[i].empty() ? std::optional<double>(NAN) : numberCell(c[i]);
       if (!v) bad(i, "'" + c[i] + "' is not a number");
-      (i < 4 + sweptCount ? r.swept : r.drawn).push_back(*v);
+      (i < first + sweptCount ? r.swept : r.drawn).push_back(*v);
     }
     const std::string& st = c[firstDebris - 2];
     if (st != "ok" && st != "failed")

@@ -1,7 +1,8 @@
 #pragma once
 // [ext] The table of an ensemble's runs, <stem>_ensemble.csv, one row per run:
-//   run,plan,sample,stem,<swept names...>,<drawn names...>,status,reason,
+//   run,plan,sample,stem,[name,]<swept names...>,<drawn names...>,status,reason,
 //   <debris columns (core/Debris.h)>,cover
+// (name: the plan's name, when the SWEEp names its plans: Sweep.h isPlanNames)
 // `run` counts every run of the deck from 1 (shards join on it), `plan` the
 // value sets of the sweep (1 without one), `sample` 1..n. The drawn values are
 // the named parameters, dt_factor (JITTer) and blast_1, blast_2, ... (the BLASt
@@ -34,12 +35,14 @@ struct EnsembleRow {
   bool ok = true;
   std::string reason;
   std::optional<DebrisFigures> debris;
+  std::string name;  // the plan's name (SWEEp's PLAN record), if any
 };
 
 class EnsembleTable {
  public:
-  EnsembleTable(std::vector<std::string> swept, std::vector<std::string> drawn)
-      : swept_(std::move(swept)), drawn_(std::move(drawn)) {}
+  // named: the plans have names (a `name` column).
+  EnsembleTable(std::vector<std::string> swept, std::vector<std::string> drawn, bool named = false)
+      : swept_(std::move(swept)), drawn_(std::move(drawn)), named_(named) {}
   void add(EnsembleRow row) { rows_.push_back(std::move(row)); }
   const std::vector<EnsembleRow>& rows() const { return rows_; }
   const std::vector<std::string>& swept() const { return swept_; }
@@ -51,6 +54,7 @@ class EnsembleTable {
 
  private:
   std::vector<std::string> swept_, drawn_;
+  bool named_ = false;
   std::vector<EnsembleRow> rows_;
 };
 
@@ -62,6 +66,7 @@ std::string exactNumber(double v);
 struct EnsembleRun {
   int run = 0, plan = 0, sample = 0;
   std::string stem;
+  std::string name;                  // the plan's name ("" when the plans have none)
   std::vector<double> swept, drawn;  // in the header's order
   bool ok = false;
   std::string reason;
@@ -77,6 +82,7 @@ struct EnsembleRun {
 
 struct EnsembleData {
   std::vector<std::string> swept, drawn;
+  bool named = false;             // the table has the plans' names (column `name`)
   std::vector<EnsembleRun> runs;  // in table order
   std::string header;
 };

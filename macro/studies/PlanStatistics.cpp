@@ -44,7 +44,10 @@ std::vector<PlanStats> planStatistics(const EnsembleData& data) {
     SweepValues values;
     for (std::size_t i = 0; i < data.swept.size() && i < s.swept.size(); ++i)
       values.emplace_back(data.swept[i], s.swept[i]);
-    s.label = values.empty() ? "plan " + std::to_string(plan) : sweepLabel(values);
+    s.name = runs.front()->name;
+    s.label = !s.name.empty()   ? s.name
+              : values.empty() ? "plan " + std::to_string(plan)
+                               : sweepLabel(values);
     s.samples = static_cast<int>(runs.size());
     std::vector<const EnsembleRun*> debris;
     for (const EnsembleRun* r : runs) {
@@ -81,7 +84,7 @@ std::vector<PlanStats> planStatistics(const EnsembleData& data) {
 }
 
 std::string plansCsv(const EnsembleData& data, const std::vector<PlanStats>& plans) {
-  std::string out = "plan";
+  std::string out = data.named ? "plan,name" : "plan";
   for (const std::string& n : data.swept) appendCell(out, csvCell(n));
   out += ",samples,failed";
   for (const std::string& f : kPlanFigures)
@@ -89,6 +92,7 @@ std::string plansCsv(const EnsembleData& data, const std::vector<PlanStats>& pla
   out += ",p_outside,p_outside_lo,p_outside_hi,p_moving\n";
   for (const PlanStats& s : plans) {
     out += std::to_string(s.plan);
+    if (data.named) appendCell(out, csvCell(s.name));
     for (double v : s.swept) appendCell(out, formatSweepValue(v));
     appendCell(out, std::to_string(s.samples));
     appendCell(out, std::to_string(s.failed));

@@ -24,7 +24,8 @@ extern const std::vector<std::string> kPlanFigures;
 struct PlanStats {
   int plan = 0;
   std::vector<double> swept;
-  std::string label;  // "delay = 0.5", or "plan 1" without a sweep
+  std::string name;   // the plan's name (SWEEp's PLAN record), "" without
+  std::string label;  // its name, else "delay = 0.5", or "plan 1" without a sweep
   int samples = 0, failed = 0, debrisRuns = 0;
   // Per figure of kPlanFigures: min, p10, median, p90, max (NaN without runs).
   std::vector<std::array<double, 5>> quantiles;

@@ -12,7 +12,7 @@ int PlanTable::failed() const {
 }
 
 std::string PlanTable::header() const {
-  std::string h = "run,stem";
+  std::string h = named_ ? "run,stem,name" : "run,stem";
   for (const std::string& n : names_) {
     h += ',';
     h += csvCell(n);
@@ -31,6 +31,7 @@ std::string PlanTable::csv() const {
     out += std::to_string(r.run);
     out += ',';
     out += csvCell(r.stem);
+    if (named_) appendCell(out, csvCell(r.name));
     for (const std::string& n : names_) {
       out += ",";
       for (const auto& [name, value] : r.sweep)

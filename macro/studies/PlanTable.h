@@ -1,7 +1,8 @@
 #pragma once
 // [ext] The table of a study of plans: a SWEEp over blast times, element
 // numbers or any other parameter, one row per plan (run) in <stem>_plans.csv:
-//   run,stem,<swept names...>,status,reason,<debris columns (core/Debris.h)>
+//   run,stem,[name,]<swept names...>,status,reason,<debris columns (core/Debris.h)>
+// (name: the plans' names, when the SWEEp names them: Sweep.h isPlanNames)
 // status is "ok" or "failed" (reason: the first line of the failure), the
 // debris columns are empty for a run without them. `run` counts every run of
 // the deck from 1, so that the parts of a study split with --shard join again
@@ -24,12 +25,15 @@ struct PlanRow {
   bool ok = true;
   std::string reason;  // why it failed
   std::optional<DebrisFigures> debris;
+  std::string name;  // the plan's name (SWEEp's PLAN record), if any
 };
 
 class PlanTable {
  public:
   // names: every swept name of the deck (columns), in order of first appearance.
-  explicit PlanTable(std::vector<std::string> names) : names_(std::move(names)) {}
+  // named: the plans have names (a `name` column).
+  explicit PlanTable(std::vector<std::string> names, bool named = false)
+      : names_(std::move(names)), named_(named) {}
 
   void add(PlanRow row) { rows_.push_back(std::move(row)); }
   const std::vector<PlanRow>& rows() const { return rows_; }
@@ -41,6 +45,7 @@ class PlanTable {
 
  private:
   std::vector<std::string> names_;
+  bool named_ = false;
   std::vector<PlanRow> rows_;
 };
 

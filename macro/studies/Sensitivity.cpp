@@ -16,6 +16,7 @@ namespace {
 // Per plan, per drawn value, per figure of kPlanFigures: rho.
 struct PlanCorrelations {
   int plan = 0;
+  std::string name;  // the plan's name, if any
   std::vector<double> swept;
   std::vector<std::vector<double>> rho;  // [input][figure]
   int runs = 0;
@@ -29,6 +30,7 @@ std::vector<PlanCorrelations> correlations(const EnsembleData& data) {
   for (const auto& [plan, runs] : byPlan) {
     PlanCorrelations c;
     c.plan = plan;
+    c.name = runs.front()->name;
     c.swept = runs.front()->swept;
     c.runs = static_cast<int>(runs.size());
     for (std::size_t i = 0; i < data.drawn.size(); ++i) {
@@ -61,7 +63,7 @@ std::string rhoCell(double v) {
 }  // namespace
 
 std::string sensitivityCsv(const EnsembleData& data) {
-  std::string out = "plan";
+  std::string out = data.named ? "plan,name" : "plan";
   for (const std::string& n : data.swept) appendCell(out, csvCell(n));
   out += ",input";
   for (const std::string& f : kPlanFigures) appendCell(out, f);
@@ -69,6 +71,7 @@ std::string sensitivityCsv(const EnsembleData& data) {
   for (const PlanCorrelations& c : correlations(data))
     for (std::size_t i = 0; i < data.drawn.size(); ++i) {
       out += std::to_string(c.plan);
+      if (data.named) appendCell(out, csvCell(c.name));
       for (double v : c.swept) appendCell(out, formatSweepValue(v));
       appendCell(out, csvCell(data.drawn[i]));
       for (double v : c.rho[i]) appendCell(out, rhoCell(v));
@@ -90,8 +93,8 @@ std::string sensitivityText(const EnsembleData& data) {
       continue;
     }
     std::snprintf(buf, sizeof buf,
-                  "    plan %d (%d runs; |rho| above %.2f stands out of the noise):\n", c.plan,
-                  c.runs, 2 / std::sqrt(static_cast<double>(c.runs)));
+                  "    plan %d%s%s (%d runs; |rho| above %.2f stands out of the noise):\n", c.plan,
+                  c.name.empty() ? "" : " ", c.name.c_str(), c.runs, 2 / std::sqrt(static_cast<double>(c.runs)));
     out += buf;
     std::vector<std::size_t> order(data.drawn.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;

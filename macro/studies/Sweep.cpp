@@ -1,11 +1,14 @@
 #include "macro/studies/Sweep.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 
 #include "macro/deck/Limits.h"
+#include "macro/deck/Parameters.h"
+#include "macro/deck/Record.h"
 
 namespace c2d {
 
@@ -124,10 +127,38 @@ std::vector<double> sweepValues(const SweepVariable& v, const Parameters& params
   return out;
 }
 
+bool isPlanNames(const SweepVariable& v) { return toLower(v.name) == "plan"; }
+
+std::vector<std::string> sweepPlanNames(const TopSweep& sweep) {
+  std::vector<std::string> names;
+  for (const SweepVariable& v : sweep.variables) {
+    if (!isPlanNames(v)) continue;
+    for (const SweepItem& item : v.items) {
+      const std::string name = item.value.text();
+      const SourceLoc& at = item.value.loc();
+      if (item.range() || !Parameters::validName(name))
+        throw DeckError(at, "'" + name + "' is no plan name: a letter, then letters, digits or '_'",
+                        v.record.excerpt(at), "PLAN = felling_left felling_right implosion");
+      for (const std::string& other : names)
+        if (toLower(other) == toLower(name))
+          throw DeckError(at, "plan name '" + name + "' is given twice", v.record.excerpt(at),
+                          "each plan of the sweep has a name of its own (file names, legends, tables)");
+      names.push_back(name);
+    }
+  }
+  if (!names.empty() && std::all_of(sweep.variables.begin(), sweep.variables.end(),
+                                    [](const SweepVariable& v) { return isPlanNames(v); }))
+    throw DeckError(sweep.head[0].loc, "a SWEEp of plan names alone: its plans would be the same",
+                    sweep.head.excerpt(sweep.head[0].loc),
+                    "sweep what makes the plans differ next to PLAN (on1 = 1 0, delay = 0.2 0.5)");
+  return names;
+}
+
 std::vector<SweepValues> sweepRuns(const TopSweep& sweep, const Parameters& params) {
   std::vector<std::vector<double>> values;
   for (const SweepVariable& v : sweep.variables) {
-    values.push_back(sweepValues(v, params));
+    // The plan names count as values (zipped), set no parameter.
+    values.push_back(isPlanNames(v) ? std::vector<double>(v.items.size(), 0.0) : sweepValues(v, params));
     if (values.back().size() != values.front().size()) {
       const SweepVariable& w = sweep.variables.front();
       throw DeckError(v.record[0].loc,
@@ -141,7 +172,7 @@ std::vector<SweepValues> sweepRuns(const TopSweep& sweep, const Parameters& para
   std::vector<SweepValues> runs(values.empty() ? 0 : values.front().size());
   for (std::size_t i = 0; i < runs.size(); ++i)
     for (std::size_t k = 0; k < values.size(); ++k)
-      runs[i].emplace_back(sweep.variables[k].name, values[k][i]);
+      if (!isPlanNames(sweep.variables[k])) runs[i].emplace_back(sweep.variables[k].name, values[k][i]);
   return runs;
 }
 
@@ -179,7 +210,14 @@ void registerDeckBlocks(CommandRegistry& registry) {
       "failed), and the study ends with <stem>_plans.csv, one row per run: run number, stem, "
       "swept values, status (ok/failed) and reason, the debris figures. collapse2d run "
       "--shard i/n runs the i-th of n interleaved parts; collapse2d merge checks and joins the "
-      "parts (tables and overlays); collapse2d run -j N runs the runs in N processes.";
+      "parts (tables and overlays); collapse2d run -j N runs the runs in N processes. "
+      "A record 'PLAN = name1 name2 ...' names the plans (zipped like a variable; a name is a "
+      "letter, then letters, digits or '_'; it sets no parameter): plan k's outputs are "
+      "<stem>_<name k>_..., and its legend entries, picture titles and the tables (a column "
+      "`name` after `stem` in <stem>_plans.csv and <stem>_ensemble.csv, after `plan` in an "
+      "ensemble's plans and sensitivity tables) say its name instead of its values. With "
+      "BLASt's ON field, plans that blast different column lines are one sweep: "
+      "'PLAN = left right', 'on1 = 1 0', 'on2 = 0 1'.";
   s.section = CommandSection::Mesh;
   s.data = DataForm::Records;
   s.dataSyntax = "name = v1 v2 ... (a value, or a range lo:step:hi); v3 v4 ... (continued)";

@@ -38,6 +38,16 @@ std::vector<double> sweepValues(const SweepVariable& v, const Parameters& params
 // a variable whose number of values differs from the first's.
 std::vector<SweepValues> sweepRuns(const TopSweep& sweep, const Parameters& params);
 
+// [ext] Named plans: the SWEEp record 'PLAN = name1 name2 ...' names the value
+// sets (zipped with the variables as one of them; a name is a letter, then
+// letters, digits or '_', the names distinct). It sets no parameter: plan k's
+// runs are <stem>_<name k> (then _s07 in an ensemble), and its legend entries,
+// picture titles, log lines and the tables' `name` column say name k.
+bool isPlanNames(const SweepVariable& v);
+// The sweep's plan names in value-set order, empty without a PLAN record;
+// DeckError at a name that is no name, a repeated one or a range.
+std::vector<std::string> sweepPlanNames(const TopSweep& sweep);
+
 // The declared spec of the SWEEp block, for --help (the top-level structure
 // words are parsed by DeckParser, not by a registry).
 void registerDeckBlocks(CommandRegistry& registry);

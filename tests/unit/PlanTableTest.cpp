@@ -26,13 +26,14 @@ TEST(PlanTable, RowsWithAndWithoutDebris) {
   d.xmin = 0;
   d.xmax = 12;
   d.outsideMass = 3;
-  t.add({1, "deck_tb=1", {{"tb", 1.0}}, true, "", d});
+  t.add({1, "deck_tb=1", {{"tb", 1.0}}, true, "", d, ""});
   t.add({3,
          "deck_tb=2_e=7",
          {{"tb", 2.0}, {"e", 7.0}},
          false,
          "deck.inp:9:3: error: Newton iteration \"diverged\", step 4",
-         std::nullopt});
+         std::nullopt,
+         ""});
   EXPECT_EQ(t.failed(), 1);
   const auto l = lines(t.csv());
   ASSERT_EQ(l.size(), 3u);
