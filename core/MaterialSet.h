@@ -37,7 +37,8 @@ struct SofteningData {
 };
 
 // SECTion RECTangular b h fc fy [Es [fu eu]] with REBAr d1 A1 [d2 A2 ...]: a
-// rectangular reinforced concrete section b x h (m), concrete strength fc and
+// rectangular reinforced concrete section b x h (m) (or TEE, CIRCular,
+// ANNUlar: SectionShapeKind; REBAr RING bars become layers), concrete strength fc and
 // bar yield stress fy, modulus Es, ultimate stress fu and fracture strain eu of
 // the bars (stresses in kN/m^2 with kN and m); bar layers at their depth from
 // the top face (m) with their area (m^2). The top face is the face on the
@@ -53,8 +54,15 @@ struct RebarLayer {
 struct Stirrups {
   double area = 0, spacing = 0, fy = 0;
 };
+// The concrete's shape (materials/SectionShape): RECTangular b x h; TEE bw h
+// beff hf (web width b, total depth h, flange beff x hf at the top face);
+// CIRCular D and ANNUlar D t (b = h = D, wall thickness t).
+enum class SectionShapeKind { Rectangle, Tee, Circle, Annulus };
 struct RcSectionData {
+  SectionShapeKind shape = SectionShapeKind::Rectangle;
   double b = 0, h = 0, fc = 0, fy = 0, Es = 0, fu = 0, eu = 0;
+  double flangeWidth = 0, flangeDepth = 0;  // TEE: beff, hf
+  double wall = 0;                          // ANNUlar: t
   std::vector<RebarLayer> bars;
   std::optional<Stirrups> stirrups;
 };

@@ -160,7 +160,10 @@ void writeModel(std::ostream& out, const Model& model) {
       for (double x : {n, mu}) put(out, x);
     putBool(out, m.section.has_value());
     if (const auto& sec = m.section) {
-      for (double x : {sec->b, sec->h, sec->fc, sec->fy, sec->Es, sec->fu, sec->eu}) put(out, x);
+      put(out, sec->shape);
+      for (double x : {sec->b, sec->h, sec->fc, sec->fy, sec->Es, sec->fu, sec->eu,
+                       sec->flangeWidth, sec->flangeDepth, sec->wall})
+        put(out, x);
       putCount(out, sec->bars.size());
       for (const RebarLayer& r : sec->bars)
         for (double x : {r.depth, r.area}) put(out, x);
@@ -288,7 +291,11 @@ Model readModel(std::istream& in, int minTopologyVersion) {
     }
     if (getBool(in)) {
       RcSectionData sec;
-      for (double* x : {&sec.b, &sec.h, &sec.fc, &sec.fy, &sec.Es, &sec.fu, &sec.eu})
+      sec.shape = get<SectionShapeKind>(in);
+      if (static_cast<int>(sec.shape) < 0 || static_cast<int>(sec.shape) > 3)
+        throw CheckpointError("material " + std::to_string(m.number) + ": unknown section shape");
+      for (double* x : {&sec.b, &sec.h, &sec.fc, &sec.fy, &sec.Es, &sec.fu, &sec.eu,
+                        &sec.flangeWidth, &sec.flangeDepth, &sec.wall})
         *x = get<double>(in);
       const std::size_t layers = getCount(in);
       for (std::size_t i = 0; i < layers; ++i) {

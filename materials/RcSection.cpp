@@ -46,9 +46,8 @@ double increasingRoot(const std::function<double(double)>& f, double lo, double 
 
 }  // namespace
 
-RcSection::RcSection(const RcSectionData& data) : d_(data) {
+RcSection::RcSection(const RcSectionData& data) : d_(data), shape_(data) {
   auto bad = [](const std::string& what) { throw std::invalid_argument(what); };
-  if (!(d_.b > 0) || !(d_.h > 0)) bad("section width b and depth h must be positive");
   if (!(d_.fc > 0)) bad("concrete strength fc must be positive");
   if (!(d_.fy > 0)) bad("bar yield stress fy must be positive");
   if (!(d_.Es > 0)) bad("bar modulus Es must be positive");
@@ -73,10 +72,10 @@ RcSection::RcSection(const RcSectionData& data) : d_(data) {
     s += r.area * r.depth;
     s2 += r.area * r.depth * r.depth;
   }
-  const double ac = d_.b * d_.h;
+  const double ac = shape_.area(), zg = shape_.centroidDepth(1);
   atr_ = ac + n1 * as_;
-  ztr_ = (ac * d_.h / 2 + n1 * s) / atr_;
-  itr_ = d_.b * d_.h * d_.h * d_.h / 12 + ac * (d_.h / 2 - ztr_) * (d_.h / 2 - ztr_) +
+  ztr_ = (ac * zg + n1 * s) / atr_;
+  itr_ = shape_.secondMoment() + ac * (zg - ztr_) * (zg - ztr_) +
          n1 * (s2 - 2 * ztr_ * s + ztr_ * ztr_ * as_);
 
   for (int k = 0; k < 2; ++k) zero_[k] = rawPoints(0.0, k == 0 ? 1 : -1);
@@ -101,46 +100,21 @@ RcSection::RcSection(const RcSectionData& data) : d_(data) {
 }
 
 double RcSection::GA() const {
-  return kShearFactor * ec_ / (2 * (1 + kConcretePoisson)) * d_.b * d_.h;
+  return ec_ / (2 * (1 + kConcretePoisson)) * shape_.shearArea(kConcretePoisson);
 }
 
 double RcSection::squashLoad() const {
-  return d_.fc * d_.b * d_.h + as_ * std::min(d_.fy, d_.Es * kEpsC2);
+  return d_.fc * shape_.area() + as_ * std::min(d_.fy, d_.Es * kEpsC2);
 }
 
 RcSection::Forces RcSection::forces(double e0, double kappa, int sign) const {
-  const double h = d_.h, fc = d_.fc;
-  auto concrete = [&](double e) {  // tension positive; compression -fc (2x - x^2), x = -e/eps_c2
-    if (e >= 0) return 0.0;
-    if (e <= -kEpsC2) return -fc;
-    const double x = e / kEpsC2;
-    return fc * (2 * x + x * x);
-  };
-  // Pieces of the depth on which the concrete stress is one polynomial (of
-  // degree 2 in z): two Gauss points integrate sigma and sigma z exactly.
-  double cuts[4] = {0, h, 0, 0};
-  int nc = 2;
-  if (kappa != 0)
-    for (double e : {0.0, -kEpsC2}) {
-      const double z = (e - e0) / kappa;
-      if (z > 0 && z < h) cuts[nc++] = z;
-    }
-  for (int i = 1; i < nc; ++i)  // at most four cuts: insertion sort
-    for (int j = i; j > 0 && cuts[j] < cuts[j - 1]; --j) std::swap(cuts[j], cuts[j - 1]);
-  Forces f;
-  const double g = 1 / std::sqrt(3.0);
-  for (int i = 0; i + 1 < nc; ++i) {
-    const double zm = 0.5 * (cuts[i] + cuts[i + 1]), hw = 0.5 * (cuts[i + 1] - cuts[i]);
-    for (double z : {zm - g * hw, zm + g * hw}) {
-      const double sg = concrete(e0 + kappa * z);
-      f.N += d_.b * hw * sg;
-      f.M += d_.b * hw * sg * (z - h / 2);
-    }
-  }
+  const SectionShape::Resultant c = shape_.concrete(e0, kappa, sign, d_.fc, kEpsC2);
+  Forces f{c.N, c.M};
+  const double zg = shape_.centroidDepth(sign);
   for (const RebarLayer& r : bars_[sign > 0 ? 0 : 1]) {
     const double sg = std::clamp(d_.Es * (e0 + kappa * r.depth), -d_.fy, d_.fy);
     f.N += r.area * sg;
-    f.M += r.area * sg * (r.depth - h / 2);
+    f.M += r.area * sg * (r.depth - zg);
   }
   return f;
 }
@@ -220,7 +194,7 @@ RcSection::State RcSection::cracking(double N, int sign) const {
   out.exists = true;
   out.kappa = mCent / (ec_ * itr_);
   out.e0 = N / (ec_ * atr_) - out.kappa * zs;
-  out.M = mCent + N * (zs - d_.h / 2);
+  out.M = mCent + N * (zs - shape_.centroidDepth(sign));
   out.depth = out.kappa > 0 ? -out.e0 / out.kappa : kInf;
   return out;
 }
@@ -251,9 +225,9 @@ double RcSection::shearCapacity(int sign) const {
   if (!d_.stirrups) return 0.0;
   double d = 0;  // the farthest bars from the compressed face
   for (const RebarLayer& l : bars_[sign > 0 ? 0 : 1]) d = std::max(d, l.depth);
-  const double z = 0.9 * d;
+  const double z = 0.9 * shape_.effectiveDepth(d);
   const Stirrups& st = *d_.stirrups;
-  return std::min(st.area / st.spacing * z * st.fy, 0.3 * d_.b * z * d_.fc);
+  return std::min(st.area / st.spacing * z * st.fy, 0.3 * shape_.webWidth() * z * d_.fc);
 }
 
 double RcSection::shortestPiece() const {

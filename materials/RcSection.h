@@ -1,6 +1,6 @@
 #pragma once
-// A rectangular reinforced concrete section (deck: SECTion RECTangular + REBAr)
-// and what the member's laws take from it: stiffnesses, the moment-curvature
+// A reinforced concrete section (deck: SECTion RECTangular, TEE, CIRCular or
+// ANNUlar + REBAr; the concrete's geometry is materials/SectionShape) and what the member's laws take from it: stiffnesses, the moment-curvature
 // points (cracking, first yield, ultimate) of either sign of the moment at any
 // axial force (the interaction diagram), the axial capacities and the rotation
 // capacity of a hinge. Pure computation, no units of its own: any consistent
@@ -25,8 +25,9 @@
 //
 // Geometry and signs: depth z from the top face (0 <= z <= h), strains
 // eps(z) = e0 + kappa z positive in tension; N > 0 in tension; the moment about
-// the mid-depth (the member axis), M = int sigma (z - h/2) dA, positive when it
-// compresses the top face. The negative moments are those of the section turned
+// the concrete's gross centroid zg (the member axis: mid-depth of rectangles
+// and circles), M = int sigma (z - zg) dA, positive when it compresses the top
+// face. The negative moments are those of the section turned
 // upside down (sign = -1), reported as magnitudes.
 #include <array>
 #include <optional>
@@ -34,13 +35,14 @@
 #include "core/MaterialSet.h"
 #include "materials/AxialCapacity.h"
 #include "materials/MomentCapacity.h"
+#include "materials/SectionShape.h"
 
 namespace c2d {
 
 class RcSection final : public MomentCapacity {
  public:
   static constexpr double kEpsC2 = 0.002, kEpsCu2 = 0.0035;
-  static constexpr double kConcretePoisson = 0.2, kShearFactor = 5.0 / 6.0;
+  static constexpr double kConcretePoisson = 0.2;
   // Hinge: plastic length Lp = h/2; the hinge's moment falls linearly from Mu and
   // has lost kUltimateDrop of it over the plastic rotation (kappa_u - kappa_y) Lp.
   static constexpr double kHingeLength = 0.5, kUltimateDrop = 0.2;
@@ -50,11 +52,13 @@ class RcSection final : public MomentCapacity {
   explicit RcSection(const RcSectionData& data);
 
   const RcSectionData& data() const { return d_; }
+  // The concrete's geometry (area, centroid, widths, shear's bw and d).
+  const SectionShape& shape() const { return shape_; }
   double Ec() const { return ec_; }
   double fct() const { return d_.fc / 10; }
   double barArea() const { return as_; }
-  // Transformed uncracked section (concrete b h, bars (Es/Ec - 1) A): EA, EI
-  // about its centroid, GA of the concrete (shear factor 5/6).
+  // Transformed uncracked section (the concrete's shape, bars (Es/Ec - 1) A):
+  // EA, EI about its centroid, GA of the shape's shear area.
   double EA() const { return ec_ * atr_; }
   double EI() const { return ec_ * itr_; }
   double GA() const;
@@ -106,7 +110,8 @@ class RcSection final : public MomentCapacity {
   double ruptureRotation() const;
   // The shear the member carries with its stirrups (EC2 6.2.3, truss angle
   // cot theta = 1, lever arm z = 0.9 d, d the depth of the tension bars
-  // farthest from the compressed face): the stirrups' yield Asw/s z fyw
+  // farthest from the compressed face, 0.8 D for circles; b the web width:
+  // SectionShape::webWidth, effectiveDepth): the stirrups' yield Asw/s z fyw
   // (6.8), bounded by the compression struts' crushing 0.3 b z fc (6.9 with
   // nu1 = 0.6, the value 6.2.3(3) allows for fc <= 60 MPa: a ratio, so the
   // rule needs no unit); 0 without stirrups. Concrete's own share (6.2.2)
@@ -134,6 +139,7 @@ class RcSection final : public MomentCapacity {
   Points floored(const Points& p, int sign) const;
 
   RcSectionData d_;
+  SectionShape shape_;
   std::array<std::vector<RebarLayer>, 2> bars_;  // as given, upside down
   double ec_ = 0, as_ = 0, atr_ = 0, ztr_ = 0, itr_ = 0;
   std::array<Points, 2> zero_;  // raw points at N = 0 (floors' references)

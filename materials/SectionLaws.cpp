@@ -41,8 +41,8 @@ void deriveSectionLaws(MaterialSet& mat) {
     mat.resEA = rc->EA();
     mat.resGA = rc->GA();
     mat.resEI = rc->EI();
-    mat.A = mat.section->b * mat.section->h;
-    mat.I = mat.section->b * mat.section->h * mat.section->h * mat.section->h / 12;
+    mat.A = rc->shape().area();
+    mat.I = rc->shape().secondMoment();
     HardeningData hard;
     SofteningData soft;
     for (int k = 0; k < 2; ++k) {

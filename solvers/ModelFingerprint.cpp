@@ -82,7 +82,10 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
     materials.add(m.hingeSite == HingeSite::Ends);
     for (const auto& [n, mu] : m.interaction) materials.add(n).add(mu);
     if (const auto& sec = m.section) {
-      for (double x : {sec->b, sec->h, sec->fc, sec->fy, sec->Es, sec->fu, sec->eu}) materials.add(x);
+      materials.add(static_cast<int>(sec->shape));
+      for (double x : {sec->b, sec->h, sec->fc, sec->fy, sec->Es, sec->fu, sec->eu,
+                       sec->flangeWidth, sec->flangeDepth, sec->wall})
+        materials.add(x);
       for (const RebarLayer& r : sec->bars) materials.add(r.depth).add(r.area);
     }
   }

@@ -23,7 +23,7 @@
 
 namespace c2d {
 
-inline constexpr unsigned kRestartVersion = 17;  // 17: infill struts
+inline constexpr unsigned kRestartVersion = 18;  // 17: infill struts; 18: section shapes
 
 // Writes the committed state: call Analysis::commit() first. `extra` is the
 // caller's own section (opaque here); `input` the fingerprint of the model as

@@ -6,10 +6,12 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "macro/commands/SectionShapeRecords.h"
 #include "macro/commands/SubRecordFields.h"
 #include "materials/HingedBending.h"
 #include "materials/RcSection.h"
 #include "materials/SectionLaws.h"
+#include "materials/SectionShape.h"
 
 namespace c2d {
 
@@ -19,10 +21,6 @@ using meshspec::subSpec;
 using meshspec::text;
 
 namespace {
-
-// Defaults of SECTion: Es in kN/m^2 (the decks' system); fu and eu of
-// Eurocode 2's class B bars (Annex C: ft/fy >= 1.08, eps_uk >= 5 %).
-constexpr double kDefaultEs = 200e6, kDefaultHardeningRatio = 1.08, kDefaultFractureStrain = 0.05;
 
 std::string str(double v) {
   std::ostringstream s;
@@ -98,43 +96,11 @@ void bindSoftening(MeshContext& ctx, const Record& r, const CommandSpec& s, Mate
   }
 }
 
-void bindSection(MeshContext& ctx, const Record& r, const CommandSpec& s, MaterialSet& mat,
-                 LawRecords& seen) {
-  const std::string syntax = "SECTion RECTangular b h fc fy [Es [fu eu]]";
-  subrecord::requireText(r, s.name, syntax);
-  if (!keywordMatches(r.text(1), "RECTangular"))
-    failAt(r, 1, "expected RECTangular (the only shape)", "write " + syntax);
-  if (seen.section) failAt(r, 0, "SECTion given twice in one MATErial set");
-  const auto v = subrecord::values(ctx, r, s.name, 7, 4, syntax);
-  const char* names[4] = {"width b", "depth h", "concrete strength fc", "bar yield stress fy"};
-  for (std::size_t i = 0; i < 4; ++i)
-    if (!(v[i] > 0))
-      failAt(r, 2 + i, std::string("the section's ") + names[i] + " must be positive");
-  RcSectionData d;
-  d.b = v[0];
-  d.h = v[1];
-  d.fc = v[2];
-  d.fy = v[3];
-  d.Es = r.size() > 6 && !r.text(6).empty() ? v[4] : kDefaultEs;
-  if (!(d.Es > 0)) failAt(r, 6, "the bar modulus Es must be positive");
-  const bool ultimate = r.size() > 7 && !r.text(7).empty();
-  if (ultimate != (r.size() > 8 && !r.text(8).empty()))
-    failAt(r, ultimate ? r.size() : 7, "give both fu and eu (or neither)", "write " + syntax);
-  d.fu = ultimate ? v[5] : kDefaultHardeningRatio * d.fy;
-  d.eu = ultimate ? v[6] : kDefaultFractureStrain;
-  if (!(d.fu >= d.fy))
-    failAt(r, 7, "the bars' ultimate stress fu must not be below fy = " + str(d.fy));
-  if (!(d.eu > d.fy / d.Es))
-    failAt(
-        r, 8,
-        "the bars' fracture strain eu must exceed their yield strain fy/Es = " + str(d.fy / d.Es));
-  d.bars = mat.section ? mat.section->bars : std::vector<RebarLayer>{};
-  d.stirrups = mat.section ? mat.section->stirrups : std::nullopt;
-  mat.section = d;
-  seen.section = &r;
-}
-
 void bindRebar(MeshContext& ctx, const Record& r, MaterialSet& mat, LawRecords& seen) {
+  if (bindRebarRing(ctx, r, seen)) {
+    if (!mat.section) mat.section = RcSectionData{};
+    return;
+  }
   // REBAr d1 A1 [d2 A2 ...]: the numbers start at field 1 (or 2 after an empty field).
   const std::size_t first = r.size() > 1 && r.text(1).empty() ? 2 : 1;
   if (r.size() <= first || (r.size() - first) % 2 != 0)
@@ -212,7 +178,7 @@ bool bindLawRecord(MeshContext& ctx, const Record& r, const CommandSpec& s, Mate
   else if (key == "soft")
     bindSoftening(ctx, r, s, mat, seen);
   else if (key == "sect")
-    bindSection(ctx, r, s, mat, seen);
+    bindSectionShape(ctx, r, s, mat, seen);
   else if (key == "reba")
     bindRebar(ctx, r, mat, seen);
   else if (key == "stir")
@@ -236,6 +202,9 @@ void finishLawRecords(const Record& head, const LawRecords& seen, MaterialSet& m
            "SOFTening NEGAtive needs SOFTening LINEar (the positive moments')");
   if (!seen.rebar.empty() && !seen.section)
     failAt(*seen.rebar.front(), 0, "REBAr without SECTion", "give SECTion RECTangular b h fc fy");
+  if (!seen.rings.empty() && !seen.section)
+    failAt(*seen.rings.front().record, 0, "REBAr without SECTion",
+           "give SECTion CIRCular D fc fy or ANNUlar D t fc fy");
   if (seen.stirrups && !seen.section)
     failAt(*seen.stirrups, 0, "STIRrups without SECTion", "give SECTion RECTangular b h fc fy");
   if (seen.section) {
@@ -246,7 +215,7 @@ void finishLawRecords(const Record& head, const LawRecords& seen, MaterialSet& m
       if (other) failAt(*other, 0, std::string(why) + ": this record cannot go with it");
     if (seen.hinges && mat.hingeSite != HingeSite::Ends)
       failAt(*seen.hinges, 1, "a SECTion member's hinges open at its ends");
-    if (seen.rebar.empty())
+    if (seen.rebar.empty() && seen.rings.empty())
       failAt(sec, 0, "SECTion needs its bars",
              "give REBAr d1 A1 [d2 A2 ...] (depth from the top face, area)");
     if (auto& st = mat.section->stirrups; st && st->fy == 0) st->fy = mat.section->fy;
@@ -259,12 +228,14 @@ void finishLawRecords(const Record& head, const LawRecords& seen, MaterialSet& m
                  "bar layer at depth " + str(l.depth) +
                      " lies outside the section (h = " + str(mat.section->h) + ")");
     }
+    placeSectionBars(seen, *mat.section);
     double bars = 0;
     for (const RebarLayer& l : mat.section->bars) bars += l.area;
-    if (!(bars < 0.1 * mat.section->b * mat.section->h))
+    const double concrete = SectionShape(*mat.section).area();
+    if (!(bars < 0.1 * concrete))
       failAt(sec, 0,
-             "the bars' area " + str(bars) + " is not below a tenth of the section's b h = " +
-                 str(mat.section->b * mat.section->h),
+             "the bars' area " + str(bars) + " is not below a tenth of the section's area " +
+                 str(concrete),
              "REBAr areas in m^2 (a 20 mm bar: 3.14e-4)");
     try {
       deriveSectionLaws(mat);
@@ -310,13 +281,42 @@ void line(std::ostream& os, const std::string& name, double v) {
      << std::scientific << std::setprecision(4) << v << "\n";
 }
 
+void echoShape(std::ostream& os, const SectionShape& shape, const RcSectionData& d) {
+  switch (d.shape) {
+    case SectionShapeKind::Rectangle:
+      line(os, "Width b", d.b);
+      line(os, "Depth h", d.h);
+      break;
+    case SectionShapeKind::Tee:
+      os << "      T-section (the flange at the top face)\n";
+      line(os, "Web width bw", d.b);
+      line(os, "Depth h", d.h);
+      line(os, "Flange width beff", d.flangeWidth);
+      line(os, "Flange thickness hf", d.flangeDepth);
+      break;
+    case SectionShapeKind::Circle:
+      os << "      Circular section\n";
+      line(os, "Diameter D", d.h);
+      break;
+    case SectionShapeKind::Annulus:
+      os << "      Annular section\n";
+      line(os, "Diameter D", d.h);
+      line(os, "Wall t", d.wall);
+      break;
+  }
+  line(os, "Concrete area", shape.area());
+  line(os, "Centroid from top", shape.centroidDepth(1));
+  line(os, "Gross I", shape.secondMoment());
+  line(os, "Shear area (nu 0.2)", shape.shearArea(RcSection::kConcretePoisson));
+}
+
 void echoSection(std::ostream& os, const MaterialSet& m) {
   const RcSection& rc = *m.rc;
   const RcSectionData& d = rc.data();
   os << "      RC section (EC2 parabola-rectangle, eps_c2 = 0.002, eps_cu2 = 0.0035; bars\n"
-        "      elastic-perfectly plastic; moments about mid-depth, positive compressing the top)\n";
-  line(os, "Width b", d.b);
-  line(os, "Depth h", d.h);
+        "      elastic-perfectly plastic; moments about the concrete's centroid, positive\n"
+        "      compressing the top)\n";
+  echoShape(os, rc.shape(), d);
   line(os, "Concrete fc", d.fc);
   line(os, "Ec = 2 fc/eps_c2", rc.Ec());
   line(os, "fct = fc/10", rc.fct());
@@ -330,9 +330,9 @@ void echoSection(std::ostream& os, const MaterialSet& m) {
       << ", area " << l.area << "\n";
     os << s.str();
   }
-  os << "      Transformed uncracked section (concrete b h, bars (Es/Ec - 1) A):\n";
+  os << "      Transformed uncracked section (the concrete, bars (Es/Ec - 1) A):\n";
   line(os, "EA", rc.EA());
-  line(os, "GA (5/6, nu 0.2)", rc.GA());
+  line(os, "GA (nu 0.2)", rc.GA());
   line(os, "EI", rc.EI());
   line(os, "Centroid depth", rc.centroidDepth());
   line(os, "Tension yield Nt", rc.tensionYield());
@@ -365,7 +365,8 @@ void echoSection(std::ostream& os, const MaterialSet& m) {
   }
   if (m.softening && m.softening->thetaR) line(os, "Rupture thetaR", *m.softening->thetaR);
   if (const auto& st = d.stirrups) {
-    os << "      Shear (EC2 6.2.3, cot theta = 1, z = 0.9 d; Vu = min(Asw/s z fyw, 0.3 b z fc)):\n";
+    os << "      Shear (EC2 6.2.3, cot theta = 1, z = 0.9 d; Vu = min(Asw/s z fyw, 0.3 bw z fc)):\n";
+    line(os, "Web width bw", rc.shape().webWidth());
     line(os, "Stirrups Asw", st->area);
     line(os, "Stirrups s", st->spacing);
     line(os, "Stirrups fyw", st->fy);
@@ -473,21 +474,33 @@ void registerLawRecords(CommandRegistry& r) {
       "SECTion",
       "SECTion RECTangular b h fc fy [Es [fu eu]]: a rectangular reinforced concrete section "
       "(with REBAr for its bars), instead of ELAStic/CROSs/RESUltant/HARDening/SOFTening. "
+      "Other shapes, the same rules: SECTion TEE bw h beff hf fc fy [Es [fu eu]] (a beam with "
+      "its slab: web width bw, total depth h, effective flange width beff >= bw (EC2 5.3.2.1) "
+      "and thickness hf < h at the top face, so a positive moment compresses the flange; the "
+      "slab's bars among the REBAr layers); SECTion CIRCular D fc fy [Es [fu eu]] (solid "
+      "circle); SECTion ANNUlar D t fc fy [Es [fu eu]] (hollow circle, wall t < D/2: "
+      "chimneys, towers, piers); their bars as layers or REBAr RING n A c. The concrete's "
+      "stress is integrated over the shape exactly (rectangles: Gauss points on the pieces "
+      "between the plane's kinks; circles: the chord width 2 r sin(phi) at z = zc - r "
+      "cos(phi), closed form), moments about the concrete's gross centroid (the member's "
+      "axis: mid-depth of rectangles and circles; a T-section's lies in or near the "
+      "flange), A and I the gross shape's (mass, rotary inertia). "
       "Materials of Eurocode 2: concrete parabola-rectangle (eps_c2 = 0.002, eps_cu2 = 0.0035, "
       "C50/60 at most), fc used as given (give the strength the analysis should see, a mean "
       "strength for a collapse), Ec = 2 fc/eps_c2 (the parabola's initial slope: one law for "
       "stiffness and strength), fct = fc/10, no tension in the cracked states; bars elastic-"
       "perfectly plastic, fracturing at eu. Derived, echoed in the log: EA, EI of the "
-      "transformed uncracked section (concrete b h, bars (Es/Ec - 1) A: the elastic branch "
-      "of the law is the uncracked member, cracking is its first hardening branch), GA = 5/6 "
-      "Ec/2.4 b h; at every axial force N (tension positive) and for each sign of the moment "
+      "transformed uncracked section (the concrete's shape, bars (Es/Ec - 1) A: the elastic "
+      "branch of the law is the uncracked member, cracking is its first hardening branch), GA "
+      "= Ec/2.4 times the shear area (5/6 b h, the web's 5/6 bw h for TEE, Cowper's factor "
+      "of the solid or hollow circle times A); at every axial force N (tension positive) and for each sign of the moment "
       "(positive compresses the top face: the face on the element's left from its first node "
       "to its second): Mc (the tension face at fct, transformed section), My and kappa_y "
       "(first yield: the most strained bar at fy/Es or the compressed face at eps_c2), Mu and "
       "kappa_u (the compressed face at eps_cu2, or eps_c2 at 3h/7 when the whole section is "
       "compressed, or a bar at eu; EC2 6.1), the hardening moduli Kh1 = (My - Mc)/(kappa_y - "
       "My/EI), Kh2 = (Mu - My)/(plastic curvature from My to Mu): the law passes through the "
-      "section's moment-curvature points; moments about mid-depth. Tabulated on [-Nc, Nt] "
+      "section's moment-curvature points. Tabulated on [-Nc, Nt] "
       "(monotone cubic in N). Hinges open at the element ends (the end moments of the "
       "element's equilibrium) as joints with the softening law: plastic rotation capacity "
       "theta_pl = (kappa_u - kappa_y) Lp, Lp = h/2 (EC8-3 A.3.2.2 eq. A.9; Panagiotakos and "
@@ -500,7 +513,7 @@ void registerLawRecords(CommandRegistry& r) {
       "cracked tie's Es As in tension (the member's strain is then its bars'), bounded by the "
       "bars in tension, Nt = As fy hardening to Ntu = As fu at the strain eu, where the bars "
       "fracture and the member separates from one of its ends (one log line each), and by the "
-      "squash load Nc = fc b h + As min(fy, Es eps_c2) in compression. Mc, My, Mu follow N "
+      "squash load Nc = fc Ac + As min(fy, Es eps_c2) in compression (Ac the concrete's area). Mc, My, Mu follow N "
       "(moment-axial "
       "interaction): the hardening and softening variables are kept when N changes. "
       "Defaults: Es = 200e6 (kN/m^2: 200 GPa; give it in another unit system), fu = 1.08 fy, "
@@ -512,7 +525,9 @@ void registerLawRecords(CommandRegistry& r) {
       "ratios, and Es's default is the only dimensional number, so give Es in that "
       "system; e.g. N, mm, s with tonnes: b, h, depths in mm, fc, fy, Es in MPa (30, 500, "
       "200e3), bar areas in mm^2, forces N, moments N mm, EI N mm^2.",
-      {text("RECTangular", "the shape"), expr("b", "width [m]"), expr("h", "depth [m]"),
+      {text("RECTangular/TEE/CIRCular/ANNUlar", "the shape"),
+       expr("b", "width [m] (TEE: bw h beff hf; CIRCular: D; ANNUlar: D t)"),
+       expr("h", "depth [m]"),
        expr("fc", "concrete compressive strength [kN/m^2]"),
        expr("fy", "bar yield stress [kN/m^2]"), expr("Es", "bar modulus [kN/m^2]", "200e6"),
        expr("fu", "bar ultimate stress [kN/m^2]", "1.08 fy"),
@@ -521,7 +536,10 @@ void registerLawRecords(CommandRegistry& r) {
       "REBAr",
       "REBAr d1 A1 [d2 A2 ...]: the bars of a SECTion as layers, each its depth from the top "
       "face (the face a positive moment compresses) and its area; more REBAr records add "
-      "layers.",
+      "layers. REBAr RING n A c (CIRCular, ANNUlar): n bars of area A each, evenly on a "
+      "circle whose cover c is the distance from the outer face to the bars' centres (inside "
+      "the concrete: c < D/2, for ANNUlar c < t), the first bar on the top face's side; they "
+      "become layers, one per depth (the bars at +-theta share it), echoed in the log.",
       {expr("d1", "depth of the layer from the top face [m]"),
        expr("A1", "area of the layer's bars [m^2]")}));
   r.add(subSpec(

@@ -2,8 +2,9 @@
 // The material sub-records of the bending laws (deck language section 5):
 //   HARDening BILInear Mc My Kh1 Kh2 / HARDening NEGAtive Mc My Kh1 Kh2
 //   SOFTening LINEar Mu Ks [thetaR [Mr]] / SOFTening NEGAtive Mu Ks
-//   SECTion RECTangular b h fc fy [Es [fu eu]] with REBAr d1 A1 [d2 A2 ...]
-//     and STIRrups Asw s [fyw]
+//   SECTion RECTangular b h fc fy [Es [fu eu]] (or TEE, CIRCular, ANNUlar:
+//     macro/commands/SectionShapeRecords) with REBAr d1 A1 [d2 A2 ...] (or
+//     REBAr RING n A c) and STIRrups Asw s [fyw]
 //   INTEraction CURVe N1 Mu1 N2 Mu2 ...
 //   HINGes ENDS / HINGes MIDPoint
 // Their specs (--help), binding into a MaterialSet, the checks that need the
@@ -17,6 +18,13 @@
 
 namespace c2d {
 
+// A REBAr RING record's values (its bars are placed once the shape is known).
+struct RingRecord {
+  const Record* record = nullptr;
+  int n = 0;
+  double area = 0, cover = 0;
+};
+
 // The records of one MATErial set that these sub-records gave.
 struct LawRecords {
   const Record* hardening = nullptr;
@@ -24,7 +32,8 @@ struct LawRecords {
   const Record* softening = nullptr;
   const Record* softeningNeg = nullptr;
   const Record* section = nullptr;
-  std::vector<const Record*> rebar;
+  std::vector<const Record*> rebar;  // layers (REBAr d1 A1 ...)
+  std::vector<RingRecord> rings;     // REBAr RING n A c
   const Record* stirrups = nullptr;
   const Record* interaction = nullptr;
   const Record* hinges = nullptr;

@@ -82,7 +82,7 @@ const std::vector<Field>& fields() {
       {S::SubRecord, "soft", "thetaR", kRotation},
       {S::SubRecord, "soft", "Mr", kMoment},
       {S::SubRecord, "soft", "Lb", kLength},
-      {S::SubRecord, "sect", "RECTangular", ""},
+      {S::SubRecord, "sect", "RECTangular/TEE/CIRCular/ANNUlar", ""},
       {S::SubRecord, "sect", "b", kLength},
       {S::SubRecord, "sect", "h", kLength},
       {S::SubRecord, "sect", "fc", kStress},

@@ -237,5 +237,44 @@ TEST(RcMember, DampedTangentsWithInteraction) {
   }
 }
 
+// A T-section member (SECTion TEE: the moments about the gross centroid, the
+// flange on the top face) and an annular one: the finite element's tangent at
+// large rotations against central differences, in the plastic range of
+// either sign, compressed and stretched.
+TEST(RcMember, FiniteElementTangentOfTheFlangedAndAnnularShapes) {
+  for (SectionShapeKind shape : {SectionShapeKind::Tee, SectionShapeKind::Annulus}) {
+    MaterialSet mat = rcMaterial(Kinematics::Finite);
+    RcSectionData& d = *mat.section;
+    d.shape = shape;
+    if (shape == SectionShapeKind::Tee) {
+      d.flangeWidth = 1.2;
+      d.flangeDepth = 0.12;
+    } else {
+      d.b = d.h = 0.5;
+      d.wall = 0.12;
+    }
+    deriveSectionLaws(mat);
+    for (double curl : {1.0, -1.0})
+      for (double stretch : {-3e-4, 0.0, 2e-3}) {
+        ReissnerFrame e(mat, {0, 1}, Vec2(0, 0), Vec2(1.5, 0.0));
+        const double turn = 0.9;
+        const Vec2 p2(1.5 * (1 + stretch) * std::cos(turn), 1.5 * (1 + stretch) * std::sin(turn));
+        ElemVec d0, dd;
+        d0 << 0, 0, turn - 0.003 * curl, p2.x() - 1.5, p2.y(), turn + 0.004 * curl;
+        dd << 0.0002, -0.0001, -0.0024 * curl, 0.0003, 0.0002, 0.0031 * curl;
+        ElementKinematics kin = committedAt(e, d0, dd);
+        for (const StepRule& rule : {StepRule{}, midPointRule()}) {
+          ElemVec r;
+          ElemMat k;
+          ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
+          EXPECT_GT(e.section().bulk.xi, 0);
+          const ElemMat fd = centralDifferenceTangent(e, kin, rule, 1e-8);
+          EXPECT_LT(relativeError(k, fd), 1e-5) << static_cast<int>(shape) << " curl " << curl
+                                                << " stretch " << stretch;
+        }
+      }
+  }
+}
+
 }  // namespace
 }  // namespace c2d::test
