@@ -100,7 +100,8 @@ RcSection::RcSection(const RcSectionData& data) : d_(data), shape_(data) {
 }
 
 double RcSection::GA() const {
-  return ec_ / (2 * (1 + kConcretePoisson)) * shape_.shearArea(kConcretePoisson);
+  return shape_.shearFactor(kConcretePoisson) * ec_ / (2 * (1 + kConcretePoisson)) *
+         shape_.shearWidth() * d_.h;
 }
 
 double RcSection::squashLoad() const {

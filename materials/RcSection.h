@@ -1,6 +1,7 @@
 #pragma once
 // A reinforced concrete section (deck: SECTion RECTangular, TEE, CIRCular or
-// ANNUlar + REBAr; the concrete's geometry is materials/SectionShape) and what the member's laws take from it: stiffnesses, the moment-curvature
+// ANNUlar + REBAr; the concrete's geometry is materials/SectionShape) and
+// what the member's laws take from it: stiffnesses, the moment-curvature
 // points (cracking, first yield, ultimate) of either sign of the moment at any
 // axial force (the interaction diagram), the axial capacities and the rotation
 // capacity of a hinge. Pure computation, no units of its own: any consistent

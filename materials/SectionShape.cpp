@@ -36,7 +36,8 @@ SectionShape::SectionShape(const RcSectionData& d) : kind_(d.shape), h_(d.h) {
       strips_ = {{0, d.h, d.b}};
       break;
     case SectionShapeKind::Tee:
-      if (!(d.b > 0) || !(d.h > 0)) bad("the T-section's web width bw and depth h must be positive");
+      if (!(d.b > 0) || !(d.h > 0))
+        bad("the T-section's web width bw and depth h must be positive");
       if (!(d.flangeWidth >= d.b)) bad("the T-section's flange width beff must not be below bw");
       if (!(d.flangeDepth > 0 && d.flangeDepth < d.h))
         bad("the T-section's flange thickness hf must lie in (0, h)");
@@ -66,7 +67,8 @@ SectionShape::SectionShape(const RcSectionData& d) : kind_(d.shape), h_(d.h) {
     area_ += p.s * kPi * p.r * p.r;
     s1 += p.s * kPi * p.r * p.r * p.zc;
   }
-  zg_ = s1 / area_;
+  // Symmetric shapes: mid-depth exactly (the rectangles' numbers as before).
+  zg_ = kind_ == SectionShapeKind::Tee ? s1 / area_ : h_ / 2;
   for (const Strip& p : strips_) {
     const double t = p.z1 - p.z0, a = p.w * t, e = 0.5 * (p.z0 + p.z1) - zg_;
     i_ += p.w * t * t * t / 12 + a * e * e;
@@ -94,19 +96,16 @@ double SectionShape::effectiveDepth(double farthestBars) const {
   return round ? 0.8 * h_ : farthestBars;
 }
 
-double SectionShape::shearArea(double nu) const {
-  switch (kind_) {
-    case SectionShapeKind::Rectangle:
-    case SectionShapeKind::Tee:
-      return 5.0 / 6.0 * web_ * h_;
-    case SectionShapeKind::Circle:
-    case SectionShapeKind::Annulus: {
-      const double m = kind_ == SectionShapeKind::Annulus ? 1 - 2 * wall_ / h_ : 0.0;
-      const double q = (1 + m * m) * (1 + m * m);
-      return 6 * (1 + nu) * q / ((7 + 6 * nu) * q + (20 + 12 * nu) * m * m) * area_;
-    }
-  }
-  return 0;
+double SectionShape::shearFactor(double nu) const {
+  if (kind_ == SectionShapeKind::Rectangle || kind_ == SectionShapeKind::Tee) return 5.0 / 6.0;
+  const double m = kind_ == SectionShapeKind::Annulus ? 1 - 2 * wall_ / h_ : 0.0;
+  const double q = (1 + m * m) * (1 + m * m);
+  return 6 * (1 + nu) * q / ((7 + 6 * nu) * q + (20 + 12 * nu) * m * m);
+}
+
+double SectionShape::shearWidth() const {
+  const bool round = kind_ == SectionShapeKind::Circle || kind_ == SectionShapeKind::Annulus;
+  return round ? area_ / h_ : web_;
 }
 
 double SectionShape::parabolaRectangle(double e, double fc, double epsC2) {

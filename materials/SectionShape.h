@@ -48,9 +48,12 @@ class SectionShape {
   // walls parallel to the shear), d = 0.8 D for both (ACI 318-19 22.5.2.2).
   double webWidth() const;
   double effectiveDepth(double farthestBars) const;
-  // Shear area for GA: 5/6 of the (web's) rectangle b h; circles Cowper's
-  // (1966) factor of the solid or hollow circle at Poisson's ratio nu.
-  double shearArea(double nu) const;
+  // Shear area for GA, shearFactor(nu) shearWidth() h: 5/6 of the (web's)
+  // rectangle b h; circles Cowper's (1966) factor of the solid or hollow
+  // circle at Poisson's ratio nu times A (shearWidth = A/h).
+  double shearFactor(double nu) const;
+  double shearWidth() const;
+  double shearArea(double nu) const { return shearFactor(nu) * shearWidth() * h_; }
 
   // The parabola-rectangle of EC2 3.1.7 (n = 2): sigma(e) = fc (2x + x^2),
   // x = e/eps_c2, for -eps_c2 < e < 0; -fc beyond; 0 in tension.
@@ -70,8 +73,7 @@ class SectionShape {
   };
   Resultant strip(const Strip& p, double e0, double kappa, double zg, double fc,
                   double epsC2) const;
-  Resultant disk(const Disk& p, double e0, double kappa, double zg, double fc,
-                 double epsC2) const;
+  Resultant disk(const Disk& p, double e0, double kappa, double zg, double fc, double epsC2) const;
 
   SectionShapeKind kind_;
   double h_ = 0, web_ = 0, wall_ = 0;

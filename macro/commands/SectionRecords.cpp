@@ -365,7 +365,8 @@ void echoSection(std::ostream& os, const MaterialSet& m) {
   }
   if (m.softening && m.softening->thetaR) line(os, "Rupture thetaR", *m.softening->thetaR);
   if (const auto& st = d.stirrups) {
-    os << "      Shear (EC2 6.2.3, cot theta = 1, z = 0.9 d; Vu = min(Asw/s z fyw, 0.3 bw z fc)):\n";
+    os << "      Shear (EC2 6.2.3, cot theta = 1, z = 0.9 d; Vu = min(Asw/s z fyw, 0.3 bw z "
+          "fc)):\n";
     line(os, "Web width bw", rc.shape().webWidth());
     line(os, "Stirrups Asw", st->area);
     line(os, "Stirrups s", st->spacing);
@@ -493,7 +494,8 @@ void registerLawRecords(CommandRegistry& r) {
       "transformed uncracked section (the concrete's shape, bars (Es/Ec - 1) A: the elastic "
       "branch of the law is the uncracked member, cracking is its first hardening branch), GA "
       "= Ec/2.4 times the shear area (5/6 b h, the web's 5/6 bw h for TEE, Cowper's factor "
-      "of the solid or hollow circle times A); at every axial force N (tension positive) and for each sign of the moment "
+      "of the solid or hollow circle times A); at every axial force N (tension positive) and for "
+      "each sign of the moment "
       "(positive compresses the top face: the face on the element's left from its first node "
       "to its second): Mc (the tension face at fct, transformed section), My and kappa_y "
       "(first yield: the most strained bar at fy/Es or the compressed face at eps_c2), Mu and "
@@ -513,7 +515,8 @@ void registerLawRecords(CommandRegistry& r) {
       "cracked tie's Es As in tension (the member's strain is then its bars'), bounded by the "
       "bars in tension, Nt = As fy hardening to Ntu = As fu at the strain eu, where the bars "
       "fracture and the member separates from one of its ends (one log line each), and by the "
-      "squash load Nc = fc Ac + As min(fy, Es eps_c2) in compression (Ac the concrete's area). Mc, My, Mu follow N "
+      "squash load Nc = fc Ac + As min(fy, Es eps_c2) in compression (Ac the concrete's area). Mc, "
+      "My, Mu follow N "
       "(moment-axial "
       "interaction): the hardening and softening variables are kept when N changes. "
       "Defaults: Es = 200e6 (kN/m^2: 200 GPa; give it in another unit system), fu = 1.08 fy, "
@@ -527,8 +530,7 @@ void registerLawRecords(CommandRegistry& r) {
       "200e3), bar areas in mm^2, forces N, moments N mm, EI N mm^2.",
       {text("RECTangular/TEE/CIRCular/ANNUlar", "the shape"),
        expr("b", "width [m] (TEE: bw h beff hf; CIRCular: D; ANNUlar: D t)"),
-       expr("h", "depth [m]"),
-       expr("fc", "concrete compressive strength [kN/m^2]"),
+       expr("h", "depth [m]"), expr("fc", "concrete compressive strength [kN/m^2]"),
        expr("fy", "bar yield stress [kN/m^2]"), expr("Es", "bar modulus [kN/m^2]", "200e6"),
        expr("fu", "bar ultimate stress [kN/m^2]", "1.08 fy"),
        expr("eu", "bar fracture strain [-]", "0.05")}));

@@ -33,23 +33,20 @@ struct ShapeForm {
 };
 constexpr ShapeForm kForms[] = {
     {SectionShapeKind::Rectangle, "RECTangular", 2, {"width b", "depth h", "", ""}},
-    {SectionShapeKind::Tee, "TEE", 4,
+    {SectionShapeKind::Tee,
+     "TEE",
+     4,
      {"web width bw", "depth h", "flange width beff", "flange thickness hf"}},
     {SectionShapeKind::Circle, "CIRCular", 1, {"diameter D", "", "", ""}},
     {SectionShapeKind::Annulus, "ANNUlar", 2, {"diameter D", "wall thickness t", "", ""}},
 };
 
-const ShapeForm& formOf(SectionShapeKind k) {
-  for (const ShapeForm& f : kForms)
-    if (f.kind == k) return f;
-  return kForms[0];
-}
-
 // The shape's sizes (fields 2 .. 1 + dims) into d, checked at their fields.
 void bindSizes(const Record& r, const ShapeForm& form, const std::vector<double>& v,
                RcSectionData& d) {
   for (std::size_t i = 0; i < form.dims; ++i)
-    if (!(v[i] > 0)) failAt(r, 2 + i, std::string("the section's ") + form.names[i] + " must be positive");
+    if (!(v[i] > 0))
+      failAt(r, 2 + i, std::string("the section's ") + form.names[i] + " must be positive");
   d.shape = form.kind;
   switch (form.kind) {
     case SectionShapeKind::Rectangle:
@@ -62,11 +59,13 @@ void bindSizes(const Record& r, const ShapeForm& form, const std::vector<double>
       d.flangeWidth = v[2];
       d.flangeDepth = v[3];
       if (!(d.flangeWidth >= d.b))
-        failAt(r, 4, "the flange width beff = " + str(d.flangeWidth) + " is below the web's bw = " +
-                         str(d.b));
+        failAt(r, 4,
+               "the flange width beff = " + str(d.flangeWidth) +
+                   " is below the web's bw = " + str(d.b));
       if (!(d.flangeDepth < d.h))
-        failAt(r, 5, "the flange thickness hf = " + str(d.flangeDepth) +
-                         " is not below the depth h = " + str(d.h));
+        failAt(r, 5,
+               "the flange thickness hf = " + str(d.flangeDepth) +
+                   " is not below the depth h = " + str(d.h));
       break;
     case SectionShapeKind::Circle:
       d.b = d.h = v[0];
@@ -75,13 +74,12 @@ void bindSizes(const Record& r, const ShapeForm& form, const std::vector<double>
       d.b = d.h = v[0];
       d.wall = v[1];
       if (!(d.wall < d.h / 2))
-        failAt(r, 3, "the wall thickness t = " + str(d.wall) + " is not below D/2 = " + str(d.h / 2),
+        failAt(r, 3,
+               "the wall thickness t = " + str(d.wall) + " is not below D/2 = " + str(d.h / 2),
                "for a solid section write SECTion CIRCular D fc fy");
       break;
   }
 }
-
-}  // namespace
 
 const char* sectionShapeSyntax(SectionShapeKind k) {
   switch (k) {
@@ -96,6 +94,8 @@ const char* sectionShapeSyntax(SectionShapeKind k) {
   }
   return "";
 }
+
+}  // namespace
 
 void bindSectionShape(MeshContext& ctx, const Record& r, const CommandSpec& s, MaterialSet& mat,
                       LawRecords& seen) {
@@ -128,9 +128,9 @@ void bindSectionShape(MeshContext& ctx, const Record& r, const CommandSpec& s, M
   if (!(d.fu >= d.fy))
     failAt(r, 5 + nd, "the bars' ultimate stress fu must not be below fy = " + str(d.fy));
   if (!(d.eu > d.fy / d.Es))
-    failAt(r, 6 + nd,
-           "the bars' fracture strain eu must exceed their yield strain fy/Es = " +
-               str(d.fy / d.Es));
+    failAt(
+        r, 6 + nd,
+        "the bars' fracture strain eu must exceed their yield strain fy/Es = " + str(d.fy / d.Es));
   d.bars = mat.section ? mat.section->bars : std::vector<RebarLayer>{};
   d.stirrups = mat.section ? mat.section->stirrups : std::nullopt;
   mat.section = d;

@@ -18,12 +18,9 @@ void bindSectionShape(MeshContext& ctx, const Record& r, const CommandSpec& s, M
                       LawRecords& seen);
 // REBAr RING n A c: false when r is not a RING record.
 bool bindRebarRing(MeshContext& ctx, const Record& r, LawRecords& seen);
-// After the set's records: REBAr layers within the depth, the RING records'
-// bars within the concrete and added as layers (one per depth: the bars at
-// +-theta from the top share it; the first bar at the top face's side), the
-// bars' total area below a tenth of the concrete's.
+// After the set's records: the RING records' bars checked within the
+// concrete (DeckError at the cover's field) and added as layers, one per
+// depth (the bars at +-theta from the top share it; the first bar at the top).
 void placeSectionBars(const LawRecords& seen, RcSectionData& d);
-// The shape's words for the log and the SECTion syntax of it.
-const char* sectionShapeSyntax(SectionShapeKind k);
 
 }  // namespace c2d

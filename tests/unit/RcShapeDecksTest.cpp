@@ -79,9 +79,11 @@ TEST(RcShapeDecks, CircularColumnReachesMuOfItsAxialForce) {
   const RcSection s(d);
   for (double n : {0.0, -2000.0}) {
     const std::string tag = n == 0 ? "Nx=0" : "Nx=-2000";
-    const double peak = peakMagnitude(r.out / ("circular_column_" + tag + "_tplot.csv"), "reac_1_3");
-    // The law's tabulated Mu(N) interpolates the section's.
-    EXPECT_NEAR(peak, s.ultimate(n, 1).M, 1e-4 * peak) << tag;
+    const double peak =
+        peakMagnitude(r.out / ("circular_column_" + tag + "_tplot.csv"), "reac_1_3");
+    // The law's Mu(N) is the section's at N = 0 (a node of its table) and
+    // interpolated between nodes elsewhere (3e-4 at -2000 kN).
+    EXPECT_NEAR(peak, s.ultimate(n, 1).M, (n == 0 ? 2e-5 : 5e-4) * peak) << tag;
   }
   EXPECT_GT(s.ultimate(-2000, 1).M, 1.5 * s.ultimate(0, 1).M);
 }

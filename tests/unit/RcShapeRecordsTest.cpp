@@ -103,7 +103,8 @@ TEST(RcShapeRecords, ErrorsAtTheirFields) {
               "outside the concrete (wall t = 0.25)");
   expectError(" SECTion RECT 0.3 0.6 30e3 500e3\n REBAr RING 8 3e-4 0.05\n", 6, 8,
               "needs SECTion CIRCular or ANNUlar");
-  expectError(" REBAr RING 8 3e-4 0.05\n\n", 5, 2, "REBAr without SECTion");
+  expectError(" ELAS ISOT 1e6 0.2\n CROS SECT 1 1\n REBAr RING 8 3e-4 0.05\n", 7, 2,
+              "REBAr without SECTion");
   // Layers outside the depth of a circle.
   expectError(" SECTion CIRCular 0.6 30e3 500e3\n REBAr 0.05 1e-3 0.65 1e-3\n", 6, 18,
               "lies outside the section (h = 0.6)");
@@ -115,6 +116,7 @@ TEST(RcShapeRecords, RestartFileHoldsTheShape) {
   DeckTempDir dir;
   const std::string deck = R"(FEAP * * annular column
   0 0 0 2 3 2
+
 COORdinates
   1 1 0 0
   5 0 0 8
@@ -149,8 +151,8 @@ BATCh
   NEXT
   SAVE,ann
 END
-1
-  0 0 1 1
+2
+  0 0 1e6 1e6
 
 STOP
 )";

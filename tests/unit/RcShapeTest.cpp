@@ -141,7 +141,12 @@ TEST(RcShape, TeeBeamUltimateMomentsAgainstTheBlockOfTheFlangeAndOfTheWeb) {
     ASSERT_TRUE(v.exists);
     EXPECT_NEAR(v.depth, hog.x, 1e-8);
     EXPECT_NEAR(v.M, hog.M, 1e-7 * hog.M);
-    EXPECT_GT(u.M, 1.3 * v.M);  // the flange's and the main bars' side is the strong one
+    // At N = 0 the flange's side (with the main bars) is the strong one; under
+    // compression the web's compressed bottom, far from the centroid near the
+    // flange, gains more (1322 against 1013 kN m at -1500 kN).
+    if (n == 0) {
+      EXPECT_GT(u.M, 1.3 * v.M);
+    }
   }
   // By hand at N = 0 (the slab bars next to the neutral axis carry little):
   // T = 6 A25 fy = 1472.6 kN, x ~ T/(17/21 fc beff) = 0.0505 m, Mu ~ T (0.55 -
@@ -178,8 +183,7 @@ double concreteStress(double e, double fc) {
 // n bars of area a on the circle at cover c, the first at the top.
 std::vector<RebarLayer> ring(double D, int n, double a, double c) {
   std::vector<RebarLayer> bars;
-  for (int i = 0; i < n; ++i)
-    bars.push_back({D / 2 - (D / 2 - c) * std::cos(2 * kPi * i / n), a});
+  for (int i = 0; i < n; ++i) bars.push_back({D / 2 - (D / 2 - c) * std::cos(2 * kPi * i / n), a});
   return bars;
 }
 
