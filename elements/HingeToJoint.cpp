@@ -10,6 +10,7 @@
 
 #include "core/Brace.h"
 #include "core/Hinge.h"
+#include "elements/ElementFactory.h"
 #include "elements/InelasticFrame.h"
 #include "elements/JointedElement.h"
 #include "elements/Joints.h"
@@ -187,8 +188,8 @@ std::vector<CreatedJoint> convert(
       mat.rc.reset();
       mat.capacity.reset();
     }
-    auto frame =
-        std::make_unique<ReissnerFrame>(mat, nodes, model.coord(nodes[0]), model.coord(nodes[1]));
+    auto frame = std::make_unique<ReissnerFrame>(mat, nodes, model.coord(nodes[0]),
+                                                 model.coord(nodes[1]), rigidOffsets(*old));
 
     // Displacements the new element sees: a slave end moves with its master and
     // rotates by psi_m + psi_r.

@@ -28,20 +28,23 @@ Rows midpointRows(double l) {
 }  // namespace
 
 InelasticFrame::InelasticFrame(const MaterialSet& mat, const std::array<int, 2>& nodes,
-                               const Vec2& x1, const Vec2& x2)
+                               const Vec2& x1, const Vec2& x2,
+                               const std::array<double, 2>& offsets)
     : nodes_(nodes),
       material_(mat.number),
-      length_((x2 - x1).norm()),
+      length_((x2 - x1).norm() - offsets[0] - offsets[1]),
       EA_(mat.EA()),
       GA_(mat.GA()),
       rhoA_(mat.rhoA()),
       law_(mat),
       damping_(mat.dampingA1) {
   if (mat.rc) axial_ = mat.rc->axialCapacity();
-  if (!(length_ > 0)) throw std::invalid_argument("frame element with coincident nodes");
+  const double full = (x2 - x1).norm();
+  if (!(full > 0)) throw std::invalid_argument("frame element with coincident nodes");
+  rigid_ = RigidEnds(x1, x2, offsets[0], offsets[1]);
   if (!(EA_ > 0) || !(GA_ > 0))
     throw std::invalid_argument("frame element needs positive EA and GA");
-  const double c = (x2.x() - x1.x()) / length_, s = (x2.y() - x1.y()) / length_;
+  const double c = (x2.x() - x1.x()) / full, s = (x2.y() - x1.y()) / full;
   rotation_.setZero();
   for (int n = 0; n < 2; ++n) {
     const int o = kNodeDofs * n;
@@ -51,10 +54,12 @@ InelasticFrame::InelasticFrame(const MaterialSet& mat, const std::array<int, 2>&
     rotation_(o + 1, o + 1) = c;
     rotation_(o + 2, o + 2) = 1;
   }
+  toLocal_ = rotation_ * rigid_.linearMap();
 
-  // Translational mass is isotropic, so the same matrix holds in the global frame.
+  // Translational mass is isotropic, so the same matrix holds in the global
+  // frame; the rigid zones' mass belongs to the joint region: the full length's.
   mass_.setZero();
-  const double mA = mat.rhoA() * length_, mI = mat.rhoI() * length_;
+  const double mA = mat.rhoA() * full, mI = mat.rhoI() * full;
   for (int dof = 0; dof < kNodeDofs; ++dof) {
     const double m = dof == 2 ? mI : mA;
     const int a = dof, b = kNodeDofs + dof;
@@ -69,7 +74,7 @@ InelasticFrame::InelasticFrame(const MaterialSet& mat, const std::array<int, 2>&
 
 Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& rule,
                                 bool wantTangent, ElemVec& residual, ElemMat& tangent) {
-  const ElemVec dl = rotation_ * kin.d - dl0_;
+  const ElemVec dl = toLocal_ * kin.d - dl0_;
   const double l = length_;
   const Rows b = midpointRows(l);
   const HingedBendingState& from = committed_.section;
@@ -103,7 +108,7 @@ Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& ru
   // the elastic axial and shear parts the weighted strains, for the bending
   // moment the weighted moments of the committed and the trial state.
   const double w = rule.scheme == Scheme::MidPoint ? 0.5 + rule.alpha : 1.0;
-  const ElemVec dln = rotation_ * kin.dn - dl0_;
+  const ElemVec dln = toLocal_ * kin.dn - dl0_;
   const SectionForces& f1 = trial_.forces;
   const bool coupled = axial_ || bend.dN != 0;
   double N = 0, kN = 0;  // the axial resultant of the scheme and dN/deps
@@ -146,20 +151,20 @@ Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& ru
     M += md.m;
   }
   const ElemVec fLocal = l * (N * b.eps + V * b.gamma + M * b.kappa);
-  residual = rotation_.transpose() * fLocal;
+  residual = toLocal_.transpose() * fLocal;
   if (wantTangent) {
     if (!coupled) {
       const ElemMat kLocal =
           l * ((w + f) * (EA_ * b.eps * b.eps.transpose() + GA_ * b.gamma * b.gamma.transpose()) +
                (w * kt + md.tangent) * b.kappa * b.kappa.transpose());
-      tangent = rotation_.transpose() * kLocal * rotation_;
+      tangent = toLocal_.transpose() * kLocal * toLocal_;
     } else {
       // The moment follows N: dM/ddl = kt b_kappa + dM/dN dN/deps b_eps.
       const ElemMat kLocal =
           l * (kN * b.eps * b.eps.transpose() + (w + f) * GA_ * b.gamma * b.gamma.transpose() +
                (w * kt + md.tangent) * b.kappa * b.kappa.transpose() +
                (w + md.dM1) * bend.dN * axialTangent_ * b.kappa * b.eps.transpose());
-      tangent = rotation_.transpose() * kLocal * rotation_;
+      tangent = toLocal_.transpose() * kLocal * toLocal_;
     }
   }
   if (rule.dynamic()) {
@@ -176,7 +181,7 @@ Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& ru
 ElemVec InelasticFrame::bodyLoad(const Vec2& g) const {
   // Uniform weight rhoA*g: half to each node, no nodal moments (consistent for linear shape functions).
   ElemVec f = ElemVec::Zero();
-  const double w = 0.5 * rhoA_ * length_;
+  const double w = 0.5 * rhoA_ * fullLength();
   f.segment<2>(0) = w * g;
   f.segment<2>(kNodeDofs) = w * g;
   return f;
@@ -219,7 +224,7 @@ HingeInfo InelasticFrame::hinge() const {
 }
 
 ElemVec InelasticFrame::axialForceGradient() const {
-  return axialTangent_ * (rotation_.transpose() * midpointRows(length_).eps);
+  return axialTangent_ * (toLocal_.transpose() * midpointRows(length_).eps);
 }
 
 // ------------------------------------------------------------ restart files
@@ -240,6 +245,7 @@ void InelasticFrame::writeState(std::ostream& out) const {
   }
   put(out, axialTangent_);
   putFixed(out, dl0_);
+  for (double o : rigid_.offsets()) put(out, o);
 }
 
 void InelasticFrame::readState(std::istream& in) {
@@ -258,6 +264,10 @@ void InelasticFrame::readState(std::istream& in) {
   }
   axialTangent_ = get<double>(in);
   getFixed(in, dl0_);
+  const double o1 = get<double>(in), o2 = get<double>(in);
+  rigid_ = RigidEnds(Vec2::Zero(), (length_ + o1 + o2) * Vec2(rotation_(0, 0), rotation_(0, 1)), o1,
+                     o2);
+  toLocal_ = rotation_ * rigid_.linearMap();
 }
 
 // ------------------------------------------------------------ material change
@@ -270,7 +280,9 @@ Status InelasticFrame::setMaterial(const MaterialSet& mat, const ElemVec& d) {
   const double l = length_;
   std::optional<InelasticFrame> fresh;
   try {
-    fresh.emplace(mat, nodes_, Vec2::Zero(), Vec2(l * rotation_(0, 0), l * rotation_(0, 1)));
+    const double full = fullLength();
+    fresh.emplace(mat, nodes_, Vec2::Zero(), Vec2(full * rotation_(0, 0), full * rotation_(0, 1)),
+                  rigid_.offsets());
   } catch (const std::invalid_argument& e) {
     return Status::failure(e.what());
   }
@@ -309,7 +321,7 @@ Status InelasticFrame::setMaterial(const MaterialSet& mat, const ElemVec& d) {
   // the stress-free displacement takes the rest of the current strains.
   const double ei = fresh->law_.EI();
   const Rows b = midpointRows(l);
-  const ElemVec dl = rotation_ * d;
+  const ElemVec dl = toLocal_ * d;
   const double eps = c.forces.N / fresh->EA_, gamma = c.forces.V / fresh->GA_;
   const double kappaD = c.section.bulk.kp + (c.section.hingeActive ? c.section.jump.alpha / l : 0.0) + c.forces.M / ei;
   const double e0 = b.eps.dot(dl) - eps, g0 = b.gamma.dot(dl) - gamma,

@@ -37,6 +37,11 @@
 // mid-point scheme the resultants are weighted between the committed and the
 // trial state with (1/2 - alpha, 1/2 + alpha). DAMPing adds the section's
 // dashpot in dynamics (materials/SectionDamping.h).
+//
+// Rigid end zones (elements/RigidEnds.h): the strains are those of the flexible
+// length between the faces (its end moments, where end hinges open, are the
+// faces'), mapped from the nodes by the linear map G; mass and self-weight stay
+// those of the full length between the nodes.
 #include <array>
 #include <optional>
 
@@ -48,6 +53,7 @@
 #include "materials/AxialCapacity.h"
 #include "materials/HingedBending.h"
 #include "materials/SectionDamping.h"
+#include "elements/RigidEnds.h"
 
 namespace c2d {
 
@@ -59,8 +65,9 @@ class InelasticFrame final : public Element,
  public:
   // x1, x2: reference coordinates of the nodes. Bending uses the HARDening data
   // when given (elastic otherwise); the hinge exists only with SOFTening data.
+  // offsets: the rigid end zones at the first and second node (m).
   InelasticFrame(const MaterialSet& mat, const std::array<int, 2>& nodes, const Vec2& x1,
-                 const Vec2& x2);
+                 const Vec2& x2, const std::array<double, 2>& offsets = {0.0, 0.0});
 
   std::array<int, 2> nodes() const override { return nodes_; }
   void setNodes(const std::array<int, 2>& n) override { nodes_ = n; }
@@ -92,7 +99,9 @@ class InelasticFrame final : public Element,
   bool fractureDue() const override { return committed_.fracture == 1; }
   void fractureDone() override { committed_.fracture = trial_.fracture = 2; }
 
-  double length() const { return length_; }
+  double length() const { return length_; }  // the flexible length
+  const RigidEnds& rigidEnds() const { return rigid_; }
+  double fullLength() const { return length_ + rigid_.offset(0) + rigid_.offset(1); }
   const HingedBending& bendingLaw() const { return law_; }
   // Section history at the last evaluated state (committed after commit()).
   const HingedBendingState& section() const { return trial_.section; }
@@ -129,6 +138,8 @@ class InelasticFrame final : public Element,
   double axialTangent_ = 0;             // dN/deps of the last evaluation
   SectionDamping damping_;  // DAMPing: the section's dashpot in dynamics
   ElemMat rotation_;  // global -> element frame, block diagonal
+  RigidEnds rigid_;
+  ElemMat toLocal_;   // nodal dofs -> the flexible part's, element frame: rotation_ G
   ElemMat mass_;
   PointState committed_, trial_;
 

@@ -93,29 +93,33 @@ ElemMat lumpedMass(double l, double rhoA, double rhoI) {
 }  // namespace
 
 LinearFrame::LinearFrame(const MaterialSet& mat, const std::array<int, 2>& nodes,
-                         const Vec2& x1, const Vec2& x2)
+                         const Vec2& x1, const Vec2& x2, const std::array<double, 2>& offsets)
     : nodes_(nodes),
       materialNumber_(mat.number),
       shear_(mat.shear),
-      length_((x2 - x1).norm()),
+      rigid_(x1, x2, offsets[0], offsets[1]),
       ea_(mat.EA()),
       ga_(mat.GA()),
       ei_(mat.EI()),
       rhoA_(mat.rhoA()),
       damping_(mat.dampingA1) {
-  assert(length_ > 0 && "element of zero length");
-  cos_ = (x2.x() - x1.x()) / length_;
-  sin_ = (x2.y() - x1.y()) / length_;
+  const double full = (x2 - x1).norm();
+  assert(full > 0 && "element of zero length");
+  length_ = full - offsets[0] - offsets[1];
+  cos_ = (x2.x() - x1.x()) / full;
+  sin_ = (x2.y() - x1.y()) / full;
   const ElemMat t = rotation(cos_, sin_);
   const ElemMat kLocal = shear_ ? timoshenkoStiffness(length_, ea_, ga_, ei_)
                                 : eulerBernoulliStiffness(length_, ea_, ei_);
-  stiffness_ = t.transpose() * kLocal * t;
+  const ElemMat tg = t * rigid_.linearMap();
+  stiffness_ = tg.transpose() * kLocal * tg;
+  // The rigid zones' mass belongs to the joint region: the full length's.
   if (mat.mass == MassType::Lumped) {
-    mass_ = lumpedMass(length_, rhoA_, mat.rhoI());
+    mass_ = lumpedMass(full, rhoA_, mat.rhoI());
   } else if (shear_) {
-    mass_ = linearConsistentMass(length_, rhoA_, mat.rhoI());
+    mass_ = linearConsistentMass(full, rhoA_, mat.rhoI());
   } else {
-    mass_ = t.transpose() * hermiteConsistentMass(length_, rhoA_, mat.rhoI()) * t;
+    mass_ = t.transpose() * hermiteConsistentMass(full, rhoA_, mat.rhoI()) * t;
   }
 }
 
@@ -124,7 +128,7 @@ std::string LinearFrame::typeName() const {
 }
 
 SectionForces LinearFrame::forcesAt(const ElemVec& d) const {
-  const ElemVec dl = rotation(cos_, sin_) * d;
+  const ElemVec dl = rotation(cos_, sin_) * (rigid_.linearMap() * d);
   const double l = length_;
   SectionForces f;
   f.N = ea_ * (dl(3) - dl(0)) / l;
@@ -170,7 +174,7 @@ Status LinearFrame::evaluate(const ElementKinematics& kin, const StepRule& rule,
 }
 
 ElemVec LinearFrame::bodyLoad(const Vec2& g) const {
-  const double l = length_;
+  const double l = fullLength();
   ElemVec f = ElemVec::Zero();
   f.segment<2>(0) = 0.5 * rhoA_ * l * g;
   f.segment<2>(3) = 0.5 * rhoA_ * l * g;
@@ -196,6 +200,7 @@ void LinearFrame::writeState(std::ostream& out) const {
   for (const Report* r : {&trial_, &committed_})
     for (double x : {r->energy, r->forces.N, r->forces.V, r->forces.M}) put(out, x);
   putFixed(out, d0_);
+  for (double o : rigid_.offsets()) put(out, o);
 }
 
 void LinearFrame::readState(std::istream& in) {
@@ -210,6 +215,8 @@ void LinearFrame::readState(std::istream& in) {
   for (Report* r : {&trial_, &committed_})
     for (double* x : {&r->energy, &r->forces.N, &r->forces.V, &r->forces.M}) *x = get<double>(in);
   getFixed(in, d0_);
+  const double o1 = get<double>(in), o2 = get<double>(in);
+  rigid_ = RigidEnds(Vec2::Zero(), (length_ + o1 + o2) * Vec2(cos_, sin_), o1, o2);
 }
 
 // ------------------------------------------------------------ material change
@@ -223,7 +230,8 @@ Status LinearFrame::setMaterial(const MaterialSet& mat, const ElemVec& d) {
     return Status::failure(
         "the element is an elastic frame (its set had no HARDening or SOFTening when it was "
         "built); the laws cannot be added to it");
-  const LinearFrame fresh(mat, nodes_, Vec2::Zero(), length_ * Vec2(cos_, sin_));
+  const LinearFrame fresh(mat, nodes_, Vec2::Zero(), fullLength() * Vec2(cos_, sin_),
+                          rigid_.offsets());
   if (!(fresh.ea_ > 0) || !(fresh.ei_ > 0) || (fresh.shear_ && !(fresh.ga_ > 0)))
     return Status::failure("the new section stiffnesses must be positive");
   // Solve K_new x = f (the old end forces, which are self-equilibrated) for the
@@ -231,7 +239,7 @@ Status LinearFrame::setMaterial(const MaterialSet& mat, const ElemVec& d) {
   // rigid-body modes (two translations and the rotation about the midpoint,
   // mutually orthogonal) is regular and maps that x to f.
   const ElemVec f = stiffness_ * (d - d0_);
-  const double h = 0.5 * length_;
+  const double h = 0.5 * fullLength();  // the modes of the nodes' motion
   ElemVec tx, ty, rz;
   tx << 1, 0, 0, 1, 0, 0;
   ty << 0, 1, 0, 0, 1, 0;

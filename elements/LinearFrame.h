@@ -14,6 +14,10 @@
 // committed displacements d_c: the element then works on d - d0 with the
 // stress-free displacement d0 chosen so that K_new (d_c - d0) equals the old
 // end forces (d0 has no rigid-body part; zero unless the material changed).
+//
+// Rigid end zones (elements/RigidEnds.h): the stiffness is that of the flexible
+// length between the faces, mapped to the nodes (K = G^T K_flex G); mass and
+// self-weight stay those of the full length between the nodes.
 #include <array>
 #include <string>
 
@@ -21,14 +25,16 @@
 #include "core/Element.h"
 #include "core/MaterialChange.h"
 #include "core/MaterialSet.h"
+#include "elements/RigidEnds.h"
 #include "materials/SectionDamping.h"
 
 namespace c2d {
 
 class LinearFrame final : public Element, public Checkpoint, public MaterialChange {
  public:
+  // offsets: the rigid end zones at the first and second node (m).
   LinearFrame(const MaterialSet& mat, const std::array<int, 2>& nodes, const Vec2& x1,
-              const Vec2& x2);
+              const Vec2& x2, const std::array<double, 2>& offsets = {0.0, 0.0});
 
   std::array<int, 2> nodes() const override { return nodes_; }
   void setNodes(const std::array<int, 2>& n) override { nodes_ = n; }
@@ -51,7 +57,9 @@ class LinearFrame final : public Element, public Checkpoint, public MaterialChan
   // N, V, M at the element midpoint for the last evaluated d_{n+1} (every scheme).
   SectionForces sectionForces() const override { return trial_.forces; }
 
-  double length() const { return length_; }
+  double length() const { return length_; }  // the flexible length
+  const RigidEnds& rigidEnds() const { return rigid_; }
+  double fullLength() const { return length_ + rigid_.offset(0) + rigid_.offset(1); }
   bool shear() const { return shear_; }
   const ElemMat& stiffness() const { return stiffness_; }  // global frame
   // Element-frame resultants (N, V, M) at the midpoint for nodal displacements d (global).
@@ -76,7 +84,8 @@ class LinearFrame final : public Element, public Checkpoint, public MaterialChan
   std::array<int, 2> nodes_;
   int materialNumber_ = 0;
   bool shear_ = true;
-  double length_ = 0;
+  double length_ = 0;  // between the faces
+  RigidEnds rigid_;
   double cos_ = 1, sin_ = 0;  // axis direction
   double ea_ = 0, ga_ = 0, ei_ = 0, rhoA_ = 0;
   SectionDamping damping_;

@@ -90,12 +90,13 @@ void materialTangent(double l, double w, const Mat2& p, const std::array<Vec2, 2
 }  // namespace
 
 ReissnerFrame::ReissnerFrame(const MaterialSet& mat, const std::array<int, 2>& nodes,
-                             const Vec2& x1, const Vec2& x2)
+                             const Vec2& x1, const Vec2& x2, const std::array<double, 2>& offsets)
     : nodes_(nodes),
       materialNumber_(mat.number),
-      x1_(x1),
-      x2_(x2),
-      length_((x2 - x1).norm()),
+      rigid_(x1, x2, offsets[0], offsets[1]),
+      x1_(rigid_.face(0, x1)),
+      x2_(rigid_.face(1, x2)),
+      length_((x2_ - x1_).norm()),
       beta0_(std::atan2(x2.y() - x1.y(), x2.x() - x1.x())),
       ea_(mat.EA()),
       ga_(mat.GA()),
@@ -106,11 +107,12 @@ ReissnerFrame::ReissnerFrame(const MaterialSet& mat, const std::array<int, 2>& n
   assert(length_ > 0 && "element of zero length");
   if (mat.rc) axial_ = mat.rc->axialCapacity();
   // Rotation is additive in 2D: the kinetic energy is quadratic in the nodal
-  // velocities, so the mass matrix is constant (linear shape functions).
+  // velocities, so the mass matrix is constant (linear shape functions). The
+  // rigid zones' mass belongs to the joint region: the full length's.
   const double rhoI = mat.rhoI();
   mass_.setZero();
   for (int i = 0; i < kNodeDofs; ++i) {
-    const double mu = (i < 2 ? rhoA_ : rhoI) * length_;
+    const double mu = (i < 2 ? rhoA_ : rhoI) * fullLength();
     if (mat.mass == MassType::Lumped) {
       mass_(i, i) = mass_(i + 3, i + 3) = mu / 2;
     } else {
@@ -121,6 +123,10 @@ ReissnerFrame::ReissnerFrame(const MaterialSet& mat, const std::array<int, 2>& n
 }
 
 Vec3 ReissnerFrame::strains(const ElemVec& d) const {
+  return faceStrains(rigid_.any() ? rigid_.faceDisplacement(d) : d);
+}
+
+Vec3 ReissnerFrame::faceStrains(const ElemVec& d) const {
   const Vec2 g = (x2_ + d.segment<2>(3) - x1_ - d.segment<2>(0)) / length_;
   const Vec2 e = rot(beta0_ + 0.5 * (d(2) + d(5))).transpose() * g - Vec2::UnitX();
   return {e.x(), e.y(), (d(5) - d(2)) / length_};
@@ -268,11 +274,11 @@ Vec3 ReissnerFrame::midPointForce(const ElemVec& d, const ElemVec& dn, double al
   return e1;
 }
 
-ElemVec ReissnerFrame::axialStrainGradient(const ElemVec& d) const {
+ElemVec ReissnerFrame::axialStrainGradient(const ElemVec& d) const {  // d: the faces'
   // Sigma = (Lambda^T phi')_1 - 1: dSigma/du_a = -+(cos psi, sin psi)/l, dSigma/dtheta_a = Gamma/2.
   const double psi = beta0_ + 0.5 * (d(2) + d(5));
   const Vec2 t(std::cos(psi) / length_, std::sin(psi) / length_);
-  const double half = 0.5 * strains(d)(1);
+  const double half = 0.5 * faceStrains(d)(1);
   ElemVec g;
   g << -t.x(), -t.y(), half, t.x(), t.y(), half;
   return g;
@@ -281,6 +287,13 @@ ElemVec ReissnerFrame::axialStrainGradient(const ElemVec& d) const {
 Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rule, bool wantTangent,
                                ElemVec& residual, ElemMat& tangent) {
   if (!rule.rotationsInRange(kin.d - kin.dn)) return Status::failure(StepRule::kRotationRangeMessage);
+  // Rigid end zones: the law acts on the flexible part, driven by the faces.
+  ElementKinematics faces;
+  if (rigid_.any()) {
+    faces.d = rigid_.faceDisplacement(kin.d);
+    faces.dn = rigid_.faceDisplacement(kin.dn);
+  }
+  const ElementKinematics& fk = rigid_.any() ? faces : kin;
   const HingedBendingState& from = committed_.section;
   const double openSign =
       !from.hingeActive && trial_.section.hingeActive ? trial_.section.hingeSign : 0.0;
@@ -288,7 +301,7 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
   const bool coupled = axial_.has_value() || law_.capacity() != nullptr;
   double N1 = 0;
   if (coupled) {
-    const double sigma = strains(kin.d)(0) - e0_(0);
+    const double sigma = faceStrains(fk.d)(0) - e0_(0);
     N1 = ea_ * sigma;
     axialTangent_ = ea_;
     if (axial_) {
@@ -297,15 +310,15 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
       axialTangent_ = a.tangent;
       trial_.axial = a.state;
     }
-    axialGradient_ = axialTangent_ * axialStrainGradient(kin.d);
+    axialGradient_ = axialTangent_ * axialStrainGradient(fk.d);
   }
   // Bending: the curvature K = (theta2 - theta1)/l is linear in d.
   const std::array<double, 2> ends = trial_.section.endHinge;  // opened in this trial
   HingedBendingResponse bend;
-  const double kappa1 = (kin.d(5) - kin.d(2)) / length_ - e0_(2);
+  const double kappa1 = (fk.d(5) - fk.d(2)) / length_ - e0_(2);
   if (Status st = law_.respond(kappa1, length_, from, openSign, bend, N1, held_); !st) return st;
   const double m1 = bend.state.M;
-  const double kappaN = (kin.dn(5) - kin.dn(2)) / length_ - e0_(2);
+  const double kappaN = (fk.dn(5) - fk.dn(2)) / length_ - e0_(2);
   // The section's dashpot (materials/SectionDamping.h): f = a1/h times the
   // strains' change over the step, in bending the elastic curvature's, axially
   // (a bounded axial force) the elastic strain's.
@@ -316,7 +329,7 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
              ? SectionDamping::elasticBending(f, law_.EI(), kappa1 - kappaN)
              : SectionDamping::bending(f, law_.EI(), m1 - from.M, kappa1 - kappaN, bend.tangent);
     if (axial_)
-      nd = axial_->damping(f, committed_.forces.N, N1, strains(kin.d)(0) - strains(kin.dn)(0),
+      nd = axial_->damping(f, committed_.forces.N, N1, faceStrains(fk.d)(0) - faceStrains(fk.dn)(0),
                            trial_.axial.ep - committed_.axial.ep, axialTangent_);
   }
   Vec3 strain;
@@ -332,7 +345,7 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
     halfTanAt = &halfTan;
     if (law_.isElastic()) {
       strain =
-          midPointForce(kin.d, kin.dn, rule.alpha + f, w * m1 + (1 - w) * law_.EI() * kappaN + md.m,
+          midPointForce(fk.d, fk.dn, rule.alpha + f, w * m1 + (1 - w) * law_.EI() * kappaN + md.m,
                         f > 0 ? (w * bend.tangent + md.tangent) / wd : bend.tangent, wantTangent,
                         residual, tangent, halfTan);
     } else {  // inelastic: a moment whose work never exceeds the stored energy's change
@@ -343,7 +356,7 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
         cp.dm = ((mm.dM1 + md.dM1) * bend.dN) * axialGradient_;
         if (axial_) {
           const AxialCapacity::MidPoint mp = axial_->midPoint(
-              committed_.forces.N, N1, strains(kin.dn)(0) - e0_(0), strains(kin.d)(0) - e0_(0),
+              committed_.forces.N, N1, faceStrains(fk.dn)(0) - e0_(0), faceStrains(fk.d)(0) - e0_(0),
               axialTangent_, trial_.axial.ep - committed_.axial.ep, w, HingedBending::kMidPointRatio);
           cp.axial = true;
           cp.n = mp.n + nd.m;
@@ -351,7 +364,7 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
         }
       }
       strain =
-          midPointForce(kin.d, kin.dn, rule.alpha + f, mm.m + md.m, (mm.tangent + md.tangent) / wd,
+          midPointForce(fk.d, fk.dn, rule.alpha + f, mm.m + md.m, (mm.tangent + md.tangent) / wd,
                         wantTangent, residual, tangent, halfTan, coupled ? &cp : nullptr);
     }
   } else {
@@ -363,9 +376,14 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
       cp.dm = ((1 + md.dM1) * bend.dN) * axialGradient_;
     }
     Damper damper;
-    if (f > 0) damper = {f, strains(kin.dn)};
-    strain = staticForce(kin.d, m1 + md.m, bend.tangent + md.tangent, damper, wantTangent, residual,
+    if (f > 0) damper = {f, faceStrains(fk.dn)};
+    strain = staticForce(fk.d, m1 + md.m, bend.tangent + md.tangent, damper, wantTangent, residual,
                          tangent, coupled ? &cp : nullptr);
+  }
+  if (rigid_.any()) {
+    rigid_.toNodes(kin.d, rule.scheme == Scheme::MidPoint ? &kin.dn : nullptr, residual,
+                   wantTangent ? &tangent : nullptr);
+    if (coupled) axialGradient_ = rigid_.jacobian(kin.d).transpose() * axialGradient_;
   }
   if (rule.dynamic())
     rule.addInertia(mass_, kin.d - kin.dn, kin.vn, kin.an, residual, wantTangent ? &tangent : nullptr,
@@ -421,8 +439,8 @@ void ReissnerFrame::setSection(const HingedBendingState& s) { trial_.section = c
 
 ElemVec ReissnerFrame::bodyLoad(const Vec2& g) const {
   ElemVec f = ElemVec::Zero();
-  f.segment<2>(0) = 0.5 * rhoA_ * length_ * g;
-  f.segment<2>(3) = 0.5 * rhoA_ * length_ * g;
+  f.segment<2>(0) = 0.5 * rhoA_ * fullLength() * g;
+  f.segment<2>(3) = 0.5 * rhoA_ * fullLength() * g;
   return f;
 }
 
@@ -447,6 +465,7 @@ void ReissnerFrame::writeState(std::ostream& out) const {
   }
   put(out, axialTangent_);
   putFixed(out, axialGradient_);
+  for (double o : rigid_.offsets()) put(out, o);
 }
 
 void ReissnerFrame::readState(std::istream& in) {
@@ -472,12 +491,15 @@ void ReissnerFrame::readState(std::istream& in) {
   }
   axialTangent_ = get<double>(in);
   getFixed(in, axialGradient_);
+  const double o1 = get<double>(in), o2 = get<double>(in);
+  const Vec2 t = (x2_ - x1_) / length_;
+  rigid_ = RigidEnds(x1_ - o1 * t, x2_ + o2 * t, o1, o2);
 }
 
 // ------------------------------------------------------------ material change
 
 Status ReissnerFrame::setMaterial(const MaterialSet& mat, const ElemVec& d) {
-  const ReissnerFrame fresh(mat, nodes_, x1_, x2_);
+  const ReissnerFrame fresh(mat, nodes_, x1_ - rigid_.arm(0), x2_ - rigid_.arm(1), rigid_.offsets());
   const Vec3 c = fresh.sectionStiffness();
   if (!(c.array() > 0).all())
     return Status::failure("the new section stiffnesses EA, GA, EI must be positive");

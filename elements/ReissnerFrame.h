@@ -51,6 +51,14 @@
 // under the mid-point scheme the resultants come from the (alpha + a1/h)-
 // weighted strains and the work identity above holds with alpha + a1/h; the
 // reported section forces and energy stay the material's.
+//
+// Rigid end zones (elements/RigidEnds.h): everything above holds for the
+// flexible part between the faces (x1_, x2_ and length_ are its own), whose
+// displacements are the exact rigid-arm map of the nodal ones; forces and the
+// tangent go back by that map (with its geometric term; under the mid-point
+// scheme the algorithmic map that keeps the work identity). Mass and
+// self-weight stay those of the full length between the nodes, and inertia
+// acts on the nodal motion.
 #include <array>
 #include <limits>
 #include <optional>
@@ -64,6 +72,7 @@
 #include "materials/AxialCapacity.h"
 #include "materials/HingedBending.h"
 #include "materials/SectionDamping.h"
+#include "elements/RigidEnds.h"
 
 namespace c2d {
 
@@ -73,8 +82,10 @@ class ReissnerFrame final : public Element,
                             public MaterialChange,
                             public RcMember {
  public:
+  // x1, x2: the nodes' reference coordinates; offsets: the rigid end zones at
+  // the first and second node (m).
   ReissnerFrame(const MaterialSet& mat, const std::array<int, 2>& nodes, const Vec2& x1,
-                const Vec2& x2);
+                const Vec2& x2, const std::array<double, 2>& offsets = {0.0, 0.0});
 
   std::array<int, 2> nodes() const override { return nodes_; }
   void setNodes(const std::array<int, 2>& n) override { nodes_ = n; }
@@ -116,7 +127,9 @@ class ReissnerFrame final : public Element,
   void setHeld(bool held) { held_ = held; }
   bool held() const { return held_; }
 
-  double length() const { return length_; }
+  double length() const { return length_; }  // the flexible length
+  const RigidEnds& rigidEnds() const { return rigid_; }
+  double fullLength() const { return length_ + rigid_.offset(0) + rigid_.offset(1); }
   const HingedBending& bendingLaw() const { return law_; }
   // Section history at the last evaluated state; setSection() sets both the
   // trial and the committed history (the start of a phase).
@@ -131,6 +144,8 @@ class ReissnerFrame final : public Element,
   // Total material strains (Sigma, Gamma, K) at the midpoint for nodal
   // displacements d (the initial strain is not subtracted).
   Vec3 strains(const ElemVec& d) const;
+  // The same for the flexible part's face displacements.
+  Vec3 faceStrains(const ElemVec& dFace) const;
   // Stored energy W(d) = l/2 (E(d) - E0).C.(E(d) - E0).
   double energy(const ElemVec& d) const;
 
@@ -178,7 +193,8 @@ class ReissnerFrame final : public Element,
 
   std::array<int, 2> nodes_;
   int materialNumber_ = 0;
-  Vec2 x1_, x2_;
+  RigidEnds rigid_;
+  Vec2 x1_, x2_;  // the faces' reference coordinates (the nodes' without rigid zones)
   double length_ = 0;
   double beta0_ = 0;
   double ea_ = 0, ga_ = 0, ei_ = 0, rhoA_ = 0;

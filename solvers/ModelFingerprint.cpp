@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "core/output/Checkpoint.h"
+#include "elements/ElementFactory.h"
 
 namespace c2d {
 
@@ -55,6 +56,8 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
     }
     const Element& el = model.element(e);
     elements.add(el.nodes()[0]).add(el.nodes()[1]).add(el.materialNumber());
+    // Rigid end zones (RIGId), only where given: other decks' fingerprints stay.
+    if (const auto o = rigidOffsets(el); o[0] > 0 || o[1] > 0) elements.add(o[0]).add(o[1]);
   }
   for (const auto& [number, m] : model.materials()) {
     materials.add(number).add(m.elementType);

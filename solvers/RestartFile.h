@@ -23,7 +23,7 @@
 
 namespace c2d {
 
-inline constexpr unsigned kRestartVersion = 18;  // 17: infill struts; 18: section shapes
+inline constexpr unsigned kRestartVersion = 19;  // 17: infill struts; 18: section shapes; 19: rigid end zones
 
 // Writes the committed state: call Analysis::commit() first. `extra` is the
 // caller's own section (opaque here); `input` the fingerprint of the model as

@@ -32,7 +32,7 @@ std::vector<MeshCommandEntry> meshCommandTable() {
   std::vector<MeshCommandEntry> t;
   for (auto family : {geometryCommandTable, materialCommandTable, nodalCommandTable,
                       contactCommandTable, loadCommandTable, blastCommandTable,
-                      infillCommandTable, weakenCommandTable})
+                      infillCommandTable, weakenCommandTable, rigidCommandTable})
     for (auto& e : family()) t.push_back(std::move(e));
   t.push_back({meshSpec("PRINt", "Echo the mesh data in the log (default).", {}), applyPrint});
   t.push_back({meshSpec("NOPRint", "Stop echoing the mesh data in the log.", {}), applyNoPrint});
@@ -94,6 +94,7 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
     if ((x2 - x1).norm() == 0) failAt(r, 3, what + " has zero length");
     model.setElement(num - 1, makeElement(*mat, {pe.nodes[0] - 1, pe.nodes[1] - 1}, x1, x2));
   }
+  applyRigidEnds(ctx);
 
   for (auto& f : ctx.afterElements) f(ctx);
 
@@ -186,6 +187,7 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
   ctx.weakened.clear();
   ctx.deferred.clear();
   ctx.joints.clear();
+  ctx.rigidEnds.clear();
   ctx.referencedNodes.clear();
   ctx.topologyChanged = false;
 }

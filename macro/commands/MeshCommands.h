@@ -78,6 +78,14 @@ struct MeshContext {
   // Parts built on the members once the elements are (INFIll's struts), in
   // deck order, before the deferred commands (which may name their elements).
   std::vector<std::function<void(MeshContext&)>> afterElements;
+  // RIGId: rigid end zones, given to their elements once those are built.
+  struct PendingRigid {
+    int element = 0;  // deck number
+    std::array<double, 2> offsets{};
+    Record origin;
+  };
+  std::vector<PendingRigid> rigidEnds;
+
   // Edge and coordinate commands, run in deck order once the mesh is complete.
   std::vector<std::function<void(MeshContext&)>> deferred;
   // Elements weakened (WEAKen; deck numbers) and the line of the record.
@@ -160,6 +168,9 @@ std::vector<MeshCommandEntry> nodalCommandTable();     // BOUNdary FORCe DISPlac
 std::vector<MeshCommandEntry> contactCommandTable();   // CONTact
 std::vector<MeshCommandEntry> infillCommandTable();    // INFIll
 std::vector<MeshCommandEntry> weakenCommandTable();    // WEAKen
+std::vector<MeshCommandEntry> rigidCommandTable();     // RIGId
+// RIGId's records applied to the elements just built (finishMesh).
+void applyRigidEnds(MeshContext& ctx);
 void registerMeshCommands(CommandRegistry& registry);
 // Element types (FRAMe) and material sub-records (ELAStic, CROSs, ...).
 void registerMaterialSubRecords(CommandRegistry& registry);

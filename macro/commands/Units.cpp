@@ -209,6 +209,7 @@ const std::vector<Data>& data() {
       {S::Mesh, "blas", "t [s]; n1, n2, inc [-]; td [s]"},
       {S::Mesh, "infi", "n1 n2 n3 n4, ng, dn [-]"},
       {S::Mesh, "weak", "factor, n1, n2, inc [-]"},
+      {S::Mesh, "rigi", "e [-]; offset1, offset2 [m]"},
       {S::Mesh, "para", "the expression's (a parameter has the unit of the fields it is used in)"},
       {S::Mesh, "feap", "numnp numel nummat ndm ndf nen [-]"},
       {S::Mesh, "swee", "the values' (those of the fields the parameter is used in)"},

@@ -6,8 +6,11 @@
 
 #include <random>
 
+#include <cmath>
+
 #include "core/Element.h"
 #include "core/MaterialSet.h"
+#include "core/StepRule.h"
 
 namespace c2d::test {
 
@@ -16,6 +19,33 @@ inline ElemVec randomVec(std::mt19937& gen, double scale) {
   ElemVec v;
   for (int i = 0; i < kElemDofs; ++i) v(i) = u(gen);
   return v;
+}
+
+inline Eigen::Matrix2d rot(double a) {
+  return (Eigen::Matrix2d() << std::cos(a), -std::sin(a), std::sin(a), std::cos(a)).finished();
+}
+
+// Nodal displacements of the rigid motion x -> c + R(w)(x - c) + t.
+inline ElemVec rigidMotion(const Vec2& x1, const Vec2& x2, double w, const Vec2& c, const Vec2& t) {
+  ElemVec d;
+  d << c + rot(w) * (x1 - c) + t - x1, w, c + rot(w) * (x2 - c) + t - x2, w;
+  return d;
+}
+
+// A step rule of the scheme: Newmark's trapezoidal coefficients for dt = 0.05.
+inline StepRule stepRule(Scheme scheme, double alpha = 0) {
+  StepRule r;
+  r.scheme = scheme;
+  r.alpha = alpha;
+  if (scheme != Scheme::Static) {
+    const double dt = 0.05;
+    r.cv = 2.0 / dt;
+    r.vv = -1.0;
+    r.ca = 4.0 / (dt * dt);
+    r.av = -4.0 / dt;
+    r.aa = -1.0;
+  }
+  return r;
 }
 
 // EA = 2e4, GA = 8e3, EI = 1e2 (A = 2, I = 0.05 for the mass, density 0.5).

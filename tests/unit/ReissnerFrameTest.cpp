@@ -22,43 +22,20 @@ MaterialSet reissnerMaterial(MassType mass = MassType::Consistent) {
   return test::resultantMaterial(Kinematics::Finite, true, mass);
 }
 
-Eigen::Matrix2d rot(double a) {
-  return (Eigen::Matrix2d() << std::cos(a), -std::sin(a), std::sin(a), std::cos(a)).finished();
-}
-
-// Nodal displacements of the rigid motion x -> c + R(w)(x - c) + t.
-ElemVec rigidMotion(const Vec2& x1, const Vec2& x2, double w, const Vec2& c, const Vec2& t) {
-  ElemVec d;
-  d << c + rot(w) * (x1 - c) + t - x1, w, c + rot(w) * (x2 - c) + t - x2, w;
-  return d;
-}
 
 // A deformed state: a large rigid rotation w plus a random perturbation.
 ElemVec deformedState(std::mt19937& gen, const Vec2& x1, const Vec2& x2, double w) {
-  return rigidMotion(x1, x2, w, Vec2(0.2, 0.1), Vec2(0.3, -0.4)) + test::randomVec(gen, 0.08);
+  return test::rigidMotion(x1, x2, w, Vec2(0.2, 0.1), Vec2(0.3, -0.4)) + test::randomVec(gen, 0.08);
 }
 
-StepRule makeRule(Scheme scheme, double alpha = 0) {
-  StepRule r;
-  r.scheme = scheme;
-  r.alpha = alpha;
-  if (scheme != Scheme::Static) {
-    const double dt = 0.05;
-    r.cv = 2.0 / dt;
-    r.vv = -1.0;
-    r.ca = 4.0 / (dt * dt);
-    r.av = -4.0 / dt;
-    r.aa = -1.0;
-  }
-  return r;
-}
+StepRule makeRule(Scheme scheme, double alpha = 0) { return test::stepRule(scheme, alpha); }
 
 TEST(ReissnerFrameRigidBody, FiniteRigidMotionsGiveZeroResidual) {
   const Vec2 x1(1.0, -0.5), x2(2.2, 1.1);
   ReissnerFrame e(reissnerMaterial(), {0, 1}, x1, x2);
   const Vec2 c(-0.7, 0.4), t(1.5, -2.5);
   for (double w : {0.0, 0.7, 3.5, 10.0, -7.3}) {
-    const ElemVec d = rigidMotion(x1, x2, w, c, t);
+    const ElemVec d = test::rigidMotion(x1, x2, w, c, t);
     ElemVec r;
     ElemMat k;
     ASSERT_TRUE(
@@ -67,7 +44,7 @@ TEST(ReissnerFrameRigidBody, FiniteRigidMotionsGiveZeroResidual) {
     EXPECT_LT(r.norm(), 1e-10) << "w = " << w;
     EXPECT_LT(e.strainEnergy(), 1e-20);
     // Mid-point force between two different rigid positions is zero as well.
-    const ElemVec dn = rigidMotion(x1, x2, w - 2.5, c, -t);  // below pi (Cayley)
+    const ElemVec dn = test::rigidMotion(x1, x2, w - 2.5, c, -t);  // below pi (Cayley)
     StepRule rule = makeRule(Scheme::MidPoint, 0.1);
     rule.ca = rule.av = rule.aa = 0;
     ASSERT_TRUE(e.evaluate({d, dn, ElemVec::Zero(), ElemVec::Zero()}, rule, true, r, k).ok);
@@ -221,7 +198,7 @@ TEST(ReissnerFrameMidPoint, CayleySpinOfTheMidPointConfigurationIsStrainFree) {
   const Eigen::Matrix2d w = (Eigen::Matrix2d() << 0, -1, 1, 0).finished();
   const Eigen::Matrix2d cay = (Eigen::Matrix2d::Identity() - 0.5 * eps * w).inverse() *
                               (Eigen::Matrix2d::Identity() + 0.5 * eps * w);
-  EXPECT_LT((cay - rot(turn)).norm(), 1e-15);
+  EXPECT_LT((cay - test::rot(turn)).norm(), 1e-15);
   const ElemVec dn = ElemVec::Zero();  // unstressed reference
   ElemVec d;
   d << cay * x1 - x1, turn, cay * x2 - x2, turn;
@@ -249,7 +226,7 @@ TEST(ReissnerFrameSection, MaterialResultantsAreFrameInvariant) {
   // With psi_m = 0 the midpoint strains are (s, g, kap) exactly.
   for (double w : {0.0, 3.5}) {
     ElemVec dw;
-    dw << rot(w) * (x1 + d.head<2>()) - x1, d(2) + w, rot(w) * (x2 + d.segment<2>(3)) - x2,
+    dw << test::rot(w) * (x1 + d.head<2>()) - x1, d(2) + w, test::rot(w) * (x2 + d.segment<2>(3)) - x2,
         d(5) + w;
     ElemVec r;
     ElemMat k;
@@ -336,12 +313,12 @@ void checkRollUp(int n, double lambda, double angle) {
     chordSum += l / n * Vec2(std::cos((k + 0.5) * dth), std::sin((k + 0.5) * dth));
   const Vec2 t(std::cos(angle), std::sin(angle));
   const Vec2 tipPosition = s.d.segment<2>(3 * n) + l * t;
-  EXPECT_LT((tipPosition - rot(angle) * chordSum).norm(), 1e-9 * l);
+  EXPECT_LT((tipPosition - test::rot(angle) * chordSum).norm(), 1e-9 * l);
   for (int k = 0; k <= n; ++k) EXPECT_NEAR(s.d(3 * k + 2), k * dth, 1e-9);
   if (std::abs(std::sin(0.5 * dth)) > 0.1) {
     const double cn = 0.5 * dth / std::sin(0.5 * dth);
     const Vec2 exact(l * std::sin(phi) / phi, l * (1 - std::cos(phi)) / phi);
-    EXPECT_LT((tipPosition - cn * (rot(angle) * exact)).norm(), 1e-9 * l);
+    EXPECT_LT((tipPosition - cn * (test::rot(angle) * exact)).norm(), 1e-9 * l);
   }
   if (lambda == 1.0 && n >= 2) {
     EXPECT_LT(tipPosition.norm(), 1e-9 * l);  // closed circle
