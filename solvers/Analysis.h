@@ -181,7 +181,8 @@ class Analysis {
   Status checkSolve();
   // The convergence tests for an iteration whose correction has this energy |du.R|.
   bool convergedAt(double energy, int iteration) const;
-  // The step's iterations repeat with a period of one to six (plain Newton cycling).
+  // The step's iterations repeat with a period of one to six (plain Newton
+  // cycling), or a static step's residuals run away.
   bool cycling() const;
   void applyIncrement(const Eigen::VectorXd& du, double scale);
   // Under the Cayley rule a rotation's increment stays below pi in one step: a

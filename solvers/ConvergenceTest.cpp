@@ -34,5 +34,13 @@ bool stopsProgressing(const double* values, std::size_t n, int maxPeriod, double
   return false;
 }
 
+bool runsAway(const double* residuals, std::size_t n) {
+  if (n < 4) return false;
+  for (std::size_t k = n - 2; k < n; ++k)
+    if (!(residuals[k] > residuals[k - 1])) return false;
+  const double least = *std::min_element(residuals + 1, residuals + n);
+  return residuals[n - 1] > kDivergence * least;
+}
+
 }  // namespace c2d
 

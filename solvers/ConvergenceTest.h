@@ -56,4 +56,17 @@ bool repeatsWithPeriod(const double* values, std::size_t n, int period, int matc
 // geometrically: at 1e-6 a cycle of period two took 15 iterations to be seen.
 bool stopsProgressing(const double* values, std::size_t n, int maxPeriod, double tolerance);
 
+// Newton's iterates run away from the solution: the residuals of the last
+// three iterations increase, and the last is above kDivergence times the
+// least of the step after its first iteration (the first is the committed
+// state's, about zero in a displacement-controlled step). A static step whose
+// sections passed a kink of their law in the first correction (a member's
+// first yield, beyond which an RC section's law is almost flat up to Mu: its
+// tangent 1000 times below EI) takes a curvature jump of the residual over
+// that tangent in the next; with finite rotations the jump turns elements by
+// tenths of a radian, stretches them past their bars' yield, and every later
+// iterate is further off. values[0 .. n-1] in iteration order.
+constexpr double kDivergence = 100;
+bool runsAway(const double* residuals, std::size_t n);
+
 }  // namespace c2d

@@ -163,7 +163,7 @@ Flow ProblemRun::newtonIteration(const Macro& m, bool update, bool lineSearch, b
   if (info.globalized)
     log_ << "  " << (symmetric ? "TANG " : "UTAN ") << "  step " << s.step + 1
          << ": Newton's iterates cycle (energy or residual repeating with a period of one to "
-            "six); the line search of TANG,LINE takes over\n";
+            "six) or run away (the residual growing); the line search of TANG,LINE takes over\n";
   // Stalled: the energy repeats with period one or two (a fixed point or a
   // two-cycle of Newton's method that the line search did not break): no later
   // iteration of the loop converges, so the step is cut (or reported) now.

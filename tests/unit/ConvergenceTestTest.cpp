@@ -80,5 +80,21 @@ TEST(ConvergenceTest, NewtonStopsProgressingOnCyclesUpToPeriodSix) {
   EXPECT_FALSE(stopsProgressing(slow, 12, 6, 1e-2));
 }
 
+TEST(ConvergenceTest, AStaticStepsResidualsRunningAwayAreSeen) {
+  // An RC cantilever under 50 kN of tension pushed 10 mm at its tip in one
+  // step (FINIte): the committed state's residual, then the first
+  // correction's, then away.
+  const double away[] = {1.6e-9, 285.07, 726.05, 6.7011e4, 4.2082e7};
+  EXPECT_FALSE(runsAway(away, 3));  // too short
+  EXPECT_TRUE(runsAway(away, 4));   // twice up, 235 times the least
+  const double up[] = {1.6e-9, 285.07, 726.05, 2.0e4};
+  EXPECT_FALSE(runsAway(up, 4));  // twice up, 70 times the least
+  // A step that passes a kink and comes back (residual up once): not away.
+  const double back[] = {1e-9, 221.4, 142.7, 2e4, 20.6, 1.1e-4};
+  for (std::size_t n = 4; n <= 6; ++n) EXPECT_FALSE(runsAway(back, n)) << n;
+  const double quadratic[] = {3.7e3, 8.1e2, 2.1e2, 1.5e1, 1.3e-1, 4.5e-5};
+  for (std::size_t n = 4; n <= 6; ++n) EXPECT_FALSE(runsAway(quadratic, n)) << n;
+}
+
 }  // namespace
 }  // namespace c2d
