@@ -51,8 +51,16 @@ MaterialSet weakenedSet(const MaterialSet& mat, double f, int number) {
         << f;
   m.label = label.str();
   if (m.section) {
+    // Every width of the concrete and every bar area times f scales each
+    // resultant of a strain plane by f: the section's laws scale exactly. A
+    // circle has no width of its own to scale.
     RcSectionData& s = *m.section;
+    if (s.shape == SectionShapeKind::Circle || s.shape == SectionShapeKind::Annulus)
+      throw std::invalid_argument(
+          "a CIRCular or ANNUlar section has no width to scale: give the weakened member a "
+          "material set of its own (fewer bars, a thinner wall)");
     s.b *= f;
+    s.flangeWidth *= f;
     for (RebarLayer& l : s.bars) l.area *= f;
     if (s.stirrups) s.stirrups->area *= f;
     m.density /= f;

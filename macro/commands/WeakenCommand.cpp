@@ -52,7 +52,7 @@ void weakenElement(MeshContext& ctx, const Record& r, std::size_t field, int e, 
   }
   const auto nodes = el.nodes();
   model.setElement(e, makeElement(*model.material(it->second), nodes, model.coord(nodes[0]),
-                                  model.coord(nodes[1])));
+                                  model.coord(nodes[1]), rigidOffsets(el)));
 }
 
 void applyWeaken(MeshContext& ctx, const MeshCommand& cmd) {

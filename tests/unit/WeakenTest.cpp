@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "elements/ElementFactory.h"
 #include "elements/InfillStrut.h"
 #include "materials/RcSection.h"
 #include "materials/WeakenedSet.h"
@@ -108,6 +109,38 @@ TEST(WeakenDeck, WeakenedCantileverCurveIsTheOriginalsTimesTheFactor) {
   }
   EXPECT_GT(peak, 0.95 * 269.128);  // past Mu(0) of the section (decks/rc/column_capacity.inp)
   EXPECT_NE(b.log.find("set 1 -> set 2"), std::string::npos);
+}
+
+TEST(WeakenedSet, TeeSectionScalesExactlyAndCirclesAreRefused) {
+  const Model m = testing::buildMesh(cantilever(
+      "MATE,1 beam with its slab\n FRAMe\n SECTion TEE 0.3 0.6 1.2 0.15 30e3 500e3 200e6\n"
+      " REBAr 0.04 8e-4 0.55 1.5e-3\n STIRrups 1e-4 0.15\n DENSity,,2.5\n\n"));
+  const MaterialSet& a = *m.material(1);
+  const double f = 0.6;
+  const MaterialSet w = weakenedSet(a, f, 5);
+  ASSERT_TRUE(w.rc && a.rc);
+  expectRel(w.EI(), f * a.EI(), 1e-12, "EI");
+  for (int sign : {1, -1})
+    for (double N : {-2000.0, 0.0, 100.0}) {
+      expectRel(w.capacity->at(sign, f * N).Mu, f * a.capacity->at(sign, N).Mu, 1e-9, "Mu");
+      expectRel(w.capacity->at(sign, f * N).My, f * a.capacity->at(sign, N).My, 1e-9, "My");
+    }
+  const Model c = testing::buildMesh(cantilever(
+      "MATE,1 column\n FRAMe\n SECTion CIRCular 0.6 30e3 500e3\n REBAr RING 8 3.1416e-4 0.06\n"
+      " DENSity,,2.5\n\n"));
+  EXPECT_THROW(weakenedSet(*c.material(1), 0.5, 5), std::invalid_argument);
+}
+
+TEST(WeakenCommand, AWeakenedMemberKeepsItsRigidEnds) {
+  const std::string beam =
+      "COOR\n 1 1 0 0\n 3 0 4 0\n\n"
+      "MATE,1\n FRAMe\n ELAStic ISOTropic 30e6 0.2\n CROSs SECTion 0.12 1.6e-3\n\n"
+      "ELEM\n 1 1 1 1 2\n 2 1 1 2 3\n\n"
+      "RIGId\n 1 0.3 0\n\n";
+  const Model m = testing::buildMesh(beam + "WEAKen\n 0.5 1\n\n");
+  const auto offsets = rigidOffsets(m.element(0));
+  EXPECT_EQ(offsets[0], 0.3);
+  EXPECT_EQ(offsets[1], 0.0);
 }
 
 TEST(WeakenCommand, InfillStrutKeepsTheShareOfItsLaw) {
