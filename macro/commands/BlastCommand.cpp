@@ -39,7 +39,9 @@ void applyBlasts(MeshContext& ctx, const MeshCommand& cmd) {
     }
     const double t = ctx.number(r, 0);
     if (!std::isfinite(t) || t < 0) failAt(r, 0, "the blast time must be zero or positive");
-    const auto [n1, n2, inc] = ctx.elementRange(r, 1, false);
+    // Plain variables, not a structured binding: the deferred lambda captures them.
+    const auto range = ctx.elementRange(r, 1, false);
+    const int n1 = range.n1, n2 = range.n2, inc = range.inc;
     const double td = ctx.number(r, 4);
     if (!std::isfinite(td) || td < 0)
       failAt(r, 4, "the release time td must be zero or positive",

@@ -65,7 +65,9 @@ void applyWeaken(MeshContext& ctx, const MeshCommand& cmd) {
     if (!(f > 0 && f <= 1))
       failAt(r, 0, "the share kept must lie in (0, 1]",
              "1 keeps the element as it is; to take it out use REMOve or BLASt");
-    const auto [n1, n2, inc] = ctx.elementRange(r, 1, false);
+    // Plain variables, not a structured binding: the deferred lambda captures them.
+    const auto range = ctx.elementRange(r, 1, false);
+    const int n1 = range.n1, n2 = range.n2, inc = range.inc;
     ctx.deferred.push_back([=, &r](MeshContext& c) {
       if (const long long first = firstBeyond(n1, n2, inc, c.model.numElements()))
         failAt(r, first == n1 ? 1 : 2, "WEAKen: element " + std::to_string(first) + " is not defined");
