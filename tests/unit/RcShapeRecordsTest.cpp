@@ -12,6 +12,7 @@
 #include "solvers/Analysis.h"
 #include "solvers/RestartFile.h"
 #include "tests/unit/DeckTestSupport.h"
+#include "tests/unit/MeshBuildSupport.h"
 #include "tests/unit/RunDeckSupport.h"
 
 namespace c2d {
@@ -21,15 +22,7 @@ using testing::DeckTempDir;
 using testing::expectDeckError;
 
 Model build(const std::string& mesh, std::ostream* echo = nullptr) {
-  const Deck d = parseDeckText("FEAP * * test\n0 0 0 2 3 2\n" + mesh + "END\nSTOP\n", "mesh.inp");
-  const Problem& pr = std::get<Problem>(d.items.at(0));
-  Parameters params;
-  Model model;
-  MeshBinder binder(model, params, echo);
-  binder.setControl(pr.control);
-  binder.apply(pr.mesh);
-  binder.finish(pr.meshEnd.loc, pr.meshEnd.lineText());
-  return model;
+  return testing::buildMesh(mesh, echo);
 }
 
 // The material is on lines 3 (MATE), 4 (FRAMe), 5 (SECTion), 6 (REBAr) ...
