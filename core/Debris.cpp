@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/Brace.h"
+#include "core/DebrisZones.h"
 #include "core/FloorLoad.h"
 #include "core/contact/GroundContact.h"
 #include "core/contact/MemberContact.h"
@@ -28,6 +29,8 @@ std::string num(double v) {
 }  // namespace
 
 bool DebrisFigures::outside() const { return site && (xmin < site->xmin || xmax > site->xmax); }
+
+bool DebrisFigures::unintendedFall() const { return site && unintended(site->dir, verdict); }
 
 std::string DebrisFigures::siteStatus() const {
   return !site ? "none" : outside() ? "outside" : "inside";
@@ -68,25 +71,28 @@ std::vector<MassPiece> massPieces(const Model& model, const State& state) {
     const double m = elementMass(model, e, carried);
     if (m <= 0) continue;
     const auto n = model.element(e).nodes();
-    const double a = position(model, state, n[0]).x(), b = position(model, state, n[1]).x();
+    const Vec2 a = position(model, state, n[0]), b = position(model, state, n[1]);
     if (isBrace(model.element(e))) {  // a wall's mass lies at the frame's nodes
-      pieces.push_back({a, a, 0.5 * m});
-      pieces.push_back({b, b, 0.5 * m});
+      pieces.push_back({a.x(), a.x(), 0.5 * m, a.y(), a.y(), n[0]});
+      pieces.push_back({b.x(), b.x(), 0.5 * m, b.y(), b.y(), n[1]});
       continue;
     }
-    pieces.push_back({std::min(a, b), std::max(a, b), m});
+    if (a.x() <= b.x())
+      pieces.push_back({a.x(), b.x(), m, a.y(), b.y(), n[0]});
+    else
+      pieces.push_back({b.x(), a.x(), m, b.y(), a.y(), n[0]});
   }
   const std::vector<char> held = model.heldNodes();
   for (int n = 0; n < model.numNodes(); ++n) {
     const double m = nodalPointMass(model, n);
     if (m <= 0 || !model.hasCoord(n) || !held[n]) continue;
-    const double x = position(model, state, n).x();
-    pieces.push_back({x, x, m});
+    const Vec2 x = position(model, state, n);
+    pieces.push_back({x.x(), x.x(), m, x.y(), x.y(), n});
   }
   return pieces;
 }
 
-std::vector<double> pieceMassAtNodes(const Model& model) {
+std::vector<int> pieceOfNodes(const Model& model) {
   const int nn = model.numNodes();
   std::vector<int> parent(static_cast<std::size_t>(nn));
   for (int n = 0; n < nn; ++n) parent[n] = n;
@@ -101,6 +107,13 @@ std::vector<double> pieceMassAtNodes(const Model& model) {
     if (model.hasElement(e) && !isBrace(model.element(e)))  // a strut joins no pieces
       join(model.element(e).nodes()[0], model.element(e).nodes()[1]);
   for (const Joint& j : model.joints()) join(j.master, j.slave);
+  for (int n = 0; n < nn; ++n) parent[n] = root(n);
+  return parent;
+}
+
+std::vector<double> pieceMassAtNodes(const Model& model) {
+  const int nn = model.numNodes();
+  const std::vector<int> root = pieceOfNodes(model);
   std::vector<double> mass(static_cast<std::size_t>(nn), 0.0);
   const std::vector<double> carried = carriedMass(model);
   for (int e = 0; e < model.numElements(); ++e)
@@ -108,18 +121,18 @@ std::vector<double> pieceMassAtNodes(const Model& model) {
       const auto n = model.element(e).nodes();
       const double m = std::max(0.0, elementMass(model, e, carried));
       if (isBrace(model.element(e))) {
-        mass[root(n[0])] += 0.5 * m;
-        mass[root(n[1])] += 0.5 * m;
+        mass[root[n[0]]] += 0.5 * m;
+        mass[root[n[1]]] += 0.5 * m;
       } else {
-        mass[root(n[0])] += m;
+        mass[root[n[0]]] += m;
       }
     }
   const std::vector<char> held = model.heldNodes();
   for (int n = 0; n < nn; ++n)
-    if (held[n] && model.hasCoord(n)) mass[root(n)] += nodalPointMass(model, n);
+    if (held[n] && model.hasCoord(n)) mass[root[n]] += nodalPointMass(model, n);
   std::vector<double> out(static_cast<std::size_t>(nn), 0.0);
   for (int n = 0; n < nn; ++n)
-    if (held[n]) out[n] = mass[root(n)];
+    if (held[n]) out[n] = mass[root[n]];
   return out;
 }
 
@@ -211,22 +224,27 @@ std::vector<double> massHistogram(const std::vector<MassPiece>& pieces, double x
   return h;
 }
 
-DebrisFigures debrisFigures(const Model& model, const State& state) {
-  DebrisFigures d;
-  d.site = model.site();
-  // The footprint from every node of the building; where the debris lies from
-  // the nodes still held by elements (a removed member's nodes are gone).
-  bool footprint = false, any = false;
+namespace {
+
+// The footprint: the x-extent of every node of the building at the start.
+void footprintOf(const Model& model, DebrisFigures& d) {
+  bool any = false;
   for (int n = 0; n < model.numNodes(); ++n) {
     if (!model.hasCoord(n)) continue;
     const double x0 = model.coord(n).x();
-    d.footprintMin = footprint ? std::min(d.footprintMin, x0) : x0;
-    d.footprintMax = footprint ? std::max(d.footprintMax, x0) : x0;
-    footprint = true;
+    d.footprintMin = any ? std::min(d.footprintMin, x0) : x0;
+    d.footprintMax = any ? std::max(d.footprintMax, x0) : x0;
+    any = true;
   }
-  const std::vector<char> held = model.heldNodes();
+}
+
+// Where the bed lies: the extent and highest point of the nodes still held by
+// elements (a removed member's nodes are gone) in pieces of the bed. False: none.
+bool bedExtent(const Model& model, const State& state, const std::vector<char>& bed,
+               DebrisFigures& d) {
+  bool any = false;
   for (int n = 0; n < model.numNodes(); ++n) {
-    if (!model.hasCoord(n) || !held[n]) continue;
+    if (!model.hasCoord(n) || !bed[n]) continue;
     const Vec2 x = position(model, state, n);
     if (!any) {
       d.xmin = d.xmax = x.x();
@@ -239,28 +257,68 @@ DebrisFigures debrisFigures(const Model& model, const State& state) {
     if (x.x() < d.xmin) d.xmin = x.x(), d.leftNode = n;
     if (x.x() > d.xmax) d.xmax = x.x(), d.rightNode = n;
   }
-  if (!any) return d;
+  return any;
+}
+
+// The pieces whose node is in the bed.
+std::vector<MassPiece> inBed(std::vector<MassPiece> pieces, const std::vector<char>& bed) {
+  std::erase_if(pieces, [&](const MassPiece& p) { return p.node >= 0 && !bed[p.node]; });
+  return pieces;
+}
+
+}  // namespace
+
+DebrisFigures debrisFigures(const Model& model, const State& state) {
+  DebrisFigures d;
+  d.site = model.site();
+  footprintOf(model, d);
+  const std::vector<MassPiece> all = massPieces(model, state);
+  for (const MassPiece& p : all) d.totalMass += p.mass;
+  // With a site, the pieces lighter than its flyrock limit fly apart from the
+  // bed (core/DebrisZones.h): the bed's figures leave them out.
+  const std::vector<double> pieceMass = pieceMassAtNodes(model);
+  std::vector<char> bed = model.heldNodes();
+  if (d.site) {
+    d.flyrockLimit = flyrockLimit(*d.site, d.totalMass);
+    std::vector<char> kept = bed;
+    for (int n = 0; n < model.numNodes(); ++n) kept[n] = bed[n] && pieceMass[n] >= d.flyrockLimit;
+    if (std::find(kept.begin(), kept.end(), 1) != kept.end()) bed = kept;
+  }
+  if (!bedExtent(model, state, bed, d)) return d;
   d.left = std::max(0.0, d.footprintMin - d.xmin);
   d.right = std::max(0.0, d.xmax - d.footprintMax);
-  const auto pieces = massPieces(model, state);
-  double moment = 0, moment0 = 0;
-  const std::vector<MassPiece> start = massPieces(model, State{});
+  const std::vector<MassPiece> pieces = inBed(all, bed);
+  const std::vector<MassPiece> start = inBed(massPieces(model, State{}), bed);
+  double moment = 0, moment0 = 0, bedMass = 0;
   for (const MassPiece& p : pieces) {
-    d.totalMass += p.mass;
+    bedMass += p.mass;
     moment += p.mass * 0.5 * (p.x0 + p.x1);
   }
   for (const MassPiece& p : start) moment0 += p.mass * 0.5 * (p.x0 + p.x1);
   if (d.site) d.outsideMass = massOutside(pieces, *d.site);
-  if (d.totalMass > 0) {
-    d.centroid = moment / d.totalMass;
-    d.centroidShift = d.centroid - moment0 / d.totalMass;
+  if (bedMass > 0) {
+    d.centroid = moment / bedMass;
+    d.centroidShift = d.centroid - moment0 / bedMass;
   }
   d.left95 = std::max(0.0, d.footprintMin - massQuantile(pieces, 0.05));
   d.right95 = std::max(0.0, massQuantile(pieces, 0.95) - d.footprintMax);
-  d.cover = massCover(pieces);
-  const std::vector<double> pieceMass = pieceMassAtNodes(model);
+  d.cover = massCover(all);
   d.leftPieceMass = pieceMass[d.leftNode];
   d.rightPieceMass = pieceMass[d.rightNode];
+  d.buildingHeight = buildingHeight(model);
+  d.tilt = standingTilt(model, state);
+  if (d.site) {
+    d.verdict = fallVerdict(d.site->dir, d.centroidShift, d.buildingHeight,
+                            d.footprintMax - d.footprintMin);
+    d.zones = zoneFigures(model, state, *d.site, d.flyrockLimit);
+    for (const MassPiece& p : all)
+      if (p.node >= 0 && !bed[p.node]) d.flyrockMass += p.mass;
+    const std::vector<int> roots = pieceOfNodes(model);
+    const std::vector<char> held = model.heldNodes();
+    std::vector<char> seen(roots.size(), 0);
+    for (int n = 0; n < model.numNodes(); ++n)
+      if (held[n] && !bed[n] && !seen[roots[n]]) seen[roots[n]] = 1, ++d.flyrockCount;
+  }
   return d;
 }
 
@@ -311,7 +369,9 @@ double halfSectionDepth(const Model& model, int node) {
 std::string debrisCsvHeader() {
   return "left,right,height,total_mass,outside_mass,site,site_xmin,site_xmax,peak_ground_force,"
          "peak_time,deepest,deepest_time,centroid,centroid_shift,left95,right95,at_rest,"
-         "kinetic_ratio,left_piece_mass,right_piece_mass,footprint_xmin,footprint_xmax";
+         "kinetic_ratio,left_piece_mass,right_piece_mass,footprint_xmin,footprint_xmax,verdict,"
+         "centroid_move_h,tilt,building_height,flyrock_limit,flyrock_count,flyrock_mass,"
+         "risk_level,risk_confidence";
 }
 
 std::string debrisCsvRow(const DebrisFigures& d) {
@@ -330,8 +390,107 @@ std::string debrisCsvRow(const DebrisFigures& d) {
   cell(d.atRest() ? "yes" : "no");
   for (double v : {d.kineticRatio, d.leftPieceMass, d.rightPieceMass, d.footprintMin, d.footprintMax})
     cell(num(v));
+  cell(fallVerdictName(d.verdict));
+  for (double v : {d.centroidMoveH(), d.tilt, d.buildingHeight, d.flyrockLimit}) cell(num(v));
+  cell(std::to_string(d.flyrockCount));
+  cell(num(d.flyrockMass));
+  cell(d.site ? num(d.site->riskLevel) : std::string());
+  cell(d.site ? num(d.site->riskConfidence) : std::string());
   return row;
 }
+
+const std::vector<std::string> kZoneColumns = {"mass_",          "hit_",          "heaviest_",
+                                               "flyrock_count_", "flyrock_mass_", "x1_",
+                                               "x2_"};
+
+std::string zoneCsvHeader(const std::vector<std::string>& zones) {
+  std::string h;
+  for (const std::string& z : zones)
+    for (const std::string& c : kZoneColumns) h += (h.empty() ? "" : ",") + c + z;
+  return h;
+}
+
+std::string zoneCsvCells(const DebrisFigures& d, const std::vector<std::string>& zones) {
+  std::string row;
+  for (const std::string& name : zones) {
+    const auto z = std::find_if(d.zones.begin(), d.zones.end(),
+                                [&](const ZoneFigures& f) { return f.name == name; });
+    const bool has = z != d.zones.end();
+    for (const std::string& cell :
+         {has ? num(z->mass) : "", has ? std::string(z->hit ? "1" : "0") : "",
+          has ? num(z->heaviest) : "", has ? std::to_string(z->flyrockCount) : "",
+          has ? num(z->flyrockMass) : "", has && std::isfinite(z->x1) ? num(z->x1) : "",
+          has && std::isfinite(z->x2) ? num(z->x2) : ""})
+      row += (row.empty() ? "" : ",") + cell;
+  }
+  return row;
+}
+
+std::vector<std::string> zoneNames(const std::optional<Site>& site) {
+  std::vector<std::string> names;
+  if (site)
+    for (const ProtectedZone& z : protectedZones(*site)) names.push_back(z.name);
+  return names;
+}
+
+std::string debrisCsvHeader(const std::vector<std::string>& zones) {
+  return zones.empty() ? debrisCsvHeader() : debrisCsvHeader() + "," + zoneCsvHeader(zones);
+}
+
+std::string debrisCsvRow(const DebrisFigures& d, const std::vector<std::string>& zones) {
+  return zones.empty() ? debrisCsvRow(d) : debrisCsvRow(d) + "," + zoneCsvCells(d, zones);
+}
+
+std::vector<std::string> zoneNames(const DebrisFigures& d) {
+  std::vector<std::string> names;
+  for (const ZoneFigures& z : d.zones) names.push_back(z.name);
+  return names;
+}
+
+namespace {
+
+// The verdict's line: where the building went against where it was meant to go.
+std::string fallLogLine(const DebrisFigures& d) {
+  char buf[512];
+  const double h = d.buildingHeight, w = d.footprintMax - d.footprintMin;
+  if (!d.site || d.site->dir == FallDirection::None) {
+    std::snprintf(buf, sizeof buf,
+                  "  debris: the centroid moved %.4g H (H = %.4g m), the standing part tilts at "
+                  "most %.3g deg; no intended fall given (SITE's dir)\n",
+                  d.centroidMoveH(), h, d.tilt);
+    return buf;
+  }
+  const double t = fellingThreshold(h, w);
+  std::snprintf(buf, sizeof buf,
+                "  debris: %s (intended %s): the centroid moved %.4e m = %.4g H (threshold T = "
+                "%.4e m, H = %.4e m, W = %.4e m), the standing part tilts at most %.3g deg%s\n",
+                fallVerdictName(d.verdict), fallDirectionName(d.site->dir), d.centroidShift,
+                d.centroidMoveH(), t, h, w, d.tilt,
+                d.unintendedFall() ? ": NOT AS INTENDED" : "");
+  return buf;
+}
+
+// The flying fragments and every protected zone, one line each.
+std::string zoneLogLines(const DebrisFigures& d) {
+  if (!d.site) return {};
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "  debris: flying fragments (pieces below %.4e t, left out of the bed's figures): "
+                "%d, %.4e t\n",
+                d.flyrockLimit, d.flyrockCount, d.flyrockMass);
+  std::string out = buf;
+  for (const ZoneFigures& z : d.zones) {
+    std::snprintf(buf, sizeof buf,
+                  "  debris: zone %s: %.4e t of the bed%s, heaviest piece there %.4e t, %d "
+                  "fragment%s (%.4e t)\n",
+                  z.name.c_str(), z.mass, z.hit ? ": HIT" : "", z.heaviest, z.flyrockCount,
+                  z.flyrockCount == 1 ? "" : "s", z.flyrockMass);
+    out += buf;
+  }
+  return out;
+}
+
+}  // namespace
 
 std::string debrisLogLines(const DebrisFigures& d) {
   char buf[512];
@@ -365,6 +524,8 @@ std::string debrisLogLines(const DebrisFigures& d) {
   std::snprintf(buf, sizeof buf, "  debris: mass centroid x = %.4e m, moved by %.4e m\n",
                 d.centroid, d.centroidShift);
   out += buf;
+  out += fallLogLine(d);
+  out += zoneLogLines(d);
   std::snprintf(buf, sizeof buf, "  debris: %s: kinetic energy %.4e of its peak (at rest at or below %.1e)\n",
                 d.atRest() ? "at rest" : "STILL MOVING at the end", d.kineticRatio, d.restRatio);
   out += buf;

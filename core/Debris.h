@@ -12,15 +12,20 @@
 #include <string>
 #include <vector>
 
+#include "core/DebrisZones.h"
 #include "core/DofMap.h"
+#include "core/FallVerdict.h"
 #include "core/Model.h"
 #include "core/State.h"
 
 namespace c2d {
 
-// Mass spread uniformly over x in [x0, x1] (x0 == x1: a point mass).
+// Mass spread uniformly over x in [x0, x1] (x0 == x1: a point mass); y0, y1:
+// the heights of its ends at x0 and x1; node: a node of the piece it belongs to.
 struct MassPiece {
   double x0 = 0, x1 = 0, mass = 0;
+  double y0 = 0, y1 = 0;
+  int node = -1;
 };
 
 struct DebrisFigures {
@@ -54,6 +59,18 @@ struct DebrisFigures {
   // (0 in a static run), and the ratio at or below which the debris is at rest
   // (TIME,REST's, else its default): the caller's to fill.
   double kineticRatio = 0, restRatio = 1e-5;
+  // Where the building went (core/FallVerdict.h): its height H at the start,
+  // the largest tilt of what still stands (degrees, + toward +x) and the
+  // verdict against the site's intended fall (None without a dir).
+  double buildingHeight = 0, tilt = 0;
+  FallVerdict verdict = FallVerdict::None;
+  // With a site: the flyrock limit (t), the flying fragments (pieces lighter
+  // than it, core/DebrisZones.h) and their mass, and every protected zone's
+  // figures. The reaches, the centroid, the 95 % reaches and the mass outside
+  // are the bed's (without the fragments); totalMass and cover are everything's.
+  double flyrockLimit = 0, flyrockMass = 0;
+  int flyrockCount = 0;
+  std::vector<ZoneFigures> zones = {};
 
   // Some node lies outside the site (false without one).
   bool outside() const;
@@ -64,6 +81,10 @@ struct DebrisFigures {
   bool sunk() const { return deepestLimit > 0 && deepest > deepestLimit; }
   // The debris has come to rest: its figures are final.
   bool atRest() const { return kineticRatio <= restRatio; }
+  // The centroid's move in the building's height (0 without a height).
+  double centroidMoveH() const { return buildingHeight > 0 ? centroidShift / buildingHeight : 0; }
+  // The site gives a dir and the verdict is not the intended one.
+  bool unintendedFall() const;
 };
 
 // The figures of the state (peakGroundForce/peakTime are the caller's to fill).
@@ -82,6 +103,8 @@ std::vector<std::pair<double, double>> massCover(const std::vector<MassPiece>& p
 // nodes and joints, with the nodal masses at their nodes (0 for a node no
 // element holds).
 std::vector<double> pieceMassAtNodes(const Model& model);
+// The piece each node belongs to, as the number of one of its nodes (0-based).
+std::vector<int> pieceOfNodes(const Model& model);
 // Mass per bin of width `width` from x = x0 (bins values; a piece counts in
 // proportion to its overlap with each bin).
 std::vector<double> massHistogram(const std::vector<MassPiece>& pieces, double x0, double width,
@@ -105,6 +128,21 @@ double halfSectionDepth(const Model& model, int node);
 // The debris CSV: one header, one row per run (same columns in the plans table).
 std::string debrisCsvHeader();  // "left,right,height,total_mass,outside_mass,site,..."
 std::string debrisCsvRow(const DebrisFigures& d);
+// The columns of each protected zone after those (the zones' names, in order):
+// mass_<z>,hit_<z> (1 or 0),heaviest_<z>,flyrock_count_<z>,flyrock_mass_<z>,
+// x1_<z>,x2_<z> (where the zone lies; empty on a side's unbounded end).
+extern const std::vector<std::string> kZoneColumns;  // "mass_", "hit_", ...
+std::string zoneCsvHeader(const std::vector<std::string>& zones);
+// The zones' cells of d for the names given (empty cells for a zone d lacks).
+std::string zoneCsvCells(const DebrisFigures& d, const std::vector<std::string>& zones);
+// The names of the zones of d, in order.
+std::vector<std::string> zoneNames(const DebrisFigures& d);
+// The names of the site's zones (protectedZones), none without a site.
+std::vector<std::string> zoneNames(const std::optional<Site>& site);
+// The debris header with the zones' columns after it.
+std::string debrisCsvHeader(const std::vector<std::string>& zones);
+// The row of d with the zones' cells after it.
+std::string debrisCsvRow(const DebrisFigures& d, const std::vector<std::string>& zones);
 // The log's debris lines (units m, t, kN, s), each starting with "  debris: ".
 std::string debrisLogLines(const DebrisFigures& d);
 

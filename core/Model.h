@@ -10,6 +10,7 @@
 
 #include "core/Element.h"
 #include "core/MaterialSet.h"
+#include "core/Site.h"
 #include "core/Types.h"
 
 namespace c2d {
@@ -49,11 +50,6 @@ struct ElementLoad {
   int element = -1;
   Vec2 q = Vec2::Zero();
   bool asMass = false;
-};
-
-// The zone x in [xmin, xmax] the debris must stay in (SITE).
-struct Site {
-  double xmin = 0, xmax = 0;
 };
 
 // Elements removed at a given time (BLASt; REMOve removes at once): their

@@ -209,8 +209,16 @@ void writeModel(std::ostream& out, const Model& model) {
   for (int n = 0; n < model.numNodes(); ++n)
     for (double m : model.nodalMass(n)) put(out, m);
   putBool(out, model.site().has_value());
-  if (model.site())
-    for (double x : {model.site()->xmin, model.site()->xmax}) put(out, x);
+  if (const auto& site = model.site()) {
+    for (double x : {site->xmin, site->xmax}) put(out, x);
+    put(out, static_cast<int>(site->dir));
+    putCount(out, site->objects.size());
+    for (const ProtectedZone& z : site->objects) {
+      putString(out, z.name);
+      for (double x : {z.x1, z.x2, z.height, z.mass}) put(out, x);
+    }
+    for (double x : {site->flyrockMass, site->riskLevel, site->riskConfidence}) put(out, x);
+  }
   putTag(out, "BLST");
   putCount(out, model.blasts().size());
   for (const Blast& b : model.blasts()) {
@@ -364,6 +372,19 @@ Model readModel(std::istream& in, int minTopologyVersion) {
   if (getBool(in)) {
     Site site;
     for (double* x : {&site.xmin, &site.xmax}) *x = get<double>(in);
+    const int dir = get<int>(in);
+    if (dir < 0 || dir > static_cast<int>(FallDirection::Down))
+      throw CheckpointError("site with an unknown fall direction");
+    site.dir = static_cast<FallDirection>(dir);
+    const std::size_t zones = getCount(in);
+    for (std::size_t k = 0; k < zones; ++k) {
+      ProtectedZone z;
+      z.name = getString(in);
+      for (double* x : {&z.x1, &z.x2, &z.height, &z.mass}) *x = get<double>(in);
+      site.objects.push_back(std::move(z));
+    }
+    for (double* x : {&site.flyrockMass, &site.riskLevel, &site.riskConfidence})
+      *x = get<double>(in);
     model.site() = site;
   }
   expectTag(in, "BLST");

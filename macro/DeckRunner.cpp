@@ -34,6 +34,7 @@ struct RunInfo {
   int plan = 0;                          // an ensemble's plan (1-based), 0 outside one
   int sample = 0, samples = 0;           // its sample 1..samples, 0 outside an ensemble
   DrawnValues drawn;                     // the sample's drawn values
+  std::vector<std::string> zones;        // the site's protected zones (SITE)
 };
 
 // Output stem and legend label of each run, and what an ensemble's table says of it.
@@ -129,19 +130,30 @@ std::vector<RunPlan> planRuns(const std::vector<RunInfo>& runs, const std::strin
 
 std::string runSummaryText(const RunSummary& s) {
   char buf[256];
-  std::snprintf(buf, sizeof buf, "%d step%s, %d iteration%s, %d cut%s, %d hinge%s", s.steps,
-                s.steps == 1 ? "" : "s", s.iterations, s.iterations == 1 ? "" : "s", s.cuts,
-                s.cuts == 1 ? "" : "s", s.hinges, s.hinges == 1 ? "" : "s");
+  // The counts say what they count, for SECTion hinges (joints as they open)
+  // and hand-given laws (a hinge softens fully into a joint) alike.
+  std::snprintf(buf, sizeof buf, "%d step%s, %d iteration%s, %d cut%s, %d hinge%s opened",
+                s.steps, s.steps == 1 ? "" : "s", s.iterations, s.iterations == 1 ? "" : "s",
+                s.cuts, s.cuts == 1 ? "" : "s", s.hinges, s.hinges == 1 ? "" : "s");
   std::string out = buf;
   if (s.jointsFormed || s.jointsRuptured) {
-    std::snprintf(buf, sizeof buf, ", %d joint%s formed, %d ruptured", s.jointsFormed,
-                  s.jointsFormed == 1 ? "" : "s", s.jointsRuptured);
+    std::snprintf(buf, sizeof buf,
+                  ", %d softened fully into joint%s, %d member%s parted past the rotation capacity",
+                  s.jointsFormed, s.jointsFormed == 1 ? "" : "s", s.jointsRuptured,
+                  s.jointsRuptured == 1 ? "" : "s");
     out += buf;
   }
+  if (s.fractures > 0)
+    out += ", " + std::to_string(s.fractures) + " member" + (s.fractures == 1 ? "" : "s") +
+           " parted by their bars";
   if (s.removed > 0) out += ", " + std::to_string(s.removed) + " removed";
   if (s.outsideRuns > 0)
     out += s.debrisRuns == 1 ? std::string(", debris OUTSIDE the site")
                              : ", debris OUTSIDE the site in " + std::to_string(s.outsideRuns) +
+                                   " of " + std::to_string(s.debrisRuns) + " runs";
+  if (s.unintendedRuns > 0)
+    out += s.debrisRuns == 1 ? ", fall NOT AS INTENDED (" + s.verdict + ")"
+                             : ", fall NOT AS INTENDED in " + std::to_string(s.unintendedRuns) +
                                    " of " + std::to_string(s.debrisRuns) + " runs";
   if (s.movingRuns > 0)
     out += s.debrisRuns == 1 ? std::string(", debris STILL MOVING at the end")
@@ -182,6 +194,15 @@ std::vector<std::string> drawnNames(const std::vector<RunInfo>& runs) {
   for (const RunInfo& r : runs)
     for (const auto& [name, v] : r.drawn)
       if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  return names;
+}
+
+// The protected zones of every run, in order of first appearance.
+std::vector<std::string> studyZones(const std::vector<RunInfo>& runs) {
+  std::vector<std::string> names;
+  for (const RunInfo& r : runs)
+    for (const std::string& z : r.zones)
+      if (std::find(names.begin(), names.end(), z) == names.end()) names.push_back(z);
   return names;
 }
 
@@ -426,7 +447,7 @@ class Walker {
     ro.solver = options_.solver;
     ro.sample = sample_;
     if (!execute_) {
-      RunInfo info{sweep_, planName_, {}, sample_ ? plan_ : 0, sample_ ? sample_->sample : 0, samples_, {}};
+      RunInfo info{sweep_, planName_, {}, sample_ ? plan_ : 0, sample_ ? sample_->sample : 0, samples_, {}, {}};
       for (const std::string& n : params.names()) info.params[n] = params.get(n);
       ro.warnings = warnings_;
       ProblemRun run(p, params, commands_, ro, log_);
@@ -438,6 +459,7 @@ class Walker {
         for (std::size_t i = 0; i < blasts.size(); ++i)
           info.drawn.emplace_back("blast_" + std::to_string(i + 1), blasts[i]);
       }
+      info.zones = zoneNames(run.model().site());
       infos_.push_back(std::move(info));
       // PARA commands in the BATCh blocks change the table for what follows (a
       // later top-level LOOP count), as they will when the problem runs.
@@ -519,6 +541,7 @@ class Walker {
     total_.maxMomentRatio = std::max(total_.maxMomentRatio, s.maxMomentRatio);
     total_.jointsFormed += s.jointsFormed;
     total_.jointsRuptured += s.jointsRuptured;
+    total_.fractures += s.fractures;
     total_.removed += s.removed;
     total_.crossings += s.crossings;
     total_.folded += s.folded;
@@ -528,6 +551,8 @@ class Walker {
     total_.debrisRuns += s.debrisRuns;
     total_.outsideRuns += s.outsideRuns;
     total_.movingRuns += s.movingRuns;
+    total_.unintendedRuns += s.unintendedRuns;
+    if (!s.verdict.empty()) total_.verdict = s.verdict;
     total_.kineticRatio = std::max(total_.kineticRatio, s.kineticRatio);
     if (!row.ok) return;
     if (brief && row.debris) log_ << debrisLogLines(*row.debris);
@@ -675,9 +700,9 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     const bool named =
         std::any_of(infos.begin(), infos.end(), [](const RunInfo& r) { return !r.planName.empty(); });
     if (ensemble)
-      runner.setEnsembleTable(EnsembleTable(swept, drawnNames(check.infos()), named));
+      runner.setEnsembleTable(EnsembleTable(swept, drawnNames(check.infos()), studyZones(infos), named));
     else if (!swept.empty())
-      runner.setPlanTable(PlanTable(swept, named));
+      runner.setPlanTable(PlanTable(swept, studyZones(infos), named));
     std::string studySummary;
     try {
       if (!plans.empty()) runner.walk(deck.items, params);

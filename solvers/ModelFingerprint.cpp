@@ -112,7 +112,12 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
     if (q.asMass) masses.add(q.element).add(q.q.x()).add(q.q.y());
   }
   site.add(model.site().has_value());
-  if (model.site()) site.add(model.site()->xmin).add(model.site()->xmax);
+  if (const auto& st = model.site()) {
+    site.add(st->xmin).add(st->xmax).add(static_cast<int>(st->dir)).add(st->objects.size());
+    for (const ProtectedZone& z : st->objects)
+      site.add(z.name).add(z.x1).add(z.x2).add(z.height).add(z.mass);
+    site.add(st->flyrockMass).add(st->riskLevel).add(st->riskConfidence);
+  }
   // The blast plan: element sets, times, release times.
   elements.add(model.blasts().size());
   for (const Blast& b : model.blasts()) {

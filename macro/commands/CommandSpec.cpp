@@ -100,6 +100,10 @@ void CommandRegistry::printHelp(std::ostream& os) const {
     if (s.data == DataForm::Records) {
       os << "      data records: " << s.dataSyntax << "; a blank record ends them\n";
       printFields(os, s.dataFields, "        ");
+    } else if (s.data == DataForm::Optional) {
+      os << "      data records (optional): " << s.dataSyntax
+         << "; a blank record ends them; none when a command follows at once\n";
+      printFields(os, s.dataFields, "        ");
     } else if (s.data == DataForm::Single) {
       os << "      data record: " << s.dataSyntax << " (the next record)\n";
       printFields(os, s.dataFields, "        ");

@@ -18,6 +18,7 @@ enum class DataForm {
   None,     // the command record is all there is
   Records,  // data records follow, ended by a blank record
   Single,   // one data record follows (FEAP's SHIFt), unless the values stand on the command
+  Optional, // data records ended by a blank record, none when a command follows at once
 };
 
 struct FieldSpec {

@@ -53,6 +53,9 @@ void printSpec(std::ostream& os, const CommandSpec& s) {
     printWrapped(os, "        " + f.name + ":", 10, doc);
   }
   if (s.data == DataForm::Records) printWrapped(os, "      data records:", 8, s.dataSyntax);
+  if (s.data == DataForm::Optional)
+    printWrapped(os, "      data records (optional):", 8,
+                 s.dataSyntax + "; a blank record ends them; none when a command follows at once");
   if (s.data == DataForm::Single)
     printWrapped(os, "      data record:", 8, s.dataSyntax + " (the next record)");
   if (const std::string u = units::ofDataRecords(s.section, s.key()); !u.empty())

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "macro/commands/MeshCommands.h"
+#include "macro/commands/SiteCommand.h"
 #include "macro/deck/Expression.h"
 #include "macro/deck/NumberRanges.h"
 
@@ -100,30 +101,6 @@ void applyNodalMasses(MeshContext& ctx, const MeshCommand& cmd) {
   }
 }
 
-void applySite(MeshContext& ctx, const MeshCommand& cmd) {
-  const Record& h = cmd.head;
-  ctx.maxFields(h, 4, "SITE,,xmin,xmax");
-  if (!h.text(1).empty())
-    failAt(h, 1, "SITE takes no option word (its second field is empty)", "write SITE,,xmin,xmax");
-  if (h.size() < 4 || h[3].text.empty())
-    failAt(h, h.size() < 4 ? h.size() : 3, "SITE needs xmin and xmax", "write SITE,,xmin,xmax");
-  const Site s{ctx.number(h, 2), ctx.number(h, 3)};
-  if (!(s.xmax > s.xmin)) failAt(h, 3, "xmax must be greater than xmin");
-  // One site per mesh input (a MESH re-entry may give a new one).
-  if (!ctx.siteOrigin.blank())
-    failAt(h, 0,
-           "a second SITE (the first is on line " + std::to_string(ctx.siteOrigin.loc.line) + ")",
-           "give one SITE,,xmin,xmax");
-  ctx.siteOrigin = h;
-  ctx.model.site() = s;
-  if (auto* os = ctx.out()) {
-    title(*os, "S i t e");
-    *os << "      xmin ";
-    num(*os, s.xmin) << "   xmax ";
-    num(*os, s.xmax) << "\n";
-  }
-}
-
 void applyGravity(MeshContext& ctx, const MeshCommand& cmd) {
   const Record& h = cmd.head;
   ctx.maxFields(h, 4, "GRAVity,,gx,gy");
@@ -169,13 +146,7 @@ std::vector<MeshCommandEntry> loadCommandTable() {
            {expr("node", "node number"), expr("ng", "generation increment to the next record", "0"),
             expr("m1", "mass, x"), expr("m2", "mass, y"), expr("m3", "rotary inertia", "0")}),
        applyNodalMasses});
-  t.push_back(
-      {meshSpec("SITE",
-                "The zone xmin <= x <= xmax the debris must stay in: the debris CSV, "
-                "PLOT,DEBRis and the run's summary say whether it did. No data records; one "
-                "SITE per mesh input.",
-                {text("", "empty"), expr("xmin", "left limit"), expr("xmax", "right limit")}),
-       applySite});
+  t.push_back(siteCommandEntry());
   t.push_back({meshSpec("GRAVity",
                         "Self-weight of every element with a density: acceleration (gx, gy), "
                         "constant (not scaled by the proportional load). No data records.",

@@ -47,6 +47,7 @@ const std::vector<Field>& fields() {
       {S::Mesh, "site", "", ""},
       {S::Mesh, "site", "xmin", kLength},
       {S::Mesh, "site", "xmax", kLength},
+      {S::Mesh, "site", "dir", ""},
       {S::Mesh, "incl", "file", ""},
       // Material sub-records.
       {S::SubRecord, "elas", "ISOTropic", ""},
@@ -206,6 +207,7 @@ const std::vector<Data>& data() {
       {S::Mesh, "pola", "n1, n2, inc [-]; dx, dy [m]; r [m], theta [degrees] of the nodes"},
       {S::Mesh, "qloa", "n1, n2, inc [-]; qx, qy [kN/m]"},
       {S::Mesh, "mass", "node, ng [-]; m1, m2 [t]; m3 [t m^2]"},
+      {S::Mesh, "site", "x1, x2, h [m]; mass [t]; FLYRock mass [t]; RISK p, confidence [-]"},
       {S::Mesh, "blas", "t [s]; n1, n2, inc [-]; td [s]"},
       {S::Mesh, "infi", "n1 n2 n3 n4, ng, dn [-]"},
       {S::Mesh, "weak", "factor, n1, n2, inc [-]"},

@@ -515,6 +515,12 @@ bool DeckParser::parseMeshItems(std::vector<MeshItem>& items, Record* end) {
   }
 }
 
+bool DeckParser::startsItem(const Record& r) const {
+  if (r.blank()) return false;
+  if (isStructural(r) || isParamHead(r)) return true;
+  return Parameters::validName(r[0].text) && !hasEquals(r) && mesh_.find(r[0].text);
+}
+
 void DeckParser::checkDataRecord(const Record& rec, const Record& head,
                                  const CommandSpec& spec) const {
   const std::string& w = rec[0].text;
@@ -554,6 +560,9 @@ MeshCommand DeckParser::parseMeshCommand(const CommandSpec& spec) {
     c.data.push_back(next());
     return c;
   }
+  // Optional records (SITE): a command, END or a parameter block right after
+  // the command record means it has none, as decks wrote it before it had any.
+  if (spec.data == DataForm::Optional && (atEnd() || startsItem(peek()))) return c;
   while (true) {
     if (atEnd())
       throw DeckError(

@@ -54,6 +54,8 @@ class DeckParser {
   bool endsBatchData() const;
   bool topLevelParamsAhead() const;
   void checkDataRecord(const Record& rec, const Record& head, const CommandSpec& spec) const;
+  // The record starts a mesh command, a structural word or a parameter block.
+  bool startsItem(const Record& r) const;
 
   std::vector<Record> records_;
   std::string path_;

@@ -42,7 +42,8 @@ void ProblemRun::reportDebris() {
   debris_ = d;
   log_ << "\n" << debrisLogLines(d);
   const std::filesystem::path csv = options_.outDir / (options_.stem + "_debris.csv");
-  AtomicFile::write(csv, debrisCsvHeader() + "\n" + debrisCsvRow(d) + "\n");
+  const std::vector<std::string> zones = zoneNames(d);
+  AtomicFile::write(csv, debrisCsvHeader(zones) + "\n" + debrisCsvRow(d, zones) + "\n");
   log_ << "  debris: " << csv.filename().string() << "\n";
   if (debrisPlot_) plotDebris();
 }

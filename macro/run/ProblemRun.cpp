@@ -212,6 +212,7 @@ RunSummary ProblemRun::summary() const {
   s.maxMomentRatio = capacity_.maxRatio();
   s.jointsFormed = topology_.jointsFormed;
   s.jointsRuptured = topology_.jointsRuptured;
+  s.fractures = topology_.fractures;
   s.removed = removed_;
   s.crossings = crossings_;
   s.folded = folded_;
@@ -221,6 +222,10 @@ RunSummary ProblemRun::summary() const {
   s.debrisRuns = debris_ ? 1 : 0;
   s.outsideRuns = debris_ && debris_->outside() ? 1 : 0;
   s.movingRuns = debris_ && !debris_->atRest() ? 1 : 0;
+  if (debris_ && debris_->unintendedFall()) {
+    s.unintendedRuns = 1;
+    s.verdict = fallVerdictName(debris_->verdict);
+  }
   if (debris_) s.kineticRatio = debris_->kineticRatio;
   return s;
 }

@@ -65,6 +65,7 @@ struct RunSummary {
   bool dynamic = false;         // some step was dynamic
   double maxMomentRatio = 0;    // largest |M|/Mu of an element with a softening law, any time
   int jointsFormed = 0, jointsRuptured = 0;  // during the run (fully softened hinges, ruptures)
+  int fractures = 0;                          // members parted at their bars' fracture
   int removed = 0;                            // elements removed (BLASt, REMOve)
   int crossings = 0;  // pairs of members crossing each other at the end
   int folded = 0;     // RC members bent through more than a quarter turn at the end
@@ -80,6 +81,10 @@ struct RunSummary {
   // TIME,REST's ratio of its peak), and the largest such ratio.
   int movingRuns = 0;
   double kineticRatio = 0;
+  // Runs whose building did not go as SITE's dir intends (core/FallVerdict.h),
+  // and the verdict of the last of them.
+  int unintendedRuns = 0;
+  std::string verdict = {};
 };
 
 class ProblemRun {

@@ -42,7 +42,7 @@ EnsembleStudyReport writeEnsembleStudy(const std::filesystem::path& dir, const s
                      (plans.size() == 1 ? "" : "s") + " x " + std::to_string(samples.size()) +
                      " samples, " + std::to_string(data.runs.size()) + " runs, " +
                      std::to_string(failed) + " failed\n";
-  r.summary = head + plansText(plans) + bestPlanText(data, plans);
+  r.summary = head + plansText(plans) + riskText(plans) + bestPlanText(data, plans);
   r.text = r.summary + sensitivityText(data);
   for (const auto& f : r.files) r.text += "  ensemble: " + f.filename().string() + "\n";
   return r;

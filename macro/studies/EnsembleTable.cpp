@@ -40,12 +40,12 @@ std::string EnsembleTable::header() const {
   for (const std::string& n : swept_) appendCell(h, csvCell(n));
   for (const std::string& n : drawn_) appendCell(h, csvCell(n));
   h += ",status,reason,";
-  h += debrisCsvHeader();
+  h += debrisCsvHeader(zones_);
   return h + ",cover";
 }
 
 std::string EnsembleTable::csv() const {
-  const std::string debrisHeader = debrisCsvHeader();
+  const std::string debrisHeader = debrisCsvHeader(zones_);
   const std::string noDebris(
       static_cast<std::size_t>(std::count(debrisHeader.begin(), debrisHeader.end(), ',')), ',');
   std::string out = header() + "\n";
@@ -69,7 +69,7 @@ std::string EnsembleTable::csv() const {
     out += csvCell(r.reason.substr(0, r.reason.find('\n')));
     out += ',';
     if (r.debris) {
-      out += debrisCsvRow(*r.debris);
+      out += debrisCsvRow(*r.debris, zones_);
       appendCell(out, coverText(r.debris->cover));
     } else {
       out += noDebris;
@@ -110,11 +110,27 @@ EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount) 
                     head.begin() + static_cast<long>(first + sweptCount));
   data.drawn.assign(head.begin() + static_cast<long>(first + sweptCount), status);
   const std::string debrisHeader = debrisCsvHeader();
-  const std::vector<std::string> debrisNames = splitCsv(debrisHeader);
-  if (head.size() != firstDebris + debrisNames.size() + 1 ||
+  std::vector<std::string> debrisNames = splitCsv(debrisHeader);
+  if (head.size() < firstDebris + debrisNames.size() + 1 ||
       !std::equal(debrisNames.begin(), debrisNames.end(),
                   head.begin() + static_cast<long>(firstDebris)))
     throw std::runtime_error("its debris columns are not this program's (" + debrisHeader + ")");
+  // The zones' columns, in groups of kZoneColumns, up to `cover`.
+  const std::size_t fixedCount = debrisNames.size();
+  const std::size_t zoneCells = head.size() - 1 - firstDebris - fixedCount;
+  const std::string group = zoneCsvHeader({"<zone>"});
+  if (zoneCells % kZoneColumns.size() != 0)
+    throw std::runtime_error("its zone columns are not groups of " + group);
+  for (std::size_t k = 0; k < zoneCells; k += kZoneColumns.size()) {
+    const auto at = head.begin() + static_cast<long>(firstDebris + fixedCount + k);
+    const std::string zone = at->substr(std::min(at->size(), kZoneColumns[0].size()));
+    const std::vector<std::string> names = splitCsv(zoneCsvHeader({zone}));
+    if (at->rfind(kZoneColumns[0], 0) != 0 || !std::equal(names.begin(), names.end(), at))
+      throw std::runtime_error("its zone columns are not groups of " + group + " (at '" + *at +
+                               "')");
+    data.zones.push_back(zone);
+    debrisNames.insert(debrisNames.end(), names.begin(), names.end());
+  }
   if (text.back() != '\n')
     throw std::runtime_error("it ends in the middle of a row (no line end after its last line)");
   int lineNo = 1;
@@ -153,6 +169,7 @@ EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount) 
     r.reason = c[firstDebris - 1];
     r.debris = !c[firstDebris].empty();
     if (r.debris) {
+      const std::size_t firstZone = fixedCount;
       for (std::size_t k = 0; k < debrisNames.size(); ++k) {
         const std::string& name = debrisNames[k];
         const std::string& cell = c[firstDebris + k];
@@ -160,11 +177,17 @@ EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount) 
           if (cell != "inside" && cell != "outside" && cell != "none")
             bad(firstDebris + k, "the site status is '" + cell + "'");
           r.site = cell;
+        } else if (name == "verdict") {
+          if (!cell.empty() && cell != "felled" && cell != "in place" && cell != "other way")
+            bad(firstDebris + k, "the verdict is '" + cell + "'");
+          r.verdict = cell;
         } else if (name == "at_rest") {
           if (cell != "yes" && cell != "no")
             bad(firstDebris + k, "at_rest is '" + cell + "', not yes or no");
           r.atRest = cell == "yes";
-        } else if (!cell.empty() || (name != "site_xmin" && name != "site_xmax")) {
+        } else if (!cell.empty() || (name != "site_xmin" && name != "site_xmax" &&
+                                     name != "risk_level" && name != "risk_confidence" &&
+                                     k < firstZone)) {
           const auto v = numberCell(cell);
           if (!v) bad(firstDebris + k, "'" + cell + "' is not a number");
           r.figures[name] = *v;

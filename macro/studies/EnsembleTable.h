@@ -1,7 +1,7 @@
 #pragma once
 // [ext] The table of an ensemble's runs, <stem>_ensemble.csv, one row per run:
 //   run,plan,sample,stem,[name,]<swept names...>,<drawn names...>,status,reason,
-//   <debris columns (core/Debris.h)>,cover
+//   <debris columns (core/Debris.h)>,<zone columns, per protected zone>,cover
 // (name: the plan's name, when the SWEEp names its plans: Sweep.h isPlanNames)
 // `run` counts every run of the deck from 1 (shards join on it), `plan` the
 // value sets of the sweep (1 without one), `sample` 1..n. The drawn values are
@@ -40,9 +40,11 @@ struct EnsembleRow {
 
 class EnsembleTable {
  public:
+  // zones: the site's protected zones, whose columns follow the debris columns;
   // named: the plans have names (a `name` column).
-  EnsembleTable(std::vector<std::string> swept, std::vector<std::string> drawn, bool named = false)
-      : swept_(std::move(swept)), drawn_(std::move(drawn)), named_(named) {}
+  EnsembleTable(std::vector<std::string> swept, std::vector<std::string> drawn,
+                std::vector<std::string> zones = {}, bool named = false)
+      : swept_(std::move(swept)), drawn_(std::move(drawn)), zones_(std::move(zones)), named_(named) {}
   void add(EnsembleRow row) { rows_.push_back(std::move(row)); }
   const std::vector<EnsembleRow>& rows() const { return rows_; }
   const std::vector<std::string>& swept() const { return swept_; }
@@ -53,7 +55,7 @@ class EnsembleTable {
   std::string csv() const;
 
  private:
-  std::vector<std::string> swept_, drawn_;
+  std::vector<std::string> swept_, drawn_, zones_;
   bool named_ = false;
   std::vector<EnsembleRow> rows_;
 };
@@ -74,14 +76,17 @@ struct EnsembleRun {
   std::map<std::string, double> figures;  // the numeric debris columns by name
   std::string site;                       // "inside", "outside", "none"
   bool atRest = true;
+  std::string verdict = {};  // "felled", "in place", "other way", "" (no intended fall)
   std::vector<std::pair<double, double>> cover;
 
   double figure(const std::string& name) const;  // NaN when absent
   bool outside() const { return site == "outside"; }
+  bool felled() const { return verdict == "felled"; }
 };
 
 struct EnsembleData {
   std::vector<std::string> swept, drawn;
+  std::vector<std::string> zones;  // the protected zones' names (their columns)
   bool named = false;             // the table has the plans' names (column `name`)
   std::vector<EnsembleRun> runs;  // in table order
   std::string header;

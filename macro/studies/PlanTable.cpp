@@ -18,12 +18,12 @@ std::string PlanTable::header() const {
     h += csvCell(n);
   }
   h += ",status,reason,";
-  return h + debrisCsvHeader();
+  return h + debrisCsvHeader(zones_);
 }
 
 std::string PlanTable::csv() const {
   // Empty debris cells: as many as the debris header has columns.
-  const std::string header = debrisCsvHeader();
+  const std::string header = debrisCsvHeader(zones_);
   const std::string noDebris(
       static_cast<std::size_t>(std::count(header.begin(), header.end(), ',')), ',');
   std::string out = this->header() + "\n";
@@ -44,7 +44,7 @@ std::string PlanTable::csv() const {
     out += r.ok ? ",ok," : ",failed,";
     out += csvCell(reason);
     out += ',';
-    out += r.debris ? debrisCsvRow(*r.debris) : noDebris;
+    out += r.debris ? debrisCsvRow(*r.debris, zones_) : noDebris;
     out += "\n";
   }
   return out;

@@ -31,9 +31,11 @@ struct PlanRow {
 class PlanTable {
  public:
   // names: every swept name of the deck (columns), in order of first appearance.
+  // zones: the site's protected zones (core/Debris.h zoneCsvHeader), if any;
   // named: the plans have names (a `name` column).
-  explicit PlanTable(std::vector<std::string> names, bool named = false)
-      : names_(std::move(names)), named_(named) {}
+  explicit PlanTable(std::vector<std::string> names, std::vector<std::string> zones = {},
+                     bool named = false)
+      : names_(std::move(names)), zones_(std::move(zones)), named_(named) {}
 
   void add(PlanRow row) { rows_.push_back(std::move(row)); }
   const std::vector<PlanRow>& rows() const { return rows_; }
@@ -44,7 +46,7 @@ class PlanTable {
   void write(const std::filesystem::path& path) const;
 
  private:
-  std::vector<std::string> names_;
+  std::vector<std::string> names_, zones_;
   bool named_ = false;
   std::vector<PlanRow> rows_;
 };

@@ -135,5 +135,83 @@ TEST(LoadCommands, Errors) {
               "a second GROUnd record (the first is on line 16)");
 }
 
+// SITE's direction and optional block: zones, FLYRock, RISK; without records
+// (the command record alone, followed at once by a command) as decks wrote it.
+TEST(LoadCommands, SiteZonesAndDirection) {
+  const Model m = build(kBeam +
+                        "SITE,,-2,8,RIGHt\n"
+                        " wall -6 -4 3 0.5\n"
+                        " road,10,14\n"
+                        " FLYRock,,0.2\n"
+                        " RISK,,0.05,0.9\n"
+                        "\n"
+                        "GRAV,,0,-10\n");
+  ASSERT_TRUE(m.site().has_value());
+  const Site& s = *m.site();
+  EXPECT_EQ(s.dir, FallDirection::Right);
+  ASSERT_EQ(s.objects.size(), 2u);
+  EXPECT_EQ(s.objects[0].name, "wall");
+  EXPECT_EQ(s.objects[0].x1, -6);
+  EXPECT_EQ(s.objects[0].x2, -4);
+  EXPECT_EQ(s.objects[0].height, 3);
+  EXPECT_EQ(s.objects[0].mass, 0.5);
+  EXPECT_EQ(s.objects[1].name, "road");
+  EXPECT_EQ(s.objects[1].height, 0);
+  EXPECT_EQ(s.objects[1].mass, 0);
+  EXPECT_EQ(s.flyrockMass, 0.2);
+  EXPECT_EQ(s.riskLevel, 0.05);
+  EXPECT_EQ(s.riskConfidence, 0.9);
+  EXPECT_EQ(m.gravity().y(), -10);
+  // The right side receives the debris: the zones are left, wall, road.
+  const auto zones = protectedZones(s);
+  ASSERT_EQ(zones.size(), 3u);
+  EXPECT_EQ(zones[0].name, "left");
+  EXPECT_EQ(zones[0].x2, -2);
+  EXPECT_EQ(zones[1].name, "wall");
+
+  // No records: the next command follows at once (or after a blank record).
+  for (const char* tail : {"SITE,,-2,8,down\nGRAV,,0,-10\n", "SITE,,-2,8,LEFT\n\nGRAV,,0,-10\n",
+                                   "SITE,,-2,8\n"}) {
+    const Model n = build(kBeam + tail);
+    ASSERT_TRUE(n.site().has_value()) << tail;
+    EXPECT_TRUE(n.site()->objects.empty()) << tail;
+    EXPECT_EQ(n.site()->flyrockMass, -1) << tail;
+  }
+  EXPECT_EQ(build(kBeam + "SITE,,-2,8,down\nGRAV,,0,-10\n").site()->dir, FallDirection::Down);
+  EXPECT_EQ(protectedZones(*build(kBeam + "SITE,,-2,8,LEFT\n").site()).front().name, "right");
+
+  // The restart file and the fingerprint keep them.
+  std::stringstream bytes(std::ios::in | std::ios::out | std::ios::binary);
+  writeModel(bytes, m);
+  const Model r = readModel(bytes, 0);
+  ASSERT_TRUE(r.site().has_value());
+  EXPECT_EQ(r.site()->dir, FallDirection::Right);
+  ASSERT_EQ(r.site()->objects.size(), 2u);
+  EXPECT_EQ(r.site()->objects[0].name, "wall");
+  EXPECT_EQ(r.site()->objects[0].mass, 0.5);
+  EXPECT_EQ(r.site()->flyrockMass, 0.2);
+  EXPECT_EQ(r.site()->riskConfidence, 0.9);
+  EXPECT_EQ(ModelFingerprint::of(r).site, ModelFingerprint::of(m).site);
+  EXPECT_NE(ModelFingerprint::of(build(kBeam + "SITE,,-2,8,RIGHt\n wall -6 -4 3 0.4\n\n")).site,
+            ModelFingerprint::of(build(kBeam + "SITE,,-2,8,RIGHt\n wall -6 -4 3 0.5\n\n")).site);
+}
+
+TEST(LoadCommands, SiteBlockErrors) {
+  expectError(kBeam + "SITE,,-2,8,UP\n", 15, 12, "unknown direction 'UP'");
+  expectError(kBeam + "SITE,,-2,8\n left -6 -4\n\n", 16, 2, "'left' is the name of a side");
+  expectError(kBeam + "SITE,,-2,8\n w-1 -6 -4\n\n", 16, 2, "'w-1' is not a zone name");
+  expectError(kBeam + "SITE,,-2,8\n wall -4 -6\n\n", 16, 10, "x2 must be greater than x1");
+  expectError(kBeam + "SITE,,-2,8\n wall -6\n\n", 16, 9, "the zone needs x1 and x2");
+  expectError(kBeam + "SITE,,-2,8\n wall -6 -4 -1\n\n", 16, 13, "the height must not be negative");
+  expectError(kBeam + "SITE,,-2,8\n wall -6 -4 0 -1\n\n", 16, 15, "the mass must not be negative");
+  expectError(kBeam + "SITE,,-2,8\n wall -6 -4\n Wall 1 2\n\n", 17, 2,
+              "a second zone named 'Wall'");
+  expectError(kBeam + "SITE,,-2,8\n FLYRock,,-1\n\n", 16, 11, "the flyrock mass must not be negative");
+  expectError(kBeam + "SITE,,-2,8\n RISK,,1.5\n\n", 16, 8, "the risk p must lie in (0, 1)");
+  expectError(kBeam + "SITE,,-2,8\n RISK,,0.01,95\n\n", 16, 13, "the confidence must lie in (0, 1)");
+  expectError(kBeam + "SITE,,-2,8\n wall -6 -4\nGRAV,,0,-10\n", 17, 1,
+              "the data set of 'SITE' (line 15) is not ended by a blank record");
+}
+
 }  // namespace
 }  // namespace c2d
