@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <string>
 
 #include "core/output/Checkpoint.h"
@@ -241,7 +242,13 @@ void writeModel(std::ostream& out, const Model& model) {
 Model readModel(std::istream& in, int minTopologyVersion) {
   Model model;
   expectTag(in, "MODL");
-  const int nodes = static_cast<int>(getCount(in));
+  // A node's record: its coordinates, a flag, and per dof a code, a force, a
+  // displacement and a load table (89 bytes).
+  constexpr std::size_t kNodeBytes = 2 * sizeof(double) + 1 + kNodeDofs * (2 * sizeof(int) + 2 * sizeof(double));
+  const std::size_t count = getCount(in, kNodeBytes);
+  if (count > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw CheckpointError("implausible node count " + std::to_string(count));
+  const int nodes = static_cast<int>(count);
   model.resizeNodes(nodes);
   for (int n = 0; n < nodes; ++n) {
     Vec2 x;

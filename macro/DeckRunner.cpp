@@ -19,12 +19,16 @@
 #include "macro/run/StaleOutputs.h"
 #include "macro/studies/Sweep.h"
 #include "macro/studies/Shard.h"
+#include "macro/studies/StudySize.h"
 #include "macro/studies/EnsembleStudy.h"
 #include "macro/studies/EnsembleTable.h"
 
 namespace c2d {
 
 namespace {
+
+// The longest stem of a deck's own outputs (as fitFileStem cuts a run's).
+constexpr std::size_t kMaxDeckStem = 160;
 
 // What the check pass learns about each run, to name it before anything runs.
 struct RunInfo {
@@ -352,6 +356,9 @@ class Walker {
                                std::to_string(DeckLimits::kMaxRuns) + " runs of its problems)"),
               h.excerpt(at));
         }
+        const StudySize::Scope scope(size_, loop->head, n,
+                                     "the LOOP of line " + std::to_string(loop->head.loc.line) +
+                                         ": " + std::to_string(n) + " passes");
         for (int i = 0; i < n; ++i) walk(loop->body, params);
       } else if (const auto* sweep = std::get_if<TopSweep>(&item)) {
         // The swept names may not be set again by the deck (Parameters::protect).
@@ -359,6 +366,9 @@ class Walker {
         const std::vector<SweepValues> sets = sweepRuns(*sweep, params);
         const std::vector<std::string> names = sweepPlanNames(*sweep);
         const std::string by = "swept by the SWEEp of line " + std::to_string(sweep->head.loc.line);
+        const StudySize::Scope scope(size_, sweep->head, static_cast<long long>(sets.size()),
+                                     "the SWEEp of line " + std::to_string(sweep->head.loc.line) +
+                                         ": " + std::to_string(sets.size()) + " value sets");
         for (std::size_t k = 0; k < sets.size(); ++k) {
           const SweepValues& set = sets[k];
           sweep_ = set;
@@ -407,9 +417,13 @@ class Walker {
   void walkEnsemble(const TopEnsemble& e, Parameters& params) {
     if (!ensembleHead_) ensembleHead_ = &e.head;
     for (const DrawRecord& d : e.draws) refuseOverride(params, d.name, d.record, "drawn");
+    detonators_ = e.detonators ? &*e.detonators : nullptr;
     const EnsembleSpec spec = evaluateEnsemble(e, params);
     const Parameters base = params;
     const std::string by = "drawn by the ENSEmble of line " + std::to_string(e.head.loc.line);
+    const StudySize::Scope scope(size_, e.head, spec.samples,
+                                 "the ENSEmble of line " + std::to_string(e.head.loc.line) + ": " +
+                                     std::to_string(spec.samples) + " samples");
     ++plan_;
     for (int k = 1; k <= spec.samples; ++k) {
       params = base;
@@ -422,6 +436,8 @@ class Walker {
       samples_ = spec.samples;
       try {
         walk(e.body, params);
+      } catch (const StudySizeError&) {
+        throw;  // of the study, not of this sample's draws
       } catch (const DeckError& err) {
         // A value that only some draws make bad: say which sample drew what.
         std::string drawn;
@@ -439,6 +455,10 @@ class Walker {
   }
 
   void runProblem(const Problem& p, Parameters& params) {
+    if (!execute_) {  // the planning: its size checked, a signal stops it
+      size_.checkProblem(p.head, runs_, DeckLimits::kMaxRuns);
+      throwIfInterrupted("the planning of run " + std::to_string(runs_ + 1));
+    }
     ++runs_;
     title_ = RunOutputs::displayTitle(p.title);
     RunOptions ro;
@@ -456,6 +476,11 @@ class Walker {
         info.drawn = sample_->values;
         if (sample_->jitter) info.drawn.emplace_back("dt_factor", sample_->stepFactor);
         const std::vector<double>& blasts = run.drawnBlastTimes();
+        if (sample_->detonators && blasts.empty() && warnings_ && detonators_)
+          warnings_->add((*detonators_)[0].loc,
+                         "DETOnators, and the problem has no BLASt record: there is no blast "
+                         "time to scatter",
+                         detonators_->excerpt((*detonators_)[0].loc));
         for (std::size_t i = 0; i < blasts.size(); ++i)
           info.drawn.emplace_back("blast_" + std::to_string(i + 1), blasts[i]);
       }
@@ -585,12 +610,14 @@ class Walker {
   int samples_ = 0, plan_ = 0;           // its sample count; the ensemble plans walked
   std::optional<EnsembleTable> ensembleTable_;
   const Record* ensembleHead_ = nullptr;
+  const Record* detonators_ = nullptr;  // the DETOnators record of the ensemble walked
   std::string title_;
   int runs_ = 0;
   RunSummary total_;
   CurveOverlay overlay_;
   std::optional<PlanTable> planTable_;
   int failed_ = 0;
+  StudySize size_;  // the passes of the LOOPs, SWEEps and ENSEmble being walked
 
  public:
   int failed() const { return failed_; }
@@ -642,7 +669,7 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     for (const DeckWarning& w : warnings.list()) std::cerr << w.str() << "\n";
     outcome.warnings = warnings.list();
   };
-  // The log is written under <log>.part and becomes <log> when the whole deck
+  // The log is written through a temporary and becomes <log> when the whole deck
   // has run; a failed or interrupted deck keeps it as <stem>.failed.out or
   // <stem>.interrupted.out, with the reason as its last lines.
   std::unique_ptr<AtomicFile> log;
@@ -684,6 +711,14 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
         options.outDir.empty() ? std::filesystem::path(".") : options.outDir;
     std::filesystem::create_directories(dir);
     const std::string partStem = shardStem(stem, options);
+    // The deck's outputs add at most ~60 characters to its stem (the runs'
+    // stems are cut to 160 by fitFileStem): a longer stem would lose the
+    // study's tables to "File name too long" after all the computing.
+    if (partStem.size() > kMaxDeckStem)
+      throw IoError("the deck's outputs would be named '" + partStem.substr(0, 40) + "...' (" +
+                    std::to_string(partStem.size()) + " characters, at most " +
+                    std::to_string(kMaxDeckStem) +
+                    " before the suffixes of its files): give the deck a shorter name");
     removeStaleOutputs(dir, partStem);  // an earlier failed or interrupted run's log
     log = std::make_unique<AtomicFile>(dir /
                                        (options.logName.empty() ? partStem + ".out" : options.logName));
@@ -710,19 +745,20 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
       // A shard of a study: its overlays are drawn by `collapse2d merge` from
       // the parts' curves (a part without a study's table draws its own).
       const bool studyPart = options.shards > 1 && (runner.planTable() || runner.ensembleTable());
+      std::string curvesText, tableText;  // a part's, for its manifest's fingerprints
       if (studyPart && runner.overlay().numRuns() > 0)
-        AtomicFile::write(dir / (partStem + "_curves.csv"), runner.overlay().csv());
+        AtomicFile::write(dir / (partStem + "_curves.csv"), curvesText = runner.overlay().csv());
       else
         for (const auto& f : runner.overlay().write(dir, partStem))
           log->stream() << "\n  overlay of the runs: " << f.filename().string() << "\n";
       if (const auto& table = runner.planTable()) {
         const std::filesystem::path file = dir / (partStem + "_plans.csv");
-        table->write(file);
+        AtomicFile::write(file, tableText = table->csv());
         log->stream() << "\n  plans: " << file.filename().string() << " (" << table->rows().size()
                       << " runs, " << table->failed() << " failed)\n";
       }
       if (const auto& table = runner.ensembleTable()) {
-        const std::string text = table->csv();
+        const std::string text = tableText = table->csv();
         const std::filesystem::path file = dir / (partStem + "_ensemble.csv");
         AtomicFile::write(file, text);
         log->stream() << "\n  ensemble: " << file.filename().string() << " (" << table->rows().size()
@@ -739,7 +775,9 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
         writeShardManifest(dir, partStem,
                            {path, deckFingerprint(path) + givenText(options.params), options.shard,
                             options.shards, static_cast<int>(plans.size()), runner.ensembleTable() ? "ensemble" : "plans",
-                            swept, runner.title(), runner.overlay().numRuns()});
+                            swept, runner.title(), runner.overlay().numRuns(),
+                            contentFingerprint(tableText),
+                            curvesText.empty() ? std::string() : contentFingerprint(curvesText)});
     } catch (...) {
       kept = runner.kept();
       throw;

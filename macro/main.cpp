@@ -17,6 +17,7 @@
 #include "macro/commands/Help.h"
 #include "macro/deck/Parameters.h"
 #include "macro/studies/Shard.h"
+#include "macro/studies/Csv.h"
 #include "macro/studies/Merge.h"
 #include "macro/studies/ParallelRuns.h"
 #include "macro/run/Interrupt.h"
@@ -126,26 +127,39 @@ bool mistypedSubcommand(const std::string& word) {
   return true;
 }
 
+// The most processes `run -j` starts.
+constexpr int kMaxJobs = 1024;
+
 // collapse2d run [options] [-j N] DECK...
 int batchMain(int argc, char** argv, const c2d::SolutionCommands& commands) {
   c2d::BatchOptions options;
   std::vector<std::string> decks;
   c2d::ShardSpec shard;
+  bool shardGiven = false;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (const int known = deckOption(argc, argv, i, options.deck); known != 0) {
       if (known < 0) return c2d::kExitUsage;
     } else if (a == "--shard" && i + 1 < argc) {
+      if (shardGiven) {
+        std::cerr << "collapse2d run: --shard is given twice\n";
+        return c2d::kExitUsage;
+      }
+      shardGiven = true;
       if (!c2d::parseShard(argv[++i], shard)) {
-        std::cerr << "collapse2d run: --shard needs i/n with 1 <= i <= n\n";
+        std::cerr << "collapse2d run: --shard needs i/n with 1 <= i <= n <= " << c2d::kMaxShards << "\n";
         return c2d::kExitUsage;
       }
-    } else if ((a == "-j" || a == "--jobs") && i + 1 < argc) {
-      options.jobs = std::atoi(argv[++i]);
-      if (options.jobs < 1) {
-        std::cerr << "collapse2d run: -j needs a positive number\n";
+    } else if (const bool attached = a.size() > 2 && a.rfind("-j", 0) == 0;  // -j4
+               attached || ((a == "-j" || a == "--jobs") && i + 1 < argc)) {
+      const std::string n = attached ? a.substr(2) : argv[++i];
+      const auto jobs = c2d::countCell(n, 1, kMaxJobs);
+      if (!jobs) {
+        std::cerr << "collapse2d run: -j needs a whole number of processes from 1 to " << kMaxJobs
+                  << ", got '" << n << "'\n";
         return c2d::kExitUsage;
       }
+      options.jobs = *jobs;
     } else if (a == "--timeout" && i + 1 < argc) {
       char* end = nullptr;
       options.timeout = std::strtod(argv[++i], &end);
@@ -153,9 +167,6 @@ int batchMain(int argc, char** argv, const c2d::SolutionCommands& commands) {
         std::cerr << "collapse2d run: --timeout needs a positive number of seconds\n";
         return c2d::kExitUsage;
       }
-    } else if (a.rfind("-j", 0) == 0 && a.size() > 2 &&
-               std::isdigit(static_cast<unsigned char>(a[2]))) {
-      options.jobs = std::max(1, std::atoi(a.c_str() + 2));
     } else if (!deckArgument(a, "collapse2d run", decks)) {
       return c2d::kExitUsage;
     }
@@ -200,8 +211,14 @@ int main(int argc, char** argv) {
   std::vector<std::string> decks;
   const c2d::SolutionCommands commands;
   if (argc > 1 && std::string(argv[1]) == "run") return batchMain(argc, argv, commands);
-  if (argc > 1 && std::string(argv[1]) == "merge")
+  if (argc > 1 && std::string(argv[1]) == "merge") {
+    if (argc > 3) {
+      std::cerr << "collapse2d merge: one folder only, got '" << argv[3]
+                << "' too (collapse2d merge [DIR])\n";
+      return c2d::kExitUsage;
+    }
     return c2d::mergeParts(argc > 2 ? argv[2] : ".", std::cout, std::cerr);
+  }
   if (argc > 1 && mistypedSubcommand(argv[1])) return c2d::kExitUsage;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];

@@ -3,9 +3,9 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <sstream>
 
+#include "core/InputFile.h"
 #include "core/output/AtomicFile.h"
 #include "core/output/Checkpoint.h"
 #include "elements/ModelCheckpoint.h"
@@ -54,11 +54,20 @@ void saveRestart(const std::filesystem::path& file, const Model& model, const An
 std::string loadRestart(const std::filesystem::path& file, Model& model, Analysis& analysis,
                         const ModelFingerprint* fingerprint) {
   const std::string name = "restart file '" + file.string() + "': ";
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw CheckpointError(name + "cannot be opened (" + std::strerror(errno) + ")");
-  std::ostringstream all;
-  all << in.rdbuf();
-  const std::string bytes = all.str();
+  // The file's size is checked against the model before it is read: a save
+  // holds far less than 64 kB per node and element (the model may have grown
+  // by joints and pieces since the deck built it).
+  const std::uintmax_t items = static_cast<std::uintmax_t>(model.numNodes() + model.numElements());
+  const std::uintmax_t limit = (std::uintmax_t{64} << 20) + items * (std::uintmax_t{64} << 10);
+  std::string bytes;
+  try {
+    bytes = readRegularFile(file, limit);
+  } catch (const UnfitInputFile& e) {
+    throw CheckpointError(name + e.what() + " (the model has " + std::to_string(model.numNodes()) +
+                          " nodes, " + std::to_string(model.numElements()) + " elements)");
+  } catch (const IoError& e) {
+    throw CheckpointError(name + "cannot be opened (" + e.what() + ")");
+  }
 
   if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
     throw CheckpointError(name + "not a collapse2d restart file (no restart header)");

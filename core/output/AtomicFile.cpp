@@ -1,7 +1,13 @@
 #include "core/output/AtomicFile.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
+#include <map>
+#include <mutex>
+#include <random>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -14,6 +20,35 @@ std::filesystem::path partPathOf(const std::filesystem::path& path) {
   std::filesystem::path part = path;
   part += ".part";
   return part;
+}
+
+std::mutex& failureMutex() {
+  static std::mutex m;
+  return m;
+}
+std::map<std::string, int>& failures() {
+  static std::map<std::string, int> f;
+  return f;
+}
+
+// "<path>.<6 random characters>.part", created exclusively: an existing file
+// or link of that name is never opened, another name is drawn instead.
+int createTemporary(const std::filesystem::path& path, std::filesystem::path& temp) {
+  static const char kChars[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+  thread_local std::mt19937_64 random{std::random_device{}() ^
+                                      (static_cast<std::uint64_t>(::getpid()) << 32)};
+  int err = EEXIST;
+  for (int attempt = 0; attempt < 100 && err == EEXIST; ++attempt) {
+    std::string suffix = ".";
+    for (int k = 0; k < 6; ++k) suffix += kChars[random() % (sizeof kChars - 1)];
+    temp = path;
+    temp += suffix + ".part";
+    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
+    if (fd >= 0) return fd;
+    err = errno;
+  }
+  errno = err;
+  return -1;
 }
 
 [[noreturn]] void fail(const std::filesystem::path& path, const std::string& what, int err) {
@@ -32,23 +67,41 @@ std::filesystem::path AtomicFile::tagged(const std::filesystem::path& path, std:
   return path.parent_path() / name;
 }
 
+SimulatedWriteFailure::SimulatedWriteFailure(std::string fileName, int err)
+    : name_(std::move(fileName)) {
+  std::lock_guard lock(failureMutex());
+  failures()[name_] = err;
+}
+
+SimulatedWriteFailure::~SimulatedWriteFailure() {
+  std::lock_guard lock(failureMutex());
+  failures().erase(name_);
+}
+
+int SimulatedWriteFailure::errorFor(const std::filesystem::path& path) {
+  std::lock_guard lock(failureMutex());
+  if (failures().empty()) return 0;
+  const auto it = failures().find(path.filename().string());
+  return it == failures().end() ? 0 : it->second;
+}
+
 AtomicFile::AtomicFile(std::filesystem::path path)
-    : path_(std::move(path)),
-      part_(partPathOf(path_)),
-      lastFlush_(std::chrono::steady_clock::now()) {
+    : path_(std::move(path)), out_(nullptr), lastFlush_(std::chrono::steady_clock::now()) {
   if (path_.has_parent_path()) {
     std::error_code ec;
     std::filesystem::create_directories(path_.parent_path(), ec);
     if (ec) fail(path_.parent_path(), "create the directory", ec.value());
   }
-  errno = 0;
-  out_.open(part_, std::ios::out | std::ios::trunc | std::ios::binary);
-  if (!out_) fail(part_, "open for writing", errno);
+  const int fd = createTemporary(path_, part_);
+  if (fd < 0) fail(path_, "create a temporary file to write", errno);
+  buf_ = std::make_unique<FdOutBuf>(fd);
+  if (const int err = SimulatedWriteFailure::errorFor(path_)) buf_->failWritesWith(err);
+  out_.rdbuf(buf_.get());
 }
 
 AtomicFile::~AtomicFile() {
   if (committed_) return;
-  out_.close();
+  buf_->close();
   std::error_code ec;  // a destructor must not throw; a leftover .part is harmless
   std::filesystem::remove(part_, ec);
 }
@@ -59,18 +112,10 @@ void AtomicFile::check(std::chrono::milliseconds flushInterval) {
     const auto now = std::chrono::steady_clock::now();
     if (now - lastFlush_ < flushInterval) return;
     lastFlush_ = now;
-    errno = 0;
     out_.flush();
     if (out_) return;
-    fail(part_, "write", errno);
   }
-  // A buffered write failed earlier: flushing again gives the system's reason.
-  out_.clear();
-  errno = 0;
-  out_.flush();
-  const int err = errno;
-  out_.setstate(std::ios::badbit);
-  fail(part_, "write", err);
+  fail(path_, "write", buf_->error());
 }
 
 void AtomicFile::commit() { commitTo(path_); }
@@ -84,25 +129,13 @@ std::filesystem::path AtomicFile::keep(std::string_view tag) {
 void AtomicFile::commitTo(const std::filesystem::path& target) {
   if (committed_)
     throw std::logic_error("AtomicFile::commit called twice for '" + path_.string() + "'");
-  errno = 0;
-  const bool before = static_cast<bool>(out_);
   out_.flush();
-  const bool wrote = before && static_cast<bool>(out_);
-  int err = errno;
-  if (!before) {  // a buffered write failed earlier: the reason comes with a new try
-    out_.clear();
-    errno = 0;
-    out_.flush();
-    err = errno;
-  }
-  errno = 0;
-  out_.close();
-  if (err == 0) err = errno;
-  if (!wrote || out_.fail()) {
+  const bool wrote = static_cast<bool>(out_) && buf_->close();
+  if (!wrote) {
     std::error_code ec;
     std::filesystem::remove(part_, ec);
     committed_ = true;  // nothing left to commit; the destructor has nothing to remove
-    fail(part_, "write", err);
+    fail(path_, "write", buf_->error());
   }
   std::error_code ec;
   std::filesystem::rename(part_, target, ec);

@@ -1,11 +1,15 @@
 #pragma once
 // Result files that never look complete unless they are.
 //
-// AtomicFile: the text goes to "<path>.part"; commit() closes it and renames it
-// over <path> (rename is atomic on POSIX file systems). Destroyed without
-// commit(), it removes the .part file. So <path> either holds a previous run's
+// AtomicFile: the text goes to a temporary file "<path>.<6 random
+// characters>.part" beside <path>, created exclusively (O_CREAT|O_EXCL, never
+// following a link: a link or file planted under any name is never written
+// through, and two programs writing one path each have their own temporary);
+// commit() closes it and renames it over <path> (rename is atomic on POSIX file
+// systems and replaces a link rather than following it). Destroyed without
+// commit(), it removes the temporary. So <path> either holds a previous run's
 // file or the complete new one, never a truncated one; a run killed outright
-// (no destructors) leaves at most a "<path>.part", whose name says it is partial.
+// (no destructors) leaves at most a "<path>.*.part", whose name says it is partial.
 // A run that fails or is interrupted keeps what it wrote under a name that says
 // so: keep("failed") renames the .part to "<stem>.failed<ext>" (tagged()).
 // There is no fsync: the guarantee covers an interrupted or failed run, not a
@@ -13,7 +17,7 @@
 //
 // AtomicAppendFile: a document that grows during a run (the .pvd collection):
 // header, records appended one at a time, footer. Every sync() rewrites
-// "<path>.part" with header + all records so far + footer, so that the .part is
+// "<path>.part" (as an AtomicFile: written aside, renamed onto it) with header + all records so far + footer, so that the .part is
 // at every moment a well-formed document holding a prefix of the records (one
 // can watch a run with it). Only close() writes <path>; keep(tag) writes the
 // tagged name instead (a failed or interrupted run), and a destructor without
@@ -24,19 +28,25 @@
 // Every write is checked (the stream after writing, flush, close, rename): a
 // failure throws IoError naming the file and the system's reason, and leaves no
 // file under the final name.
+//
+// SimulatedWriteFailure: while one lives, every AtomicFile whose final name is
+// the given file name fails its writes with the given errno (a full disk for
+// the tests, which can no longer plant a link to /dev/full).
 #include <chrono>
 #include <filesystem>
-#include <fstream>
+#include <memory>
+#include <ostream>
 #include <string>
 #include <string_view>
 
 #include "core/Error.h"
+#include "core/output/FdOutBuf.h"
 
 namespace c2d {
 
 class AtomicFile {
  public:
-  explicit AtomicFile(std::filesystem::path path);  // creates "<path>.part" (and its directory)
+  explicit AtomicFile(std::filesystem::path path);  // creates the temporary (and the directory)
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
@@ -48,7 +58,7 @@ class AtomicFile {
   std::filesystem::path keep(std::string_view tag);
   // Throws IoError when a write to the stream has failed so far (cheap; a file
   // that stays open for a whole run calls it at safe points). Flushes the stream
-  // at most every flushInterval, so that the .part can be watched.
+  // at most every flushInterval, so that the temporary can be watched.
   void check(std::chrono::milliseconds flushInterval = std::chrono::milliseconds(1000));
   bool committed() const { return committed_; }
   const std::filesystem::path& path() const { return path_; }
@@ -63,9 +73,23 @@ class AtomicFile {
   void commitTo(const std::filesystem::path& target);
 
   std::filesystem::path path_, part_;
-  std::ofstream out_;
+  std::unique_ptr<FdOutBuf> buf_;
+  std::ostream out_;
   bool committed_ = false;
   std::chrono::steady_clock::time_point lastFlush_;
+};
+
+class SimulatedWriteFailure {
+ public:
+  SimulatedWriteFailure(std::string fileName, int err);
+  ~SimulatedWriteFailure();
+  SimulatedWriteFailure(const SimulatedWriteFailure&) = delete;
+  SimulatedWriteFailure& operator=(const SimulatedWriteFailure&) = delete;
+
+  static int errorFor(const std::filesystem::path& path);  // 0: none
+
+ private:
+  std::string name_;
 };
 
 class AtomicAppendFile {

@@ -14,9 +14,33 @@ bool getBool(std::istream& in) {
 
 void putCount(std::ostream& out, std::size_t n) { put<std::uint64_t>(out, n); }
 
-std::size_t getCount(std::istream& in) {
+namespace {
+
+// The bytes left in a seekable stream; -1 when it cannot tell.
+std::streamoff bytesLeft(std::istream& in) {
+  const std::streampos here = in.tellg();
+  if (here == std::streampos(-1)) return -1;
+  in.seekg(0, std::ios::end);
+  const std::streampos end = in.tellg();
+  in.seekg(here);
+  if (end == std::streampos(-1) || !in) {
+    in.clear();
+    in.seekg(here);
+    return -1;
+  }
+  return end - here;
+}
+
+}  // namespace
+
+std::size_t getCount(std::istream& in, std::size_t minBytesEach) {
   const auto n = get<std::uint64_t>(in);
   if (n > kMaxCount) throw CheckpointError("implausible size " + std::to_string(n));
+  const std::streamoff left = bytesLeft(in);
+  if (left >= 0 && minBytesEach > 0 &&
+      n > static_cast<std::uint64_t>(left) / static_cast<std::uint64_t>(minBytesEach))
+    throw CheckpointError("a count of " + std::to_string(n) + " items where " +
+                          std::to_string(left) + " bytes are left");
   return static_cast<std::size_t>(n);
 }
 

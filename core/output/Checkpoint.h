@@ -65,7 +65,11 @@ void putBool(std::ostream& out, bool v);
 bool getBool(std::istream& in);
 
 void putCount(std::ostream& out, std::size_t n);
-std::size_t getCount(std::istream& in);  // checked against kMaxCount
+// Checked against kMaxCount and, in a stream that can tell (a restart file's
+// payload), against the bytes left: n items of at least minBytesEach bytes
+// each must fit in them, so that a crafted count allocates nothing the data
+// cannot fill.
+std::size_t getCount(std::istream& in, std::size_t minBytesEach = 1);
 
 void putString(std::ostream& out, const std::string& s);
 std::string getString(std::istream& in);

@@ -3,6 +3,8 @@
 // mesh command families share (meshspec: specs, located errors, the echo).
 #include "macro/commands/MeshCommands.h"
 
+#include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <ostream>
 
@@ -93,6 +95,16 @@ MeshContext::ElementRange MeshContext::elementRange(const Record& r, std::size_t
 }
 
 void MeshContext::setCoordOrigin(int n, const Record& r) {
+  const Vec2 x = model.coord(n - 1);
+  if (!(std::abs(x.x()) <= DeckLimits::kMaxCoordinate && std::abs(x.y()) <= DeckLimits::kMaxCoordinate)) {
+    char at[160];
+    std::snprintf(at, sizeof at,
+                  " at (%g, %g): a coordinate beyond the largest this program takes (%g in the "
+                  "deck's length unit)",
+                  x.x(), x.y(), DeckLimits::kMaxCoordinate);
+    throw DeckError(r.fieldLoc(0), "node " + std::to_string(n) + at,
+                    r.excerpt(r.fieldLoc(0)));
+  }
   if (static_cast<int>(coordOrigin.size()) < n) coordOrigin.resize(n, nullptr);
   coordOrigin[n - 1] = &r;
 }

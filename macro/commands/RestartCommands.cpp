@@ -8,6 +8,17 @@ namespace {
 
 using namespace batchspec;
 
+// A restart file lies in the output directory: its name is a plain file name,
+// so that SAVE writes nowhere else (no "../x", no "/abs").
+void checkRestartName(const Macro& m) {
+  const std::string& name = m.optionText;
+  if (name.find('/') != std::string::npos || name == "." || name == "..")
+    fail(m, 1,
+         "restart file name '" + name +
+             "' leads out of the output directory: give a plain name (the file is <name>.rst "
+             "in the directory of -o)");
+}
+
 class SaveCommand final : public SolutionCommand {
  public:
   CommandSpec spec() const override {
@@ -16,9 +27,14 @@ class SaveCommand final : public SolutionCommand {
                     "output directory (default name: the run's stem): the model as it is now "
                     "(joints, rebuilt elements, re-entered mesh data), every element's history, "
                     "the state, the integrator, tolerance, load tables, path following and "
-                    "energy bookkeeping. Written as <name>.rst.part and renamed when complete. "
+                    "energy bookkeeping. Written through a temporary <name>.rst.XXXXXX.part and renamed when complete. "
                     "A run restarted from it (REST) repeats the uninterrupted run bit for bit.",
-                    {word("name", "restart file name (optional; .rst is added)")});
+                    {word("name", "restart file name in the output directory (optional; .rst "
+                                  "is added; no '/')")});
+  }
+  void bind(Macro& m, BindContext& ctx) const override {
+    SolutionCommand::bind(m, ctx);
+    checkRestartName(m);
   }
   Flow run(const Macro& m, ProblemRun& r) const override {
     r.saveRestart(m);
@@ -38,10 +54,12 @@ class RestCommand final : public SolutionCommand {
                     "truncated, corrupted or foreign file is an error, and so is a file written for "
                     "another model (the deck's node coordinates, elements, materials, boundary "
                     "codes or loads differ from those the saving deck started with).",
-                    {word("name", "restart file name (optional; .rst is added)")});
+                    {word("name", "restart file name in the output directory (optional; .rst "
+                                  "is added; no '/')")});
   }
   void bind(Macro& m, BindContext& ctx) const override {
     SolutionCommand::bind(m, ctx);
+    checkRestartName(m);
     ctx.noteRestart();
   }
   Flow run(const Macro& m, ProblemRun& r) const override {

@@ -127,10 +127,12 @@ void bindSectionShape(MeshContext& ctx, const Record& r, const CommandSpec& s, M
   d.eu = ultimate ? v[nd + 4] : kDefaultFractureStrain;
   if (!(d.fu >= d.fy))
     failAt(r, 5 + nd, "the bars' ultimate stress fu must not be below fy = " + str(d.fy));
-  if (!(d.eu > d.fy / d.Es))
-    failAt(
-        r, 6 + nd,
-        "the bars' fracture strain eu must exceed their yield strain fy/Es = " + str(d.fy / d.Es));
+  // The bars harden from fy at fy/Es to fu at eu: eu beyond fu/Es, the strain
+  // of fu on the elastic line (materials/AxialCapacity), leaves the hardening room.
+  if (!(d.eu > d.fu / d.Es))
+    failAt(r, ultimate ? 6 + nd : 4 + nd,
+           "the bars' fracture strain eu = " + str(d.eu) + " must exceed fu/Es = " +
+               str(d.fu / d.Es) + " (the bars harden from fy to fu before they fracture)");
   d.bars = mat.section ? mat.section->bars : std::vector<RebarLayer>{};
   d.stirrups = mat.section ? mat.section->stirrups : std::nullopt;
   mat.section = d;

@@ -45,7 +45,10 @@ Record DeckReader::lexLine(std::string_view raw, const std::string& file, int li
     rec.line = std::make_shared<const std::string>(shown.substr(0, kMaxRecordLength));
     throw DeckError({file, lineNo, kMaxRecordLength + 1},
                     "record longer than " + std::to_string(kMaxRecordLength) + " characters",
-                    rec.lineText() + " ...", "split the record or shorten its comment");
+                    rec.lineText() + " ...",
+                    "split the record or shorten its comment; many values: a range lo:step:hi, or "
+                    "continuation records (a SWEEp's record without 'name =' goes on with the "
+                    "values of the one before)");
   }
 
   const std::size_t end = std::min(raw.find('!'), raw.size());

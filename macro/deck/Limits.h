@@ -20,6 +20,9 @@ struct DeckLimits {
   static constexpr int kMaxLoadTables = 10000;  // proportional load table numbers
   static constexpr int kMaxLoopDepth = 100;     // LOOP ... NEXT nested in one another
   static constexpr int kMaxRuns = 10000;        // passes of a top-level LOOP (each a run)
+  // Largest |x| or |y| of a node, in the deck's length unit: contact, plots and
+  // the energy square coordinates (1e155 squared is beyond a double).
+  static constexpr double kMaxCoordinate = 1e9;
 };
 
 // DeckError at field i of r unless 1 <= value <= limit: "<what> <value> is beyond

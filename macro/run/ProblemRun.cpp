@@ -58,6 +58,11 @@ std::string ProblemRun::fmt(const char* f, double v) {
 // A run that ends by an exception leaves no progress line for the message to run into.
 ProblemRun::~ProblemRun() { progress(true); }
 
+namespace {
+void checkMeshReentries(const Problem& problem, const Parameters& start, const Parameters& bound,
+                        const std::vector<std::vector<Macro>>& batches);
+}  // namespace
+
 void ProblemRun::bind(bool echo) {
   MeshFacts mesh;
   mesh.warnings = options_.warnings;
@@ -98,6 +103,7 @@ void ProblemRun::bind(bool echo) {
   bool collapse = false;
   for (const auto& batch : batches_)
     checkMaterialChanges(batch, sets, used, boundParams_, collapse);
+  checkMeshReentries(problem_, params_, boundParams_, batches_);
 }
 
 void ProblemRun::run() {
@@ -135,7 +141,8 @@ void ProblemRun::run() {
   for (const auto& batch : batches_)
     if (execList(batch, true) == Flow::Stop) break;
   const Status st = analysis_->commit();
-  if (!st) throw AnalysisError("final commit: " + st.why);
+  // Located at the last command run, with the step (as every commit's failure).
+  if (!st) failAtCommit("the final commit: " + st.why);
   if (history_) {
     history_->record(*analysis_, true);
     history_->finish();
@@ -373,6 +380,39 @@ void checkMaterialChanges(const std::vector<Macro>& list, std::map<int, Material
       sets[number] = {kin, kin == Kinematics::Small && !law};
     }
   }
+}
+
+// The MESH re-entries of the BATCh blocks applied in deck order to a model
+// built again from the mesh input, with the parameters the bind pass ends
+// with: their deck errors (an unknown record, an undefined parameter, a
+// negative mu) are found before the first step. What depends on the run
+// before the re-entry (the nodes' positions against a new ground) is left to
+// the re-entry itself.
+void applyReentries(const std::vector<Macro>& list, Model& model, Parameters& params) {
+  for (const Macro& m : list) {
+    applyReentries(m.body, model, params);
+    if (!m.is("mesh")) continue;
+    try {
+      applyMesh(meshReentryItems(m), params, model, nullptr, nullptr, nullptr);
+    } catch (const AnalysisError&) {
+      // The ground against the nodes as the run will have moved them: at the re-entry.
+    }
+  }
+}
+
+bool hasReentry(const std::vector<Macro>& list) {
+  return std::any_of(list.begin(), list.end(),
+                     [](const Macro& m) { return m.is("mesh") || hasReentry(m.body); });
+}
+
+void checkMeshReentries(const Problem& problem, const Parameters& start,
+                        const Parameters& bound, const std::vector<std::vector<Macro>>& batches) {
+  if (std::none_of(batches.begin(), batches.end(), [](const auto& b) { return hasReentry(b); }))
+    return;
+  Parameters params = start;
+  Model model = buildModel(problem, params, nullptr, nullptr);
+  params = bound;
+  for (const auto& batch : batches) applyReentries(batch, model, params);
 }
 
 }  // namespace

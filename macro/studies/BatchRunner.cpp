@@ -40,7 +40,8 @@ using Clock = std::chrono::steady_clock;
 struct Child {
   std::size_t index = 0;
   pid_t pid = -1;
-  std::FILE* output = nullptr;  // the child's stdout and stderr
+  std::FILE* output = nullptr;  // the child's stdout
+  std::FILE* errors = nullptr;  // the child's stderr (its errors and warnings)
   std::FILE* result = nullptr;  // "exit runs steps iterations"
   Clock::time_point start;
   std::optional<Clock::time_point> termSent;  // the timeout's SIGTERM
@@ -61,7 +62,7 @@ double secondsSince(Clock::time_point t) {
 #endif
   installInterruptHandlers();
   ::dup2(fileno(c.output), STDOUT_FILENO);
-  ::dup2(fileno(c.output), STDERR_FILENO);
+  ::dup2(fileno(c.errors), STDERR_FILENO);
   DeckOptions o = job.options;
   o.progress = false;
   o.logName.clear();
@@ -157,8 +158,9 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& batchJobs, const 
       c.index = next;
       results[next].started = true;
       c.output = std::tmpfile();
+      c.errors = std::tmpfile();
       c.result = std::tmpfile();
-      if (!c.output || !c.result) throw std::runtime_error("cannot create a temporary file for a batch run");
+      if (!c.output || !c.errors || !c.result) throw std::runtime_error("cannot create a temporary file for a batch run");
       // Nothing buffered may be written twice, once by each process.
       out.flush();
       std::cout.flush();
@@ -202,8 +204,10 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& batchJobs, const 
     r.timedOut = c.termSent.has_value();
     r.interruptedBy = r.timedOut ? 0 : c.forwarded;
     r.output = slurp(c.output);
+    r.errors = slurp(c.errors);
     std::istringstream figures(slurp(c.result));
     std::fclose(c.output);
+    std::fclose(c.errors);
     std::fclose(c.result);
     if (WIFSIGNALED(status)) {
       r.signal = WTERMSIG(status);
@@ -221,6 +225,8 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& batchJobs, const 
     if (!r.ok()) ++failed;
     clearLine(options.progress);
     out << r.output;
+    out.flush();
+    std::cerr << r.errors << std::flush;  // a deck's errors and warnings where a run puts them
     if (r.timedOut)
       out << r.deck << ": timed out after " << options.timeout << " s"
           << (r.signal ? " (killed: it did not stop at " + signalName(SIGTERM) + ")" : std::string()) << "\n";

@@ -37,7 +37,8 @@ struct BatchResult {
   int runs = 0, steps = 0, iterations = 0;
   int debrisRuns = 0, outsideRuns = 0;  // runs with debris figures; those outside the site
   double seconds = 0;  // wall time of the child
-  std::string output;  // what the deck printed (messages, summaries)
+  std::string output;  // what the deck printed on standard output (summaries)
+  std::string errors;  // and on standard error (its error message, warnings)
   bool started = false;      // false: the batch was interrupted before this deck
   bool timedOut = false;     // stopped by the timeout
   int interruptedBy = 0;     // the signal passed on from the batch, 0 when none

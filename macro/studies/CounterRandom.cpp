@@ -1,6 +1,7 @@
 #include "macro/studies/CounterRandom.h"
 
 #include <cctype>
+#include <string>
 
 namespace c2d {
 
@@ -31,6 +32,13 @@ std::uint64_t streamOf(std::string_view name) {
     h *= 1099511628211ull;
   }
   return h;
+}
+
+std::uint64_t drawnStream(std::string_view name) {
+  const std::uint64_t s = streamOf(name);
+  for (const char* own : {"jitter", "jitter.dt", "detonator"})
+    if (s == streamOf(own)) return streamOf("drawn." + std::string(name));
+  return s;
 }
 
 }  // namespace c2d

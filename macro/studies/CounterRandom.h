@@ -22,4 +22,10 @@ double counterUniform(std::uint64_t seed, std::uint64_t sample, std::uint64_t st
 // lower-case letters, so that streams do not depend on the order of the records.
 std::uint64_t streamOf(std::string_view name);
 
+// The stream of a drawn parameter: streamOf(name), unless that is a stream of
+// the program's own draws (the JITTer's "jitter" and "jitter.dt", the
+// DETOnators' "detonator"): then streamOf("drawn." + name), so that a
+// parameter named detonator is not the detonators' scatter drawn again.
+std::uint64_t drawnStream(std::string_view name);
+
 }  // namespace c2d

@@ -1,6 +1,8 @@
 #include "macro/studies/Csv.h"
 
 #include <cerrno>
+#include <cfloat>
+#include <cmath>
 #include <cstdlib>
 
 namespace c2d {
@@ -45,8 +47,17 @@ std::optional<double> numberCell(const std::string& cell) {
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(cell.c_str(), &end);
-  if (end != cell.c_str() + cell.size() || errno == ERANGE) return std::nullopt;
+  if (end != cell.c_str() + cell.size() || !std::isfinite(v)) return std::nullopt;
+  // ERANGE on underflow: strtod gives the subnormal (or zero) nearest, which is
+  // what the text means; on overflow it gives HUGE_VAL (not finite, above).
+  if (errno == ERANGE && std::fabs(v) > DBL_MIN) return std::nullopt;
   return v;
+}
+
+std::optional<int> countCell(const std::string& cell, int lo, int hi) {
+  const auto v = integerCell(cell);
+  if (!v || *v < lo || *v > hi) return std::nullopt;
+  return static_cast<int>(*v);
 }
 
 std::optional<long long> integerCell(const std::string& cell) {

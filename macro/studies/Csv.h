@@ -18,10 +18,14 @@ inline void appendCell(std::string& row, std::string_view cell) {
 // The cells of one line (quoted cells may hold commas and doubled quotes; a
 // carriage return is dropped).
 std::vector<std::string> splitCsv(const std::string& line);
-// The number a whole cell holds (strtod's forms), or nothing: empty, text, or
-// a number followed by other characters.
+// The finite number a whole cell holds (strtod's forms; a subnormal such as
+// 1e-310 too, as the tables write it), or nothing: empty, text, a number
+// followed by other characters, inf, nan, or beyond the range of a double.
 std::optional<double> numberCell(const std::string& cell);
 // The whole number a cell holds, or nothing.
 std::optional<long long> integerCell(const std::string& cell);
+// The whole number a cell (or a count in a file name) holds when it lies in
+// [lo, hi], or nothing: every count read from a file is checked so.
+std::optional<int> countCell(const std::string& cell, int lo, int hi);
 
 }  // namespace c2d

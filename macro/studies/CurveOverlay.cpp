@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/output/AtomicFile.h"
+#include "macro/deck/Limits.h"
 #include "macro/studies/Csv.h"
 #include "macro/studies/EnsembleTable.h"
 
@@ -95,7 +96,7 @@ void CurveOverlay::addCsv(const std::string& text) {
     const std::vector<std::string> c = splitCsv(line);
     const std::string bad = "line " + std::to_string(lineNo) + " is not a curve point";
     if (c.size() != 12) throw std::runtime_error(bad);
-    const auto run = integerCell(c[0]);
+    const auto run = countCell(c[0], 1, DeckLimits::kMaxRuns);
     const auto sx = numberCell(c[8]), sy = numberCell(c[9]);
     // A curve without points keeps one row with empty x, y.
     const bool noPoint = c[10].empty() && c[11].empty();
@@ -116,7 +117,7 @@ void CurveOverlay::addCsv(const std::string& text) {
     spec.xScale = *sx;
     spec.yScale = *sy;
     if (runs_.empty() || runs_.back().run != *run || runs_.back().label != c[1])
-      runs_.push_back({static_cast<int>(*run), c[1], c[2], {}});
+      runs_.push_back({*run, c[1], c[2], {}});
     Run& r = runs_.back();
     if (r.curves.empty() || !r.curves.back().spec.sameAs(spec) ||
         r.curves.back().spec.xColumn != spec.xColumn ||

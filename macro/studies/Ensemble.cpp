@@ -1,6 +1,7 @@
 #include "macro/studies/Ensemble.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "macro/deck/Limits.h"
 #include "macro/studies/CounterRandom.h"
@@ -19,6 +20,21 @@ bool written(const Record& r, std::size_t i) { return i < r.size() && !r[i].text
 const char* const kDrawSyntax = "name = NORMal mean sd | LOGNormal median cov | UNIForm lo hi";
 
 double value(const Expression& e, const Parameters& p) { return e.eval(p); }
+
+// Every draw lies between the law's quantiles at the least and the largest
+// uniform number (a quantile grows with u): both must be finite numbers (a
+// LOGNormal's positive), or some sample draws inf, NaN or 0 (UNIForm -1e308
+// 1e308, LOGNormal 0.4 1e300, NORMal 1e308 1e308).
+void checkLawRange(const DrawRecord& d, const Distribution& law) {
+  const double lo = law.quantile(0x1.0p-54), hi = law.quantile(std::nextafter(1.0, 0.0));
+  if (std::isfinite(lo) && std::isfinite(hi) && (law.law != Law::LogNormal || lo > 0)) return;
+  char range[96];
+  std::snprintf(range, sizeof range, "from %g to %g", lo, hi);
+  failAt(d.record, 3,
+         "the law of '" + d.name + "' (" + law.text() + ") draws values " + range +
+             ": beyond the numbers a run can compute with",
+         "a law whose draws stay finite (and positive for LOGNormal)");
+}
 
 }  // namespace
 
@@ -103,6 +119,7 @@ EnsembleSpec evaluateEnsemble(const TopEnsemble& e, const Parameters& p) {
       if (b < a) failAt(d.record, 3, "UNIForm lo hi of '" + d.name + "' has hi below lo");
       nd.law = {Law::Uniform, a, b};
     }
+    checkLawRange(d, nd.law);
     s.draws.push_back(nd);
   }
   if (e.jitter) {
@@ -140,7 +157,7 @@ SampleDraws drawSample(const EnsembleSpec& spec, int sample) {
   for (const NamedDraw& nd : spec.draws)
     d.values.emplace_back(
         nd.name, nd.law.quantile(counterUniform(spec.seed, static_cast<std::uint64_t>(sample),
-                                                streamOf(nd.name), 0)));
+                                                drawnStream(nd.name), 0)));
   d.jitter = spec.jitter;
   d.detonators = spec.detonators;
   if (spec.jitter) d.stepFactor = stepFactor(*spec.jitter, spec.seed, sample);

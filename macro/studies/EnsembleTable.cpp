@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "macro/deck/Limits.h"
 #include "macro/studies/Csv.h"
 
 namespace c2d {
@@ -58,7 +59,7 @@ std::string EnsembleTable::csv() const {
     for (const std::string& n : swept_) {
       out += ',';
       for (const auto& [name, v] : r.sweep)
-        if (name == n) out += formatSweepValue(v);
+        if (name == n) out += exactSweepValue(v);
     }
     for (const std::string& n : drawn_) {
       out += ',';
@@ -147,13 +148,15 @@ EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount) 
       bad(head.size(),
           std::to_string(c.size()) + " cells where the header has " + std::to_string(head.size()));
     EnsembleRun r;
-    const auto run = integerCell(c[0]), plan = integerCell(c[1]), sample = integerCell(c[2]);
-    if (!run || *run < 1) bad(0, "'" + c[0] + "' is not a run number");
-    if (!plan || *plan < 1) bad(1, "'" + c[1] + "' is not a plan number");
-    if (!sample || *sample < 1) bad(2, "'" + c[2] + "' is not a sample number");
-    r.run = static_cast<int>(*run);
-    r.plan = static_cast<int>(*plan);
-    r.sample = static_cast<int>(*sample);
+    constexpr int most = DeckLimits::kMaxRuns;
+    const auto run = countCell(c[0], 1, most), plan = countCell(c[1], 1, most),
+               sample = countCell(c[2], 1, most);
+    if (!run) bad(0, "'" + c[0] + "' is not a run number");
+    if (!plan) bad(1, "'" + c[1] + "' is not a plan number");
+    if (!sample) bad(2, "'" + c[2] + "' is not a sample number");
+    r.run = *run;
+    r.plan = *plan;
+    r.sample = *sample;
     r.stem = c[3];
     if (data.named) r.name = c[4];
     // A value a run does not have (a plan with fewer BLASt records) is empty: NaN.

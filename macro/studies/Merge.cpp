@@ -1,13 +1,15 @@
 #include "macro/studies/Merge.h"
 
 #include <algorithm>
-#include <fstream>
+#include <climits>
 #include <map>
 #include <regex>
 #include <set>
 #include <sstream>
 
+#include "core/InputFile.h"
 #include "core/output/AtomicFile.h"
+#include "macro/deck/Limits.h"
 #include "macro/studies/Csv.h"
 #include "macro/studies/CurveOverlay.h"
 #include "macro/DeckRunner.h"
@@ -21,25 +23,45 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A part refused: the message names its file.
+// A part refused: the message says why; file names it when it is not the
+// file being read.
 struct Refused : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit Refused(const std::string& why, fs::path in = {})
+      : std::runtime_error(why), file(std::move(in)) {}
+  fs::path file;
 };
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw IoError("cannot read '" + p.string() + "'");
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (in.bad()) throw IoError("cannot read '" + p.string() + "'");
-  return s.str();
+// The most a part's file may hold: far above what 10000 runs write.
+constexpr std::uintmax_t kMaxPartBytes = std::uintmax_t{1} << 30;
+
+// A part's text: a regular file of at most kMaxPartBytes, or refused.
+std::string readPart(const fs::path& p) {
+  try {
+    return readRegularFile(p, kMaxPartBytes);
+  } catch (const UnfitInputFile& e) {
+    throw Refused(e.what());
+  }
 }
 
+// "2, 5, 7" (the first ten, then the count).
 std::string missingParts(const std::set<int>& parts, int n) {
   std::string missing;
-  for (int i = 1; i <= n; ++i)
-    if (!parts.count(i)) missing += (missing.empty() ? "" : ", ") + std::to_string(i);
+  int count = 0;
+  for (int i = 1; i <= n; ++i) {
+    if (parts.count(i)) continue;
+    if (++count <= 10) missing += (missing.empty() ? "" : ", ") + std::to_string(i);
+  }
+  if (count > 10) missing += ", ... (" + std::to_string(count) + " parts)";
   return missing;
+}
+
+// A part's file must be the one its manifest was written with.
+void checkFingerprint(const std::string& text, const std::string& recorded) {
+  const std::string actual = contentFingerprint(text);
+  if (actual != recorded)
+    throw Refused("its text is not the one its part wrote (fingerprint " + actual +
+                  ", the manifest's " + recorded +
+                  "): a file of another deck or run, or changed since");
 }
 
 // "2, 4, 6, ... (50 runs)".
@@ -71,8 +93,10 @@ std::vector<std::pair<int, std::string>> planRows(const std::string& text, std::
   if (!header.empty() && line != header) throw Refused("its columns differ from part 1's");
   header = line;
   const std::vector<std::string> head = splitCsv(line);
-  if (head.size() < 4 || head[0] != "run" || head[1] != "stem")
-    throw Refused("its header is not a plans table's (run,stem,...)");
+  const auto status = std::find(head.begin(), head.end(), "status") - head.begin();
+  if (head.size() < 4 || head[0] != "run" || head[1] != "stem" ||
+      status == static_cast<long>(head.size()))
+    throw Refused("its header is not a plans table's (run,stem,...,status,...)");
   std::vector<std::pair<int, std::string>> rows;
   int lineNo = 1;
   while (std::getline(in, line)) {
@@ -84,15 +108,14 @@ std::vector<std::pair<int, std::string>> planRows(const std::string& text, std::
     if (c.size() != head.size())
       throw Refused(at + std::to_string(c.size()) + " cells where the header has " +
                     std::to_string(head.size()));
-    const auto run = integerCell(c[0]);
-    if (!run || *run < 1) throw Refused(at + "'" + c[0] + "' is not a run number");
-    const auto status = std::find(head.begin(), head.end(), "status") - head.begin();
+    const auto run = countCell(c[0], 1, DeckLimits::kMaxRuns);
+    if (!run) throw Refused(at + "'" + c[0] + "' is not a run number");
     if (c[status] != "ok" && c[status] != "failed")
       throw Refused(at + "the status is '" + c[status] + "', not ok or failed");
     for (std::size_t k = 2; k < c.size(); ++k)
       if (!textColumn(head[k]) && !c[k].empty() && !numberCell(c[k]))
         throw Refused(at + "'" + c[k] + "' in column " + head[k] + " is not a number");
-    rows.emplace_back(static_cast<int>(*run), line);
+    rows.emplace_back(*run, line);
   }
   return rows;
 }
@@ -115,10 +138,174 @@ struct StudyFiles {
   }
 };
 
+// A row of the joined table: its run, the part it came from, its text, and
+// for an ensemble its plan and sample.
+struct JoinedRow {
+  int run = 0, part = 0;
+  std::string line;
+  int plan = 0, sample = 0;
+};
+
+// What the parts read so far make of the study.
+struct Joined {
+  ShardManifest first;  // part 1's manifest
+  std::string header;
+  std::vector<JoinedRow> rows;
+  CurveOverlay overlay;
+};
+
+ShardManifest readManifest(const fs::path& file, int i, int n, const Joined& joined) {
+  ShardManifest m;
+  try {
+    m = readShardManifest(readPart(file));
+  } catch (const Refused&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const IoError*>(&e)) throw;
+    throw Refused(e.what());
+  }
+  if (m.part != i || m.parts != n)
+    throw Refused("it says part " + std::to_string(m.part) + " of " + std::to_string(m.parts) +
+                  ": it was copied from another part");
+  const ShardManifest& first = joined.first;
+  if (i > 1 && (m.fingerprint != first.fingerprint || m.runs != first.runs ||
+                m.table != first.table || m.swept != first.swept))
+    throw Refused("it was written by another deck than part 1 (" + m.deck + ", fingerprint " +
+                  m.fingerprint + ", " + std::to_string(m.runs) + " runs; part 1: " + first.deck +
+                  ", fingerprint " + first.fingerprint + ", " + std::to_string(first.runs) +
+                  " runs)");
+  return m;
+}
+
+// The runs of a part's table, its rows added to joined.
+std::vector<int> readTable(const std::string& text, int i, const ShardManifest& m, Joined& joined) {
+  std::vector<int> runs;
+  if (m.table == "plans") {
+    for (auto& [run, line] : planRows(text, joined.header)) {
+      runs.push_back(run);
+      joined.rows.push_back({run, i, std::move(line)});
+    }
+    return runs;
+  }
+  EnsembleData d;
+  try {
+    d = readEnsembleTable(text, m.swept.size());
+  } catch (const std::runtime_error& e) {
+    throw Refused(e.what());
+  }
+  if (!joined.header.empty() && d.header != joined.header)
+    throw Refused("its columns differ from part 1's");
+  joined.header = d.header;
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  for (const EnsembleRun& r : d.runs) {
+    do std::getline(in, line);
+    while (line.empty() || line == "\r");
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    runs.push_back(r.run);
+    joined.rows.push_back({r.run, i, line, r.plan, r.sample});
+  }
+  return runs;
+}
+
+// Part i of n of the study: its manifest, table and curves, checked and added
+// to joined. Throws Refused naming the file (file is set to it).
+void readStudyPart(const fs::path& dir, const std::string& stem, int i, int n,
+                   const StudyFiles& files, Joined& joined, fs::path& file) {
+  const std::string tag = "_part" + std::to_string(i) + "of" + std::to_string(n);
+  file = dir / (stem + tag + "_manifest.csv");
+  if (!files.manifests.count(i))
+    throw Refused("missing: the part was not written by `collapse2d run --shard " +
+                  std::to_string(i) + "/" + std::to_string(n) +
+                  "` of this program, or its run did not end");
+  const ShardManifest m = readManifest(file, i, n, joined);
+  if (i == 1) joined.first = m;
+  const auto kinds = files.tables.find(i);
+  const bool present = kinds != files.tables.end() && kinds->second.count(m.table);
+  file = dir / (stem + tag + "_" + m.table + ".csv");
+  if (!present) throw Refused("missing (the part's manifest names it)");
+  const std::string text = readPart(file);
+  const std::vector<int> runs = readTable(text, i, m, joined);
+  const std::vector<int> expected = shardRuns(i, n, m.runs);
+  if (runs != expected)
+    throw Refused("it holds runs " + runList(runs) + ", where part " + std::to_string(i) + " of " +
+                  std::to_string(n) + " of this deck (" + std::to_string(m.runs) +
+                  " runs) holds runs " + runList(expected));
+  checkFingerprint(text, m.tableHash);
+  if (m.curves == 0) return;
+  file = dir / (stem + tag + "_curves.csv");
+  if (!fs::exists(fs::symlink_status(file)))
+    throw Refused("missing (the part's manifest counts " + std::to_string(m.curves) +
+                  " runs' curves)");
+  const std::string curves = readPart(file);
+  checkFingerprint(curves, m.curvesHash);
+  try {
+    joined.overlay.addCsv(curves);
+  } catch (const std::runtime_error& e) {
+    throw Refused(e.what());
+  }
+}
+
+// An ensemble's runs in order number its plans and samples in order: a row
+// whose plan or sample disagrees with its run is refused (in its part's file).
+void checkEnsembleOrder(const std::vector<JoinedRow>& rows, const fs::path& dir,
+                        const std::string& stem, int n) {
+  int plan = 0, sample = 0;  // before run 1
+  for (const JoinedRow& r : rows) {
+    if ((r.plan == plan && r.sample == sample + 1) || (r.plan == plan + 1 && r.sample == 1)) {
+      plan = r.plan;
+      sample = r.sample;
+      continue;
+    }
+    throw Refused("line of run " + std::to_string(r.run) + ": plan " + std::to_string(r.plan) +
+                      ", sample " + std::to_string(r.sample) + " does not follow plan " +
+                      std::to_string(plan) + ", sample " + std::to_string(sample) +
+                      " of the run before (plans and samples are numbered in run order)",
+                  dir / (stem + "_part" + std::to_string(r.part) + "of" + std::to_string(n) +
+                         "_ensemble.csv"));
+  }
+}
+
+// Writes the joined table and what follows from it; returns the log's text.
+std::string writeJoined(const fs::path& dir, const std::string& stem, int n, Joined& joined,
+                        std::ostream& out) {
+  std::ostringstream logText;
+  std::string text = joined.header + "\n";
+  for (const JoinedRow& r : joined.rows) text += r.line + "\n";
+  const fs::path file = dir / (stem + "_" + joined.first.table + ".csv");
+  AtomicFile::write(file, text);
+  if (joined.first.table == "plans") {
+    int failed = 0;
+    const auto head = splitCsv(joined.header);
+    const auto status = std::find(head.begin(), head.end(), "status") - head.begin();
+    for (const JoinedRow& r : joined.rows) failed += splitCsv(r.line)[status] == "failed";
+    out << file.filename().string() << ": " << joined.rows.size() << " plans from " << n
+        << " parts, " << failed << " failed\n";
+    logText << "  plans: " << file.filename().string() << " (" << joined.rows.size() << " runs, "
+            << failed << " failed)\n";
+  } else {
+    const EnsembleStudyReport report = writeEnsembleStudy(
+        dir, stem, readEnsembleTable(text, joined.first.swept.size()), joined.first.title);
+    out << file.filename().string() << ": " << joined.rows.size() << " runs from " << n
+        << " parts\n"
+        << report.summary;
+    for (const auto& f : report.files) out << "  " << f.filename().string() << "\n";
+    logText << "  ensemble: " << file.filename().string() << " (" << joined.rows.size()
+            << " runs)\n\n"
+            << report.text;
+  }
+  joined.overlay.sortByRun();
+  for (const auto& f : joined.overlay.write(dir, stem)) {
+    out << "  overlay of the runs: " << f.filename().string() << "\n";
+    logText << "  overlay of the runs: " << f.filename().string() << "\n";
+  }
+  return logText.str();
+}
+
 // One deck's study; false when refused (message on err).
 bool mergeStudy(const fs::path& dir, const std::string& stem, int n, const StudyFiles& files,
                 std::ostream& out, std::ostream& err, std::string* log) {
-  std::ostringstream logText;
   const std::string set = stem + "_part<i>of" + std::to_string(n);
   if (const std::string missing = missingParts(files.parts(), n); !missing.empty()) {
     err << "collapse2d merge: " << set << ": part"
@@ -126,124 +313,20 @@ bool mergeStudy(const fs::path& dir, const std::string& stem, int n, const Study
         << " missing; not merged\n";
     return false;
   }
-  ShardManifest first;
-  std::string header;
-  std::vector<std::pair<int, std::string>> rows;  // run, line
-  CurveOverlay overlay;
-  for (int i = 1; i <= n; ++i) {
-    const std::string tag = "_part" + std::to_string(i) + "of" + std::to_string(n);
-    fs::path file = dir / (stem + tag + "_manifest.csv");
-    try {
-      if (!files.manifests.count(i))
-        throw Refused("missing: the part was not written by `collapse2d run --shard " +
-                      std::to_string(i) + "/" + std::to_string(n) +
-                      "` of this program, or its run did not end");
-      ShardManifest m;
-      try {
-        m = readShardManifest(slurp(file));
-      } catch (const std::runtime_error& e) {
-        if (dynamic_cast<const IoError*>(&e)) throw;
-        throw Refused(e.what());
-      }
-      if (m.part != i || m.parts != n)
-        throw Refused("it says part " + std::to_string(m.part) + " of " + std::to_string(m.parts) +
-                      ": it was copied from another part");
-      if (i == 1) {
-        first = m;
-      } else if (m.fingerprint != first.fingerprint || m.runs != first.runs ||
-                 m.table != first.table || m.swept != first.swept) {
-        throw Refused("it was written by another deck than part 1 (" + m.deck + ", fingerprint " +
-                      m.fingerprint + ", " + std::to_string(m.runs) +
-                      " runs; part 1: " + first.deck + ", fingerprint " + first.fingerprint + ", " +
-                      std::to_string(first.runs) + " runs)");
-      }
-      const auto kinds = files.tables.find(i);
-      const auto table = kinds == files.tables.end() ? nullptr : [&]() -> const fs::path* {
-        const auto t = kinds->second.find(m.table);
-        return t == kinds->second.end() ? nullptr : &t->second;
-      }();
-      file = dir / (stem + tag + "_" + m.table + ".csv");
-      if (!table) throw Refused("missing (the part's manifest names it)");
-      const std::string text = slurp(file);
-      std::vector<int> runs;
-      if (m.table == "plans") {
-        for (auto& row : planRows(text, header)) {
-          runs.push_back(row.first);
-          rows.push_back(std::move(row));
-        }
-      } else {
-        EnsembleData d;
-        try {
-          d = readEnsembleTable(text, m.swept.size());
-        } catch (const std::runtime_error& e) {
-          throw Refused(e.what());
-        }
-        if (!header.empty() && d.header != header)
-          throw Refused("its columns differ from part 1's");
-        header = d.header;
-        std::istringstream in(text);
-        std::string line;
-        std::getline(in, line);
-        for (const EnsembleRun& r : d.runs) {
-          do std::getline(in, line);
-          while (line.empty() || line == "\r");
-          if (!line.empty() && line.back() == '\r') line.pop_back();
-          runs.push_back(r.run);
-          rows.emplace_back(r.run, line);
-        }
-      }
-      const std::vector<int> expected = shardRuns(i, n, m.runs);
-      if (runs != expected)
-        throw Refused("it holds runs " + runList(runs) + ", where part " + std::to_string(i) +
-                      " of " + std::to_string(n) + " of this deck (" + std::to_string(m.runs) +
-                      " runs) holds runs " + runList(expected));
-      if (m.curves > 0) {
-        file = dir / (stem + tag + "_curves.csv");
-        try {
-          overlay.addCsv(slurp(file));
-        } catch (const IoError&) {
-          throw Refused("missing (the part's manifest counts " + std::to_string(m.curves) +
-                        " runs' curves)");
-        } catch (const std::runtime_error& e) {
-          throw Refused(e.what());
-        }
-      }
-    } catch (const Refused& e) {
-      err << "collapse2d merge: " << file.string() << ": " << e.what() << "; " << set
-          << " is not merged\n";
-      return false;
-    }
+  Joined joined;
+  fs::path file;
+  try {
+    for (int i = 1; i <= n; ++i) readStudyPart(dir, stem, i, n, files, joined, file);
+    std::stable_sort(joined.rows.begin(), joined.rows.end(),
+                     [](const JoinedRow& a, const JoinedRow& b) { return a.run < b.run; });
+    if (joined.first.table == "ensemble") checkEnsembleOrder(joined.rows, dir, stem, n);
+  } catch (const Refused& e) {
+    err << "collapse2d merge: " << (e.file.empty() ? file : e.file).string() << ": " << e.what()
+        << "; " << set << " is not merged\n";
+    return false;
   }
-  std::stable_sort(rows.begin(), rows.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::string text = header + "\n";
-  for (const auto& [run, line] : rows) text += line + "\n";
-  const fs::path joined = dir / (stem + "_" + first.table + ".csv");
-  AtomicFile::write(joined, text);
-  if (first.table == "plans") {
-    int failed = 0;
-    const auto head = splitCsv(header);
-    const auto status = std::find(head.begin(), head.end(), "status") - head.begin();
-    for (const auto& [run, line] : rows) failed += splitCsv(line)[status] == "failed";
-    out << joined.filename().string() << ": " << rows.size() << " plans from " << n << " parts, "
-        << failed << " failed\n";
-    logText << "  plans: " << joined.filename().string() << " (" << rows.size() << " runs, "
-            << failed << " failed)\n";
-  } else {
-    const EnsembleStudyReport report =
-        writeEnsembleStudy(dir, stem, readEnsembleTable(text, first.swept.size()), first.title);
-    out << joined.filename().string() << ": " << rows.size() << " runs from " << n << " parts\n"
-        << report.summary;
-    for (const auto& f : report.files) out << "  " << f.filename().string() << "\n";
-    logText << "  ensemble: " << joined.filename().string() << " (" << rows.size() << " runs)\n\n"
-            << report.text;
-  }
-  overlay.sortByRun();
-  for (const auto& f : overlay.write(dir, stem)) {
-    out << "  overlay of the runs: " << f.filename().string() << "\n";
-    logText << "  overlay of the runs: " << f.filename().string() << "\n";
-  }
-  if (log) *log = logText.str();
+  const std::string text = writeJoined(dir, stem, n, joined, out);
+  if (log) *log = text;
   return true;
 }
 
@@ -260,7 +343,7 @@ bool mergeBatch(const fs::path& dir, int n, const std::map<int, fs::path>& parts
   std::vector<std::vector<BatchResult>> tables;
   for (const auto& [i, file] : parts) {
     try {
-      tables.push_back(readBatchCsv(slurp(file)));
+      tables.push_back(readBatchCsv(readPart(file)));
     } catch (const IoError&) {
       throw;
     } catch (const std::runtime_error& e) {
@@ -296,12 +379,12 @@ bool mergeBatch(const fs::path& dir, int n, const std::map<int, fs::path>& parts
         it->exitCode = r.exitCode;
         it->signal = r.signal;
       }
-      it->runs += r.runs;
-      it->steps += r.steps;
-      it->iterations += r.iterations;
+      // Each count of a part is at most INT_MAX (readBatchCsv): the sum stops there.
+      for (auto [sum, add] : {std::pair{&it->runs, r.runs}, {&it->steps, r.steps},
+                              {&it->iterations, r.iterations}, {&it->debrisRuns, r.debrisRuns},
+                              {&it->outsideRuns, r.outsideRuns}})
+        *sum = *sum > INT_MAX - add ? INT_MAX : *sum + add;
       it->seconds += r.seconds;
-      it->debrisRuns += r.debrisRuns;
-      it->outsideRuns += r.outsideRuns;
     }
   AtomicFile::write(dir / "batch.csv", batchCsv(merged));
   out << "batch.csv: " << merged.size() << " deck" << (merged.size() == 1 ? "" : "s") << " from "
@@ -310,22 +393,63 @@ bool mergeBatch(const fs::path& dir, int n, const std::map<int, fs::path>& parts
   return true;
 }
 
-// The files of the studies in dir, by (stem, n).
-std::map<std::pair<std::string, int>, StudyFiles> studyFiles(const fs::path& dir) {
+// The parts found in a folder: the studies' files by (stem, n), the batch
+// tables by n and i, and the files whose names hold counts out of range.
+struct Found {
   std::map<std::pair<std::string, int>, StudyFiles> studies;
+  std::map<int, std::map<int, fs::path>> batches;
+  std::vector<std::pair<fs::path, std::string>> badNames;  // file, why
+};
+
+// Part i of n as a file's name gives them: 1 <= i <= n, 2 <= n <= kMaxShards.
+bool partCounts(const std::string& i, const std::string& n, const fs::path& file, Found& found,
+                std::pair<int, int>& counts) {
+  const auto parts = countCell(n, 2, kMaxShards);
+  const auto part = parts ? countCell(i, 1, *parts) : std::nullopt;
+  if (part) {
+    counts = {*part, *parts};
+    return true;
+  }
+  found.badNames.emplace_back(
+      file, "its name says part " + i + " of " + n + ", where parts are 1 to n of n from 2 to " +
+                std::to_string(kMaxShards) + " (not written by `collapse2d run --shard`)");
+  return false;
+}
+
+Found findParts(const fs::path& dir) {
+  Found found;
   const std::regex part(R"((.+)_part([0-9]+)of([0-9]+)_(manifest|plans|ensemble|curves)\.csv)");
+  const std::regex batch(R"(batch_part([0-9]+)of([0-9]+)\.csv)");
   for (const auto& entry : fs::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
     std::smatch m;
-    if (!std::regex_match(name, m, part)) continue;
-    StudyFiles& s = studies[{m[1].str(), std::stoi(m[3])}];
-    const int i = std::stoi(m[2]);
-    if (m[4] == "manifest")
-      s.manifests[i] = entry.path();
-    else
-      s.tables[i][m[4].str()] = entry.path();
+    std::pair<int, int> c;
+    if (std::regex_match(name, m, part)) {
+      if (!partCounts(m[2], m[3], entry.path(), found, c)) continue;
+      StudyFiles& s = found.studies[{m[1].str(), c.second}];
+      if (m[4] == "manifest")
+        s.manifests[c.first] = entry.path();
+      else
+        s.tables[c.first][m[4].str()] = entry.path();
+    } else if (std::regex_match(name, m, batch) && partCounts(m[1], m[2], entry.path(), found, c)) {
+      found.batches[c.second][c.first] = entry.path();
+    }
   }
-  return studies;
+  return found;
+}
+
+// Sets of parts that would write one file (a stem's parts in 2 and in 3, from
+// before and after an edit): none of them is merged.
+bool clashingSets(const Found& found, const std::string& stem, int n, std::ostream& err) {
+  std::string others;
+  for (const auto& [key, files] : found.studies)
+    if (key.first == stem && key.second != n)
+      others += (others.empty() ? "" : ", ") + std::to_string(key.second);
+  if (others.empty()) return false;
+  err << "collapse2d merge: " << stem << "_part<i>of" << n << ": the folder holds parts of " << stem
+      << " in " << others << " too (an earlier split?): they would write the same "
+      << stem << " tables; remove the stale set; not merged\n";
+  return true;
 }
 
 int mergeAll(const fs::path& dir, std::ostream& out, std::ostream& err) {
@@ -333,23 +457,29 @@ int mergeAll(const fs::path& dir, std::ostream& out, std::ostream& err) {
     err << "collapse2d merge: no directory '" << dir.string() << "'\n";
     return 1;
   }
-  const auto studies = studyFiles(dir);
-  std::map<int, std::map<int, fs::path>> batches;
-  const std::regex batch(R"(batch_part([0-9]+)of([0-9]+)\.csv)");
-  for (const auto& entry : fs::directory_iterator(dir)) {
-    const std::string name = entry.path().filename().string();
-    std::smatch m;
-    if (std::regex_match(name, m, batch)) batches[std::stoi(m[2])][std::stoi(m[1])] = entry.path();
-  }
-  if (studies.empty() && batches.empty()) {
-    err << "collapse2d merge: no parts (*_part<i>of<n>_*.csv, batch_part<i>of<n>.csv) in '"
-        << dir.string() << "'\n";
+  const Found found = findParts(dir);
+  for (const auto& [file, why] : found.badNames)
+    err << "collapse2d merge: " << file.string() << ": " << why << "; not merged\n";
+  if (found.studies.empty() && found.batches.empty()) {
+    if (found.badNames.empty())
+      err << "collapse2d merge: no parts (*_part<i>of<n>_*.csv, batch_part<i>of<n>.csv) in '"
+          << dir.string() << "'\n";
     return 1;
   }
-  int status = 0;
-  for (const auto& [key, files] : studies)
-    if (!mergeStudy(dir, key.first, key.second, files, out, err, nullptr)) status = 1;
-  for (const auto& [n, parts] : batches)
+  int status = found.badNames.empty() ? 0 : 1;
+  for (const auto& [key, files] : found.studies)
+    if (clashingSets(found, key.first, key.second, err) ||
+        !mergeStudy(dir, key.first, key.second, files, out, err, nullptr))
+      status = 1;
+  if (found.batches.size() > 1) {
+    err << "collapse2d merge: batch_part<i>of<n>.csv: the folder holds batch parts of "
+        << found.batches.size() << " splits (n = " << found.batches.begin()->first << ", "
+        << std::next(found.batches.begin())->first
+        << (found.batches.size() > 2 ? ", ..." : "")
+        << "): they would write the same batch.csv; remove the stale ones; not merged\n";
+    return 1;
+  }
+  for (const auto& [n, parts] : found.batches)
     if (!mergeBatch(dir, n, parts, out, err)) status = 1;
   return status;
 }
@@ -358,9 +488,10 @@ int mergeAll(const fs::path& dir, std::ostream& out, std::ostream& err) {
 
 bool mergeStudyParts(const fs::path& dir, const std::string& stem, int n, std::ostream& out,
                      std::ostream& err, std::string* log) {
-  const auto studies = studyFiles(dir);
-  const auto it = studies.find({stem, n});
-  return mergeStudy(dir, stem, n, it == studies.end() ? StudyFiles{} : it->second, out, err, log);
+  const Found found = findParts(dir);
+  const auto it = found.studies.find({stem, n});
+  return mergeStudy(dir, stem, n, it == found.studies.end() ? StudyFiles{} : it->second, out, err,
+                    log);
 }
 
 int mergeParts(const fs::path& dir, std::ostream& out, std::ostream& err) {
@@ -372,6 +503,9 @@ int mergeParts(const fs::path& dir, std::ostream& out, std::ostream& err) {
     err << "collapse2d merge: I/O error: " << e.code().message();
     if (!e.path1().empty()) err << ": '" << e.path1().string() << "'";
     err << "\n";
+  } catch (const std::exception& e) {
+    // Never an abort: whatever a part holds ends with a message and a status.
+    err << "collapse2d merge: internal error: " << e.what() << "\n";
   }
   return kExitInternal;
 }

@@ -67,10 +67,17 @@ PairedTest pairedTTest(std::span<const double> d) {
   r.effect = mean;
   const double m = static_cast<double>(d.size());
   const double sd = d.size() > 1 ? std::sqrt(ss / (m - 1)) : 0.0;
+  if (d.size() < 2) {  // one pair: no scatter to judge it by, no test
+    r.statistic = std::numeric_limits<double>::quiet_NaN();
+    r.p = 1.0;
+    r.samplesNeeded = std::numeric_limits<double>::infinity();
+    return r;
+  }
   if (sd == 0) {
-    // Every pair differs by the same amount: certain when it is not zero.
+    // Every pair differs by the same amount: certain when it is not zero and
+    // seen in three pairs at least (two equal differences may be chance).
     r.statistic = mean == 0 ? 0 : std::copysign(std::numeric_limits<double>::infinity(), mean);
-    r.p = mean == 0 || d.size() < 2 ? 1.0 : 0.0;
+    r.p = mean == 0 || d.size() < 3 ? 1.0 : 0.0;
     r.samplesNeeded = mean == 0 ? std::numeric_limits<double>::infinity() : 2;
     return r;
   }

@@ -103,7 +103,8 @@ int runDeckInParallel(const std::string& deck, const BatchOptions& options,
   const std::string stem = fs::path(deck).stem().string();
   try {
     std::string study;
-    if (!mergeStudyParts(dir, stem, n, out, err, &study)) return 1;
+    std::ostringstream quiet;  // -q: the study's summary is in the log only
+    if (!mergeStudyParts(dir, stem, n, options.deck.quiet ? quiet : out, err, &study)) return 1;
     std::vector<std::string> logs;
     for (int i = 1; i <= n; ++i) {
       std::ifstream in(dir /

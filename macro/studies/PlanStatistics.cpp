@@ -108,7 +108,7 @@ std::string plansCsv(const EnsembleData& data, const std::vector<PlanStats>& pla
   for (const PlanStats& s : plans) {
     out += std::to_string(s.plan);
     if (data.named) appendCell(out, csvCell(s.name));
-    for (double v : s.swept) appendCell(out, formatSweepValue(v));
+    for (double v : s.swept) appendCell(out, exactSweepValue(v));
     appendCell(out, std::to_string(s.samples));
     appendCell(out, std::to_string(s.failed));
     for (const auto& q : s.quantiles)

@@ -36,7 +36,7 @@ std::string PlanTable::csv() const {
       out += ",";
       for (const auto& [name, value] : r.sweep)
         if (name == n) {
-          out += formatSweepValue(value);
+          out += exactSweepValue(value);
           break;
         }
     }

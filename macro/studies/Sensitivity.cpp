@@ -72,7 +72,7 @@ std::string sensitivityCsv(const EnsembleData& data) {
     for (std::size_t i = 0; i < data.drawn.size(); ++i) {
       out += std::to_string(c.plan);
       if (data.named) appendCell(out, csvCell(c.name));
-      for (double v : c.swept) appendCell(out, formatSweepValue(v));
+      for (double v : c.swept) appendCell(out, exactSweepValue(v));
       appendCell(out, csvCell(data.drawn[i]));
       for (double v : c.rho[i]) appendCell(out, rhoCell(v));
       out += '\n';
@@ -92,9 +92,16 @@ std::string sensitivityText(const EnsembleData& data) {
       out += buf;
       continue;
     }
-    std::snprintf(buf, sizeof buf,
-                  "    plan %d%s%s (%d runs; |rho| above %.2f stands out of the noise):\n", c.plan,
-                  c.name.empty() ? "" : " ", c.name.c_str(), c.runs, 2 / std::sqrt(static_cast<double>(c.runs)));
+    // 2/sqrt(n) is below 1 from 5 runs on: fewer cannot tell a correlation from noise.
+    if (c.runs < 5)
+      std::snprintf(buf, sizeof buf,
+                    "    plan %d%s%s (%d runs; too few for any |rho| to stand out of the noise):\n",
+                    c.plan, c.name.empty() ? "" : " ", c.name.c_str(), c.runs);
+    else
+      std::snprintf(buf, sizeof buf,
+                    "    plan %d%s%s (%d runs; |rho| above %.2f stands out of the noise):\n", c.plan,
+                    c.name.empty() ? "" : " ", c.name.c_str(), c.runs,
+                    2 / std::sqrt(static_cast<double>(c.runs)));
     out += buf;
     std::vector<std::size_t> order(data.drawn.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;

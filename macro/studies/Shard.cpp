@@ -2,18 +2,16 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <sstream>
 
 #include "core/output/AtomicFile.h"
 #include "macro/studies/Csv.h"
 #include "macro/deck/DeckReader.h"
+#include "macro/deck/Limits.h"
 
 namespace c2d {
-
-namespace {
-
-}  // namespace
 
 const char* const kBatchHeader =
     "deck,status,exit,signal,runs,steps,iterations,wall_s,debris_runs,outside_runs";
@@ -25,15 +23,21 @@ const char* const kManifestHeader = "key,value";
 
 }  // namespace
 
-std::string deckFingerprint(const std::string& path) {
-  std::uint64_t h = 14695981039346656037ull;  // FNV-1a over every record's text
-  for (const Record& r : DeckReader::readFile(path)) {
-    for (unsigned char c : r.lineText()) h = (h ^ c) * 1099511628211ull;
-    h = (h ^ '\n') * 1099511628211ull;
-  }
+std::string contentFingerprint(std::string_view text) {
+  std::uint64_t h = 14695981039346656037ull;  // FNV-1a
+  for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
   char buf[20];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
   return buf;
+}
+
+std::string deckFingerprint(const std::string& path) {
+  std::string records;  // every record's text, a line each
+  for (const Record& r : DeckReader::readFile(path)) {
+    records += r.lineText();
+    records += '\n';
+  }
+  return contentFingerprint(records);
 }
 
 void writeShardManifest(const std::filesystem::path& dir, const std::string& partStem,
@@ -50,7 +54,9 @@ void writeShardManifest(const std::filesystem::path& dir, const std::string& par
                                                         {"table", m.table},
                                                         {"swept", swept},
                                                         {"title", m.title},
-                                                        {"curves", std::to_string(m.curves)}})
+                                                        {"curves", std::to_string(m.curves)},
+                                                        {"table_hash", m.tableHash},
+                                                        {"curves_hash", m.curvesHash}})
     out += k + "," + csvCell(v) + "\n";
   AtomicFile::write(dir / (partStem + "_manifest.csv"), out);
 }
@@ -73,23 +79,29 @@ ShardManifest readShardManifest(const std::string& text) {
     if (it == kv.end()) throw std::runtime_error(std::string("the manifest has no ") + key);
     return it->second;
   };
-  auto whole = [&](const char* key) {
-    const auto v = integerCell(need(key));
-    if (!v || *v < 0) throw std::runtime_error(std::string("the manifest's ") + key + " is not a count");
-    return static_cast<int>(*v);
+  auto whole = [&](const char* key, int lo, int hi) {
+    const std::string& text = need(key);
+    const auto v = countCell(text, lo, hi);
+    if (!v)
+      throw std::runtime_error(std::string("the manifest's ") + key + " '" + text +
+                               "' is not a whole number from " + std::to_string(lo) + " to " +
+                               std::to_string(hi));
+    return *v;
   };
   m.deck = need("deck");
   m.fingerprint = need("fingerprint");
-  m.part = whole("part");
-  m.parts = whole("parts");
-  m.runs = whole("runs");
+  m.part = whole("part", 1, kMaxShards);
+  m.parts = whole("parts", 2, kMaxShards);
+  m.runs = whole("runs", 1, DeckLimits::kMaxRuns);
   m.table = need("table");
   if (m.table != "plans" && m.table != "ensemble")
     throw std::runtime_error("the manifest's table is '" + m.table + "'");
   std::istringstream names(need("swept"));
   for (std::string n; names >> n;) m.swept.push_back(n);
   m.title = need("title");
-  m.curves = whole("curves");
+  m.curves = whole("curves", 0, m.runs);
+  m.tableHash = need("table_hash");
+  m.curvesHash = need("curves_hash");
   return m;
 }
 
@@ -98,13 +110,13 @@ std::string ShardSpec::tag() const {
 }
 
 bool parseShard(const std::string& text, ShardSpec& spec) {
-  int i = 0, n = 0;
-  char slash = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &i, &slash, &n, &extra) != 3 || slash != '/')
-    return false;
-  if (n < 1 || i < 1 || i > n) return false;
-  spec.index = i;
-  spec.count = n;
+  const std::size_t slash = text.find('/');
+  if (slash == std::string::npos) return false;
+  const auto n = countCell(text.substr(slash + 1), 1, kMaxShards);
+  const auto i = n ? countCell(text.substr(0, slash), 1, *n) : std::nullopt;
+  if (!i) return false;
+  spec.index = *i;
+  spec.count = *n;
   return true;
 }
 
@@ -159,22 +171,24 @@ std::vector<BatchResult> readBatchCsv(const std::string& text) {
     r.deck = c[0];
     r.started = c[1] != "not run";
     r.timedOut = c[1] == "timed out";
-    static const char* names[] = {"exit", "signal", "runs", "steps", "iterations"};
-    int* ints[] = {&r.exitCode, &r.signal, &r.runs, &r.steps, &r.iterations};
-    for (int k = 0; k < 5; ++k) {
-      const auto v = integerCell(c[2 + k]);
-      if (!v) throw std::runtime_error(at + "'" + c[2 + k] + "' in column " + names[k] + " is not a whole number");
-      *ints[k] = static_cast<int>(*v);
+    constexpr int kMaxCount = std::numeric_limits<int>::max();
+    static const char* names[] = {"exit",       "signal",      "runs",        "steps",
+                                  "iterations", "debris_runs", "outside_runs"};
+    static const int highest[] = {255, 128, DeckLimits::kMaxRuns, kMaxCount, kMaxCount,
+                                  DeckLimits::kMaxRuns, DeckLimits::kMaxRuns};
+    int* ints[] = {&r.exitCode, &r.signal, &r.runs, &r.steps, &r.iterations, &r.debrisRuns, &r.outsideRuns};
+    for (int k = 0; k < 7; ++k) {
+      const std::string& cell = c[k < 5 ? 2 + k : 3 + k];
+      const auto v = countCell(cell, 0, highest[k]);
+      if (!v)
+        throw std::runtime_error(at + "'" + cell + "' in column " + names[k] +
+                                 " is not a whole number from 0 to " + std::to_string(highest[k]));
+      *ints[k] = *v;
     }
     const auto wall = numberCell(c[7]);
-    const auto debris = integerCell(c[8]), outside = integerCell(c[9]);
-    if (!wall) throw std::runtime_error(at + "'" + c[7] + "' in column wall_s is not a number");
-    if (!debris || !outside)
-      throw std::runtime_error(at + "'" + (debris ? c[9] : c[8]) + "' in column " +
-                               (debris ? "outside_runs" : "debris_runs") + " is not a whole number");
+    if (!wall || *wall < 0)
+      throw std::runtime_error(at + "'" + c[7] + "' in column wall_s is not a number of seconds");
     r.seconds = *wall;
-    r.debrisRuns = static_cast<int>(*debris);
-    r.outsideRuns = static_cast<int>(*outside);
     results.push_back(r);
   }
   return results;

@@ -17,11 +17,16 @@
 #include <filesystem>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "macro/studies/BatchRunner.h"
 
 namespace c2d {
+
+// The most parts a study or a list of decks is split into (as many as the
+// runs a deck may have: more parts than runs run nothing).
+inline constexpr int kMaxShards = 10000;
 
 struct ShardSpec {
   int index = 1, count = 1;  // part index (1-based) of count
@@ -29,7 +34,7 @@ struct ShardSpec {
   std::string tag() const;  // "part2of4"
 };
 
-// "i/n" with 1 <= i <= n; false when malformed.
+// "i/n" with 1 <= i <= n <= kMaxShards; false when malformed or out of range.
 bool parseShard(const std::string& text, ShardSpec& spec);
 
 // The decks part `spec` runs; with one deck, all of it (and deck.shard set so
@@ -56,7 +61,12 @@ struct ShardManifest {
   std::vector<std::string> swept;   // the swept names (the tables' columns)
   std::string title;                // the problem's title
   int curves = 0;                   // runs whose curves the part wrote for the overlays
+  // contentFingerprint of the table and of the curves the part wrote (empty:
+  // none), so that a file of another deck or run put in their place is refused.
+  std::string tableHash, curvesHash;
 };
+// A hash of a text (FNV-1a, 16 hex digits).
+std::string contentFingerprint(std::string_view text);
 // A hash of the deck's records (INCLude expanded, comments dropped): parts of
 // different decks with the same stem differ in it.
 std::string deckFingerprint(const std::string& path);

@@ -9,6 +9,7 @@
 #include "macro/deck/Limits.h"
 #include "macro/deck/Parameters.h"
 #include "macro/deck/Record.h"
+#include "macro/studies/EnsembleTable.h"
 
 namespace c2d {
 
@@ -17,6 +18,8 @@ std::string formatSweepValue(double value) {
   std::snprintf(buf, sizeof buf, "%g", value == 0 ? 0.0 : value);
   return buf;
 }
+
+std::string exactSweepValue(double value) { return exactNumber(value == 0 ? 0.0 : value); }
 
 std::string sweepTag(const SweepValues& values) {
   std::string tag;

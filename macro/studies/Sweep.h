@@ -18,6 +18,10 @@ using SweepValues = std::vector<std::pair<std::string, double>>;
 
 // A value as file names and legends show it: %g (six significant digits).
 std::string formatSweepValue(double value);
+// A swept value as the study tables write it: the shortest text that reads
+// back to the same double (as the drawn values: 0.1234567, 1.0000000000000002e+16,
+// 1e-310), a zero as 0.
+std::string exactSweepValue(double value);
 // "ks=-393_mu=100": letters, digits, '.', '-', '+', '=' and '_' only.
 std::string sweepTag(const SweepValues& values);
 // A run's output stem within file-name limits: a stem longer than max

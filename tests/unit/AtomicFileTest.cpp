@@ -22,7 +22,8 @@ TEST(AtomicFile, NothingAtTheFinalPathBeforeCommit) {
   TempDir dir;
   const fs::path path = dir / "result.txt";
   AtomicFile file(path);
-  EXPECT_EQ(file.partPath(), dir / "result.txt.part");
+  EXPECT_EQ(file.partPath(), testing::partFileOf(path));
+  EXPECT_EQ(file.partPath().parent_path(), path.parent_path());
   file.stream() << "line 1\nline 2\n";
   file.stream().flush();
   EXPECT_FALSE(fs::exists(path));
@@ -40,10 +41,10 @@ TEST(AtomicFile, DestroyedWithoutCommitLeavesNothing) {
     AtomicFile file(path);
     file.stream() << "half of a result";
     file.stream().flush();
-    ASSERT_TRUE(fs::exists(dir / "result.txt.part"));
+    ASSERT_FALSE(testing::partFileOf(path).empty());
   }
   EXPECT_FALSE(fs::exists(path));
-  EXPECT_FALSE(fs::exists(dir / "result.txt.part"));
+  EXPECT_TRUE(testing::partFileOf(path).empty());
 }
 
 TEST(AtomicFile, PreviousFileSurvivesAnAbandonedWrite) {
@@ -95,29 +96,55 @@ TEST(AtomicFile, KeepCommitsUnderTheTaggedName) {
   EXPECT_EQ(file.keep("failed"), dir / "h.failed.csv");
   EXPECT_EQ(readFile(dir / "h.failed.csv"), "t\n0\n");
   EXPECT_FALSE(fs::exists(dir / "h.csv"));
-  EXPECT_FALSE(fs::exists(dir / "h.csv.part"));
+  EXPECT_TRUE(testing::partFileOf(dir / "h.csv").empty());
 }
 
-// A full disk, as /dev/full gives it (every write fails with ENOSPC): the
-// ".part" is made a link to it, so that the file's own code path writes there.
-bool linkPartToDevFull(const fs::path& path) {
-  if (!fs::exists("/dev/full")) return false;
-  fs::path part = path;
-  part += ".part";
-  fs::create_symlink("/dev/full", part);
-  return true;
+// A link planted under the name a writer used to write through (the fixed
+// "<path>.part" of old), or under the final name, is never written through:
+// the victim keeps its text; the result replaces the link.
+TEST(AtomicFile, APlantedLinkIsNeverWrittenThrough) {
+  TempDir dir;
+  const fs::path victim = dir / "victim.txt";
+  AtomicFile::write(victim, "precious\n");
+  const fs::path path = dir / "run.out";
+  fs::create_symlink(victim, dir / "run.out.part");
+  AtomicFile::write(path, "the log\n");
+  EXPECT_EQ(readFile(victim), "precious\n");
+  EXPECT_EQ(readFile(path), "the log\n");
+  fs::remove(path);
+  fs::create_symlink(victim, path);
+  AtomicFile::write(path, "the log again\n");
+  EXPECT_EQ(readFile(victim), "precious\n");
+  EXPECT_FALSE(fs::is_symlink(path));
+  EXPECT_EQ(readFile(path), "the log again\n");
 }
 
+// Two writers of one path at once (two merges of one folder) each write
+// through a temporary of their own: both commit, the last one's text stays.
+TEST(AtomicFile, TwoWritersOfOnePathDoNotCollide) {
+  TempDir dir;
+  const fs::path path = dir / "joined.csv";
+  AtomicFile a(path), b(path);
+  EXPECT_NE(a.partPath(), b.partPath());
+  a.stream() << "from a\n";
+  b.stream() << "from b\n";
+  a.commit();
+  EXPECT_EQ(readFile(path), "from a\n");
+  b.commit();
+  EXPECT_EQ(readFile(path), "from b\n");
+}
+
+// A full disk: every write fails with ENOSPC (SimulatedWriteFailure).
 TEST(AtomicFile, FullDiskIsAnIoErrorWithTheReasonAndLeavesNothing) {
   TempDir dir;
   const fs::path path = dir / "result.txt";
-  if (!linkPartToDevFull(path)) GTEST_SKIP() << "no /dev/full";
+  const SimulatedWriteFailure full("result.txt", ENOSPC);
   try {
     AtomicFile::write(path, "a result that does not fit\n");
     FAIL() << "no exception";
   } catch (const IoError& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("result.txt.part"), std::string::npos) << what;
+    EXPECT_NE(what.find("result.txt'"), std::string::npos) << what;
     EXPECT_NE(what.find(std::strerror(ENOSPC)), std::string::npos) << what;
   }
   EXPECT_FALSE(fs::exists(path));
@@ -126,7 +153,7 @@ TEST(AtomicFile, FullDiskIsAnIoErrorWithTheReasonAndLeavesNothing) {
 TEST(AtomicFile, CheckReportsAFailedWriteDuringTheRun) {
   TempDir dir;
   const fs::path path = dir / "run.out";
-  if (!linkPartToDevFull(path)) GTEST_SKIP() << "no /dev/full";
+  const SimulatedWriteFailure full("run.out", ENOSPC);
   AtomicFile file(path);
   file.check();  // nothing written yet
   const std::string line(1000, 'x');

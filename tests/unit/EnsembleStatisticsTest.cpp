@@ -16,6 +16,7 @@
 #include "macro/studies/Ensemble.h"
 #include "macro/studies/Jitter.h"
 #include "macro/studies/PairedComparison.h"
+#include "macro/studies/Sensitivity.h"
 #include "macro/studies/Statistics.h"
 
 namespace c2d {
@@ -241,6 +242,37 @@ TEST(EnsembleStatistics, PairedTestsByHand) {
   EXPECT_FALSE(mcNemarTest(3, 5, 20).significant());
   EXPECT_GT(mcNemarTest(3, 5, 20).samplesNeeded, 20);
   EXPECT_TRUE(std::isinf(mcNemarTest(2, 2, 20).samplesNeeded));
+}
+
+// The paired t-test at its edges: one pair is no test (t undefined, p = 1);
+// two equal differences are no evidence (p = 1); three or more are certain.
+TEST(EnsembleStatistics, PairedTestAtTheEdges) {
+  const PairedTest one = pairedTTest(std::vector<double>{0.5});
+  EXPECT_TRUE(std::isnan(one.statistic));
+  EXPECT_EQ(one.p, 1.0);
+  EXPECT_FALSE(one.significant());
+  EXPECT_FALSE(pairedTTest(std::vector<double>{0.5, 0.5}).significant());
+  EXPECT_TRUE(pairedTTest(std::vector<double>{0.5, 0.5, 0.5}).significant());
+  EXPECT_FALSE(pairedTTest(std::vector<double>{0, 0, 0}).significant());
+}
+
+// Fewer than five runs: no |rho| threshold above 1 is quoted as "standing out".
+TEST(EnsembleStatistics, SensitivityOfFewRunsQuotesNoThresholdAboveOne) {
+  EnsembleData d;
+  d.drawn = {"mu"};
+  for (int k = 1; k <= 3; ++k) {
+    EnsembleRun r;
+    r.run = r.sample = k;
+    r.plan = 1;
+    r.ok = r.debris = true;
+    r.drawn = {0.1 * k};
+    r.figures["right"] = 1.0 * k;
+    d.runs.push_back(r);
+  }
+  const std::string text = sensitivityText(d);
+  EXPECT_NE(text.find("3 runs; too few for any |rho| to stand out of the noise"), std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("above 1.15"), std::string::npos) << text;
 }
 
 }  // namespace

@@ -4,10 +4,12 @@
 // column; a full disk is an I/O error (status 3), not an abort.
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <fstream>
 #include <functional>
 #include <sstream>
 
+#include "core/output/AtomicFile.h"
 #include "macro/DeckRunner.h"
 #include "macro/studies/Shard.h"
 #include "macro/studies/Merge.h"
@@ -173,15 +175,14 @@ TEST(Merge, RefusesABadBatchPart) {
 }
 
 TEST(Merge, AFullDiskIsAnIoError) {
-  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
   testing::DeckTempDir dir;
   runParts(kPlanDeck, dir.path());
-  fs::create_symlink("/dev/full", dir.path() / "plan_study_plans.csv.part");
+  const SimulatedWriteFailure full("plan_study_plans.csv", ENOSPC);
   std::ostringstream out, err;
   EXPECT_EQ(mergeParts(dir.path(), out, err), kExitInternal);
   EXPECT_NE(err.str().find("I/O error"), std::string::npos) << err.str();
   EXPECT_NE(err.str().find("cannot write"), std::string::npos) << err.str();
-  EXPECT_NE(err.str().find("plan_study_plans.csv.part"), std::string::npos) << err.str();
+  EXPECT_NE(err.str().find("plan_study_plans.csv'"), std::string::npos) << err.str();
 }
 
 TEST(Merge, RefusesABadEnsemblePart) {
@@ -206,6 +207,156 @@ TEST(Merge, RefusesABadEnsemblePart) {
   EXPECT_EQ(mergeParts(dir.path(), out2, err2), 1);
   EXPECT_NE(err2.str().find("sliding_plans_part1of2_curves.csv: missing"), std::string::npos)
       << err2.str();
+}
+
+// The names of stray files give counts out of range (a part count beyond the
+// limit, or 0): each is refused by name, nothing is read or written for it.
+TEST(Merge, RefusesPartCountsOutOfRangeInFileNames) {
+  testing::DeckTempDir dir;
+  for (const char* name : {"x_part1of99999999999_manifest.csv", "batch_part1of99999999999.csv",
+                           "x_part1of0_plans.csv", "y_part1of200000000_manifest.csv",
+                           "batch_part3of2.csv"})
+    spit(dir.path() / name, "key,value\n");
+  std::ostringstream out, err;
+  EXPECT_EQ(mergeParts(dir.path(), out, err), 1) << out.str();
+  for (const char* name : {"x_part1of99999999999_manifest.csv", "batch_part1of99999999999.csv",
+                           "x_part1of0_plans.csv", "y_part1of200000000_manifest.csv",
+                           "batch_part3of2.csv"})
+    EXPECT_NE(err.str().find(std::string(name) + ": its name says part"), std::string::npos)
+        << name << "\n" << err.str();
+  EXPECT_FALSE(fs::exists(dir.path() / "x_.csv"));
+  EXPECT_FALSE(fs::exists(dir.path() / "batch.csv"));
+}
+
+TEST(Merge, RefusesACountOutOfRangeInAManifest) {
+  expectRefused(
+      [](const fs::path& d) {
+        const fs::path f = d / "plan_study_part2of2_manifest.csv";
+        std::string t = slurp(f);
+        t.replace(t.find("runs,3"), 6, "runs,2147483647");
+        spit(f, t);
+      },
+      "plan_study_part2of2_manifest.csv",
+      "the manifest's runs '2147483647' is not a whole number from 1 to 10000");
+}
+
+TEST(Merge, RefusesAPartThatIsNotARegularFile) {
+  expectRefused(
+      [](const fs::path& d) {
+        const fs::path f = d / "plan_study_part2of2_plans.csv";
+        fs::remove(f);
+        fs::create_symlink("/dev/zero", f);
+      },
+      "plan_study_part2of2_plans.csv", "it is not a regular file");
+}
+
+TEST(Merge, RefusesAnInfiniteFigureInAnEnsemblePart) {
+  testing::DeckTempDir dir;
+  runParts(std::string(C2D_SOURCE_DIR) + "/decks/ensemble/sliding_plans.inp", dir.path());
+  const fs::path f = dir.path() / "sliding_plans_part2of2_ensemble.csv";
+  std::string t = slurp(f);
+  const std::size_t row = t.find('\n') + 1;
+  const std::size_t ok = t.find(",ok,", row);
+  const std::size_t cell = t.find(',', ok + 4) + 1;  // the first debris figure
+  t.replace(cell, t.find(',', cell) - cell, "inf");
+  spit(f, t);
+  std::ostringstream out, err;
+  EXPECT_EQ(mergeParts(dir.path(), out, err), 1);
+  EXPECT_NE(err.str().find("sliding_plans_part2of2_ensemble.csv: line 2, column"),
+            std::string::npos)
+      << err.str();
+  EXPECT_NE(err.str().find("'inf' is not a number"), std::string::npos) << err.str();
+  EXPECT_FALSE(fs::exists(dir.path() / "sliding_plans_ensemble.csv"));
+}
+
+// A table that parses and holds the right runs, but is not the one its part
+// wrote (a plans table of another deck with the same stem and run count).
+TEST(Merge, RefusesATableItsManifestDidNotRecord) {
+  expectRefused(
+      [](const fs::path& d) {
+        const fs::path f = d / "plan_study_part2of2_plans.csv";
+        std::string t = slurp(f);
+        const std::size_t cell = t.find("1.500000e+00", t.find('\n') + 1);
+        ASSERT_NE(cell, std::string::npos) << t;
+        t.replace(cell, 12, "1.600000e+00");
+        spit(f, t);
+      },
+      "plan_study_part2of2_plans.csv", "its text is not the one its part wrote");
+}
+
+TEST(Merge, RefusesCurvesThatLostRows) {
+  testing::DeckTempDir dir;
+  runParts(std::string(C2D_SOURCE_DIR) + "/decks/ensemble/sliding_plans.inp", dir.path());
+  const fs::path f = dir.path() / "sliding_plans_part1of2_curves.csv";
+  std::string t = slurp(f);
+  t.pop_back();
+  spit(f, t.substr(0, t.rfind('\n') + 1));
+  std::ostringstream out, err;
+  EXPECT_EQ(mergeParts(dir.path(), out, err), 1);
+  EXPECT_NE(err.str().find("sliding_plans_part1of2_curves.csv: its text is not the one"),
+            std::string::npos)
+      << err.str();
+}
+
+// An ensemble row whose plan disagrees with its run number (its manifest
+// rewritten to match): refused in the part that holds it.
+TEST(Merge, RefusesAnEnsembleRowWhosePlanDisagreesWithItsRun) {
+  testing::DeckTempDir dir;
+  runParts(std::string(C2D_SOURCE_DIR) + "/decks/ensemble/sliding_plans.inp", dir.path());
+  const fs::path f = dir.path() / "sliding_plans_part2of2_ensemble.csv";
+  std::string t = slurp(f);
+  const std::size_t row = t.find('\n') + 1;  // run 2: plan 1, sample 2
+  ASSERT_EQ(t.substr(row, 6), "2,1,2,") << t;
+  t.replace(row, 6, "2,2,2,");
+  spit(f, t);
+  const fs::path m = dir.path() / "sliding_plans_part2of2_manifest.csv";
+  std::string mt = slurp(m);
+  const std::size_t h = mt.find("table_hash,") + 11;
+  mt.replace(h, 16, contentFingerprint(t));
+  spit(m, mt);
+  std::ostringstream out, err;
+  EXPECT_EQ(mergeParts(dir.path(), out, err), 1);
+  EXPECT_NE(err.str().find("sliding_plans_part2of2_ensemble.csv: line of run 2: plan 2, sample 2 "
+                           "does not follow plan 1, sample 1"),
+            std::string::npos)
+      << err.str();
+  EXPECT_FALSE(fs::exists(dir.path() / "sliding_plans_ensemble.csv"));
+}
+
+// Parts of one stem split in 2 and in 3 (before and after an edit) would write
+// the same tables: neither set is merged.
+TEST(Merge, RefusesTwoPartSetsOfOneStem) {
+  testing::DeckTempDir dir;
+  runParts(kPlanDeck, dir.path());
+  const SolutionCommands commands;
+  std::ostringstream console;
+  DeckOptions o;
+  o.outDir = dir.path();
+  o.quiet = true;
+  o.shards = 3;
+  for (int i = 1; i <= 3; ++i) {
+    o.shard = i;
+    runDeck(kPlanDeck, o, commands, console);
+  }
+  std::ostringstream out, err;
+  EXPECT_EQ(mergeParts(dir.path(), out, err), 1);
+  EXPECT_NE(err.str().find("plan_study_part<i>of2: the folder holds parts of plan_study in 3 too"),
+            std::string::npos)
+      << err.str();
+  EXPECT_NE(err.str().find("plan_study_part<i>of3: the folder holds parts of plan_study in 2 too"),
+            std::string::npos)
+      << err.str();
+  EXPECT_FALSE(fs::exists(dir.path() / "plan_study_plans.csv"));
+}
+
+TEST(Shard, CountsAreRangeChecked) {
+  ShardSpec s;
+  EXPECT_TRUE(parseShard("2/4", s));
+  EXPECT_EQ(s.index, 2);
+  EXPECT_EQ(s.count, 4);
+  for (const char* bad : {"1/99999999999", "1/10001", "0/2", "3/2", "1/2x", "1/", "/2", "-1/2",
+                          "1/-2", "99999999999/2", " 1/2"})
+    EXPECT_FALSE(parseShard(bad, s)) << bad;
 }
 
 }  // namespace

@@ -24,6 +24,19 @@
 
 namespace c2d::testing {
 
+// The temporary an AtomicFile writes <path> through ("<path>.XXXXXX.part"),
+// or an empty path when there is none.
+inline std::filesystem::path partFileOf(const std::filesystem::path& path) {
+  const std::string prefix = path.filename().string() + ".";
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(path.parent_path(), ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.size() == prefix.size() + 11 && name.starts_with(prefix) && name.ends_with(".part"))
+      return e.path();
+  }
+  return {};
+}
+
 struct XmlNode {
   std::string name;
   std::map<std::string, std::string> attrs;

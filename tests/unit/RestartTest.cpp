@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -21,6 +22,7 @@
 #include "elements/Joints.h"
 #include "elements/ModelCheckpoint.h"
 #include "solvers/RestartFile.h"
+#include "tests/unit/OutputTestSupport.h"
 #include "tests/unit/RunDeckSupport.h"
 
 namespace c2d {
@@ -503,6 +505,51 @@ TEST(Restart, BadFilesAreClearErrors) {
   EXPECT_NE((r.console + r.outcome.message).find("cut.rst': truncated"), std::string::npos) << r.console << r.outcome.message;
 }
 
+// A crafted file whose checksum is right: a count larger than the bytes left
+// is refused before anything is allocated for it; a file that is not a
+// regular one (a link to /dev/zero, a FIFO) or is larger than the model can
+// explain is refused before it is read.
+TEST(Restart, CraftedCountsAndFilesAreRefusedBeforeAnythingIsAllocated) {
+  DeckTempDir dir;
+  const std::string data = std::string(kLoads) + kTplot;
+  expectRan(runDeckText(dir, "first.inp", kPortal + kStart + "  SAVE,mid\nEND\n" + data));
+  const std::filesystem::path out = dir.path() / "out";
+  const std::string good = readText(out / "mid.rst");
+  auto expectError = [&](const std::filesystem::path& file, const std::string& what) {
+    Model model;
+    Analysis analysis(model);
+    try {
+      loadRestart(file, model, analysis);
+      ADD_FAILURE() << "no error for " << what;
+    } catch (const CheckpointError& e) {
+      const std::string msg = e.what();
+      EXPECT_NE(msg.find(file.filename().string()), std::string::npos) << msg;
+      EXPECT_NE(msg.find(what), std::string::npos) << msg;
+    }
+  };
+  // The node count (after the MODL tag) made 2^31 - 1, the checksum made right.
+  std::string crafted = good;
+  const std::size_t modl = crafted.find("MODL", 24);
+  ASSERT_NE(modl, std::string::npos);
+  const std::uint64_t nodes = 0x7fffffff;
+  std::memcpy(crafted.data() + modl + 4, &nodes, 8);
+  std::uint64_t h = 14695981039346656037ull;
+  for (std::size_t i = 24; i + 8 < crafted.size(); ++i)
+    h = (h ^ static_cast<unsigned char>(crafted[i])) * 1099511628211ull;
+  std::memcpy(crafted.data() + crafted.size() - 8, &h, 8);
+  std::ofstream(out / "crafted.rst", std::ios::binary) << crafted;
+  expectError(out / "crafted.rst", "a count of 2147483647 items where");
+
+  std::filesystem::create_symlink("/dev/zero", out / "zero.rst");
+  expectError(out / "zero.rst", "not a regular file");
+  ASSERT_EQ(::mkfifo((out / "fifo.rst").c_str(), 0600), 0);
+  expectError(out / "fifo.rst", "not a regular file");
+  // An empty model explains 64 MiB at most: a sparse file of 65 MiB is refused.
+  std::ofstream(out / "huge.rst", std::ios::binary) << good;
+  std::filesystem::resize_file(out / "huge.rst", std::uintmax_t{65} << 20);
+  expectError(out / "huge.rst", "bytes, more than the 67108864");
+}
+
 // The collapse2d binary beside the test binary's directory, if built.
 std::filesystem::path collapse2dBinary() {
   std::error_code ec;
@@ -570,15 +617,15 @@ ener
     _exit(0);
   }
   // Kill once the run is well under way (its time history has started).
-  const auto part = out / "long_tplot.csv.part";
-  for (int i = 0; i < 500 && !std::filesystem::exists(part); ++i)
+  const auto part = [&] { return testing::partFileOf(out / "long_tplot.csv"); };
+  for (int i = 0; i < 500 && part().empty(); ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
   kill(pid, SIGKILL);
   int status = 0;
   waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it was killed";
-  EXPECT_TRUE(std::filesystem::exists(part));
+  EXPECT_FALSE(part().empty());
   EXPECT_FALSE(std::filesystem::exists(out / "long_tplot.csv"));
   EXPECT_FALSE(std::filesystem::exists(out / "long.rst"));
   for (const auto& f : std::filesystem::directory_iterator(out)) {

@@ -19,6 +19,7 @@
 #include <fstream>
 #include <thread>
 
+#include "core/output/AtomicFile.h"
 #include "macro/DeckRunner.h"
 #include "macro/run/Interrupt.h"
 #include "tests/unit/OutputTestSupport.h"
@@ -101,18 +102,12 @@ TEST(RunOutcome, FailedRunKeepsWhatItComputedUnderFailedNames) {
   EXPECT_FALSE(contains(log, "run complete")) << log;
 }
 
-// A full disk: the ".part" of a file is a link to /dev/full, where every write
-// fails with ENOSPC, so that the file's own code path meets the failure.
-bool fullDisk(const fs::path& out, const std::string& file) {
-  if (!fs::exists("/dev/full")) return false;
-  fs::create_directories(out);
-  fs::create_symlink("/dev/full", out / (file + ".part"));
-  return true;
-}
+// A full disk under one file: every write to it fails with ENOSPC
+// (SimulatedWriteFailure), so that the file's own code path meets the failure.
 
 TEST(RunOutcome, FullDiskUnderTheLogIsAnIoError) {
   DeckTempDir dir;
-  if (!fullDisk(dir.path() / "out", "full.out")) GTEST_SKIP() << "no /dev/full";
+  const SimulatedWriteFailure full("full.out", ENOSPC);
   const auto r = testing::runDeckText(
       dir, "full.inp",
       kParams + testing::cantileverProblem(testing::rampBatch(2, "", ""), testing::rampData()));
@@ -120,21 +115,21 @@ TEST(RunOutcome, FullDiskUnderTheLogIsAnIoError) {
   const std::string& msg = r.outcome.message;
   EXPECT_TRUE(contains(msg, "I/O error")) << msg;
   EXPECT_FALSE(contains(msg, "internal error")) << msg;
-  EXPECT_TRUE(contains(msg, "full.out.part")) << msg;
+  EXPECT_TRUE(contains(msg, "full.out'")) << msg;
   EXPECT_TRUE(contains(msg, std::strerror(ENOSPC))) << msg;
   EXPECT_FALSE(fs::exists(r.out / "full.out"));
 }
 
 TEST(RunOutcome, FullDiskUnderTheTimeHistoryIsAnIoError) {
   DeckTempDir dir;
-  if (!fullDisk(dir.path() / "out", "tp_tplot.csv")) GTEST_SKIP() << "no /dev/full";
+  const SimulatedWriteFailure full("tp_tplot.csv", ENOSPC);
   const auto r = testing::runDeckText(
       dir, "tp.inp",
       kParams + testing::cantileverProblem(testing::rampBatch(2, "", ""), testing::rampData()));
   EXPECT_EQ(r.outcome.exitCode, kExitInternal);
   const std::string& msg = r.outcome.message;
   EXPECT_TRUE(contains(msg, "I/O error: cannot write")) << msg;
-  EXPECT_TRUE(contains(msg, "tp_tplot.csv.part")) << msg;
+  EXPECT_TRUE(contains(msg, "tp_tplot.csv'")) << msg;
   EXPECT_TRUE(contains(msg, std::strerror(ENOSPC))) << msg;
   EXPECT_FALSE(fs::exists(r.out / "tp_tplot.csv"));
   EXPECT_FALSE(fs::exists(r.out / "tp.out"));
