@@ -6,8 +6,13 @@
 // activates the largest one above 1, then iterates again.
 //
 // The same machinery locates the fracture of an RC member's bars (axial strain
-// eu, materials/AxialCapacity): the demand is the larger of the hinge's and
-// the bars' (strain / eu), and activation does whichever is the larger.
+// eu, materials/AxialCapacity) and its shear failure (|V| reaching Vu(N),
+// materials/ShearResistance): the demand is the largest of the hinge's, the
+// bars' (strain / eu) and the shear's (|V| / Vu), and activation does whichever
+// is the largest.
+#include <istream>
+
+#include "core/output/Checkpoint.h"
 #include "core/Types.h"
 
 namespace c2d {
@@ -32,7 +37,8 @@ struct HingeInfo {
   double ultimate = 0;        // the ultimate moment Mu of the law
   int count = 0;              // hinges opened in the element (hinges at its ends: up to 2)
   bool jointDue = false;      // a hinge opened at an end, its joint not made yet
-  bool fracture = false;      // the bars reached their fracture strain, not yet separated
+  bool fracture = false;      // the bars fractured or the member failed in shear, not yet separated
+  bool shear = false;         // that fracture is a shear failure (|V| at Vu(N))
 };
 
 class HingeCarrier {
@@ -59,11 +65,22 @@ class HingeCarrier {
   virtual void activateHingeAt(int /*end*/) {}
 };
 
-// A member whose laws follow its axial force and whose bars can fracture (RC
-// sections, hand-given laws with an interaction curve): the hinge laws of the
-// joints at its ends (elements/JointedElement) follow its axial force, and
-// after the commit that made a fracture permanent a topology event separates
-// the member from one of its ends (elements/BarFractures.h) and reports it done.
+// A member whose laws follow its axial force and whose bars can fracture or
+// that can fail in shear (RC sections, hand-given laws with an interaction
+// curve): the hinge laws of the joints at its ends (elements/JointedElement)
+// follow its axial force, and after the commit that made a fracture or a shear
+// failure permanent a topology event separates the member from one of its
+// ends (elements/BarFractures.h) and reports it done.
+//
+// The member's parting, one state: whole, bars fractured or sheared (the
+// separation due), separated.
+// Restart files keep the number.
+enum class Parting { Whole = 0, BarsFractured = 1, Separated = 2, Sheared = 3 };
+inline Parting getParting(std::istream& in) {
+  const int n = checkpoint::get<int>(in);
+  if (n < 0 || n > 3) throw CheckpointError("an element's parting state is not one");
+  return static_cast<Parting>(n);
+}
 class RcMember {
  public:
   virtual ~RcMember() = default;
@@ -73,8 +90,14 @@ class RcMember {
   virtual ElemVec axialForceGradient() const = 0;
   // Whether its laws follow the axial force at all (else the above are not needed).
   virtual bool followsAxialForce() const = 0;
-  // A committed fracture not yet separated.
+  // A committed fracture or shear failure not yet separated.
   virtual bool fractureDue() const = 0;
+  // The committed parting (its cause while due).
+  virtual Parting parting() const = 0;
+  // Shear |V| and the shear capacity Vu(N) at the last evaluated state (Vu 0:
+  // the member does not fail in shear).
+  virtual double shearForce() const = 0;
+  virtual double shearCapacity() const = 0;
   virtual void fractureDone() = 0;
 };
 

@@ -48,9 +48,9 @@ struct RebarLayer {
   double depth = 0, area = 0;
 };
 // STIRrups Asw s [fyw]: the links of a SECTion, area Asw of their legs (m^2) at
-// spacing s (m) along the member, yield stress fyw (fy when not given): they
-// set the shear the member carries and from it the shortest piece it breaks
-// into (RcSection::shearCapacity, shortestPiece).
+// spacing s (m) along the member, yield stress fyw (fy when not given): with
+// the concrete they set the shear the member carries, Vu(N), and from it the
+// shortest piece it breaks into (materials/ShearResistance, RcSection::shortestPiece).
 struct Stirrups {
   double area = 0, spacing = 0, fy = 0;
 };

@@ -50,6 +50,9 @@ std::vector<FracturedMember> separateFractured(Model& model, State& state) {
     FracturedMember f;
     f.element = e;
     f.axialForce = m->axialForce();
+    f.shear = m->parting() == Parting::Sheared;
+    f.shearForce = m->shearForce();
+    f.shearCapacity = m->shearCapacity();
     if (end >= 0) {
       if (onGround(model, state, nodes[end])) continue;
       if (!synced) {  // the slave nodes' state from the joints, before any is removed

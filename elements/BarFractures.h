@@ -1,8 +1,10 @@
 #pragma once
 // Members whose bars fracture (RC sections, materials/AxialCapacity: the axial
-// strain reached the fracture strain eu, located as a hinge event): after the
-// commit that made the fracture permanent, the member is separated from one of
-// its ends, as a joint past its rupture rotation separates its pieces. At an
+// strain reached the fracture strain eu, located as a hinge event) or that
+// fail in shear (|V| reached Vu(N), materials/ShearResistance, located the
+// same way): after the commit that made the failure permanent, the member is
+// separated from one of its ends, as a joint past its rupture rotation
+// separates its pieces. At an
 // end where it has a joint (a hinge, the broken section) the joint is removed
 // and its slave node becomes the member's own; else the end's node gets a new
 // node of the same state for the member. The state is continuous (nothing
@@ -23,6 +25,8 @@ struct FracturedMember {
   int newNode = -1;       // its own node there now
   double axialForce = 0;  // the force its bars carried
   bool joint = false;     // it left through the joint at that end
+  bool shear = false;     // a shear failure (else its bars fractured)
+  double shearForce = 0, shearCapacity = 0;  // |V| and Vu(N) at the failure
 };
 
 bool fracturesDue(const Model& model);

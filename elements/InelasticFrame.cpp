@@ -11,6 +11,7 @@ namespace c2d {
 
 namespace {
 
+
 // Strain-displacement rows at the midpoint, element frame, dof order
 // (u1, v1, theta1, u2, v2, theta2).
 struct Rows {
@@ -39,6 +40,7 @@ InelasticFrame::InelasticFrame(const MaterialSet& mat, const std::array<int, 2>&
       law_(mat),
       damping_(mat.dampingA1) {
   if (mat.rc) axial_ = mat.rc->axialCapacity();
+  rc_ = mat.rc;
   const double full = (x2 - x1).norm();
   if (!(full > 0)) throw std::invalid_argument("frame element with coincident nodes");
   rigid_ = RigidEnds(x1, x2, offsets[0], offsets[1]);
@@ -196,30 +198,44 @@ double InelasticFrame::strainEnergy() const {
 SectionForces InelasticFrame::sectionForces() const { return trial_.forces; }
 
 double InelasticFrame::fractureDemand() const {
-  if (!axial_ || trial_.fracture != 0) return 0;
+  if (!axial_ || trial_.fracture != Parting::Whole) return 0;
   return axial_->fractureDemand(axial_->strain(trial_.forces.N, trial_.axial));
 }
 
+double InelasticFrame::shearDemand() const {
+  if (!rc_ || trial_.fracture != Parting::Whole) return 0;
+  return rc_->shear().demand(trial_.forces.V, trial_.forces.N);
+}
+
+double InelasticFrame::shearCapacity() const {
+  return rc_ ? rc_->shearCapacity(trial_.forces.N) : 0.0;
+}
+
 double InelasticFrame::hingeDemand() const {
-  return std::max(law_.demand(trial_.section), fractureDemand());
+  return std::max({law_.demand(trial_.section), fractureDemand(), shearDemand()});
 }
 
 void InelasticFrame::activateHinge() {
-  if (fractureDemand() > law_.demand(trial_.section))
-    trial_.fracture = 1;
+  const double fracture = fractureDemand(), shear = shearDemand();
+  if (std::max(fracture, shear) > law_.demand(trial_.section))
+    trial_.fracture = shear > fracture ? Parting::Sheared : Parting::BarsFractured;
   else
     law_.open(trial_.section);
 }
 
 int InelasticFrame::earlyEnd() const {
-  return law_.demand(trial_.section) >= fractureDemand() ? law_.criticalEnd(trial_.section) : -1;
+  return law_.demand(trial_.section) >= std::max(fractureDemand(), shearDemand())
+             ? law_.criticalEnd(trial_.section)
+             : -1;
 }
 
 void InelasticFrame::activateHingeAt(int end) { law_.openEnd(trial_.section, end); }
 
 HingeInfo InelasticFrame::hinge() const {
   HingeInfo h = law_.info(trial_.section);
-  h.fracture = trial_.fracture == 1;
+  h.fracture =
+      trial_.fracture == Parting::BarsFractured || trial_.fracture == Parting::Sheared;
+  h.shear = trial_.fracture == Parting::Sheared;
   return h;
 }
 
@@ -241,7 +257,7 @@ void InelasticFrame::writeState(std::ostream& out) const {
   for (const PointState* p : {&committed_, &trial_}) {
     putSection(out, p->section);
     for (double x : {p->forces.N, p->forces.V, p->forces.M, p->axial.ep, p->axial.xi}) put(out, x);
-    put(out, p->fracture);
+    put(out, static_cast<int>(p->fracture));
   }
   put(out, axialTangent_);
   putFixed(out, dl0_);
@@ -260,7 +276,7 @@ void InelasticFrame::readState(std::istream& in) {
     p->section = getSection(in);
     for (double* x : {&p->forces.N, &p->forces.V, &p->forces.M, &p->axial.ep, &p->axial.xi})
       *x = get<double>(in);
-    p->fracture = get<int>(in);
+    p->fracture = getParting(in);
   }
   axialTangent_ = get<double>(in);
   getFixed(in, dl0_);

@@ -29,7 +29,8 @@
 // open at the element ends (HingedBending, HingeSite::Ends): the end moments
 // M1 = M + V l/2, M2 = M - V l/2 of the element's equilibrium are passed to the
 // law, and the hinge is a joint made at that end after the commit. The bars'
-// fracture (axial strain eu) is located like a hinge event.
+// fracture (axial strain eu) and the shear failure (|V| at Vu(N),
+// materials/ShearResistance) are located like hinge events.
 //
 // The element is always a Timoshenko beam (SHEAr OFF is not honoured here: the
 // one-point element is free of shear locking). Dynamics as in LinearFrame:
@@ -43,6 +44,8 @@
 // faces'), mapped from the nodes by the linear map G; mass and self-weight stay
 // those of the full length between the nodes.
 #include <array>
+#include <cmath>
+#include <memory>
 #include <optional>
 
 #include "core/output/Checkpoint.h"
@@ -96,8 +99,13 @@ class InelasticFrame final : public Element,
   double axialForce() const override { return trial_.forces.N; }
   bool followsAxialForce() const override { return axial_ || law_.capacity(); }
   ElemVec axialForceGradient() const override;
-  bool fractureDue() const override { return committed_.fracture == 1; }
-  void fractureDone() override { committed_.fracture = trial_.fracture = 2; }
+  bool fractureDue() const override {
+    return committed_.fracture == Parting::BarsFractured || committed_.fracture == Parting::Sheared;
+  }
+  void fractureDone() override { committed_.fracture = trial_.fracture = Parting::Separated; }
+  Parting parting() const override { return committed_.fracture; }
+  double shearForce() const override { return std::abs(trial_.forces.V); }
+  double shearCapacity() const override;
 
   double length() const { return length_; }  // the flexible length
   const RigidEnds& rigidEnds() const { return rigid_; }
@@ -123,10 +131,12 @@ class InelasticFrame final : public Element,
     HingedBendingState section;
     SectionForces forces;  // at the state's displacements (element frame)
     AxialState axial;      // RC sections: plastic axial strain
-    int fracture = 0;      // bars: 0 whole, 1 fractured (separation due), 2 separated
+    Parting fracture = Parting::Whole;  // bars fractured or sheared: separation due, then done
   };
   // The bars' strain / eu at the trial state (RC sections; 0 once fractured).
   double fractureDemand() const;
+  // |V| / Vu(N) at the trial state (RC sections; 0 once parted).
+  double shearDemand() const;
 
   std::array<int, 2> nodes_;
   int material_;
@@ -135,6 +145,7 @@ class InelasticFrame final : public Element,
   double rhoA_;  // mass per unit length
   HingedBending law_;
   std::optional<AxialCapacity> axial_;  // RC sections
+  std::shared_ptr<const RcSection> rc_;  // RC sections: the shear capacity
   double axialTangent_ = 0;             // dN/deps of the last evaluation
   SectionDamping damping_;  // DAMPing: the section's dashpot in dynamics
   ElemMat rotation_;  // global -> element frame, block diagonal

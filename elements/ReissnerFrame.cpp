@@ -11,6 +11,7 @@ namespace c2d {
 
 namespace {
 
+
 using Mat2 = Eigen::Matrix2d;
 
 // Counterclockwise quarter turn: d Lambda(psi)/d psi = W Lambda(psi).
@@ -106,6 +107,7 @@ ReissnerFrame::ReissnerFrame(const MaterialSet& mat, const std::array<int, 2>& n
       damping_(mat.dampingA1) {
   assert(length_ > 0 && "element of zero length");
   if (mat.rc) axial_ = mat.rc->axialCapacity();
+  rc_ = mat.rc;
   // Rotation is additive in 2D: the kinetic energy is quadratic in the nodal
   // velocities, so the mass matrix is constant (linear shape functions). The
   // rigid zones' mass belongs to the joint region: the full length's.
@@ -408,30 +410,46 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
 }
 
 double ReissnerFrame::fractureDemand() const {
-  if (!axial_ || trial_.fracture != 0) return 0;
+  if (!axial_ || trial_.fracture != Parting::Whole) return 0;
   return axial_->fractureDemand(axial_->strain(trial_.forces.N, trial_.axial));
 }
 
 double ReissnerFrame::bendingDemand() const { return held_ ? 0.0 : law_.demand(trial_.section); }
 
-double ReissnerFrame::hingeDemand() const { return std::max(bendingDemand(), fractureDemand()); }
+double ReissnerFrame::shearDemand() const {
+  if (!rc_ || trial_.fracture != Parting::Whole) return 0;
+  return rc_->shear().demand(trial_.forces.V, trial_.forces.N);
+}
+
+double ReissnerFrame::shearCapacity() const {
+  return rc_ ? rc_->shearCapacity(trial_.forces.N) : 0.0;
+}
+
+double ReissnerFrame::hingeDemand() const {
+  return std::max({bendingDemand(), fractureDemand(), shearDemand()});
+}
 
 void ReissnerFrame::activateHinge() {
-  if (fractureDemand() > bendingDemand())
-    trial_.fracture = 1;
+  const double fracture = fractureDemand(), shear = shearDemand();
+  if (std::max(fracture, shear) > bendingDemand())
+    trial_.fracture = shear > fracture ? Parting::Sheared : Parting::BarsFractured;
   else if (!held_)
     law_.open(trial_.section);
 }
 
 int ReissnerFrame::earlyEnd() const {
-  return bendingDemand() >= fractureDemand() ? law_.criticalEnd(trial_.section) : -1;
+  return bendingDemand() >= std::max(fractureDemand(), shearDemand())
+             ? law_.criticalEnd(trial_.section)
+             : -1;
 }
 
 void ReissnerFrame::activateHingeAt(int end) { law_.openEnd(trial_.section, end); }
 
 HingeInfo ReissnerFrame::hinge() const {
   HingeInfo h = law_.info(trial_.section);
-  h.fracture = trial_.fracture == 1;
+  h.fracture =
+      trial_.fracture == Parting::BarsFractured || trial_.fracture == Parting::Sheared;
+  h.shear = trial_.fracture == Parting::Sheared;
   return h;
 }
 
@@ -460,7 +478,7 @@ void ReissnerFrame::writeState(std::ostream& out) const {
   for (const Report* r : {&trial_, &committed_}) {
     for (double x : {r->energy, r->forces.N, r->forces.V, r->forces.M, r->axial.ep, r->axial.xi})
       put(out, x);
-    put(out, r->fracture);
+    put(out, static_cast<int>(r->fracture));
     putSection(out, r->section);
   }
   put(out, axialTangent_);
@@ -481,12 +499,13 @@ void ReissnerFrame::readState(std::istream& in) {
   if (getBool(in)) {
     law_ = HingedBending(BilinearHardening::elastic(ei_), std::nullopt);
     axial_.reset();
+    rc_.reset();
   }
   for (Report* r : {&trial_, &committed_}) {
     for (double* x : {&r->energy, &r->forces.N, &r->forces.V, &r->forces.M, &r->axial.ep,
                       &r->axial.xi})
       *x = get<double>(in);
-    r->fracture = get<int>(in);
+    r->fracture = getParting(in);
     r->section = getSection(in);
   }
   axialTangent_ = get<double>(in);

@@ -60,6 +60,8 @@
 // self-weight stay those of the full length between the nodes, and inertia
 // acts on the nodal motion.
 #include <array>
+#include <cmath>
+#include <memory>
 #include <limits>
 #include <optional>
 #include <string>
@@ -118,8 +120,13 @@ class ReissnerFrame final : public Element,
   double axialForce() const override { return trial_.forces.N; }
   bool followsAxialForce() const override { return axial_ || law_.capacity(); }
   ElemVec axialForceGradient() const override { return axialGradient_; }
-  bool fractureDue() const override { return committed_.fracture == 1; }
-  void fractureDone() override { committed_.fracture = trial_.fracture = 2; }
+  bool fractureDue() const override {
+    return committed_.fracture == Parting::BarsFractured || committed_.fracture == Parting::Sheared;
+  }
+  void fractureDone() override { committed_.fracture = trial_.fracture = Parting::Separated; }
+  Parting parting() const override { return committed_.fracture; }
+  double shearForce() const override { return std::abs(trial_.forces.V); }
+  double shearCapacity() const override;
 
   // In the localization zone of another element's open hinge, of a joint or of
   // a free end (elements/LocalizationZones.h): no hinge of its own opens, and its moment is held at
@@ -159,7 +166,7 @@ class ReissnerFrame final : public Element,
     SectionForces forces;
     HingedBendingState section;
     AxialState axial;  // RC sections: plastic axial strain
-    int fracture = 0;  // bars: 0 whole, 1 fractured (separation due), 2 separated
+    Parting fracture = Parting::Whole;  // bars fractured or sheared: separation due, then done
   };
 
   // For laws that follow N: the axial resultant the force functions use
@@ -189,6 +196,7 @@ class ReissnerFrame final : public Element,
   // dSigma/dd at d.
   ElemVec axialStrainGradient(const ElemVec& d) const;
   double fractureDemand() const;
+  double shearDemand() const;  // |V| / Vu(N) (RC sections; 0 once parted)
   double bendingDemand() const;  // the hinge's |M|/Mu; 0 when held
 
   std::array<int, 2> nodes_;
@@ -201,6 +209,7 @@ class ReissnerFrame final : public Element,
   Vec3 e0_ = Vec3::Zero();
   HingedBending law_;
   std::optional<AxialCapacity> axial_;  // RC sections
+  std::shared_ptr<const RcSection> rc_;  // RC sections: the shear capacity
   bool held_ = false;                   // in a localization zone
   double axialTangent_ = 0;             // dN/dSigma of the last evaluation
   ElemVec axialGradient_ = ElemVec::Zero();  // dN/dd of the last evaluation

@@ -61,6 +61,7 @@ RcSection::RcSection(const RcSectionData& data) : d_(data), shape_(data) {
   }
   if (const auto& st = d_.stirrups; st && !(st->area > 0 && st->spacing > 0 && st->fy > 0))
     bad("the stirrups' area, spacing and yield stress must be positive");
+  shear_.emplace(ShearResistance::webs(shape_, d_.bars), shape_.area(), d_.fc, d_.stirrups);
   bars_[0] = d_.bars;
   bars_[1] = d_.bars;
   for (RebarLayer& r : bars_[1]) r.depth = d_.h - r.depth;
@@ -222,20 +223,10 @@ double RcSection::ruptureRotation() const {
   return std::max(zero_[0].xiF, zero_[1].xiF) + std::acos(1 / (1 + d_.eu));
 }
 
-double RcSection::shearCapacity(int sign) const {
-  if (!d_.stirrups) return 0.0;
-  double d = 0;  // the farthest bars from the compressed face
-  for (const RebarLayer& l : bars_[sign > 0 ? 0 : 1]) d = std::max(d, l.depth);
-  const double z = 0.9 * shape_.effectiveDepth(d);
-  const Stirrups& st = *d_.stirrups;
-  return std::min(st.area / st.spacing * z * st.fy, 0.3 * shape_.webWidth() * z * d_.fc);
-}
-
 double RcSection::shortestPiece() const {
   double lb = 0;
   for (int sign : {1, -1})
-    if (const double vu = shearCapacity(sign); vu > 0)
-      lb = std::max(lb, zero_[sign > 0 ? 0 : 1].Mu / vu);
+    lb = std::max(lb, zero_[sign > 0 ? 0 : 1].Mu / shearCapacity(0.0, sign));
   return lb;
 }
 

@@ -37,6 +37,7 @@
 #include "materials/AxialCapacity.h"
 #include "materials/MomentCapacity.h"
 #include "materials/SectionShape.h"
+#include "materials/ShearResistance.h"
 
 namespace c2d {
 
@@ -109,20 +110,17 @@ class RcSection final : public MomentCapacity {
   // N = 0 (the larger sign's) plus acos(1/(1 + eu)), the turn of a tie
   // pinned there whose bars the turn stretches to eu (see README).
   double ruptureRotation() const;
-  // The shear the member carries with its stirrups (EC2 6.2.3, truss angle
-  // cot theta = 1, lever arm z = 0.9 d, d the depth of the tension bars
-  // farthest from the compressed face, 0.8 D for circles; b the web width:
-  // SectionShape::webWidth, effectiveDepth): the stirrups' yield Asw/s z fyw
-  // (6.8), bounded by the compression struts' crushing 0.3 b z fc (6.9 with
-  // nu1 = 0.6, the value 6.2.3(3) allows for fc <= 60 MPa: a ratio, so the
-  // rule needs no unit); 0 without stirrups. Concrete's own share (6.2.2)
-  // is not added: EC2 counts the stirrups alone in a member that has them.
-  double shearCapacity(int sign) const;
+  // The shear the member carries at the axial force N (materials/ShearResistance:
+  // EC2 6.2.2 and 6.2.3, the larger of the concrete's VRd,c and the stirrups'
+  // VRd,s), of one sign of the moment or the member's (the smaller sign's).
+  const ShearResistance& shear() const { return *shear_; }
+  double shearCapacity(double N, int sign) const { return shear_->capacity(N, sign); }
+  double shearCapacity(double N) const { return shear_->capacity(N); }
   // The shortest piece a member of this section breaks into: next to a
   // section carrying no moment (a joint broken, a free end) the moment grows
   // as V x, so with the shear bounded by Vu a hinge cannot open nearer than
-  // Mu/Vu: Lb = the larger of Mu(0)/Vu of the two signs; 0 without stirrups
-  // (the mesh's node spacing sets the pieces, elements/Joints.h).
+  // Mu/Vu: Lb = the larger of Mu(0)/Vu(0) of the two signs (the mesh's node
+  // spacing may be longer: elements/Joints.h).
   double shortestPiece() const;
 
   // The bending law at N (tabulated on [-squash, tension yield], monotone cubic
@@ -143,6 +141,7 @@ class RcSection final : public MomentCapacity {
   SectionShape shape_;
   std::array<std::vector<RebarLayer>, 2> bars_;  // as given, upside down
   double ec_ = 0, as_ = 0, atr_ = 0, ztr_ = 0, itr_ = 0;
+  std::optional<ShearResistance> shear_;  // set once the data are checked
   std::array<Points, 2> zero_;  // raw points at N = 0 (floors' references)
   // Tabulated laws per sign: Mc, My, Mu, xiY, xiU, xiF.
   std::array<std::array<MonotoneCubic, 6>, 2> table_;

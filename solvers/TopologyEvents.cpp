@@ -89,9 +89,12 @@ bool TopologyEvents::afterCommit(Model& model, State& state) {
       }
     if (fracturesDue(model))
       for (const FracturedMember& f : separateFractured(model, state)) {
-        TopologyEvent ev{TopologyEvent::Kind::BarsFractured, f.element, f.node, f.newNode, 0, 0};
+        TopologyEvent ev{f.shear ? TopologyEvent::Kind::Sheared : TopologyEvent::Kind::BarsFractured,
+                         f.element, f.node, f.newNode, 0, 0};
         ev.end = f.end;
         ev.axialForce = f.axialForce;
+        ev.moment = f.shearForce;
+        ev.ultimate = f.shearCapacity;
         ev.throughJoint = f.joint;
         events.push_back(ev);
       }

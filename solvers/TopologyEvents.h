@@ -1,8 +1,8 @@
 #pragma once
 // Topology changes during a run, made after a commit so that the state is
 // continuous across them: a hinge opened at an element end gets the joint that
-// carries it (elements/EndHinges.h), a member whose bars fractured is separated
-// from one of its ends (elements/BarFractures.h), a geometrically exact element
+// carries it (elements/EndHinges.h), a member whose bars fractured or that
+// failed in shear is separated from one of its ends (elements/BarFractures.h), a geometrically exact element
 // whose softening hinge has fully softened gets its revolute joint
 // (elements/HingeToJoint.h, jointFailedHinges), and a joint whose relative
 // rotation exceeds its rupture rotation separates the pieces
@@ -23,7 +23,7 @@ struct TopologyEvent {
   // JointHeld: a joint past its rupture rotation within its material's
   // shortest piece of a free end (end: that node), reported once; the model
   // does not change.
-  enum class Kind { JointFormed, JointRuptured, HingeOpened, BarsFractured, JointHeld };
+  enum class Kind { JointFormed, JointRuptured, HingeOpened, BarsFractured, Sheared, JointHeld };
   Kind kind = Kind::JointFormed;
   int element = -1;             // 0-based
   int master = -1, slave = -1;  // 0-based nodes
@@ -31,7 +31,8 @@ struct TopologyEvent {
   double limit = 0;             // rupture rotation (ruptures, held joints)
   double pieceLength = 0;       // the shortest piece Lb (held joints)
   // HingeOpened: end (0, 1), the end moment, Mu and N at opening, failure jump;
-  // BarsFractured: end, the axial force, whether through a joint.
+  // BarsFractured, Sheared: end, the axial force, whether through a joint;
+  // Sheared: the shear |V| and the capacity Vu(N) (as moment and ultimate).
   int end = 0;
   double moment = 0, ultimate = 0, axialForce = 0, failureJump = 0;
   bool throughJoint = false;

@@ -364,25 +364,29 @@ void echoSection(std::ostream& os, const MaterialSet& m) {
     (void)c;
   }
   if (m.softening && m.softening->thetaR) line(os, "Rupture thetaR", *m.softening->thetaR);
+  os << "      Shear (EC2 6.2.2, 6.2.3; Vu = max(VRd,c, VRd,s), see --help STIRrups):\n";
   if (const auto& st = d.stirrups) {
-    os << "      Shear (EC2 6.2.3, cot theta = 1, z = 0.9 d; Vu = min(Asw/s z fyw, 0.3 bw z "
-          "fc)):\n";
-    line(os, "Web width bw", rc.shape().webWidth());
     line(os, "Stirrups Asw", st->area);
     line(os, "Stirrups s", st->spacing);
     line(os, "Stirrups fyw", st->fy);
-    line(os, "Vu+", rc.shearCapacity(1));
-    line(os, "Vu-", rc.shearCapacity(-1));
-    line(os, "Shortest piece Lb", rc.shortestPiece());
   }
-  os << "      Interaction (N, Mu+, Mu-, My+, My-):\n";
+  for (int sign : {1, -1}) {
+    const char* tag = sign > 0 ? "+" : "-";
+    const ShearResistance::Parts p = rc.shear().parts(0.0, sign);
+    line(os, std::string("VRd,c") + tag, p.concrete);
+    line(os, std::string("VRd,s") + tag, p.stirrups);
+    line(os, std::string("cot theta") + tag, p.cot);
+    line(os, std::string("Vu") + tag, p.vu);
+  }
+  line(os, "Shortest piece Lb", rc.shortestPiece());
+  os << "      Interaction (N, Mu+, Mu-, My+, My-, Vu):\n";
   const double lo = -rc.squashLoad(), hi = rc.tensionYield();
   for (int i = 0; i <= 10; ++i) {
     const double n = lo + (hi - lo) * i / 10;
     const MomentLaw p = rc.at(1, n), q = rc.at(-1, n);
     char buf[160];
-    std::snprintf(buf, sizeof buf, "      %13.4e %13.4e %13.4e %13.4e %13.4e\n", n, p.Mu, q.Mu,
-                  p.My, q.My);
+    std::snprintf(buf, sizeof buf, "      %13.4e %13.4e %13.4e %13.4e %13.4e %13.4e\n", n, p.Mu,
+                  q.Mu, p.My, q.My, rc.shearCapacity(n));
     os << buf;
   }
 }
@@ -523,11 +527,12 @@ void registerLawRecords(CommandRegistry& r) {
       "eu = 0.05 (EC2 Annex C class B). Units of the derived values in the decks' system "
       "(kN, m, s, t): EA, GA and Nc, Nt, Ntu kN; EI kN m^2; Mc, My, Mu kN m; curvatures "
       "kappa 1/m; Kh1, Kh2 kN m^2 (moment per plastic curvature); Ks kN m/rad; theta_pl, "
-      "xiF, thetaR rad. Another consistent system works unchanged: the rules' constants "
-      "(eps_c2, eps_cu2, fct = fc/10, nu = 0.2, Lp = h/2, the 20 % drop) are strains or "
-      "ratios, and Es's default is the only dimensional number, so give Es in that "
-      "system; e.g. N, mm, s with tonnes: b, h, depths in mm, fc, fy, Es in MPa (30, 500, "
-      "200e3), bar areas in mm^2, forces N, moments N mm, EI N mm^2.",
+      "xiF, thetaR rad. The shear capacity Vu(N) (EC2 6.2.2 and 6.2.3, see STIRrups) is "
+      "empirical in MPa and mm: it reads fc in kN/m^2 and lengths in m (1 kN/m^2 = 1e-3 MPa, "
+      "1 m = 1000 mm), and a fc outside 1e3-2.5e5 (1-250 MPa) is refused as surely in another "
+      "unit. A member whose shear reaches Vu(N) at a state of the run fails in shear there, "
+      "located like a hinge event, and separates from one of its ends (one log line: element, "
+      "time, V, Vu, N).",
       {text("RECTangular/TEE/CIRCular/ANNUlar", "the shape"),
        expr("b", "width [m] (TEE: bw h beff hf; CIRCular: D; ANNUlar: D t)"),
        expr("h", "depth [m]"), expr("fc", "concrete compressive strength [kN/m^2]"),
@@ -548,17 +553,27 @@ void registerLawRecords(CommandRegistry& r) {
       "STIRrups",
       "STIRrups Asw s [fyw]: the links of a SECTion: the area Asw of their legs across the "
       "section (two legs of 8 mm: 1.0e-4 m^2), their spacing s along the member and yield "
-      "stress fyw (default: the bars' fy). They set the shear the member carries (EC2 6.2.3 "
-      "with the truss angle cot theta = 1 and the lever arm z = 0.9 d, d the depth of the "
-      "farthest tension bars): Vu = min(Asw/s z fyw, 0.3 b z fc), the stirrups' yield "
-      "bounded by the struts' crushing (nu1 = 0.6); concrete's own share is not added, as "
-      "EC2 counts the stirrups alone where a member has them. From it the shortest piece the "
-      "member breaks into, Lb = the larger of Mu(0)/Vu of the two signs: next to a section "
+      "stress fyw (default: the bars' fy). The member's shear capacity at its axial force N "
+      "(tension positive), EC2 with strengths as given (no partial factors): the concrete's "
+      "VRd,c = [max(0.18 k (100 rho_l fc)^(1/3), vmin) + 0.15 sigma_cp] bw d (6.2.2, MPa and "
+      "mm inside: k = 1 + sqrt(200/d) <= 2, rho_l = Asl/(bw d) <= 0.02 with Asl the bars in "
+      "the half away from the compressed face, vmin = 0.035 k^1.5 fc^0.5, sigma_cp = -N/Ac "
+      "<= 0.2 fc, a tension lowering it down to 0; bounded by 0.5 nu fc bw d, nu = 0.6 (1 - "
+      "fc/250)); the stirrups' VRd,s = Asw/s z fyw cot theta (6.8, z = 0.9 d, d the depth of "
+      "the farthest bars) bounded by the struts' VRd,max = alpha_cw bw z nu fc / (cot theta + "
+      "tan theta) (6.9; alpha_cw = 1 + sigma_cp/fc up to 0.25 fc, 1.25 to 0.5 fc, 2.5 (1 - "
+      "sigma_cp/fc) beyond, 1 in tension), at the strut angle 1 <= cot theta <= 2.5 that "
+      "carries the most; Vu = max(VRd,c, VRd,s): EC2 counts the stirrups alone where they "
+      "are needed (the concrete's share is in the flatter strut), and a member does not fail "
+      "before its concrete alone would. Of the two signs of the moment the smaller. Without "
+      "STIRrups Vu = VRd,c. A member whose shear reaches Vu(N) fails in shear and separates "
+      "from one of its ends. From Vu the shortest piece the "
+      "member breaks into, Lb = the larger of Mu(0)/Vu(0) of the two signs: next to a section "
       "that carries no moment (a ruptured joint, a free end) the moment grows as V x, so no "
       "hinge can reach Mu nearer than Mu/Vu. A joint within Lb of a free end does not "
       "rupture (it turns on with its friction), and a failed midpoint hinge within Lb of an "
-      "intact joint or a free end makes no joint, as SOFTening's Lb. Without STIRrups Lb = 0 "
-      "and the mesh's node spacing sets the shortest piece. Echoed: Vu of either sign, Lb.",
+      "intact joint or a free end makes no joint, as SOFTening's Lb. Echoed: VRd,c, VRd,s, "
+      "cot theta and Vu of either sign at N = 0, Vu(N) in the interaction table, Lb.",
       {expr("Asw", "area of the stirrups' legs at one section [m^2]"),
        expr("s", "spacing along the member [m]"),
        expr("fyw", "stirrups' yield stress [kN/m^2]", "fy")}));

@@ -116,9 +116,12 @@ void ProblemRun::run() {
   input_ = ModelFingerprint::of(model_);  // before any solution command changes the model
   analysis_->onCommit = [this] { onCommit(); };
   analysis_->onHingeActivated = [this](int e, const HingeInfo& h) {
-    log_ << "  " << (h.fracture ? "bars   element " : "hinge  element ") << e + 1
-         << " activated at t = " << fmt("%.6e", analysis_->state().t)
-         << (h.fracture ? ": fracture strain" : ", M = " + fmt("%.6e", h.moment)) << "\n";
+    log_ << "  " << (h.shear ? "shear  element " : h.fracture ? "bars   element " : "hinge  element ")
+         << e + 1 << " activated at t = " << fmt("%.6e", analysis_->state().t)
+         << (h.shear      ? ": shear at its capacity Vu(N)"
+             : h.fracture ? ": fracture strain"
+                          : ", M = " + fmt("%.6e", h.moment))
+         << "\n";
   };
   analysis_->topologyEvents().onEvent = [this](const TopologyEvent& ev) {
     hingeStep_.resize(model_.numElements(), 0);

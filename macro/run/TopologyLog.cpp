@@ -60,6 +60,14 @@ void logTopologyEvent(std::ostream& log, const Model& model, double t, const Top
           << ev.slave + 1 << (ev.throughJoint ? ", through its joint" : "") << "), axial force "
           << num(ev.axialForce) << "\n";
       break;
+    case TopologyEvent::Kind::Sheared:
+      ++counts.fractures;
+      log << "  shear  failure at t = " << num(t) << ": element " << ev.element + 1
+          << " separates at node " << ev.master + 1 << " (its end " << ev.end + 1 << ", new node "
+          << ev.slave + 1 << (ev.throughJoint ? ", through its joint" : "") << "), V = "
+          << num(ev.moment) << ", Vu(N) = " << num(ev.ultimate) << " at N = " << num(ev.axialForce)
+          << "\n";
+      break;
   }
 }
 

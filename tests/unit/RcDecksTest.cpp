@@ -1,4 +1,5 @@
-// The RC decks against their closed forms: decks/rc/column_capacity.inp
+// The RC decks against their closed forms: decks/rc/shear_critical_column.inp
+// (a short column fails in shear at Vu(N)), decks/rc/column_capacity.inp
 // (verification.md V20: a cantilever column under axial force reaches the base
 // moment Mu(N)) and decks/rc/catenary.inp (V19: the catenary of a beam that lost
 // its middle support, P = 2 T d / sqrt(L^2 + d^2) once the bars yield, until
@@ -83,6 +84,37 @@ TEST(RcDecks, ColumnReachesTheSectionsUltimateMomentAtItsAxialForce) {
   EXPECT_EQ(count("  failed, end 1\n"), 1u);
   EXPECT_EQ(count("  active, end 1\n"), 2u);
   EXPECT_EQ(count("   1 hinges\n"), 3u);
+}
+
+// decks/rc/shear_critical_column.inp: a short column with sparse links fails
+// in shear at Vu(N) (hand calculations of EC2 6.2.2 in the deck and in
+// tests/unit/ShearResistanceTest.cpp), long before its ends reach Mu(N), and
+// parts from its base: the base shear falls to zero.
+TEST(RcDecks, ShearCriticalColumnFailsInShearAtVu) {
+  const Ran r = runRcDeck("shear_critical_column.inp");
+  const std::pair<const char*, double> cases[] = {{"Nx=0", 131.586}, {"Nx=-400", 184.086}};
+  for (const auto& [tag, vu] : cases) {
+    const auto csv =
+        testing::readCsv(r.dir / (std::string("shear_critical_column_") + tag + "_tplot.csv"));
+    const auto v = csv.column("reac_1_1");
+    ASSERT_FALSE(v.empty()) << tag;
+    double peak = 0;
+    for (double x : v) peak = std::max(peak, std::abs(x));
+    EXPECT_NEAR(peak, vu, 0.05 * vu) << tag;  // the band
+    EXPECT_NEAR(peak, vu, 1e-5 * vu) << tag;  // the event's location: to round-off
+    EXPECT_EQ(std::abs(v.back()), 0.0) << tag;  // parted: the pushover curve says so
+  }
+  auto count = [&](const std::string& text) {
+    std::size_t n = 0;
+    for (std::size_t p = r.log.find(text); p != std::string::npos; p = r.log.find(text, p + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count("  shear  failure at t = "), 2u);
+  EXPECT_NE(r.log.find("element 1 separates at node 1 (its end 1, new node 10), V = 1.840856e+02, "
+                       "Vu(N) = 1.840856e+02 at N = -4.000000e+02"),
+            std::string::npos);
+  EXPECT_EQ(count("hinge  opened"), 0u);  // before Mu
+  EXPECT_NE(r.log.find("max |M|/Mu 0.5647"), std::string::npos);
 }
 
 TEST(RcDecks, CatenaryOfTheBarsUntilTheyFracture) {

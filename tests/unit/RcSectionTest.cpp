@@ -216,24 +216,27 @@ TEST(RcSection, StiffnessesAxialCapacitiesAndHinge) {
   EXPECT_NEAR(l.Kh2, (l.Mu - l.My) / (kpu - kpy), 1e-6 * l.Kh2);
 }
 
-// STIRrups (EC2 6.2.3, cot theta = 1): two legs of 8 mm at 0.2 m, fyw = 500
-// MPa, in the beam (tension bars at d = 0.45 m for positive moments, 0.46 m
-// upside down): Vu+ = 1.00531e-4/0.2 x 0.9 x 0.45 x 500e3 = 101.79 kN, Vu- =
-// 104.05 kN; the struts' 0.3 b z fc = 1093.5 kN do not bound them. Lb =
-// max(200.092/101.79, 92.476/104.05) = 1.966 m.
+// Shear (materials/ShearResistance; its own tests hold the rule): without
+// links the concrete's VRd,c at N = 0, 111.637 kN (+: d = 0.45 m, 3 x 20 mm)
+// and 84.911 kN (-: d = 0.46 m, 2 x 16 mm); two legs of 8 mm at 0.2 m, fyw =
+// 500 MPa: omega = 251.33 kN/m, cot theta = 2.5, VRd,s+ = 251.33 x 0.405 x 2.5
+// = 254.469 kN, VRd,s- = 260.124 kN. Lb = max(Mu+/Vu+, Mu-/Vu-) with Mu+ =
+// 200.092, Mu- = 92.476 kN m.
 TEST(RcSection, ShearCapacityAndShortestPieceAgainstHandCalculations) {
   RcSectionData d = beam();
-  EXPECT_EQ(RcSection(d).shearCapacity(1), 0.0);
-  EXPECT_EQ(RcSection(d).shortestPiece(), 0.0);  // without stirrups: the mesh's
+  EXPECT_NEAR(RcSection(d).shearCapacity(0.0, 1), 111.637, 1e-3);
+  EXPECT_NEAR(RcSection(d).shearCapacity(0.0, -1), 84.911, 1e-3);
+  EXPECT_NEAR(RcSection(d).shortestPiece(), std::max(200.092 / 111.637, 92.476 / 84.911), 1e-4);
   const double asw = 2 * M_PI * 0.004 * 0.004;
   d.stirrups = Stirrups{asw, 0.2, 500e3};
   const RcSection s(d);
-  EXPECT_NEAR(s.shearCapacity(1), 101.79, 0.01);
-  EXPECT_NEAR(s.shearCapacity(-1), 104.05, 0.01);
-  EXPECT_NEAR(s.shortestPiece(), 200.092 / 101.79, 1e-3);
-  // Heavy links: the struts crush first, 0.3 x 0.3 x 0.405 x 30e3.
+  EXPECT_NEAR(s.shearCapacity(0.0, 1), 254.469, 1e-3);
+  EXPECT_NEAR(s.shearCapacity(0.0, -1), 260.124, 1e-3);
+  EXPECT_NEAR(s.shortestPiece(), 200.092 / 254.469, 1e-4);
+  // Heavy links: the struts crush first at cot theta = 1, a z / 2 with a =
+  // bw nu fc = 0.3 x 0.528 x 30e3: 4752 x 0.405 / 2 = 962.28 kN.
   d.stirrups = Stirrups{2e-3, 0.1, 500e3};
-  EXPECT_NEAR(RcSection(d).shearCapacity(1), 1093.5, 1e-9);
+  EXPECT_NEAR(RcSection(d).shearCapacity(0.0, 1), 962.28, 1e-9);
   d.stirrups = Stirrups{asw, 0.0, 500e3};
   EXPECT_THROW(RcSection{d}, std::invalid_argument);
 }
