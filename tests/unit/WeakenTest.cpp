@@ -48,8 +48,9 @@ TEST(WeakenedSet, SectionScalesStiffnessAndEveryCapacityExactly) {
   expectRel(w.rc->squashLoad(), f * a.rc->squashLoad(), 1e-12, "squash load");
   expectRel(w.rc->tensionYield(), f * a.rc->tensionYield(), 1e-12, "tension yield");
   for (int sign : {1, -1}) {
-    expectRel(w.rc->shearCapacity(sign), f * a.rc->shearCapacity(sign), 1e-12, "Vu");
     for (double N : {-3000.0, -500.0, 0.0, 200.0}) {
+      // Widths, bars and links times f keep rho_l, sigma_cp and the strut angle.
+      expectRel(w.rc->shearCapacity(f * N, sign), f * a.rc->shearCapacity(N, sign), 1e-12, "Vu");
       const MomentLaw lw = w.capacity->at(sign, f * N), la = a.capacity->at(sign, N);
       expectRel(lw.Mc, f * la.Mc, 1e-9, "Mc");
       expectRel(lw.My, f * la.My, 1e-9, "My");
