@@ -154,6 +154,7 @@ void ProblemRun::run() {
   if (model_.ground()) reportDebris();
   reportCrossings();
   reportFolds();
+  log_ << topology_.folding.summary();
   // A blast plan the run did not reach is not silently dropped.
   for (const Blast& b : model_.blasts())
     if (!b.done) {

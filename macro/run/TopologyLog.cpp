@@ -40,6 +40,10 @@ void logTopologyEvent(std::ostream& log, const Model& model, double t, const Top
           << "\n";
       break;
     case TopologyEvent::Kind::JointHeld:
+      // Held in every step while it stays past thetaR: its first lines only.
+      if (!counts.folding.admit("joint held past thetaR within Lb of a free end (no rupture)",
+                                std::to_string(ev.element) + "/" + std::to_string(ev.master)))
+        break;
       log << "  joint  held at t = " << num(t) << ": element " << ev.element + 1 << " at node "
           << ev.master + 1 << ", relative rotation " << num(ev.rotation)
           << " beyond thetaR = " << num(ev.limit)

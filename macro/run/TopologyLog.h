@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include "core/Model.h"
+#include "macro/run/LogFolding.h"
 #include "solvers/TopologyEvents.h"
 
 namespace c2d {
@@ -15,6 +16,7 @@ struct TopologyCounts {
   int jointsFormed = 0;    // at fully softened hinges
   int jointsRuptured = 0;  // past thetaR
   int fractures = 0;       // members separated: bars fractured or shear failure
+  LogFolding folding;      // the lines that repeat (a joint held in every step)
 };
 
 void logTopologyEvent(std::ostream& log, const Model& model, double t, const TopologyEvent& ev,

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "macro/studies/Csv.h"
+#include "macro/studies/MultipleTests.h"
 #include "macro/studies/PlanStatistics.h"
 #include "macro/studies/Statistics.h"
 
@@ -19,8 +20,32 @@ struct PlanCorrelations {
   std::string name;  // the plan's name, if any
   std::vector<double> swept;
   std::vector<std::vector<double>> rho;  // [input][figure]
+  std::vector<std::vector<int>> pairs;   // [input][figure]: the runs with both values
+  std::vector<std::vector<double>> p, holm;  // [input][figure]: p-value, Holm-adjusted in its family
   int runs = 0;
 };
+
+// The p-values of a plan and their Holm correction, one family per kind of
+// input (the plan's inputs; the numerical scatter).
+void testCorrelations(const EnsembleData& data, PlanCorrelations& c) {
+  for (std::size_t i = 0; i < c.rho.size(); ++i) {
+    c.p.emplace_back();
+    for (std::size_t f = 0; f < c.rho[i].size(); ++f)
+      c.p[i].push_back(rankCorrelationP(c.rho[i][f], c.pairs[i][f]));
+  }
+  c.holm.assign(c.rho.size(), std::vector<double>(kPlanFigures.size(), NAN));
+  for (const bool numerical : {false, true}) {
+    std::vector<double> family;
+    for (std::size_t i = 0; i < c.rho.size(); ++i)
+      if (isNumericalScatter(data.drawn[i]) == numerical)
+        family.insert(family.end(), c.p[i].begin(), c.p[i].end());
+    const std::vector<double> adjusted = holmAdjusted(family);
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < c.rho.size(); ++i)
+      if (isNumericalScatter(data.drawn[i]) == numerical)
+        for (std::size_t f = 0; f < kPlanFigures.size(); ++f) c.holm[i][f] = adjusted[k++];
+  }
+}
 
 std::vector<PlanCorrelations> correlations(const EnsembleData& data) {
   std::map<int, std::vector<const EnsembleRun*>> byPlan;
@@ -35,6 +60,7 @@ std::vector<PlanCorrelations> correlations(const EnsembleData& data) {
     c.runs = static_cast<int>(runs.size());
     for (std::size_t i = 0; i < data.drawn.size(); ++i) {
       std::vector<double> row;
+      std::vector<int> pairs;
       for (const std::string& f : kPlanFigures) {
         // The runs that have both values (a drawn value may be absent: NaN).
         std::vector<double> x, y;
@@ -45,9 +71,12 @@ std::vector<PlanCorrelations> correlations(const EnsembleData& data) {
           y.push_back(yi);
         }
         row.push_back(rankCorrelation(x, y));
+        pairs.push_back(static_cast<int>(x.size()));
       }
       c.rho.push_back(std::move(row));
+      c.pairs.push_back(std::move(pairs));
     }
+    testCorrelations(data, c);
     out.push_back(std::move(c));
   }
   return out;
@@ -60,68 +89,112 @@ std::string rhoCell(double v) {
   return buf;
 }
 
+std::string pCell(double v) {
+  if (std::isnan(v)) return {};
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
+bool standsOut(double holm) { return holm < kSensitivityLevel; }
+
 }  // namespace
+
+bool isNumericalScatter(const std::string& input) { return input == "dt_factor"; }
 
 std::string sensitivityCsv(const EnsembleData& data) {
   std::string out = data.named ? "plan,name" : "plan";
   for (const std::string& n : data.swept) appendCell(out, csvCell(n));
-  out += ",input";
-  for (const std::string& f : kPlanFigures) appendCell(out, f);
-  out += '\n';
+  out += ",input,kind,figure,runs,rho,p,p_holm,mark\n";
   for (const PlanCorrelations& c : correlations(data))
-    for (std::size_t i = 0; i < data.drawn.size(); ++i) {
-      out += std::to_string(c.plan);
-      if (data.named) appendCell(out, csvCell(c.name));
-      for (double v : c.swept) appendCell(out, exactSweepValue(v));
-      appendCell(out, csvCell(data.drawn[i]));
-      for (double v : c.rho[i]) appendCell(out, rhoCell(v));
-      out += '\n';
-    }
+    for (std::size_t i = 0; i < data.drawn.size(); ++i)
+      for (std::size_t f = 0; f < kPlanFigures.size(); ++f) {
+        out += std::to_string(c.plan);
+        if (data.named) appendCell(out, csvCell(c.name));
+        for (double v : c.swept) appendCell(out, exactSweepValue(v));
+        appendCell(out, csvCell(data.drawn[i]));
+        appendCell(out, isNumericalScatter(data.drawn[i]) ? "numerical scatter" : "input");
+        appendCell(out, kPlanFigures[f]);
+        appendCell(out, std::to_string(c.pairs[i][f]));
+        appendCell(out, rhoCell(c.rho[i][f]));
+        appendCell(out, pCell(c.p[i][f]));
+        appendCell(out, pCell(c.holm[i][f]));
+        appendCell(out, standsOut(c.holm[i][f]) ? "*" : "");
+        out += '\n';
+      }
   return out;
 }
+
+namespace {
+
+// One input's line: each figure's rho with its p-value, * where it stands out.
+std::string inputLine(const PlanCorrelations& c, std::size_t i, const std::string& input) {
+  std::string line = "      " + input + ":";
+  for (std::size_t f = 0; f < kPlanFigures.size(); ++f) {
+    if (std::isnan(c.rho[i][f])) continue;
+    line += " " + kPlanFigures[f] + " " + rhoCell(c.rho[i][f]) + " (p " + pCell(c.p[i][f]) + ")" +
+            (standsOut(c.holm[i][f]) ? "*" : "");
+  }
+  return line + "\n";
+}
+
+// The inputs of one kind, the strongest correlation first.
+std::string kindLines(const EnsembleData& data, const PlanCorrelations& c, bool numerical) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < data.drawn.size(); ++i)
+    if (isNumericalScatter(data.drawn[i]) == numerical) order.push_back(i);
+  auto strongest = [&](std::size_t i) {
+    double m = 0;
+    for (double v : c.rho[i])
+      if (!std::isnan(v)) m = std::max(m, std::abs(v));
+    return m;
+  };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return strongest(a) > strongest(b); });
+  std::string out;
+  for (std::size_t i : order) out += inputLine(c, i, data.drawn[i]);
+  return out;
+}
+
+int familySize(const EnsembleData& data, const PlanCorrelations& c, bool numerical) {
+  int m = 0;
+  for (std::size_t i = 0; i < data.drawn.size(); ++i)
+    if (isNumericalScatter(data.drawn[i]) == numerical)
+      for (double p : c.p[i]) m += !std::isnan(p);
+  return m;
+}
+
+}  // namespace
 
 std::string sensitivityText(const EnsembleData& data) {
   if (data.drawn.empty()) return {};
   std::string out =
-      "  sensitivity: Spearman's rank correlation of each drawn value with the debris figures\n";
+      "  sensitivity: Spearman's rank correlation of each drawn value with the debris figures, its\n"
+      "  p-value (Student's t on n - 2), * where it stands out at 5 % after Holm's correction over\n"
+      "  the plan's tests (the chance of any false * at most 5 %)\n";
   char buf[256];
   for (const PlanCorrelations& c : correlations(data)) {
+    const std::string plan = "plan " + std::to_string(c.plan) + (c.name.empty() ? "" : " " + c.name);
     if (c.runs < 3) {
-      std::snprintf(buf, sizeof buf, "    plan %d (%d run%s): too few for a correlation\n", c.plan,
+      std::snprintf(buf, sizeof buf, "    %s (%d run%s): too few for a correlation\n", plan.c_str(),
                     c.runs, c.runs == 1 ? "" : "s");
       out += buf;
       continue;
     }
-    // 2/sqrt(n) is below 1 from 5 runs on: fewer cannot tell a correlation from noise.
-    if (c.runs < 5)
+    std::snprintf(buf, sizeof buf, "    %s (%d runs, %d tests of its inputs):\n", plan.c_str(), c.runs,
+                  familySize(data, c, false));
+    out += buf + kindLines(data, c, false);
+    if (const std::string scatter = kindLines(data, c, true); !scatter.empty()) {
       std::snprintf(buf, sizeof buf,
-                    "    plan %d%s%s (%d runs; too few for any |rho| to stand out of the noise):\n",
-                    c.plan, c.name.empty() ? "" : " ", c.name.c_str(), c.runs);
-    else
-      std::snprintf(buf, sizeof buf,
-                    "    plan %d%s%s (%d runs; |rho| above %.2f stands out of the noise):\n", c.plan,
-                    c.name.empty() ? "" : " ", c.name.c_str(), c.runs,
-                    2 / std::sqrt(static_cast<double>(c.runs)));
-    out += buf;
-    std::vector<std::size_t> order(data.drawn.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    auto strongest = [&](std::size_t i) {
-      double m = 0;
-      for (double v : c.rho[i])
-        if (!std::isnan(v)) m = std::max(m, std::abs(v));
-      return m;
-    };
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return strongest(a) > strongest(b); });
-    for (std::size_t i : order) {
-      std::string line = "      " + data.drawn[i] + ":";
-      for (std::size_t f = 0; f < kPlanFigures.size(); ++f) {
-        const double v = c.rho[i][f];
-        std::snprintf(buf, sizeof buf, " %s %s", kPlanFigures[f].c_str(),
-                      std::isnan(v) ? "-" : rhoCell(v).c_str());
-        line += buf;
+                    "      numerical scatter (the time-step jitter, no input of the plan; %d tests"
+                    " of their own; a * says the figures move with the step):\n",
+                    familySize(data, c, true));
+      out += buf;
+      for (std::size_t p = 0; p < scatter.size();) {  // indented under its heading
+        const std::size_t e = scatter.find('\n', p);
+        out += "  " + scatter.substr(p, e + 1 - p);
+        p = e + 1;
       }
-      out += line + "\n";
     }
   }
   return out;
