@@ -10,10 +10,13 @@
 
 namespace c2d {
 
-// The two-sided p-value of Spearman's rho over n pairs under independence:
-// Student's t with n - 2 degrees of freedom, t = rho sqrt((n - 2) / (1 - rho^2))
-// (as scipy's spearmanr; close to the exact permutation law from n = 10 on,
-// conservative-to-rough below). NaN when rho is NaN or n < 3; 0 at |rho| = 1.
+// The two-sided p-value of Spearman's rho over n pairs under independence.
+// Below kExactRankPairs pairs the exact permutation law: the share of the n!
+// orderings whose |rho| reaches the observed one (n = 3 and rho = 1: 1/3; the
+// t law would say 0). From there Student's t with n - 2 degrees of freedom,
+// t = rho sqrt((n - 2) / (1 - rho^2)), as scipy's spearmanr (within a few
+// hundredths of the exact law at n = 10). NaN when rho is NaN or n < 3.
+inline constexpr int kExactRankPairs = 10;
 double rankCorrelationP(double rho, int n);
 
 // Holm's adjusted p-values, in the input's order: with the m defined values

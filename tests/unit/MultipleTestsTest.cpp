@@ -36,7 +36,13 @@ TEST(MultipleTests, RankCorrelationPValue) {
   EXPECT_NEAR(rankCorrelationP(0.6, 10), 0.066688, 2e-6);
   EXPECT_NEAR(rankCorrelationP(-0.6, 10), rankCorrelationP(0.6, 10), 1e-15);
   EXPECT_NEAR(rankCorrelationP(0, 20), 1.0, 1e-12);
-  EXPECT_EQ(rankCorrelationP(1, 5), 0.0);
+  // The exact law below ten pairs: n = 5, 1 of 120 orderings at rho = 1 and 4
+  // more (one neighbour swap each) at rho = 0.9, either sign.
+  EXPECT_NEAR(rankCorrelationP(1, 5), 2.0 / 120, 1e-15);
+  EXPECT_NEAR(rankCorrelationP(-0.9, 5), 10.0 / 120, 1e-15);
+  EXPECT_NEAR(rankCorrelationP(1, 3), 2.0 / 6, 1e-15);
+  EXPECT_NEAR(rankCorrelationP(0, 4), 1.0, 1e-15);
+  EXPECT_EQ(rankCorrelationP(1, 10), 0.0);
   EXPECT_TRUE(std::isnan(rankCorrelationP(0.5, 2)));
   EXPECT_TRUE(std::isnan(rankCorrelationP(NAN, 10)));
 }
