@@ -150,6 +150,9 @@ std::string runSummaryText(const RunSummary& s) {
   if (s.fractures > 0)
     out += ", " + std::to_string(s.fractures) + " member" + (s.fractures == 1 ? "" : "s") +
            " parted by their bars";
+  if (s.shears > 0)
+    out += ", " + std::to_string(s.shears) + " member" + (s.shears == 1 ? "" : "s") +
+           " parted in shear";
   if (s.removed > 0) out += ", " + std::to_string(s.removed) + " removed";
   if (s.outsideRuns > 0)
     out += s.debrisRuns == 1 ? std::string(", debris OUTSIDE the site")
@@ -567,6 +570,7 @@ class Walker {
     total_.jointsFormed += s.jointsFormed;
     total_.jointsRuptured += s.jointsRuptured;
     total_.fractures += s.fractures;
+    total_.shears += s.shears;
     total_.removed += s.removed;
     total_.crossings += s.crossings;
     total_.folded += s.folded;

@@ -28,7 +28,7 @@ std::string ProblemRun::runState() const {
         peakGroundTime_, peakKinetic_, restRatio_, lastMoving_, deepest_.depth, deepestTime_})
     put(out, x);
   for (int x : {stepsSinceCut_, cuts_, topology_.jointsFormed, topology_.jointsRuptured, removed_,
-                deepest_.node, topology_.hinges, topology_.fractures})
+                deepest_.node, topology_.hinges, topology_.fractures, topology_.shears})
     put(out, x);
   energy_.save(out);
   putBool(out, dynamicSeen_);
@@ -50,7 +50,8 @@ void ProblemRun::setRunState(const std::string& bytes) {
                     &deepest_.depth, &deepestTime_})
     *x = get<double>(in);
   for (int* x : {&stepsSinceCut_, &cuts_, &topology_.jointsFormed, &topology_.jointsRuptured,
-                 &removed_, &deepest_.node, &topology_.hinges, &topology_.fractures})
+                 &removed_, &deepest_.node, &topology_.hinges, &topology_.fractures,
+                 &topology_.shears})
     *x = get<int>(in);
   if (deepest_.node >= model_.numNodes())
     throw CheckpointError("the deepest node is not in the model");

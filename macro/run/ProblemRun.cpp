@@ -224,6 +224,7 @@ RunSummary ProblemRun::summary() const {
   s.jointsFormed = topology_.jointsFormed;
   s.jointsRuptured = topology_.jointsRuptured;
   s.fractures = topology_.fractures;
+  s.shears = topology_.shears;
   s.removed = removed_;
   s.crossings = crossings_;
   s.folded = folded_;

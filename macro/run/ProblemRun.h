@@ -66,6 +66,7 @@ struct RunSummary {
   double maxMomentRatio = 0;    // largest |M|/Mu of an element with a softening law, any time
   int jointsFormed = 0, jointsRuptured = 0;  // during the run (fully softened hinges, ruptures)
   int fractures = 0;                          // members parted at their bars' fracture
+  int shears = 0;                             // members parted by a shear failure
   int removed = 0;                            // elements removed (BLASt, REMOve)
   int crossings = 0;  // pairs of members crossing each other at the end
   int folded = 0;     // RC members bent through more than a quarter turn at the end

@@ -65,7 +65,7 @@ void logTopologyEvent(std::ostream& log, const Model& model, double t, const Top
           << num(ev.axialForce) << "\n";
       break;
     case TopologyEvent::Kind::Sheared:
-      ++counts.fractures;
+      ++counts.shears;
       log << "  shear  failure at t = " << num(t) << ": element " << ev.element + 1
           << " separates at node " << ev.master + 1 << " (its end " << ev.end + 1 << ", new node "
           << ev.slave + 1 << (ev.throughJoint ? ", through its joint" : "") << "), V = "

@@ -15,7 +15,8 @@ struct TopologyCounts {
   int hinges = 0;          // hinges opened at element ends
   int jointsFormed = 0;    // at fully softened hinges
   int jointsRuptured = 0;  // past thetaR
-  int fractures = 0;       // members separated: bars fractured or shear failure
+  int fractures = 0;       // members separated at their bars' fracture
+  int shears = 0;          // members separated by a shear failure
   LogFolding folding;      // the lines that repeat (a joint held in every step)
 };
 

@@ -115,6 +115,9 @@ TEST(RcDecks, ShearCriticalColumnFailsInShearAtVu) {
             std::string::npos);
   EXPECT_EQ(count("hinge  opened"), 0u);  // before Mu
   EXPECT_NE(r.log.find("max |M|/Mu 0.5647"), std::string::npos);
+  // The summary counts them apart from the bars' fractures (one a run).
+  EXPECT_EQ(count("1 member parted in shear"), 2u);
+  EXPECT_EQ(count("parted by their bars"), 0u);
 }
 
 TEST(RcDecks, CatenaryOfTheBarsUntilTheyFracture) {
