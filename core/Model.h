@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/Element.h"
+#include "core/Error.h"
 #include "core/MaterialSet.h"
 #include "core/Site.h"
 #include "core/Types.h"
@@ -61,6 +62,9 @@ struct Blast {
   std::vector<int> elements;
   double release = 0;
   bool done = false;
+  // Where the deck gave it (the BLASt record), for the messages about it; not
+  // in restart files (a restarted run names a blast by its time).
+  SourceLoc origin;
 };
 
 // The nodal forces a removed element exerted on the rest of the model

@@ -422,6 +422,7 @@ class Walker {
     for (const DrawRecord& d : e.draws) refuseOverride(params, d.name, d.record, "drawn");
     detonators_ = e.detonators ? &*e.detonators : nullptr;
     const EnsembleSpec spec = evaluateEnsemble(e, params);
+    pairing_.check(e, spec, plan_ + 1);
     const Parameters base = params;
     const std::string by = "drawn by the ENSEmble of line " + std::to_string(e.head.loc.line);
     const StudySize::Scope scope(size_, e.head, spec.samples,
@@ -612,6 +613,7 @@ class Walker {
   std::string planName_;  // the PLAN name of the sweep's value set walked
   const SampleDraws* sample_ = nullptr;  // the ensemble's sample being walked
   int samples_ = 0, plan_ = 0;           // its sample count; the ensemble plans walked
+  EnsemblePairing pairing_;              // the same n and seed in every plan
   std::optional<EnsembleTable> ensembleTable_;
   const Record* ensembleHead_ = nullptr;
   const Record* detonators_ = nullptr;  // the DETOnators record of the ensemble walked

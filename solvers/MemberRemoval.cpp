@@ -74,6 +74,8 @@ Status MemberRemoval::afterCommit(bool& changed) {
       changed = true;
     }
     ev.goneBefore = std::move(gone);
+    ev.origin = model.blasts()[k].origin;
+    ev.blast = static_cast<int>(k);
     if (onEvent) onEvent(ev);
   }
   return Status::success();

@@ -36,8 +36,8 @@ class Analysis;
 struct RemovalEvent {
   double time = 0;
   std::vector<int> elements;     // 0-based, removed now
-  // A blast's elements that had left the model before it (REMOve, an earlier
-  // BLASt record of the same elements): a blast of none of its elements
+  // A blast's elements that had left the model before it (REMOve; two BLASt
+  // records of one element are a deck error): a blast of none of its elements
   // removes nothing.
   std::vector<int> goneBefore;
   double release = 0;            // td: the release time of their forces
@@ -45,6 +45,8 @@ struct RemovalEvent {
   int jointsDissolved = 0;
   double energy = 0;  // kinetic + strain + contact energy that left with them
   bool scheduled = false;  // a BLASt record (else REMOve)
+  SourceLoc origin;        // a blast's record (Blast::origin; empty: unknown)
+  int blast = -1;          // a blast's index in Model::blasts() (-1: REMOve)
 };
 
 class MemberRemoval {

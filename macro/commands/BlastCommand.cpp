@@ -51,6 +51,7 @@ void applyBlasts(MeshContext& ctx, const MeshCommand& cmd) {
       Blast b;
       b.time = t;
       b.release = td;
+      b.origin = r[0].loc;
       // The first element beyond the mesh, before the range is generated.
       if (const long long first = firstBeyond(n1, n2, inc, c.model.numElements()))
         failAt(r, first == n1 ? 1 : 2,

@@ -42,6 +42,13 @@ void applyElementLoads(MeshContext& ctx, const MeshCommand& cmd) {
       if (asMass && c.model.gravity().norm() == 0)
         failAt(r, 5, "QLOAd with MASS needs GRAVity: the mass is |q|/|g|",
                "give GRAVity,,gx,gy in the mesh input");
+      // A weight pulls along gravity: one against it would be mass |q|/|g| pushed up.
+      if (asMass && q.dot(c.model.gravity()) < 0)
+        failAt(r, q.y() * c.model.gravity().y() < 0 ? 4 : 3,
+               "QLOAd with MASS is a weight, and this load points against gravity: its mass |q|/|g| "
+               "would be pushed up",
+               "a floor's weight has the sign of GRAVity's (qy < 0 under GRAVity,,0,-9.81); an "
+               "upward load is given without MASS");
       // The first element beyond the mesh, before the range is generated.
       if (const long long first = firstBeyond(n1, n2, inc, c.model.numElements()))
         failAt(r, first == n1 ? 0 : 1,
@@ -127,7 +134,8 @@ std::vector<MeshCommandEntry> loadCommandTable() {
                 "elements n1..n2 with step inc, global components qx, qy; constant (not scaled "
                 "by the proportional load), qL/2 to each end node, no nodal moments. MASS: the "
                 "load is a weight, |q|/|g| is also mass per length (lumped at the end nodes' "
-                "translations; needs GRAVity, which does not load it again). Loads add up; "
+                "translations; needs GRAVity, which does not load it again; a weight points along "
+                "gravity, so a load against it with MASS is an error). Loads add up; "
                 "checked when the mesh is complete. A QLOAd without MASS in a dynamic run is "
                 "warned (its weight acts without its mass).",
                 {}, "n1 n2 inc qx qy [MASS]",

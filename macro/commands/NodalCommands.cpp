@@ -5,6 +5,7 @@
 #include "macro/commands/MeshCommands.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <iomanip>
 #include <ostream>
@@ -95,8 +96,26 @@ void applyLoadTables(MeshContext& ctx, const MeshCommand& cmd) {
 
 using NodalArray = std::array<double, kNodeDofs>& (Model::*)(int);
 
+// A prescribed value beyond the coordinates' limit moves a node where the
+// element's length, squared, is no number (DISPlacement 1e308 made the first
+// residual infinite, reported as a Newton failure at a step): a deck error at
+// the value, with the limit of the coordinates.
+void checkPrescribed(const Record& r, std::size_t first, const double* v) {
+  for (int i = 0; i < kNodeDofs; ++i)
+    if (!(std::abs(v[i]) <= DeckLimits::kMaxCoordinate)) {
+      char what[200];
+      std::snprintf(what, sizeof what,
+                    "a prescribed %s of %g: beyond the largest this program takes (%g in the "
+                    "deck's units, the limit of the coordinates)",
+                    i < 2 ? "displacement" : "rotation", v[i], DeckLimits::kMaxCoordinate);
+      failAt(r, first + static_cast<std::size_t>(i), what,
+             "a prescribed value is scaled by the proportional load (PROP): give its size here "
+             "and its history there");
+    }
+}
+
 void applyNodalValues(MeshContext& ctx, const MeshCommand& cmd, NodalArray array,
-                      const char* what) {
+                      const char* what, bool prescribed = false) {
   using V3 = Eigen::Matrix<double, kNodeDofs, 1>;
   std::set<int> touched;
   int l = 0, lg = 0;
@@ -107,6 +126,7 @@ void applyNodalValues(MeshContext& ctx, const MeshCommand& cmd, NodalArray array
     const int ng = ctx.integer(r, 1, "generation increment");
     V3 v;
     for (int i = 0; i < kNodeDofs; ++i) v[i] = ctx.number(r, 2 + i);
+    if (prescribed) checkPrescribed(r, 2, v.data());
     if (n == l) failAt(r, 0, "node " + std::to_string(n) + " is given on two records in a row");
     V3 vl = V3::Zero();
     if (l > 0)
@@ -139,7 +159,8 @@ void applyForces(MeshContext& ctx, const MeshCommand& cmd) {
 }
 
 void applyDisplacements(MeshContext& ctx, const MeshCommand& cmd) {
-  applyNodalValues(ctx, cmd, static_cast<NodalArray>(&Model::disp), "D i s p l a c e m e n t s");
+  applyNodalValues(ctx, cmd, static_cast<NodalArray>(&Model::disp), "D i s p l a c e m e n t s",
+                   true);
 }
 
 // ---------------------------------------------------------------------------
@@ -167,6 +188,7 @@ std::array<double, 3> readValues(MeshContext& ctx, const Record& r, std::size_t 
   for (int i = 0; i < kNodeDofs; ++i)
     v[i] =
         t == Target::Bound ? ctx.integer(r, first + i, "boundary code") : ctx.number(r, first + i);
+  if (t == Target::Disp) checkPrescribed(r, first, v.data());
   return v;
 }
 

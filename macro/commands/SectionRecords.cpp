@@ -158,6 +158,12 @@ void bindInteraction(MeshContext& ctx, const Record& r, const CommandSpec& s, Ma
 void bindHinges(MeshContext& ctx, const Record& r, const CommandSpec& s, MaterialSet& mat,
                 LawRecords& seen) {
   ctx.maxFields(r, 2, "HINGes ENDS / HINGes MIDPoint");
+  // The second record would silently win: the set's hinges stand where one record says.
+  if (seen.hinges)
+    failAt(r, 0,
+           "HINGes given twice in one MATErial set (line " + std::to_string(seen.hinges->loc.line) +
+               ")",
+           "keep one HINGes record: ENDS or MIDPoint");
   if (keywordMatches(r.text(1), "ENDS"))
     mat.hingeSite = HingeSite::Ends;
   else if (keywordMatches(r.text(1), "MIDPoint"))

@@ -456,7 +456,7 @@ void DeckParser::parseBatches(Problem& p) {
 }
 
 void DeckParser::parseMesh(Problem& p) {
-  if (!parseMeshItems(p.mesh, &p.meshEnd))
+  if (!parseMeshItems(p.mesh, &p.meshEnd, &p.head))
     throw DeckError(p.head[0].loc, "the mesh input of this problem has no END",
                     p.head.excerpt(p.head[0].loc), "end the mesh commands with END");
 }
@@ -464,7 +464,7 @@ void DeckParser::parseMesh(Problem& p) {
 std::vector<MeshItem> DeckParser::parseMeshInput() {
   std::vector<MeshItem> items;
   Record end;
-  if (parseMeshItems(items, &end)) {
+  if (parseMeshItems(items, &end, nullptr)) {
     skipBlanks();
     if (!atEnd())
       throw DeckError(peek()[0].loc, "record after the END of the mesh input",
@@ -473,7 +473,8 @@ std::vector<MeshItem> DeckParser::parseMeshInput() {
   return items;
 }
 
-bool DeckParser::parseMeshItems(std::vector<MeshItem>& items, Record* end) {
+bool DeckParser::parseMeshItems(std::vector<MeshItem>& items, Record* end,
+                                const Record* head) {
   const Record* lastBlank = nullptr;
   const Record* lastCommand = nullptr;
   while (true) {
@@ -496,6 +497,14 @@ bool DeckParser::parseMeshItems(std::vector<MeshItem>& items, Record* end) {
     if (r.is("BATCh") || r.is("FEAP") || r.is("STOP"))
       throw DeckError(r[0].loc, "missing END of the mesh input before '" + r[0].text + "'",
                       r.excerpt(r[0].loc), "end the mesh commands with END");
+    if (r.is("ENSEmble") || r.is("SWEEp"))
+      throw DeckError(r[0].loc,
+                      r[0].text + " inside the mesh input" +
+                          (head ? " of the problem of " + lineRef(*head) : std::string()) +
+                          ": a study block stands at the top level, before the FEAP record of "
+                          "the problem it applies to",
+                      r.excerpt(r[0].loc),
+                      "move the block (up to its blank record) before the FEAP record");
     const CommandSpec* spec = mesh_.find(r[0].text);
     if (!spec) {
       if (looksNumeric(r[0].text)) {

@@ -48,7 +48,9 @@ class DeckParser {
   Problem parseProblem();
   void parseMesh(Problem& p);
   void parseBatches(Problem& p);
-  bool parseMeshItems(std::vector<MeshItem>& items, Record* end);  // false: no END before EOF
+  // false: no END before EOF. head: the problem's FEAP record (null for a MESH
+  // re-entry's records), named by errors.
+  bool parseMeshItems(std::vector<MeshItem>& items, Record* end, const Record* head);
   MeshCommand parseMeshCommand(const CommandSpec& spec);
   BatchBlock parseBatch();
   bool endsBatchData() const;

@@ -13,6 +13,7 @@
 #include "elements/EndHinges.h"
 #include "elements/Joints.h"
 #include "elements/MemberFold.h"
+#include "macro/commands/BlastOfRemoved.h"
 #include "macro/commands/MasslessLoads.h"
 #include "macro/commands/OutputCommands.h"
 #include "macro/deck/DeckParser.h"
@@ -72,8 +73,11 @@ void ProblemRun::bind(bool echo) {
       jitterNodes(m, *sample->jitter, sample->seed, sample->sample);
     };
   model_ = buildModel(problem_, params_, echo ? &log_ : nullptr, &mesh);
-  if (sample && sample->detonators)
+  if (sample && sample->detonators) {
+    nominalBlastTimes_.clear();
+    for (const Blast& b : model_.blasts()) nominalBlastTimes_.push_back(b.time);
     drawnBlastTimes_ = scatterBlasts(model_, *sample->detonators, sample->seed, sample->sample);
+  }
   installJoints(model_);
   boundParams_ = params_;
   batches_.clear();
@@ -83,6 +87,7 @@ void ProblemRun::bind(bool echo) {
     batches_.push_back(bindBatch(b.commands, b.data, table_, boundParams_, &facts));
   checkPlotColumns(batches_, boundParams_);
   warnMasslessFloorLoads(problem_, batches_, options_.warnings);
+  warnBlastsOfRemovedElements(problem_, model_, batches_, boundParams_, options_.warnings);
   // A table that no PROP defines would silently stay at 1 (a restart file brings its own).
   for (const auto& [table, ref] : mesh.loadTables)
     if (!facts.restart && !facts.loadTables.count(table)) {
@@ -135,6 +140,7 @@ void ProblemRun::run() {
          << " goes once unloaded; the panel no longer braces its bay\n";
   };
   analysis_->removals().onEvent = [this](const RemovalEvent& ev) {
+    refuseScatteredIntoStatics(ev);
     removed_ += static_cast<int>(ev.elements.size());
     const RemovalLog line = removalLog(ev);
     blastsNotMade_ += line.warning ? 1 : 0;
@@ -305,6 +311,19 @@ void ProblemRun::fail(const Macro& m, const std::string& what) const {
   const State& s = analysis_->state();
   throw AnalysisError(m.record.fieldLoc(0).str() + ": error: " + m.record.text(0) + " in step " +
                       std::to_string(s.step + 1) + " (t = " + fmt("%.6e", s.t) + "): " + what);
+}
+
+void ProblemRun::refuseScatteredIntoStatics(const RemovalEvent& ev) const {
+  const auto k = static_cast<std::size_t>(ev.blast);
+  if (ev.blast < 0 || k >= nominalBlastTimes_.size() || analysis_->integrator().dynamic()) return;
+  const std::string record =
+      ev.origin.file.empty() ? "blast " + std::to_string(k + 1) : "BLASt record " + ev.origin.str();
+  failAtCommit("the " + record + ", scattered by DETOnators from t = " +
+               fmt("%.6e", nominalBlastTimes_[k]) + " to t = " +
+               fmt("%.6e", model_.blasts()[k].time) +
+               ", falls in a static step (before DYNAmic): this sample is not the deck's plan; a "
+               "smaller scatter (DETOnators,,sd,cov) or a later blast keeps it in the dynamic "
+               "phase");
 }
 
 void ProblemRun::failAtCommit(const std::string& what) const {

@@ -182,6 +182,11 @@ class ProblemRun {
   [[noreturn]] void fail(const Macro& m, const std::string& what) const;
   // At a commit: the command that made it (current_), the step and time.
   [[noreturn]] void failAtCommit(const std::string& what) const;
+  // A blast that DETOnators scattered into a static step (before DYNAmic): the
+  // sample would go on as a plan the deck does not give (a structure without
+  // its columns held statically, whose Newton loop then fails without a word
+  // of the blast), so the run fails there, naming the blast and both times.
+  void refuseScatteredIntoStatics(const RemovalEvent& ev) const;
   std::string historyText() const;
   // What to try after a failed Newton loop (the reason, whether it used the
   // line search, its iteration count when it ran out of iterations).
@@ -259,6 +264,7 @@ class ProblemRun {
   std::optional<DebrisFigures> debris_;
   bool debrisPlot_ = false;
   std::vector<double> drawnBlastTimes_;
+  std::vector<double> nominalBlastTimes_;  // the deck's, before DETOnators scattered them
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point lastProgress_;
   bool progressShown_ = false;

@@ -37,11 +37,14 @@ std::string elements(const std::vector<int>& list) {
 RemovalLog removalLog(const RemovalEvent& ev) {
   RemovalLog out;
   const std::string when = " at t = " + fmt("%.6e", ev.time);
+  // The record that gave the blast, when known: "(BLASt record f.inp:12:3)".
+  const std::string record =
+      ev.origin.file.empty() ? std::string() : " (BLASt record " + ev.origin.str() + ")";
   if (ev.elements.empty()) {
     out.warning = true;
-    out.text = "  warning: the blast" + when + " removes nothing: its " + elements(ev.goneBefore) +
+    out.text = "  warning: the blast" + when + record + " removes nothing: its " + elements(ev.goneBefore) +
                (ev.goneBefore.size() == 1 ? " was" : " were") +
-               " removed before (REMOve or an earlier blast)\n";
+               " removed before by REMOve\n";
     return out;
   }
   std::string& s = out.text;
@@ -55,7 +58,8 @@ RemovalLog removalLog(const RemovalEvent& ev) {
   if (ev.jointsDissolved > 0)
     s += "; " + std::to_string(ev.jointsDissolved) + " joint" +
          (ev.jointsDissolved == 1 ? "" : "s") + " dissolved";
-  if (!ev.goneBefore.empty()) s += "; " + elements(ev.goneBefore) + " removed before";
+  if (!ev.goneBefore.empty())
+    s += "; " + elements(ev.goneBefore) + " removed before" + record;
   s += "; energy removed " + fmt("%.6e", ev.energy) + "\n";
   return out;
 }

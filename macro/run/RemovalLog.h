@@ -2,7 +2,7 @@
 // The log's lines of a member removal (solvers/MemberRemoval.h): a blast at
 // its time or a REMOve, the elements and nodes that left, the joints
 // dissolved, the energy removed; a blast whose elements had all left before
-// (REMOve, an earlier blast) removes nothing and is a warning.
+// (REMOve) removes nothing and is a warning, at its BLASt record.
 #include <string>
 
 #include "solvers/MemberRemoval.h"

@@ -150,6 +150,28 @@ EnsembleSpec evaluateEnsemble(const TopEnsemble& e, const Parameters& p) {
   return s;
 }
 
+void EnsemblePairing::check(const TopEnsemble& e, const EnsembleSpec& spec, int plan) {
+  if (!seen_) {
+    seen_ = true;
+    samples_ = spec.samples;
+    seed_ = spec.seed;
+    plan_ = plan;
+    return;
+  }
+  const bool samples = spec.samples != samples_;
+  if (!samples && spec.seed == seed_) return;
+  const std::string what = samples ? "samples" : "seed";
+  const auto mine = samples ? std::to_string(spec.samples) : std::to_string(spec.seed);
+  const auto first = samples ? std::to_string(samples_) : std::to_string(seed_);
+  failAt(e.head, samples ? 2 : 3,
+         "plan " + std::to_string(plan) + " takes " + what + " " + mine + " and plan " +
+             std::to_string(plan_) + " " + first +
+             ": the plans are compared on paired runs (sample k of every plan takes the draws "
+             "of (seed, k)), so every plan takes the same n and seed",
+         "give n and seed values that do not depend on a swept parameter; plans on draws of "
+         "their own are separate decks");
+}
+
 SampleDraws drawSample(const EnsembleSpec& spec, int sample) {
   SampleDraws d;
   d.sample = sample;
@@ -194,6 +216,24 @@ void registerEnsembleBlock(CommandRegistry& registry) {
       "name = NORMal mean sd | LOGNormal median cov | UNIForm lo hi; JITTer,,dx,fdt; "
       "DETOnators,,sd,cov | DETOnators,PYROtechnic | DETOnators,ELECtronic";
   registry.add(std::move(s));
+
+  CommandSpec d;
+  d.name = "DETOnators";
+  d.doc =
+      "[ext] A record of the ENSEmble block: every BLASt time t scattered in each sample by a "
+      "normal number of standard deviation sqrt(sd^2 + (cov t)^2), independently per record "
+      "and sample (DETOnators,ELECtronic: sd = 1 ms, the accuracy of electronic delay "
+      "detonators; DETOnators,PYROtechnic: cov = 3 % of the nominal delay). Bounds: a draw "
+      "never goes before t = 0 (a detonator does not fire before the firing; a draw below 0 "
+      "is taken as 0). A blast drawn into a static step (before DYNAmic) fails its sample at "
+      "that step, naming the BLASt record, its nominal and drawn times: the sample would "
+      "otherwise go on without the blasted members held statically, which is no plan of the "
+      "deck. The drawn times are the blast_1, blast_2, ... columns of <stem>_ensemble.csv.";
+  d.fields = {{"kind", FieldKind::Text, {}, "ELECtronic, PYROtechnic or empty"},
+              {"sd", FieldKind::Expression, "0", "standard deviation of a blast time (s)"},
+              {"cov", FieldKind::Expression, "0", "the same, per unit of the nominal time"}};
+  d.section = CommandSection::Mesh;
+  registry.add(std::move(d));
 }
 
 }  // namespace c2d

@@ -48,6 +48,23 @@ struct EnsembleSpec {
 // The block's numbers evaluated with the parameters (DeckError at a bad value).
 EnsembleSpec evaluateEnsemble(const TopEnsemble& ensemble, const Parameters& params);
 
+// The plans of a study are compared on paired runs (sample k of every plan
+// takes the draws of (seed, k)): every plan walked must take the same n and
+// seed. A plan whose n or seed differs from the first plan's (swept, or derived
+// from a swept value) is a DeckError at that field, found by the check pass
+// before any run.
+class EnsemblePairing {
+ public:
+  // plan: 1, 2, ... in walk order.
+  void check(const TopEnsemble& ensemble, const EnsembleSpec& spec, int plan);
+
+ private:
+  bool seen_ = false;
+  int samples_ = 0;
+  std::uint64_t seed_ = 0;
+  int plan_ = 0;
+};
+
 // What sample k of an ensemble draws.
 struct SampleDraws {
   int sample = 0;  // 1..n

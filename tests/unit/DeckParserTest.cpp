@@ -322,6 +322,10 @@ const BadDeck kBadDecks[] = {
     {"no_mesh_end", "FEAP * * x\n0 0 0 2 3 2\nCOOR\n1 0 0 0\n\n", 1, 1, "has no END"},
     {"garbage_after_mesh", "FEAP * * x\n0 0 0 2 3 2\nEND\nTANG\n", 4, 1, "expected BATCh"},
     {"syntax_error_in_control", "FEAP * * x\n0 0 0 2 3 2+\nEND\n", 2, 13, "ends too early"},
+    {"ensemble_inside_mesh", "FEAP * * x\n0 0 0 2 3 2\n\nENSEmble,,2\n mu = UNIForm 0 1\n\nEND\n", 4,
+     1, "ENSEmble inside the mesh input of the problem of"},
+    {"sweep_inside_mesh", "FEAP * * x\n0 0 0 2 3 2\nSWEEp\n a = 1 2\n\nEND\n", 3, 1,
+     "a study block stands at the top level, before the FEAP record"},
     {"missing_include", "FEAP * * x\n0 0 0 2 3 2\nINCLude mesh.inc\nEND\n", 3, 9,
      "cannot open included file"},
 };

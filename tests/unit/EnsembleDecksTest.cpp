@@ -128,6 +128,60 @@ TEST(EnsembleDecks, ADrawThatMakesTheDeckBadIsReportedWithItsSample) {
   EXPECT_FALSE(fs::exists(dir.path() / "out" / "bad_ensemble.csv"));
 }
 
+// DETOnators move the prop's blast (t = 0.6) into the static step (to t = 0.5)
+// in samples 1 and 3: each fails at that commit, naming the BLASt record with
+// the nominal and the drawn time (it went on as a statically blasted structure
+// whose failure, if any, said nothing of the blast); sample 2 runs.
+TEST(EnsembleDecks, ABlastScatteredIntoAStaticStepFailsItsSampleNamingIt) {
+  testing::DeckTempDir dir;
+  DeckOptions o;
+  o.outDir = dir.path();
+  o.quiet = true;
+  const SolutionCommands commands;
+  std::ostringstream console;
+  const std::string deck =
+      std::string(C2D_SOURCE_DIR) + "/decks/errors/detonators_into_statics.inp";
+  const DeckOutcome r = runDeck(deck, o, commands, console);
+  EXPECT_EQ(r.exitCode, 2) << r.message;
+  const EnsembleData data = table(dir.path() / "detonators_into_statics_ensemble.csv", 0);
+  ASSERT_EQ(data.runs.size(), 3u);
+  for (int k : {0, 2}) {
+    const std::string& why = data.runs[k].reason;
+    EXPECT_FALSE(data.runs[k].ok);
+    EXPECT_NE(why.find("the BLASt record " + deck + ":40:3, scattered by DETOnators from t = "
+                       "6.000000e-01 to t = " + (k == 0 ? "2.854824e-01" : "4.204601e-01") +
+                       ", falls in a static step (before DYNAmic)"),
+              std::string::npos)
+        << why;
+  }
+  EXPECT_TRUE(data.runs[1].ok) << data.runs[1].reason;
+}
+
+// Plans are compared on paired runs (sample k of every plan takes the draws of
+// (seed, k)): a sample count or a seed that differs between plans (swept, or
+// derived from a swept value) is refused at its field before anything runs;
+// swept but equal in every plan, it is taken.
+TEST(EnsembleDecks, ASampleCountOrSeedDifferingBetweenPlansIsRefused) {
+  testing::DeckTempDir dir;
+  const std::string problem =
+      "FEAP * * t\n  0 0 0 2 3 2\nCOORdinates\n  1 0 0 0\n  2 0 1 0\n\nELEMents\n  1 0 1 1 2\n\n"
+      "MATErial,1\n  FRAMe\n    RESUltant STIFfness 1 1 1\n\nBOUNdary\n  1 0 1 1 1\n\nEND\n"
+      "BATCh\n  TANG,,1\nEND\nSTOP\n";
+  const SolutionCommands commands;
+  const std::string samples =
+      dir.write("n.inp", "SWEEp\n  n = 2 3\n\nENSEmble,,n,1\n\n" + problem);
+  testing::expectDeckError([&] { planDeck(samples, commands, {}); }, samples, 4, 11,
+                           "plan 2 takes samples 3 and plan 1 2: the plans are compared on "
+                           "paired runs");
+  const std::string seed = dir.write(
+      "s.inp", "SWEEp\n  a = 1 2\n\nPARAmeter\n  s = 7 * a\n\nENSEmble,,2,s\n\n" + problem);
+  testing::expectDeckError([&] { planDeck(seed, commands, {}); }, seed, 7, 13,
+                           "plan 2 takes seed 14 and plan 1 7");
+  const std::string same =
+      dir.write("e.inp", "SWEEp\n  n = 2 2\n\nENSEmble,,n,1\n\n" + problem);
+  EXPECT_EQ(planDeck(same, commands, {}).runs, 4);
+}
+
 // The example ensembles (no references: minutes each) bind as decks: every
 // run of their check pass, with its draws.
 TEST(EnsembleDecks, TheExampleEnsemblesBind) {

@@ -154,8 +154,8 @@ TEST(EnsembleDraws, DetonatorsScatterEachBlastTime) {
     std::vector<double> times;
     for (int k = 1; k <= n; ++k) {
       Model m;
-      m.blasts().push_back({t, {0}, 0, false});
-      m.blasts().push_back({t, {1}, 0, false});
+      m.blasts().push_back({t, {0}, 0, false, {}});
+      m.blasts().push_back({t, {1}, 0, false, {}});
       const std::vector<double> drawn = scatterBlasts(m, spec, 1, k);
       EXPECT_EQ(drawn.size(), 2u);
       if (drawn[0] > 0) {

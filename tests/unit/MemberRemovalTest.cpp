@@ -260,6 +260,8 @@ TEST(MemberRemoval, ABlastTheRunNeverReachesIsWarned) {
 TEST(MemberRemoval, ABlastOfElementsRemovedBeforeIsWarned) {
   // REMOve takes the column at t = 1, the plan blasts it at t = 2: that blast
   // removes nothing (it logged a blast of an empty list, without a warning).
+  // Known when the deck is bound: a warning at the BLASt record before any
+  // step, naming the REMOve; at t = 2 the log's warning names the record.
   DeckTempDir dir;
   const std::string batch =
       "  DT,,1\n  TIME\n  LOOP,,3\n    TANG,,1\n  NEXT\n"
@@ -267,8 +269,16 @@ TEST(MemberRemoval, ABlastOfElementsRemovedBeforeIsWarned) {
       "      TANG,,1\n    NEXT\n  NEXT\n";
   const auto r = runDeckText(dir, "again.inp", frame(kColumn + "BLASt\n  2 11\n\n", batch, ""));
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
-  EXPECT_NE(r.log.find("warning: the blast at t = 2.000000e+00 removes nothing: its element 11 "
-                       "was removed before"),
+  ASSERT_EQ(r.outcome.warnings.size(), 1u);
+  const DeckWarning& w = r.outcome.warnings[0];
+  EXPECT_EQ(w.loc.str(), (dir.path() / "again.inp").string() + ":42:3");
+  EXPECT_NE(w.message.find("BLASt of element 11, which the REMOve of " +
+                           (dir.path() / "again.inp").string() + ":51:3 removes too"),
+            std::string::npos)
+      << w.message;
+  EXPECT_NE(r.log.find("warning: the blast at t = 2.000000e+00 (BLASt record " +
+                       (dir.path() / "again.inp").string() +
+                       ":42:3) removes nothing: its element 11 was removed before by REMOve"),
             std::string::npos)
       << r.log;
   EXPECT_NE(r.log.find("warning: 1 blast of the BLASt plan did not happen"), std::string::npos)
