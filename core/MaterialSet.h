@@ -65,6 +65,9 @@ struct RcSectionData {
   double wall = 0;                          // ANNUlar: t
   std::vector<RebarLayer> bars;
   std::optional<Stirrups> stirrups;
+  // The share of a WEAKened member's widths and areas (materials/WeakenedSet):
+  // the confinement and the hinge length stay the original member's.
+  double kept = 1;
 };
 
 // Where a softening hinge opens: at the one-point element's midpoint when its

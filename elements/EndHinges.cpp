@@ -7,6 +7,8 @@
 #include "elements/JointedElement.h"
 #include "elements/Joints.h"
 #include "elements/ReissnerFrame.h"
+#include "materials/HingeLength.h"
+#include "materials/RcSection.h"
 
 namespace c2d {
 
@@ -42,6 +44,13 @@ Member memberOf(Element& e) {
 bool due(const Member& m) {
   if (!m.law || m.law->site() != HingeSite::Ends) return false;
   return std::abs(m.section.endHinge[0]) == 1 || std::abs(m.section.endHinge[1]) == 1;
+}
+
+// M/V at end a from the element's end moments (linear between the nodes).
+double shearSpanAt(const Model& model, const Element& el, const Member& m, int a) {
+  const std::array<int, 2> n = el.nodes();
+  const double L = (model.coord(n[1]) - model.coord(n[0])).norm();
+  return shearSpan(L, m.section.endMoment[a], m.section.endMoment[1 - a]);
 }
 
 }  // namespace
@@ -82,9 +91,10 @@ std::vector<OpenedHinge> openEndHinges(Model& model, State& state) {
       h.axialForce = m.section.N;
       const auto& capacity = m.law->capacity();
       if (capacity) {
-        const MomentLaw l = capacity->at(sign, m.section.N);
-        h.ultimate = l.Mu;
-        h.failureJump = l.xiF;
+        h.ultimate = capacity->at(sign, m.section.N).Mu;
+        h.failureJump = capacity->failureJump(sign, m.section.N, shearSpanAt(model, el, m, a));
+        if (const MaterialSet* mat = model.material(innermost(el).materialNumber()); mat && mat->rc)
+          h.shearSpan = boundedShearSpan(shearSpanAt(model, el, m, a), mat->rc->data().h);
       } else {
         h.ultimate = m.law->softening(sign)->Mu();
         h.failureJump = m.law->softening(sign)->failureJump();

@@ -24,6 +24,7 @@ struct OpenedHinge {
   double ultimate = 0;          // Mu at the axial force then
   double axialForce = 0;
   double failureJump = 0;       // xiF of the hinge
+  double shearSpan = 0;         // L_V it follows (RC sections), 0: none
 };
 
 // True when any element has an opened end hinge without its joint.

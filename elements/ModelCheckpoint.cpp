@@ -163,7 +163,7 @@ void writeModel(std::ostream& out, const Model& model) {
     if (const auto& sec = m.section) {
       put(out, sec->shape);
       for (double x : {sec->b, sec->h, sec->fc, sec->fy, sec->Es, sec->fu, sec->eu,
-                       sec->flangeWidth, sec->flangeDepth, sec->wall})
+                       sec->flangeWidth, sec->flangeDepth, sec->wall, sec->kept})
         put(out, x);
       putCount(out, sec->bars.size());
       for (const RebarLayer& r : sec->bars)
@@ -310,7 +310,7 @@ Model readModel(std::istream& in, int minTopologyVersion) {
       if (static_cast<int>(sec.shape) < 0 || static_cast<int>(sec.shape) > 3)
         throw CheckpointError("material " + std::to_string(m.number) + ": unknown section shape");
       for (double* x : {&sec.b, &sec.h, &sec.fc, &sec.fy, &sec.Es, &sec.fu, &sec.eu,
-                        &sec.flangeWidth, &sec.flangeDepth, &sec.wall})
+                        &sec.flangeWidth, &sec.flangeDepth, &sec.wall, &sec.kept})
         *x = get<double>(in);
       const std::size_t layers = getCount(in);
       for (std::size_t i = 0; i < layers; ++i) {

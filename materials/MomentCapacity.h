@@ -31,6 +31,10 @@ class MomentCapacity {
   virtual ~MomentCapacity() = default;
   // sign: +1 or -1 (the sign of the moment).
   virtual MomentLaw at(int sign, double N) const = 0;
+  // The failure jump of a hinge opening at N in a member whose shear span
+  // (M/V at the hinge) is Lv: the law's xiF unless the capacity knows how the
+  // hinge's length follows the shear span (RcSection).
+  virtual double failureJump(int sign, double N, double /*Lv*/) const { return at(sign, N).xiF; }
 };
 
 // Hand-given laws (HARDening, SOFTening) scaled by an interaction curve given

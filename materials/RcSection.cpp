@@ -7,6 +7,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "materials/Confinement.h"
+#include "materials/HingeLength.h"
+
 namespace c2d {
 
 namespace {
@@ -62,6 +65,13 @@ RcSection::RcSection(const RcSectionData& data) : d_(data), shape_(data) {
   if (const auto& st = d_.stirrups; st && !(st->area > 0 && st->spacing > 0 && st->fy > 0))
     bad("the stirrups' area, spacing and yield stress must be positive");
   shear_.emplace(ShearResistance::webs(shape_, d_.bars), shape_.area(), d_.fc, d_.stirrups);
+  fcc_ = d_.fc;
+  if (const auto c = confinementOf(d_)) {
+    epsCuc_ = std::max(kEpsCu2, c->epsCu);
+    fcc_ = c->fcc;
+    epsC2c_ = kEpsC2 * (fcc_ / d_.fc) * (fcc_ / d_.fc);  // EC2 (3.26)
+  }
+  for (int k = 0; k < 2; ++k) lplBase_[k] = c2d::hingeLengthBase(d_, shape_, k == 0 ? 1 : -1);
   bars_[0] = d_.bars;
   bars_[1] = d_.bars;
   for (RebarLayer& r : bars_[1]) r.depth = d_.h - r.depth;
@@ -109,8 +119,9 @@ double RcSection::squashLoad() const {
   return d_.fc * shape_.area() + as_ * std::min(d_.fy, d_.Es * kEpsC2);
 }
 
-RcSection::Forces RcSection::forces(double e0, double kappa, int sign) const {
-  const SectionShape::Resultant c = shape_.concrete(e0, kappa, sign, d_.fc, kEpsC2);
+RcSection::Forces RcSection::forces(double e0, double kappa, int sign, bool confined) const {
+  const SectionShape::Resultant c = confined ? shape_.concrete(e0, kappa, sign, fcc_, epsC2c_)
+                                             : shape_.concrete(e0, kappa, sign, d_.fc, kEpsC2);
   Forces f{c.N, c.M};
   const double zg = shape_.centroidDepth(sign);
   for (const RebarLayer& r : bars_[sign > 0 ? 0 : 1]) {
@@ -121,28 +132,28 @@ RcSection::Forces RcSection::forces(double e0, double kappa, int sign) const {
   return f;
 }
 
-std::optional<double> RcSection::topStrain(double N, double kappa, int sign) const {
+std::optional<double> RcSection::topStrain(double N, double kappa, int sign, bool confined) const {
   const double ey = d_.fy / d_.Es, kh = kappa * d_.h;
-  const double lo = -std::max(kEpsC2, ey) - std::max(0.0, kh) - 1e-6;
+  const double lo = -std::max(confined ? epsC2c_ : kEpsC2, ey) - std::max(0.0, kh) - 1e-6;
   const double hi = ey - std::min(0.0, kh) + 1e-6;
-  const double nlo = forces(lo, kappa, sign).N, nhi = forces(hi, kappa, sign).N;
+  const double nlo = forces(lo, kappa, sign, confined).N, nhi = forces(hi, kappa, sign, confined).N;
   const double scale = std::abs(nlo) + std::abs(nhi);
   if (N < nlo - 1e-12 * scale || N > nhi + 1e-12 * scale) return std::nullopt;
-  return increasingRoot([&](double e) { return forces(e, kappa, sign).N - N; }, lo, hi, nlo - N,
-                        nhi - N, 1e-13 * scale);
+  return increasingRoot([&](double e) { return forces(e, kappa, sign, confined).N - N; }, lo, hi,
+                        nlo - N, nhi - N, 1e-13 * scale);
 }
 
 namespace {
 
 // The state where g(kappa, e0) reaches 1 at constant N, g increasing in kappa.
 RcSection::State stateAt(const RcSection& s, double N, int sign,
-                         const std::function<double(double, double)>& g) {
+                         const std::function<double(double, double)>& g, bool confined = false) {
   RcSection::State out;
-  const auto e00 = s.topStrain(N, 0.0, sign);
+  const auto e00 = s.topStrain(N, 0.0, sign, confined);
   if (!e00 || !(g(0.0, *e00) < 1)) return out;
   const double h = s.data().h;
   auto eval = [&](double kappa) {
-    const auto e = s.topStrain(N, kappa, sign);
+    const auto e = s.topStrain(N, kappa, sign, confined);
     return e ? g(kappa, *e) - 1 : kInf;
   };
   double lo = 0, flo = g(0.0, *e00) - 1;
@@ -156,12 +167,12 @@ RcSection::State stateAt(const RcSection& s, double N, int sign,
   if (fhi < 0) return out;
   if (!std::isfinite(fhi)) fhi = 1;
   const double kappa = increasingRoot(eval, lo, hi, flo, fhi, 1e-13);
-  const auto e0 = s.topStrain(N, kappa, sign);
+  const auto e0 = s.topStrain(N, kappa, sign, confined);
   if (!e0) return out;
   out.exists = true;
   out.kappa = kappa;
   out.e0 = *e0;
-  out.M = s.forces(*e0, kappa, sign).M;
+  out.M = s.forces(*e0, kappa, sign, confined).M;
   out.depth = kappa > 0 ? -*e0 / kappa : kInf;
   return out;
 }
@@ -178,14 +189,33 @@ RcSection::State RcSection::firstYield(double N, int sign) const {
   });
 }
 
+namespace {
+
+// The compressed face at epsCu, or epsC2 at (1 - epsC2/epsCu) h from it when
+// the whole section is compressed, or a bar at eu (EC2 6.1(5), Fig. 6.1).
+RcSection::State ultimateAt(const RcSection& s, const std::vector<RebarLayer>& bars, double N,
+                            int sign, double epsCu, double epsC2, bool confined) {
+  const RcSectionData& d = s.data();
+  const double zc = (1 - epsC2 / epsCu) * d.h;
+  return stateAt(
+      s, N, sign,
+      [&](double kappa, double e0) {
+        double g = std::max(-e0 / epsCu, -(e0 + kappa * zc) / epsC2);
+        for (const RebarLayer& r : bars) g = std::max(g, (e0 + kappa * r.depth) / d.eu);
+        return g;
+      },
+      confined);
+}
+
+}  // namespace
+
 RcSection::State RcSection::ultimate(double N, int sign) const {
-  const auto& bars = bars_[sign > 0 ? 0 : 1];
-  const double zc = (1 - kEpsC2 / kEpsCu2) * d_.h;
-  return stateAt(*this, N, sign, [&](double kappa, double e0) {
-    double g = std::max(-e0 / kEpsCu2, -(e0 + kappa * zc) / kEpsC2);
-    for (const RebarLayer& r : bars) g = std::max(g, (e0 + kappa * r.depth) / d_.eu);
-    return g;
-  });
+  return ultimateAt(*this, bars_[sign > 0 ? 0 : 1], N, sign, kEpsCu2, kEpsC2, false);
+}
+
+RcSection::State RcSection::ultimateConfined(double N, int sign) const {
+  if (epsCuc_ == kEpsCu2 && fcc_ == d_.fc) return ultimate(N, sign);
+  return ultimateAt(*this, bars_[sign > 0 ? 0 : 1], N, sign, epsCuc_, epsC2c_, true);
 }
 
 RcSection::State RcSection::cracking(double N, int sign) const {
@@ -213,14 +243,29 @@ RcSection::State RcSection::balance(int sign) const {
   return out;
 }
 
-double RcSection::plasticRotation(double N, int sign) const {
-  const State y = firstYield(N, sign), u = ultimate(N, sign);
+double RcSection::rotationLength(int sign, double Lv) const {
+  return c2d::rotationLength(lplBase_[sign > 0 ? 0 : 1], Lv);
+}
+
+double RcSection::plasticRotation(double N, int sign, double Lv) const {
+  const State y = firstYield(N, sign), u = ultimateConfined(N, sign);
   if (!y.exists || !u.exists) return 0;
-  return std::max(0.0, (u.kappa - y.kappa) * kHingeLength * d_.h);
+  return std::max(0.0, (u.kappa - y.kappa) * rotationLength(sign, boundedShearSpan(Lv, d_.h)));
+}
+
+double RcSection::failureJump(int sign, double N, double Lv) const {
+  return at(sign, N).xiF * rotationLength(sign, boundedShearSpan(Lv, d_.h)) /
+         rotationLength(sign, referenceSpan());
 }
 
 double RcSection::ruptureRotation() const {
-  return std::max(zero_[0].xiF, zero_[1].xiF) + std::acos(1 / (1 + d_.eu));
+  double xiF = 0;
+  for (int k = 0; k < 2; ++k) {
+    const int sign = k == 0 ? 1 : -1;
+    xiF = std::max(xiF, zero_[k].xiF * rotationLength(sign, kShearSpanMax * d_.h) /
+                            rotationLength(sign, referenceSpan()));
+  }
+  return xiF + std::acos(1 / (1 + d_.eu));
 }
 
 double RcSection::shortestPiece() const {
@@ -243,8 +288,7 @@ RcSection::Points RcSection::rawPoints(double N, int sign) const {
     p.Mu = u.M;
     p.xiU = u.kappa - u.M / ei;
   }
-  if (y.exists && u.exists)
-    p.xiF = std::max(0.0, (u.kappa - y.kappa) * kHingeLength * d_.h) / kUltimateDrop;
+  if (y.exists && u.exists) p.xiF = plasticRotation(N, sign, referenceSpan()) / kUltimateDrop;
   return p;
 }
 

@@ -35,6 +35,7 @@
 
 #include "core/MaterialSet.h"
 #include "materials/AxialCapacity.h"
+#include "materials/HingeLength.h"
 #include "materials/MomentCapacity.h"
 #include "materials/SectionShape.h"
 #include "materials/ShearResistance.h"
@@ -45,9 +46,11 @@ class RcSection final : public MomentCapacity {
  public:
   static constexpr double kEpsC2 = 0.002, kEpsCu2 = 0.0035;
   static constexpr double kConcretePoisson = 0.2;
-  // Hinge: plastic length Lp = h/2; the hinge's moment falls linearly from Mu and
-  // has lost kUltimateDrop of it over the plastic rotation (kappa_u - kappa_y) Lp.
-  static constexpr double kHingeLength = 0.5, kUltimateDrop = 0.2;
+  // Hinge: the moment falls linearly from Mu and has lost kUltimateDrop of it
+  // over the plastic rotation (kappa_uc - kappa_y) Lpl (1 - 0.5 Lpl/L_V), EN
+  // 1998-3 (A.9), (A.10) (materials/HingeLength.h), kappa_uc the ultimate
+  // curvature of the confined core (materials/Confinement.h).
+  static constexpr double kUltimateDrop = 0.2;
 
   // Throws std::invalid_argument for a section that is not one (sizes, strengths,
   // bars outside the section or of no area, fu < fy, eu <= fy/Es).
@@ -80,10 +83,12 @@ class RcSection final : public MomentCapacity {
   struct Forces {
     double N = 0, M = 0;
   };
-  Forces forces(double e0, double kappa, int sign) const;
+  // confined: the concrete at the confined core's fcc and eps_c2,c = eps_c2
+  // (fcc/fc)^2 (EC2 3.1.9 (3.26)) over the whole section (ultimateConfined).
+  Forces forces(double e0, double kappa, int sign, bool confined = false) const;
   // e0 of the plane with curvature kappa and axial force N; none when N is
   // beyond what the section carries at that curvature.
-  std::optional<double> topStrain(double N, double kappa, int sign) const;
+  std::optional<double> topStrain(double N, double kappa, int sign, bool confined = false) const;
 
   // A state of the moment-curvature at constant N.
   struct State {
@@ -100,14 +105,30 @@ class RcSection final : public MomentCapacity {
   // Ultimate (EC2 6.1(5), Fig. 6.1): the compressed face at eps_cu2, or eps_c2 at
   // 3h/7 from it when the whole section is compressed, or a bar at eu.
   State ultimate(double N, int sign) const;
+  // The ultimate curvature of the hinge's rotation capacity: as ultimate() with
+  // the compressed face at the confined core's eps_cu,c and the concrete at
+  // fcc, eps_c2,c (EN 1998-3 (A.11), (A.12), materials/Confinement.h) when the
+  // section has stirrups. The cover is kept (no spalling: the section's
+  // concrete is one law).
+  State ultimateConfined(double N, int sign) const;
+  // The compressed face's strain limit of ultimateConfined and the strength.
+  double confinedStrain() const { return epsCuc_; }
+  double confinedStrength() const { return fcc_; }
   // Balance point: the compressed face at eps_cu2 as the extreme tension bar
   // reaches fy/Es (its N and M).
   State balance(int sign) const;
-  // The hinge's plastic rotation capacity (kappa_u - kappa_y) Lp at N and the
-  // failure jump xiF = that / kUltimateDrop.
-  double plasticRotation(double N, int sign) const;
+  // The hinge's plastic rotation capacity (kappa_uc - kappa_y) Lpl (1 - 0.5
+  // Lpl/Lv) at N and shear span Lv (materials/HingeLength.h); the failure jump
+  // xiF = that / kUltimateDrop. The law's xiF (at(), the table) is the one at
+  // the reference shear span; failureJump scales it to a hinge's own.
+  double referenceSpan() const { return kShearSpanReference * d_.h; }
+  double hingeLengthBase(int sign) const { return lplBase_[sign > 0 ? 0 : 1]; }
+  double rotationLength(int sign, double Lv) const;
+  double plasticRotation(double N, int sign, double Lv) const;
+  double failureJump(int sign, double N, double Lv) const override;
   // Rupture rotation of a joint made of this section's failed hinge: xiF at
-  // N = 0 (the larger sign's) plus acos(1/(1 + eu)), the turn of a tie
+  // N = 0 (the larger sign's) at the largest shear span (kShearSpanMax h: no
+  // hinge's failure jump passes it) plus acos(1/(1 + eu)), the turn of a tie
   // pinned there whose bars the turn stretches to eu (see README).
   double ruptureRotation() const;
   // The shear the member carries at the axial force N (materials/ShearResistance:
@@ -142,6 +163,9 @@ class RcSection final : public MomentCapacity {
   std::array<std::vector<RebarLayer>, 2> bars_;  // as given, upside down
   double ec_ = 0, as_ = 0, atr_ = 0, ztr_ = 0, itr_ = 0;
   std::optional<ShearResistance> shear_;  // set once the data are checked
+  double epsCuc_ = kEpsCu2;  // the confined core's ultimate strain
+  double fcc_ = 0, epsC2c_ = kEpsC2;  // its strength and the parabola's strain
+  std::array<double, 2> lplBase_{0, 0};  // Lpl - L_V/30 per sign
   std::array<Points, 2> zero_;  // raw points at N = 0 (floors' references)
   // Tabulated laws per sign: Mc, My, Mu, xiY, xiU, xiF.
   std::array<std::array<MonotoneCubic, 6>, 2> table_;

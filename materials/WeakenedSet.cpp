@@ -63,6 +63,7 @@ MaterialSet weakenedSet(const MaterialSet& mat, double f, int number) {
     s.flangeWidth *= f;
     for (RebarLayer& l : s.bars) l.area *= f;
     if (s.stirrups) s.stirrups->area *= f;
+    s.kept *= f;
     m.density /= f;
   } else {
     scaleHandGivenLaws(m, f);

@@ -8,7 +8,9 @@
 //    a given depth h, so EA, GA, EI, every moment of either sign at the axial
 //    force f N, the squash and tension loads and the shear Vu(f N) are f times
 //    the original's at N, at the same strains and curvatures; the density is
-//    divided by f, so that the mass (rho b h) stays;
+//    divided by f, so that the mass (rho b h) stays; the confinement and the
+//    hinge length (materials/Confinement.h, HingeLength.h) read the original
+//    widths and bars (RcSectionData::kept), so the rotations stay;
 //  - hand-given laws: E (or the RESUltant stiffnesses EA, GA, EI), every
 //    moment and modulus of HARDening and SOFTening (Mc, My, Kh1, Kh2, Mu, Ks,
 //    Mr, both signs) and the INTEraction curve's (N, Mu) pairs times f; the

@@ -85,6 +85,7 @@ bool TopologyEvents::afterCommit(Model& model, State& state) {
         ev.ultimate = h.ultimate;
         ev.axialForce = h.axialForce;
         ev.failureJump = h.failureJump;
+        ev.shearSpan = h.shearSpan;
         events.push_back(ev);
       }
     if (fracturesDue(model))

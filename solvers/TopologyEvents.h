@@ -35,6 +35,7 @@ struct TopologyEvent {
   // Sheared: the shear |V| and the capacity Vu(N) (as moment and ultimate).
   int end = 0;
   double moment = 0, ultimate = 0, axialForce = 0, failureJump = 0;
+  double shearSpan = 0;  // HingeOpened: the L_V its failure jump follows (0: none)
   bool throughJoint = false;
 };
 

@@ -6,8 +6,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "macro/commands/SectionEcho.h"
 #include "macro/commands/SectionShapeRecords.h"
 #include "macro/commands/SubRecordFields.h"
+#include "materials/Confinement.h"
 #include "materials/HingedBending.h"
 #include "materials/RcSection.h"
 #include "materials/SectionLaws.h"
@@ -280,149 +282,30 @@ void finishLawRecords(const Record& head, const LawRecords& seen, MaterialSet& m
 // ---------------------------------------------------------------------------
 // echo
 
-namespace {
-
-void line(std::ostream& os, const std::string& name, double v) {
-  os << "      " << std::left << std::setw(19) << name << std::right << std::setw(13)
-     << std::scientific << std::setprecision(4) << v << "\n";
-}
-
-void echoShape(std::ostream& os, const SectionShape& shape, const RcSectionData& d) {
-  switch (d.shape) {
-    case SectionShapeKind::Rectangle:
-      line(os, "Width b", d.b);
-      line(os, "Depth h", d.h);
-      break;
-    case SectionShapeKind::Tee:
-      os << "      T-section (the flange at the top face)\n";
-      line(os, "Web width bw", d.b);
-      line(os, "Depth h", d.h);
-      line(os, "Flange width beff", d.flangeWidth);
-      line(os, "Flange thickness hf", d.flangeDepth);
-      break;
-    case SectionShapeKind::Circle:
-      os << "      Circular section\n";
-      line(os, "Diameter D", d.h);
-      break;
-    case SectionShapeKind::Annulus:
-      os << "      Annular section\n";
-      line(os, "Diameter D", d.h);
-      line(os, "Wall t", d.wall);
-      break;
-  }
-  line(os, "Concrete area", shape.area());
-  line(os, "Centroid from top", shape.centroidDepth(1));
-  line(os, "Gross I", shape.secondMoment());
-  line(os, "Shear area (nu 0.2)", shape.shearArea(RcSection::kConcretePoisson));
-}
-
-void echoSection(std::ostream& os, const MaterialSet& m) {
-  const RcSection& rc = *m.rc;
-  const RcSectionData& d = rc.data();
-  os << "      RC section (EC2 parabola-rectangle, eps_c2 = 0.002, eps_cu2 = 0.0035; bars\n"
-        "      elastic-perfectly plastic; moments about the concrete's centroid, positive\n"
-        "      compressing the top)\n";
-  echoShape(os, rc.shape(), d);
-  line(os, "Concrete fc", d.fc);
-  line(os, "Ec = 2 fc/eps_c2", rc.Ec());
-  line(os, "fct = fc/10", rc.fct());
-  line(os, "Bars fy", d.fy);
-  line(os, "Bars Es", d.Es);
-  line(os, "Bars fu", d.fu);
-  line(os, "Bars eu", d.eu);
-  for (const RebarLayer& l : d.bars) {
-    std::ostringstream s;
-    s << std::scientific << std::setprecision(4) << "      Bar layer: depth " << l.depth
-      << ", area " << l.area << "\n";
-    os << s.str();
-  }
-  os << "      Transformed uncracked section (the concrete, bars (Es/Ec - 1) A):\n";
-  line(os, "EA", rc.EA());
-  line(os, "GA (nu 0.2)", rc.GA());
-  line(os, "EI", rc.EI());
-  line(os, "Centroid depth", rc.centroidDepth());
-  line(os, "Tension yield Nt", rc.tensionYield());
-  line(os, "Tension Ntu", rc.tensionUltimate());
-  line(os, "Squash load Nc", rc.squashLoad());
-  for (int sign : {1, -1}) {
-    const char* tag = sign > 0 ? "+" : "-";
-    os << "      Moments "
-       << (sign > 0 ? "positive (top face compressed)" : "negative (bottom face compressed)")
-       << " at N = 0:\n";
-    const RcSection::State c = rc.cracking(0, sign), y = rc.firstYield(0, sign),
-                           u = rc.ultimate(0, sign);
-    const MomentLaw l = rc.at(sign, 0);
-    line(os, std::string("Mc") + tag + " (fct)", l.Mc);
-    line(os, std::string("My") + tag + " (first yield)", l.My);
-    line(os, std::string("kappa_y") + tag, y.kappa);
-    line(os, std::string("x_y") + tag, y.depth);
-    line(os, std::string("Mu") + tag + " (eps_cu2)", l.Mu);
-    line(os, std::string("kappa_u") + tag, u.kappa);
-    line(os, std::string("x_u") + tag, u.depth);
-    line(os, std::string("Kh1") + tag, l.Kh1);
-    line(os, std::string("Kh2") + tag, l.Kh2);
-    line(os, std::string("theta_pl") + tag, rc.plasticRotation(0, sign));
-    line(os, std::string("xiF") + tag + " (jump)", l.xiF);
-    line(os, std::string("Ks") + tag, -l.Mu / l.xiF);
-    const RcSection::State b = rc.balance(sign);
-    line(os, std::string("Balance N") + tag, rc.forces(b.e0, b.kappa, sign).N);
-    line(os, std::string("Balance M") + tag, b.M);
-    (void)c;
-  }
-  if (m.softening && m.softening->thetaR) line(os, "Rupture thetaR", *m.softening->thetaR);
-  os << "      Shear (EC2 6.2.2, 6.2.3; Vu = max(VRd,c, VRd,s), see --help STIRrups):\n";
-  if (const auto& st = d.stirrups) {
-    line(os, "Stirrups Asw", st->area);
-    line(os, "Stirrups s", st->spacing);
-    line(os, "Stirrups fyw", st->fy);
-  }
-  for (int sign : {1, -1}) {
-    const char* tag = sign > 0 ? "+" : "-";
-    const ShearResistance::Parts p = rc.shear().parts(0.0, sign);
-    line(os, std::string("VRd,c") + tag, p.concrete);
-    line(os, std::string("VRd,s") + tag, p.stirrups);
-    line(os, std::string("cot theta") + tag, p.cot);
-    line(os, std::string("Vu") + tag, p.vu);
-  }
-  line(os, "Shortest piece Lb", rc.shortestPiece());
-  os << "      Interaction (N, Mu+, Mu-, My+, My-, Vu):\n";
-  const double lo = -rc.squashLoad(), hi = rc.tensionYield();
-  for (int i = 0; i <= 10; ++i) {
-    const double n = lo + (hi - lo) * i / 10;
-    const MomentLaw p = rc.at(1, n), q = rc.at(-1, n);
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "      %13.4e %13.4e %13.4e %13.4e %13.4e %13.4e\n", n, p.Mu,
-                  q.Mu, p.My, q.My, rc.shearCapacity(n));
-    os << buf;
-  }
-}
-
-}  // namespace
-
 void echoLaws(std::ostream& os, const MaterialSet& m) {
   if (m.hardening) {
-    line(os, "Hardening Mc", m.hardening->Mc);
-    line(os, "Hardening My", m.hardening->My);
-    line(os, "Hardening Kh1", m.hardening->Kh1);
-    line(os, "Hardening Kh2", m.hardening->Kh2);
+    echoLine(os, "Hardening Mc", m.hardening->Mc);
+    echoLine(os, "Hardening My", m.hardening->My);
+    echoLine(os, "Hardening Kh1", m.hardening->Kh1);
+    echoLine(os, "Hardening Kh2", m.hardening->Kh2);
     if (const auto& n = m.hardening->negative) {
-      line(os, "Hardening Mc-", n->Mc);
-      line(os, "Hardening My-", n->My);
-      line(os, "Hardening Kh1-", n->Kh1);
-      line(os, "Hardening Kh2-", n->Kh2);
+      echoLine(os, "Hardening Mc-", n->Mc);
+      echoLine(os, "Hardening My-", n->My);
+      echoLine(os, "Hardening Kh1-", n->Kh1);
+      echoLine(os, "Hardening Kh2-", n->Kh2);
     }
   }
   if (m.softening) {
-    line(os, "Softening Mu", m.softening->Mu);
-    line(os, "Softening Ks", m.softening->Ks);
+    echoLine(os, "Softening Mu", m.softening->Mu);
+    echoLine(os, "Softening Ks", m.softening->Ks);
     if (const auto& n = m.softening->negative) {
-      line(os, "Softening Mu-", n->first);
-      line(os, "Softening Ks-", n->second);
+      echoLine(os, "Softening Mu-", n->first);
+      echoLine(os, "Softening Ks-", n->second);
     }
-    if (m.softening->thetaR && !m.rc) line(os, "Rupture thetaR", *m.softening->thetaR);
-    if (m.softening->Mr > 0) line(os, "Joint friction Mr", m.softening->Mr);
+    if (m.softening->thetaR && !m.rc) echoLine(os, "Rupture thetaR", *m.softening->thetaR);
+    if (m.softening->Mr > 0) echoLine(os, "Joint friction Mr", m.softening->Mr);
     if (m.softening->pieceLength > 0 && !m.rc)
-      line(os, "Shortest piece Lb", m.softening->pieceLength);
+      echoLine(os, "Shortest piece Lb", m.softening->pieceLength);
     if (m.hingeSite == HingeSite::Ends) os << "      Hinges             at the element ends\n";
   }
   if (!m.interaction.empty()) {
@@ -515,13 +398,27 @@ void registerLawRecords(CommandRegistry& r) {
       "section's moment-curvature points. Tabulated on [-Nc, Nt] "
       "(monotone cubic in N). Hinges open at the element ends (the end moments of the "
       "element's equilibrium) as joints with the softening law: plastic rotation capacity "
-      "theta_pl = (kappa_u - kappa_y) Lp, Lp = h/2 (EC8-3 A.3.2.2 eq. A.9; Panagiotakos and "
-      "Fardis 2001; Lp = h/2: Paulay and Priestley 1992), the moment falling linearly from "
+      "theta_pl = (kappa_uc - kappa_y) Lpl (1 - 0.5 Lpl/L_V) (EN 1998-3 A.3.2.2 (A.9), mean: "
+      "gamma_el = 1), Lpl = L_V/30 + 0.2 h + 0.11 dbL fy/sqrt(fc) (A.10, fy and fc in MPa read "
+      "from fc's magnitude; the term left out when it is not recognised), at most L_V; L_V = "
+      "M/V, the shear span, taken where the hinge opens from the element's end moments (L "
+      "|Ma|/|Ma - Mb|: a cantilever's length, L/2 in double curvature), within [h, 10 h], "
+      "logged on the hinge's line; dbL the tension bars' diameter estimated from the farthest "
+      "layer's area (its corner bars and bars at most 0.15 m apart across the width; a ring's "
+      "one bar); kappa_uc the curvature at which the compressed face reaches the confined "
+      "core's eps_cu,c with the concrete at fcc (STIRrups; eps_cu2 = 0.0035 and fc without "
+      "them) or a bar eu (Mu stays the unconfined section's), the moment falling linearly from "
       "Mu and 20 % lower at theta_pl (Panagiotakos and Fardis' ultimate: a 20 % drop): "
       "failure jump xiF = 5 theta_pl, Ks = -Mu/xiF, taken at the axial force of the "
-      "hinge's opening; the joint then turns freely (the bars hold the pieces) and "
-      "ruptures at thetaR = xiF(N = 0) + acos(1/(1 + eu)) (a tie pinned there turned so far has "
-      "its bars at eu). Axial force: elastic with the uncracked EA in compression and the "
+      "hinge's opening (echoed at N = 0 and the reference L_V = 4 h, which midpoint hinges "
+      "take); the joint then turns freely (the bars hold the pieces) and "
+      "ruptures at thetaR = xiF(N = 0, L_V = 10 h) + acos(1/(1 + eu)) (a tie pinned there turned so far has "
+      "its bars at eu). Echoed beside them: EN 1998-3 (A.1)'s mean chord rotation at ultimate "
+      "(the 20 % drop, cyclic tests) without its shear-span factor, theta_um/(L_V/h)^0.35 = "
+      "0.016 0.3^nu [max(0.01, w')/max(0.01, w) fc]^0.225 25^(alpha rho_sx fyw/fc) at N = 0 "
+      "(w, w' = As fy/(b d fc) of the bars in the tension and compression halves, fc in MPa "
+      "read from its magnitude: 5-150 MPa, 5e3-1.5e5 kN/m^2, 5e6-1.5e8 Pa), for comparison "
+      "with the member's chord rotation (docs/design/rc-rotation-capacity.md). Axial force: elastic with the uncracked EA in compression and the "
       "cracked tie's Es As in tension (the member's strain is then its bars'), bounded by the "
       "bars in tension, Nt = As fy hardening to Ntu = As fu at the strain eu, where the bars "
       "fracture and the member separates from one of its ends (one log line each), and by the "
@@ -578,8 +475,17 @@ void registerLawRecords(CommandRegistry& r) {
       "that carries no moment (a ruptured joint, a free end) the moment grows as V x, so no "
       "hinge can reach Mu nearer than Mu/Vu. A joint within Lb of a free end does not "
       "rupture (it turns on with its friction), and a failed midpoint hinge within Lb of an "
-      "intact joint or a free end makes no joint, as SOFTening's Lb. Echoed: VRd,c, VRd,s, "
-      "cot theta and Vu of either sign at N = 0, Vu(N) in the interaction table, Lb.",
+      "intact joint or a free end makes no joint, as SOFTening's Lb. The links also confine the core "
+      "and so set the hinge's rotation capacity (EN 1998-3 A.3.2.2): core b0 = b - 2c, h0 = "
+      "the distance between the outermost bar layers (c the least layer depth: the hoops' "
+      "centre lines taken at the bars'), effectiveness alpha = (1 - s/(2 b0))(1 - s/(2 h0))"
+      "(1 - sum bi^2/(6 b0 h0)) with a perimeter hoop restraining the four corner bars (bi = "
+      "b0, b0, h0, h0: 1/3 for a square core; cross-ties not counted), rho_sx = Asw/(b s), "
+      "fcc = fc (1 + 3.7 (alpha rho_sx fyw/fc)^0.86) (A.11), eps_cu,c = 0.004 + 0.5 alpha "
+      "rho_sx fyw/fcc (A.12), at least eps_cu2 = 0.0035: the ultimate curvature of the "
+      "hinge's plastic rotation (SECTion), with the concrete at fcc and eps_c2,c = eps_c2 "
+      "(fcc/fc)^2 (EC2 3.1.9). Echoed: VRd,c, VRd,s, cot theta and Vu of either sign at "
+      "N = 0, Vu(N) in the interaction table, Lb, b0, h0, alpha, rho_sx, fcc, eps_cu,c.",
       {expr("Asw", "area of the stirrups' legs at one section [m^2]"),
        expr("s", "spacing along the member [m]"),
        expr("fyw", "stirrups' yield stress [kN/m^2]", "fy")}));

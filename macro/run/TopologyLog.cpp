@@ -55,7 +55,9 @@ void logTopologyEvent(std::ostream& log, const Model& model, double t, const Top
       log << "  hinge  opened at t = " << num(t) << ": element " << ev.element + 1 << " end "
           << ev.end + 1 << " (node " << ev.master + 1 << ", joint's slave node " << ev.slave + 1
           << "), M = " << num(ev.moment) << ", Mu(N) = " << num(ev.ultimate)
-          << " at N = " << num(ev.axialForce) << ", failure jump " << num(ev.failureJump) << "\n";
+          << " at N = " << num(ev.axialForce) << ", failure jump " << num(ev.failureJump);
+      if (ev.shearSpan > 0) log << " (shear span L_V = " << num(ev.shearSpan) << ")";
+      log << "\n";
       break;
     case TopologyEvent::Kind::BarsFractured:
       ++counts.fractures;

@@ -202,11 +202,22 @@ TEST(RcSection, StiffnessesAxialCapacitiesAndHinge) {
   EXPECT_NEAR(s.squashLoad(), 30e3 * 0.25 + as * 400e3, 1e-9);  // bars at eps_c2 Es = 400 MPa
   // Cracking at N = 0: fct I_tr / (h/2) with fct = 3 MPa.
   EXPECT_NEAR(s.cracking(0, 1).M, 3e3 * s.EI() / 30e6 / 0.25, 1e-9);
-  // The hinge: theta_pl = (kappa_u - kappa_y) h/2, failure jump 5 theta_pl.
-  const double th = (s.ultimate(0, 1).kappa - s.firstYield(0, 1).kappa) * 0.25;
-  EXPECT_NEAR(s.plasticRotation(0, 1), th, 1e-15);
-  EXPECT_NEAR(s.at(1, 0).xiF, 5 * th, 1e-9);
-  EXPECT_NEAR(s.ruptureRotation(), 5 * th + std::acos(1 / 1.05), 1e-9);
+  // The hinge, EN 1998-3 (A.9), (A.10): dbL estimated from the layer of 4 A20
+  // (b - 2c = 0.4 m: 1 + ceil(0.4/0.15) = 4 bars) = 20 mm; Lpl = L_V/30 + 0.2 h
+  // + 0.11 x 0.02 x 500/sqrt(30) = L_V/30 + 0.300832 m; at the reference L_V =
+  // 4h = 2 m: Lpl = 0.367499, Lpl (1 - 0.5 Lpl/L_V) = 0.333735 m; theta_pl =
+  // (kappa_u - kappa_y) that (no links: kappa_u at eps_cu2), failure jump 5
+  // theta_pl; at L_V = 10 h = 5 m (thetaR's): 0.4675 x (1 - 0.04675) = 0.445644 m.
+  EXPECT_NEAR(s.hingeLengthBase(1), 0.300832, 1e-6);
+  EXPECT_NEAR(s.rotationLength(1, 2.0), 0.333735, 1e-6);
+  const double dk = s.ultimate(0, 1).kappa - s.firstYield(0, 1).kappa, th = dk * 0.333735;
+  EXPECT_NEAR(s.plasticRotation(0, 1, 2.0), th, 5e-6 * th);
+  EXPECT_NEAR(s.at(1, 0).xiF, 5 * th, 1e-5 * th);
+  EXPECT_NEAR(s.failureJump(1, 0, 5.0), 5 * dk * 0.445644, 5e-6 * 5 * dk * 0.445644);
+  EXPECT_NEAR(s.failureJump(1, 0, 50.0), s.failureJump(1, 0, 5.0), 1e-12);  // L_V <= 10 h
+  // L_V >= h: Lpl = 0.5/30 + 0.300832 = 0.317499, times 1 - 0.317499 = 0.216693.
+  EXPECT_NEAR(s.failureJump(1, 0, 0.1), 5 * dk * 0.216693, 1e-5 * th);
+  EXPECT_NEAR(s.ruptureRotation(), 5 * dk * 0.445644 + std::acos(1 / 1.05), 1e-5);
   // The law's points: (Mc/EI, Mc), (kappa_y, My), (kappa_u, Mu) with the plastic
   // curvatures kappa - M/EI at My and Mu.
   const MomentLaw l = s.at(1, 0);

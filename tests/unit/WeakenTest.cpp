@@ -7,7 +7,10 @@
 
 #include <cmath>
 
+#include <sstream>
+
 #include "elements/ElementFactory.h"
+#include "elements/ModelCheckpoint.h"
 #include "elements/InfillStrut.h"
 #include "materials/RcSection.h"
 #include "materials/WeakenedSet.h"
@@ -62,6 +65,20 @@ TEST(WeakenedSet, SectionScalesStiffnessAndEveryCapacityExactly) {
   }
   expectRel(*w.softening->thetaR, *a.softening->thetaR, 1e-12, "rupture rotation");
   expectRel(w.softening->pieceLength, a.softening->pieceLength, 1e-12, "shortest piece");
+  // The hinge at any shear span: the original member's hinge length.
+  for (double lv : {0.7, 2.0, 3.0})
+    expectRel(w.capacity->failureJump(1, f * -500, lv), a.capacity->failureJump(1, -500, lv), 1e-9,
+              "failure jump at L_V");
+  // A restart file keeps the share (the confinement and hinge length read it).
+  Model withWeak = testing::buildMesh(cantilever(kSection));
+  withWeak.materials()[7] = w;
+  std::stringstream file;
+  writeModel(file, withWeak);
+  const Model back = readModel(file, 0);
+  ASSERT_TRUE(back.material(7) && back.material(7)->section && back.material(7)->capacity);
+  EXPECT_EQ(back.material(7)->section->kept, f);
+  EXPECT_EQ(back.material(7)->capacity->failureJump(1, -200, 3.0),
+            w.capacity->failureJump(1, -200, 3.0));
   EXPECT_THROW(weakenedSet(a, 0, 8), std::invalid_argument);
   EXPECT_THROW(weakenedSet(a, 1.2, 8), std::invalid_argument);
 }
