@@ -260,6 +260,22 @@ bool bedExtent(const Model& model, const State& state, const std::vector<char>& 
   return any;
 }
 
+// The heaviest piece (pieceMass at its nodes) with a node of the model left of
+// `lo` or right of `hi` now; 0 when none. A node on a line (to 1e-9 of the
+// footprint's width) is not beyond it.
+double heaviestBeyond(const Model& model, const State& state, const std::vector<double>& pieceMass,
+                      double lo, double hi) {
+  const double tol = 1e-9 * std::max(1.0, hi - lo);
+  const std::vector<char> held = model.heldNodes();
+  double heaviest = 0;
+  for (int n = 0; n < model.numNodes(); ++n) {
+    if (!model.hasCoord(n) || !held[n]) continue;
+    const double x = position(model, state, n).x();
+    if (x < lo - tol || x > hi + tol) heaviest = std::max(heaviest, pieceMass[n]);
+  }
+  return heaviest;
+}
+
 // The pieces whose node is in the bed.
 std::vector<MassPiece> inBed(std::vector<MassPiece> pieces, const std::vector<char>& bed) {
   std::erase_if(pieces, [&](const MassPiece& p) { return p.node >= 0 && !bed[p.node]; });
@@ -305,6 +321,8 @@ DebrisFigures debrisFigures(const Model& model, const State& state) {
   d.cover = massCover(all);
   d.leftPieceMass = pieceMass[d.leftNode];
   d.rightPieceMass = pieceMass[d.rightNode];
+  d.heaviestBeyond95 = heaviestBeyond(model, state, pieceMass, d.footprintMin - d.left95,
+                                      d.footprintMax + d.right95);
   d.buildingHeight = buildingHeight(model);
   d.tilt = standingTilt(model, state);
   if (d.site) {
@@ -369,7 +387,7 @@ double halfSectionDepth(const Model& model, int node) {
 std::string debrisCsvHeader() {
   return "left,right,height,total_mass,outside_mass,site,site_xmin,site_xmax,peak_ground_force,"
          "peak_time,deepest,deepest_time,centroid,centroid_shift,left95,right95,at_rest,"
-         "kinetic_ratio,left_piece_mass,right_piece_mass,footprint_xmin,footprint_xmax,verdict,"
+         "kinetic_ratio,left_piece_mass,right_piece_mass,heaviest_beyond95,footprint_xmin,footprint_xmax,verdict,"
          "centroid_move_h,tilt,building_height,flyrock_limit,flyrock_count,flyrock_mass,"
          "risk_level,risk_confidence";
 }
@@ -388,7 +406,8 @@ std::string debrisCsvRow(const DebrisFigures& d) {
                    d.centroidShift, d.left95, d.right95})
     cell(num(v));
   cell(d.atRest() ? "yes" : "no");
-  for (double v : {d.kineticRatio, d.leftPieceMass, d.rightPieceMass, d.footprintMin, d.footprintMax})
+  for (double v : {d.kineticRatio, d.leftPieceMass, d.rightPieceMass, d.heaviestBeyond95,
+                   d.footprintMin, d.footprintMax})
     cell(num(v));
   cell(fallVerdictName(d.verdict));
   for (double v : {d.centroidMoveH(), d.tilt, d.buildingHeight, d.flyrockLimit}) cell(num(v));
@@ -518,8 +537,8 @@ std::string debrisLogLines(const DebrisFigures& d) {
   std::snprintf(buf, sizeof buf,
                 "  debris: the furthest points are set by pieces of %.4e t (left) and %.4e t "
                 "(right); without the outermost 5 %% of the mass on each side %.4e m on the left, "
-                "%.4e m on the right\n",
-                d.leftPieceMass, d.rightPieceMass, d.left95, d.right95);
+                "%.4e m on the right; the heaviest piece beyond those %.4e t\n",
+                d.leftPieceMass, d.rightPieceMass, d.left95, d.right95, d.heaviestBeyond95);
   out += buf;
   std::snprintf(buf, sizeof buf, "  debris: mass centroid x = %.4e m, moved by %.4e m\n",
                 d.centroid, d.centroidShift);

@@ -52,6 +52,10 @@ struct DebrisFigures {
   // holds the node at xmin, xmax.
   double centroid = 0, centroidShift = 0, left95 = 0, right95 = 0;
   double leftPieceMass = 0, rightPieceMass = 0;
+  // The heaviest piece with a node beyond the 95 % reaches on either side
+  // (0: none): what the robust figures leave out, thrown or flying, and
+  // whether it is a fragment or a storey.
+  double heaviestBeyond95 = 0;
   // The x-intervals [x0, x1] that debris occupies now (the union of the
   // members' chords and the nodal masses' points), left to right.
   std::vector<std::pair<double, double>> cover;
