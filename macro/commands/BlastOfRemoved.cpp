@@ -62,8 +62,8 @@ void warnBlastsOfRemovedElements(const Problem& problem, const Model& model,
   for (const Blast& b : model.blasts()) {
     if (b.origin.file.empty()) continue;
     for (const Removal& r : removals) {
-      const auto both = std::find_first_of(b.elements.begin(), b.elements.end(),
-                                           r.elements.begin(), r.elements.end());
+      const auto both = std::find_first_of(b.elements.begin(), b.elements.end(), r.elements.begin(),
+                                           r.elements.end());
       if (both == b.elements.end()) continue;
       warnings->add(b.origin,
                     "BLASt of element " + std::to_string(*both + 1) + ", which the REMOve of " +

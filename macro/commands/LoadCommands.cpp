@@ -44,11 +44,12 @@ void applyElementLoads(MeshContext& ctx, const MeshCommand& cmd) {
                "give GRAVity,,gx,gy in the mesh input");
       // A weight pulls along gravity: one against it would be mass |q|/|g| pushed up.
       if (asMass && q.dot(c.model.gravity()) < 0)
-        failAt(r, q.y() * c.model.gravity().y() < 0 ? 4 : 3,
-               "QLOAd with MASS is a weight, and this load points against gravity: its mass |q|/|g| "
-               "would be pushed up",
-               "a floor's weight has the sign of GRAVity's (qy < 0 under GRAVity,,0,-9.81); an "
-               "upward load is given without MASS");
+        failAt(
+            r, q.y() * c.model.gravity().y() < 0 ? 4 : 3,
+            "QLOAd with MASS is a weight, and this load points against gravity: its mass |q|/|g| "
+            "would be pushed up",
+            "a floor's weight has the sign of GRAVity's (qy < 0 under GRAVity,,0,-9.81); an "
+            "upward load is given without MASS");
       // The first element beyond the mesh, before the range is generated.
       if (const long long first = firstBeyond(n1, n2, inc, c.model.numElements()))
         failAt(r, first == n1 ? 0 : 1,

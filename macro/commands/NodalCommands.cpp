@@ -5,8 +5,8 @@
 #include "macro/commands/MeshCommands.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <ostream>
 #include <set>

@@ -473,8 +473,7 @@ std::vector<MeshItem> DeckParser::parseMeshInput() {
   return items;
 }
 
-bool DeckParser::parseMeshItems(std::vector<MeshItem>& items, Record* end,
-                                const Record* head) {
+bool DeckParser::parseMeshItems(std::vector<MeshItem>& items, Record* end, const Record* head) {
   const Record* lastBlank = nullptr;
   const Record* lastCommand = nullptr;
   while (true) {

@@ -318,9 +318,9 @@ void ProblemRun::refuseScatteredIntoStatics(const RemovalEvent& ev) const {
   if (ev.blast < 0 || k >= nominalBlastTimes_.size() || analysis_->integrator().dynamic()) return;
   const std::string record =
       ev.origin.file.empty() ? "blast " + std::to_string(k + 1) : "BLASt record " + ev.origin.str();
-  failAtCommit("the " + record + ", scattered by DETOnators from t = " +
-               fmt("%.6e", nominalBlastTimes_[k]) + " to t = " +
-               fmt("%.6e", model_.blasts()[k].time) +
+  failAtCommit("the " + record +
+               ", scattered by DETOnators from t = " + fmt("%.6e", nominalBlastTimes_[k]) +
+               " to t = " + fmt("%.6e", model_.blasts()[k].time) +
                ", falls in a static step (before DYNAmic): this sample is not the deck's plan; a "
                "smaller scatter (DETOnators,,sd,cov) or a later blast keeps it in the dynamic "
                "phase");

@@ -187,6 +187,10 @@ class ProblemRun {
   // its columns held statically, whose Newton loop then fails without a word
   // of the blast), so the run fails there, naming the blast and both times.
   void refuseScatteredIntoStatics(const RemovalEvent& ev) const;
+  // After TIME: a prescribed value that the proportional load took beyond the
+  // coordinates' limit (the residual would be no number) fails at the TIME
+  // command, naming the node, the DISPlacement value, the factor and its table.
+  void checkPrescribedReach(const Macro& m) const;
   std::string historyText() const;
   // What to try after a failed Newton loop (the reason, whether it used the
   // line search, its iteration count when it ran out of iterations).

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "macro/deck/Limits.h"
 #include "macro/run/ProblemRun.h"
 
 namespace c2d {
@@ -61,9 +62,31 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::op
     st = cutStep(dt);
   }
   if (!st) fail(m, st.why);
+  checkPrescribedReach(m);
   log_ << "  TIME   t = " << fmt("%.6e", s.t) << "  prop = " << fmt("%.6e", analysis_->loadFactor())
        << "\n";
   return Flow::Next;
+}
+
+void ProblemRun::checkPrescribedReach(const Macro& m) const {
+  const State& s = analysis_->state();
+  const DofMap& dofs = analysis_->assembler().dofs();
+  for (int n = 0; n < model_.numNodes(); ++n) {
+    if (!dofs.used(n)) continue;
+    for (int d = 0; d < kNodeDofs; ++d) {
+      const double given = model_.disp(n)[d];
+      const double u = s.u[static_cast<Eigen::Index>(n) * kNodeDofs + d];
+      if (!dofs.restrained(n, d) || given == 0 || std::abs(u) <= DeckLimits::kMaxCoordinate)
+        continue;
+      const int table = std::max(1, model_.loadTable(n)[d]);
+      fail(m, "the prescribed " + std::string(d < 2 ? "displacement" : "rotation") + " of node " +
+                  std::to_string(n + 1) + ", dof " + std::to_string(d + 1) + " reaches " +
+                  fmt("%.6e", u) + " (DISPlacement " + fmt("%.6e", given) + " times the factor " +
+                  fmt("%.6e", analysis_->tableFactor(table, s.t)) + " of proportional load table " +
+                  std::to_string(table) + "): beyond the largest this program takes (" +
+                  fmt("%g", DeckLimits::kMaxCoordinate) + ", the limit of the coordinates)");
+    }
+  }
 }
 
 void ProblemRun::scalePathIncrement() {

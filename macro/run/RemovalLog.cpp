@@ -42,8 +42,8 @@ RemovalLog removalLog(const RemovalEvent& ev) {
       ev.origin.file.empty() ? std::string() : " (BLASt record " + ev.origin.str() + ")";
   if (ev.elements.empty()) {
     out.warning = true;
-    out.text = "  warning: the blast" + when + record + " removes nothing: its " + elements(ev.goneBefore) +
-               (ev.goneBefore.size() == 1 ? " was" : " were") +
+    out.text = "  warning: the blast" + when + record + " removes nothing: its " +
+               elements(ev.goneBefore) + (ev.goneBefore.size() == 1 ? " was" : " were") +
                " removed before by REMOve\n";
     return out;
   }
@@ -58,8 +58,7 @@ RemovalLog removalLog(const RemovalEvent& ev) {
   if (ev.jointsDissolved > 0)
     s += "; " + std::to_string(ev.jointsDissolved) + " joint" +
          (ev.jointsDissolved == 1 ? "" : "s") + " dissolved";
-  if (!ev.goneBefore.empty())
-    s += "; " + elements(ev.goneBefore) + " removed before" + record;
+  if (!ev.goneBefore.empty()) s += "; " + elements(ev.goneBefore) + " removed before" + record;
   s += "; energy removed " + fmt("%.6e", ev.energy) + "\n";
   return out;
 }

@@ -148,8 +148,10 @@ TEST(EnsembleDecks, ABlastScatteredIntoAStaticStepFailsItsSampleNamingIt) {
   for (int k : {0, 2}) {
     const std::string& why = data.runs[k].reason;
     EXPECT_FALSE(data.runs[k].ok);
-    EXPECT_NE(why.find("the BLASt record " + deck + ":40:3, scattered by DETOnators from t = "
-                       "6.000000e-01 to t = " + (k == 0 ? "2.854824e-01" : "4.204601e-01") +
+    EXPECT_NE(why.find("the BLASt record " + deck +
+                       ":40:3, scattered by DETOnators from t = "
+                       "6.000000e-01 to t = " +
+                       (k == 0 ? "2.854824e-01" : "4.204601e-01") +
                        ", falls in a static step (before DYNAmic)"),
               std::string::npos)
         << why;
@@ -168,8 +170,7 @@ TEST(EnsembleDecks, ASampleCountOrSeedDifferingBetweenPlansIsRefused) {
       "MATErial,1\n  FRAMe\n    RESUltant STIFfness 1 1 1\n\nBOUNdary\n  1 0 1 1 1\n\nEND\n"
       "BATCh\n  TANG,,1\nEND\nSTOP\n";
   const SolutionCommands commands;
-  const std::string samples =
-      dir.write("n.inp", "SWEEp\n  n = 2 3\n\nENSEmble,,n,1\n\n" + problem);
+  const std::string samples = dir.write("n.inp", "SWEEp\n  n = 2 3\n\nENSEmble,,n,1\n\n" + problem);
   testing::expectDeckError([&] { planDeck(samples, commands, {}); }, samples, 4, 11,
                            "plan 2 takes samples 3 and plan 1 2: the plans are compared on "
                            "paired runs");
@@ -177,8 +178,7 @@ TEST(EnsembleDecks, ASampleCountOrSeedDifferingBetweenPlansIsRefused) {
       "s.inp", "SWEEp\n  a = 1 2\n\nPARAmeter\n  s = 7 * a\n\nENSEmble,,2,s\n\n" + problem);
   testing::expectDeckError([&] { planDeck(seed, commands, {}); }, seed, 7, 13,
                            "plan 2 takes seed 14 and plan 1 7");
-  const std::string same =
-      dir.write("e.inp", "SWEEp\n  n = 2 2\n\nENSEmble,,n,1\n\n" + problem);
+  const std::string same = dir.write("e.inp", "SWEEp\n  n = 2 2\n\nENSEmble,,n,1\n\n" + problem);
   EXPECT_EQ(planDeck(same, commands, {}).runs, 4);
 }
 
