@@ -13,6 +13,7 @@
 #include "macro/studies/BatchRunner.h"
 #include "macro/DeckRunner.h"
 #include "tests/unit/DeckTestSupport.h"
+#include "tests/unit/ElementTestSupport.h"
 
 namespace c2d {
 namespace {
@@ -20,14 +21,7 @@ namespace {
 // Two elements of unit mass per length from (0,0) to (4,0), moved by (dx, 0).
 Model twoBars(double dx, State& s) {
   Model m;
-  MaterialSet mat;
-  mat.number = 1;
-  mat.elementType = "FRAMe";
-  mat.resEA = mat.resGA = 1e6;
-  mat.resEI = 1e4;
-  mat.density = 1;
-  mat.A = 1;
-  m.materials()[1] = mat;
+  m.materials()[1] = test::unitMassBarMaterial();
   for (int i = 0; i < 3; ++i) m.addNode(Vec2(2.0 * i, 0));
   for (int e = 0; e < 2; ++e)
     m.setElement(e, makeElement(m.materials().at(1), {e, e + 1}, m.coord(e), m.coord(e + 1)));

@@ -68,6 +68,19 @@ inline MaterialSet resultantMaterial(Kinematics kin, bool shear = true,
   return m;
 }
 
+// Stiff bars of unit mass per length (density 1, A = 1): EA = GA = 1e6,
+// EI = 1e4; the debris figures' test models.
+inline MaterialSet unitMassBarMaterial() {
+  MaterialSet m;
+  m.number = 1;
+  m.elementType = "FRAMe";
+  m.resEA = m.resGA = 1e6;
+  m.resEI = 1e4;
+  m.density = 1;
+  m.A = 1;
+  return m;
+}
+
 // A FINIte rod's set with the hinge laws: 10 kg/m, bilinear hardening to
 // Mu = 2.4 and softening Ks = -8 with the rupture rotation thetaR.
 inline MaterialSet hingedRodMaterial(double thetaR) {

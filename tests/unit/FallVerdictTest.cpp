@@ -7,6 +7,7 @@
 #include "core/Debris.h"
 #include "core/FallVerdict.h"
 #include "elements/ElementFactory.h"
+#include "tests/unit/ElementTestSupport.h"
 
 namespace c2d {
 namespace {
@@ -46,14 +47,7 @@ TEST(FallVerdict, ThresholdsByHand) {
 // ground y = 0, turned by `deg` about its foot (+: toward +x).
 Model column(double deg, State& s) {
   Model m;
-  MaterialSet mat;
-  mat.number = 1;
-  mat.elementType = "FRAMe";
-  mat.resEA = mat.resGA = 1e6;
-  mat.resEI = 1e4;
-  mat.density = 1;
-  mat.A = 1;
-  m.materials()[1] = mat;
+  m.materials()[1] = test::unitMassBarMaterial();
   for (int i = 0; i < 3; ++i) m.addNode(Vec2(0, 5.0 * i));
   for (int e = 0; e < 2; ++e)
     m.setElement(e, makeElement(m.materials().at(1), {e, e + 1}, m.coord(e), m.coord(e + 1)));

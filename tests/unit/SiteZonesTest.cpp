@@ -17,6 +17,7 @@
 #include "macro/studies/PlanStatistics.h"
 #include "macro/studies/Statistics.h"
 #include "macro/studies/ZoneStatistics.h"
+#include "tests/unit/ElementTestSupport.h"
 
 namespace c2d {
 namespace {
@@ -26,14 +27,7 @@ namespace {
 // to [10, 10.5]. Ground y = 0.
 Model withFragment(State& s) {
   Model m;
-  MaterialSet mat;
-  mat.number = 1;
-  mat.elementType = "FRAMe";
-  mat.resEA = mat.resGA = 1e6;
-  mat.resEI = 1e4;
-  mat.density = 1;
-  mat.A = 1;
-  m.materials()[1] = mat;
+  m.materials()[1] = test::unitMassBarMaterial();
   for (int i = 0; i < 3; ++i) m.addNode(Vec2(2.0 * i, 0));
   m.addNode(Vec2(3.5, 1));
   m.addNode(Vec2(4, 1));
