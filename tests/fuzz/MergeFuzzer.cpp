@@ -76,10 +76,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   writeFolder(text, dir);
   std::ostringstream out, err;
   const int status = c2d::mergeParts(dir, out, err);
-  // An internal error is the program's own line; a part's text quoted in a
-  // message may say anything (a cell reading "internal error" included).
+  // An internal error is a line of the program's own, starting with its
+  // prefix; a part's text quoted inside a message may say anything (a cell
+  // reading "collapse2d merge: internal error: " included), but no quoted
+  // text starts a line (the files' names and cells hold no newline).
+  const std::string log = "\n" + err.str();
   if ((status != 0 && status != 1 && status != 3) ||
-      err.str().find("collapse2d merge: internal error: ") != std::string::npos) {
+      log.find("\ncollapse2d merge: internal error: ") != std::string::npos) {
     std::fprintf(stderr, "merge: status %d\n%s", status, err.str().c_str());
     std::abort();
   }
