@@ -692,6 +692,13 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
   auto keptText = [&] {
     return kept.empty() ? std::string() : "\n  computed results kept: " + fileList(kept);
   };
+  // A failed run whose deck has values that look like another unit names them.
+  auto unitText = [&] {
+    const std::string at = warnings.unitLocations();
+    return at.empty() ? std::string()
+                      : "\n  advice: the deck's warnings name values that look like another "
+                        "unit (" + at + "): check them first";
+  };
   try {
     const Deck deck = parseDeck(path);
     // Check pass: bind everything with a scratch parameter table, log discarded.
@@ -802,7 +809,8 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
       outcome.exitCode = kExitAnalysisFailed;
       outcome.message = path + ": " + std::to_string(outcome.failedRuns) + " of " +
                         std::to_string(executed) + " runs of the study failed (see " +
-                        partStem + (ensemble ? "_ensemble.csv" : "_plans.csv") + " and the log)";
+                        partStem + (ensemble ? "_ensemble.csv" : "_plans.csv") + " and the log)" +
+                        unitText();
     } else {
       log->stream() << "\n  run complete\n";
     }
@@ -825,8 +833,8 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     outcome.message = e.what();
   } catch (const AnalysisError& e) {
     outcome.exitCode = kExitAnalysisFailed;
-    keepLog("failed", e.what());
-    outcome.message = e.what() + keptText();
+    keepLog("failed", e.what() + unitText());
+    outcome.message = e.what() + unitText() + keptText();
   } catch (const Interrupted& e) {
     outcome.exitCode = interruptExitCode(e.signal());
     outcome.interrupted = e.signal();

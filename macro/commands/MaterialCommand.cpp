@@ -12,6 +12,7 @@
 
 #include "macro/commands/MaterialRecords.h"
 #include "macro/commands/SectionRecords.h"
+#include "macro/commands/SectionUnits.h"
 #include "macro/commands/SubRecordFields.h"
 #include "macro/deck/Limits.h"
 
@@ -176,6 +177,7 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
   }
 
   finishLawRecords(h, laws, mat, elasticRec, sectionRec, resultantRec);
+  warnSectionUnits(ctx, laws, mat);
   if (!mat.resEI) {
     if (!elasticRec)
       failAt(h, 0, "material " + std::to_string(m) + " has no ELAStic record",

@@ -105,6 +105,15 @@ struct MeshContext {
   // blank when not given.
   Record groundOrigin, membersOrigin, gravityOrigin, siteOrigin;
   Warnings* warnings = nullptr;  // null: warnings are dropped
+  // The SECTion, STIRrups and SOFTening records of each material set (blank:
+  // none), for the checks against its members' lengths (macro/commands/SectionUnits).
+  struct LawOrigin {
+    Record section, stirrups, softening;
+  };
+  std::map<int, LawOrigin> lawOrigins;
+  // Checks that need the initial mesh, run by its binder before computing
+  // (set by the commands that need them; may be empty).
+  std::function<void(const MeshContext&)> meshChecks;
   // Called with the model once every node has its coordinates, before the
   // elements are built from them (an ensemble's node jitter); may be empty.
   std::function<void(Model&)> beforeElements;

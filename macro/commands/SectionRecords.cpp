@@ -104,7 +104,7 @@ void bindRebar(MeshContext& ctx, const Record& r, MaterialSet& mat, LawRecords& 
     return;
   }
   // REBAr d1 A1 [d2 A2 ...]: the numbers start at field 1 (or 2 after an empty field).
-  const std::size_t first = r.size() > 1 && r.text(1).empty() ? 2 : 1;
+  const std::size_t first = subrecord::firstNumber(r);
   if (r.size() <= first || (r.size() - first) % 2 != 0)
     failAt(r, r.size(), "REBAr takes pairs of depth and area", "write REBAr d1 A1 [d2 A2 ...]");
   if (!mat.section) mat.section = RcSectionData{};
@@ -121,7 +121,7 @@ void bindStirrups(MeshContext& ctx, const Record& r, MaterialSet& mat, LawRecord
   // STIRrups Asw s [fyw]: the numbers start at field 1 (or 2 after an empty field).
   const std::string syntax = "STIRrups Asw s [fyw]";
   if (seen.stirrups) failAt(r, 0, "STIRrups given twice in one MATErial set");
-  const std::size_t first = r.size() > 1 && r.text(1).empty() ? 2 : 1;
+  const std::size_t first = subrecord::firstNumber(r);
   if (r.size() < first + 2) failAt(r, r.size(), "STIRrups needs Asw and s", "write " + syntax);
   if (r.size() > first + 3) failAt(r, first + 3, "too many values: the record is '" + syntax + "'");
   const double area = ctx.number(r, first), spacing = ctx.number(r, first + 1);
@@ -229,7 +229,7 @@ void finishLawRecords(const Record& head, const LawRecords& seen, MaterialSet& m
     if (auto& st = mat.section->stirrups; st && st->fy == 0) st->fy = mat.section->fy;
     std::size_t k = 0;  // the layers in the order of their records
     for (const Record* rb : seen.rebar) {
-      const std::size_t first = rb->size() > 1 && rb->text(1).empty() ? 2 : 1;
+      const std::size_t first = subrecord::firstNumber(*rb);
       for (std::size_t i = first; i + 1 < rb->size(); i += 2, ++k)
         if (const RebarLayer& l = mat.section->bars[k]; !(l.depth < mat.section->h))
           failAt(*rb, i,
@@ -350,7 +350,8 @@ void registerLawRecords(CommandRegistry& r) {
       "(it turns on with its friction; the log says so once); next to a section that carries "
       "no moment the moment grows as V x, "
       "so Lb = Mu/Vu with Vu the shear capacity of the section (e.g. Vc + Vs by ACI 318); 0 "
-      "(default): the mesh's node spacing sets the shortest piece. With FINIte kinematics Lb "
+      "(default): the mesh's node spacing sets the shortest piece; an Lb longer than the set's "
+      "longest member (its elements in line) is a located warning (mm?). With FINIte kinematics Lb "
       "is also a localization zone: no midpoint hinge opens in the same member (elements in "
       "line, no joint between) within Lb of an open one (element midpoints, reference "
       "distance), of a joint or of a free or pinned end (from the node; each side of a joint); "
@@ -435,7 +436,13 @@ void registerLawRecords(CommandRegistry& r) {
       "1 m = 1000 mm), and a fc outside 1e3-2.5e5 (1-250 MPa) is refused as surely in another "
       "unit. A member whose shear reaches Vu(N) at a state of the run fails in shear there, "
       "located like a hinge event, and separates from one of its ends (one log line: element, "
-      "time, V, Vu, N).",
+      "time, V, Vu, N). Values accepted but surely in another unit are located warnings naming "
+      "the likely unit and the value in kN/m^2 or m (fc = 30 ...: MPa? 30 MPa is 30e3 "
+      "kN/m^2), and a run that then fails names them in its advice: fc outside 5e3-1.5e5, fy "
+      "and a given fu outside 1e5-2.5e6 (100-2500 MPa), a given Es outside 1e8-3e8, a size "
+      "above 30 m, a REBAr layer above 0.05 m^2 (a RING's bar above 5e-3), and a depth h "
+      "longer than the set's longest member (its elements in line), checked once the mesh "
+      "is built.",
       {text("RECTangular/TEE/CIRCular/ANNUlar", "the shape"),
        expr("b", "width [m] (TEE: bw h beff hf; CIRCular: D; ANNUlar: D t)"),
        expr("h", "depth [m]"), expr("fc", "concrete compressive strength [kN/m^2]"),
@@ -485,7 +492,13 @@ void registerLawRecords(CommandRegistry& r) {
       "rho_sx fyw/fcc (A.12), at least eps_cu2 = 0.0035: the ultimate curvature of the "
       "hinge's plastic rotation (SECTion), with the concrete at fcc and eps_c2,c = eps_c2 "
       "(fcc/fc)^2 (EC2 3.1.9). Echoed: VRd,c, VRd,s, cot theta and Vu of either sign at "
-      "N = 0, Vu(N) in the interaction table, Lb, b0, h0, alpha, rho_sx, fcc, eps_cu,c.",
+      "N = 0, Vu(N) in the interaction table, Lb, b0, h0, alpha, rho_sx, fcc, eps_cu,c. "
+      "Located warnings, as SECTion's unit checks: Asw/(b s) above 0.1 (Asw in cm^2 or "
+      "mm^2?), a given fyw outside 1e5-2.5e6, s above the depth h (a 45-degree crack may "
+      "cross no link; EC2 9.2.2(6) allows 0.75 d in beams, 9.5.3 the smaller of 20 bar "
+      "diameters, the smaller side and 0.4 m in columns: between those and h a detailing "
+      "choice, not warned) or above the set's longest member. Lb longer than the member is "
+      "not warned (a shear-critical member).",
       {expr("Asw", "area of the stirrups' legs at one section [m^2]"),
        expr("s", "spacing along the member [m]"),
        expr("fyw", "stirrups' yield stress [kN/m^2]", "fy")}));

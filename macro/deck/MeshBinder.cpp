@@ -249,6 +249,8 @@ void MeshBinder::checkInitialMesh() {
     }
   }
 
+  if (ctx_.meshChecks) ctx_.meshChecks(ctx_);
+
   // Nodes with coordinates that no element uses: one warning per record that gave them.
   std::vector<char> used(static_cast<std::size_t>(model.numNodes()), 0);
   for (const auto& el : model.elements())

@@ -15,13 +15,17 @@ namespace c2d {
 struct DeckWarning {
   SourceLoc loc;
   std::string message;
-  std::string text;  // the offending record, as for a DeckError
+  std::string text;   // the offending record, as for a DeckError
+  bool unit = false;  // a value that looks like another unit (a failed run names it)
   std::string str() const;
 };
 
 class Warnings {
  public:
-  void add(const SourceLoc& loc, const std::string& message, const std::string& text = {});
+  void add(const SourceLoc& loc, const std::string& message, const std::string& text = {},
+           bool unit = false);
+  // The locations of the unit warnings, "file:line:col, ..." (empty: none).
+  std::string unitLocations() const;
   const std::vector<DeckWarning>& list() const { return list_; }
   bool empty() const { return list_.empty(); }
 
