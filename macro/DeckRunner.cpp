@@ -1,6 +1,7 @@
 #include "macro/DeckRunner.h"
 
 #include <algorithm>
+#include <ctime>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -16,6 +17,7 @@
 #include "macro/deck/ParameterNote.h"
 #include "macro/deck/Suggest.h"
 #include "macro/studies/PlanTable.h"
+#include "macro/studies/RunTiming.h"
 #include "macro/run/StaleOutputs.h"
 #include "macro/studies/Sweep.h"
 #include "macro/studies/Shard.h"
@@ -527,6 +529,7 @@ class Walker {
     // goes on; elsewhere a failure ends the deck.
     const bool inStudy = (!sweep_.empty() && planTable_) || (sample_ && ensembleTable_);
     PlanRow row{runs_, ro.stem, sweep_, true, {}, {}, plan.planName};
+    const std::clock_t cpuStart = std::clock();  // the process's CPU time: runs go one by one
     try {
       run.bind(true);
       try {
@@ -549,11 +552,14 @@ class Walker {
         *console_ << "  " << ro.stem << ": FAILED: " << row.reason << "\n" << std::flush;
     }
     row.debris = run.debris();
-    if (planTable_ && !sample_) planTable_->add(row);
-    if (ensembleTable_ && sample_)
-      ensembleTable_->add({runs_, plan.plan, plan.sample, ro.stem, sweep_, plan.drawn, row.ok, row.reason,
-                           row.debris, plan.planName});
     const RunSummary s = run.summary();
+    if (planTable_ && !sample_) planTable_->add(row);
+    if (ensembleTable_ && sample_) {
+      const double cpu = static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
+      ensembleTable_->add({runs_, plan.plan, plan.sample, ro.stem, sweep_, plan.drawn, row.ok,
+                           row.reason, row.debris, plan.planName,
+                           RunNumerics{s.steps, s.iterations, s.cuts, s.energyError}, cpu});
+    }
     total_.steps += s.steps;
     total_.iterations += s.iterations;
     total_.factorizations += s.factorizations;
@@ -774,8 +780,10 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
         const std::string text = tableText = table->csv();
         const std::filesystem::path file = dir / (partStem + "_ensemble.csv");
         AtomicFile::write(file, text);
+        AtomicFile::write(dir / (partStem + "_timing.csv"), timingCsv(*table));
         log->stream() << "\n  ensemble: " << file.filename().string() << " (" << table->rows().size()
-                      << " runs, " << table->failed() << " failed)\n";
+                      << " runs, " << table->failed() << " failed; CPU times in " << partStem
+                      << "_timing.csv)\n";
         // A shard's table is a part: `collapse2d merge` makes the study of the whole.
         if (options.shards <= 1) {
           const EnsembleStudyReport report =

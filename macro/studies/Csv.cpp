@@ -69,4 +69,13 @@ std::optional<long long> integerCell(const std::string& cell) {
   return v;
 }
 
+bool nextTableLine(std::istream& in, std::string& line, int& lineNo) {
+  while (std::getline(in, line)) {
+    ++lineNo;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (!line.empty()) return true;
+  }
+  return false;
+}
+
 }  // namespace c2d

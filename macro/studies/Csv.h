@@ -1,6 +1,7 @@
 #pragma once
 // The CSV text of the study tables (plans, ensemble, batch): cells separated
 // by commas, a cell quoted when it holds a comma, a quote or a line break.
+#include <istream>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -18,6 +19,9 @@ inline void appendCell(std::string& row, std::string_view cell) {
 // The cells of one line (quoted cells may hold commas and doubled quotes; a
 // carriage return is dropped).
 std::vector<std::string> splitCsv(const std::string& line);
+// The next line of a table that is not empty, its carriage return dropped;
+// lineNo counts every line read. False at the end.
+bool nextTableLine(std::istream& in, std::string& line, int& lineNo);
 // The finite number a whole cell holds (strtod's forms; a subnormal such as
 // 1e-310 too, as the tables write it), or nothing: empty, text, a number
 // followed by other characters, inf, nan, or beyond the range of a double.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <charconv>
+#include <climits>
+#include <cstdio>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -18,6 +20,22 @@ std::string coverText(const std::vector<std::pair<double, double>>& cover) {
   char buf[64];
   for (const auto& [a, b] : cover) {
     std::snprintf(buf, sizeof buf, "%s%.6g:%.6g", s.empty() ? "" : ";", a, b);
+    s += buf;
+  }
+  return s;
+}
+
+// The run's numerics, between `reason` and the debris columns.
+constexpr const char* kNumericsHeader = "steps,iterations,cuts,energy_error";
+constexpr std::size_t kNumericsColumns = 4;
+
+// A figure that is not finite (a run that failed on a NaN) is an empty cell.
+std::string numericsCells(const RunNumerics& n) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%d,%d,%d,", n.steps, n.iterations, n.cuts);
+  std::string s = buf;
+  if (std::isfinite(n.energyError)) {
+    std::snprintf(buf, sizeof buf, "%.3e", n.energyError);
     s += buf;
   }
   return s;
@@ -41,6 +59,8 @@ std::string EnsembleTable::header() const {
   for (const std::string& n : swept_) appendCell(h, csvCell(n));
   for (const std::string& n : drawn_) appendCell(h, csvCell(n));
   h += ",status,reason,";
+  h += kNumericsHeader;
+  h += ',';
   h += debrisCsvHeader(zones_);
   return h + ",cover";
 }
@@ -69,6 +89,8 @@ std::string EnsembleTable::csv() const {
     out += r.ok ? ",ok," : ",failed,";
     out += csvCell(r.reason.substr(0, r.reason.find('\n')));
     out += ',';
+    out += numericsCells(r.numerics);
+    out += ',';
     if (r.debris) {
       out += debrisCsvRow(*r.debris, zones_);
       appendCell(out, coverText(r.debris->cover));
@@ -80,6 +102,26 @@ std::string EnsembleTable::csv() const {
   }
   return out;
 }
+
+namespace {
+
+// The run's numerics from cells c[first..first+3]; bad(column, why) throws.
+template <typename Bad>
+RunNumerics readNumerics(const std::vector<std::string>& c, std::size_t first, const Bad& bad) {
+  RunNumerics n;
+  int* counts[] = {&n.steps, &n.iterations, &n.cuts};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const auto v = countCell(c[first + k], 0, INT_MAX);
+    if (!v) bad(first + k, "'" + c[first + k] + "' is not a count");
+    *counts[k] = *v;
+  }
+  const auto e = c[first + 3].empty() ? std::optional<double>(NAN) : numberCell(c[first + 3]);
+  if (!e) bad(first + 3, "'" + c[first + 3] + "' is not a number");
+  n.energyError = *e;
+  return n;
+}
+
+}  // namespace
 
 double EnsembleRun::figure(const std::string& name) const {
   const auto it = figures.find(name);
@@ -95,12 +137,18 @@ EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount) 
   data.header = line;
   const std::vector<std::string> head = splitCsv(line);
   const auto status = std::find(head.begin(), head.end(), "status");
+  const std::vector<std::string> numericsNames = splitCsv(kNumericsHeader);
   if (head.size() < 6 || head[0] != "run" || head[1] != "plan" || head[2] != "sample" ||
       head[3] != "stem" || status == head.end() || status + 1 == head.end() ||
       *(status + 1) != "reason" || head.back() != "cover")
     throw std::runtime_error(
         "its header is not an ensemble table's (run,plan,sample,stem,...,status,reason,...,cover)");
-  const auto firstDebris = static_cast<std::size_t>(status - head.begin()) + 2;
+  const auto firstNumerics = static_cast<std::size_t>(status - head.begin()) + 2;
+  if (head.size() < firstNumerics + kNumericsColumns ||
+      !std::equal(numericsNames.begin(), numericsNames.end(),
+                  head.begin() + static_cast<long>(firstNumerics)))
+    throw std::runtime_error(std::string("its columns after reason are not ") + kNumericsHeader);
+  const std::size_t firstDebris = firstNumerics + kNumericsColumns;
   // The plans' names, when the sweep names them, come after the stem.
   data.named = head[4] == "name";
   const std::size_t first = data.named ? 5 : 4;
@@ -135,10 +183,7 @@ EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount) 
   if (text.back() != '\n')
     throw std::runtime_error("it ends in the middle of a row (no line end after its last line)");
   int lineNo = 1;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty()) continue;
+  while (nextTableLine(in, line, lineNo)) {
     const std::vector<std::string> c = splitCsv(line);
     auto bad = [&](std::size_t col, const std::string& why) {
       throw std::runtime_error("line " + std::to_string(lineNo) +
@@ -165,11 +210,12 @@ EnsembleData readEnsembleTable(const std::string& text, std::size_t sweptCount) 
       if (!v) bad(i, "'" + c[i] + "' is not a number");
       (i < first + sweptCount ? r.swept : r.drawn).push_back(*v);
     }
-    const std::string& st = c[firstDebris - 2];
+    const std::string& st = c[firstNumerics - 2];
     if (st != "ok" && st != "failed")
-      bad(firstDebris - 2, "the status is '" + st + "', not ok or failed");
+      bad(firstNumerics - 2, "the status is '" + st + "', not ok or failed");
     r.ok = st == "ok";
-    r.reason = c[firstDebris - 1];
+    r.reason = c[firstNumerics - 1];
+    r.numerics = readNumerics(c, firstNumerics, bad);
     r.debris = !c[firstDebris].empty();
     if (r.debris) {
       const std::size_t firstZone = fixedCount;

@@ -1,6 +1,7 @@
 #pragma once
 // [ext] The table of an ensemble's runs, <stem>_ensemble.csv, one row per run:
 //   run,plan,sample,stem,[name,]<swept names...>,<drawn names...>,status,reason,
+//   steps,iterations,cuts,energy_error,
 //   <debris columns (core/Debris.h)>,<zone columns, per protected zone>,cover
 // (name: the plan's name, when the SWEEp names its plans: Sweep.h isPlanNames)
 // `run` counts every run of the deck from 1 (shards join on it), `plan` the
@@ -8,7 +9,11 @@
 // the named parameters, dt_factor (JITTer) and blast_1, blast_2, ... (the BLASt
 // records' times, DETOnators), each written to round-trip exactly. `cover` is
 // where the debris lies: the x-intervals "x0:x1" it occupies, joined by ';'
-// (the ensemble picture's map of where debris lies).
+// (the ensemble picture's map of where debris lies). steps, iterations, cuts
+// and energy_error are the run's (macro/run/ProblemRun.h RunSummary, up to
+// its failure for a failed run): the same in every process, so a sharded
+// study merges to the same bytes. Its CPU time, which differs from process
+// to process, is in <stem>_timing.csv (macro/studies/RunTiming.h).
 //
 // The statistics of the ensemble (PlanStatistics.h, Sensitivity.h,
 // EnsemblePicture.h) are computed from the table as written and read back
@@ -27,6 +32,12 @@ namespace c2d {
 
 using DrawnValues = std::vector<std::pair<std::string, double>>;
 
+// A run's numerical work and how well its energy account closed.
+struct RunNumerics {
+  int steps = 0, iterations = 0, cuts = 0;
+  double energyError = 0;
+};
+
 struct EnsembleRow {
   int run = 0, plan = 0, sample = 0;
   std::string stem;
@@ -36,6 +47,8 @@ struct EnsembleRow {
   std::string reason;
   std::optional<DebrisFigures> debris;
   std::string name;  // the plan's name (SWEEp's PLAN record), if any
+  RunNumerics numerics;
+  double cpuSeconds = 0;  // not in the table: <stem>_timing.csv
 };
 
 class EnsembleTable {
@@ -72,6 +85,7 @@ struct EnsembleRun {
   std::vector<double> swept, drawn;  // in the header's order
   bool ok = false;
   std::string reason;
+  RunNumerics numerics;
   bool debris = false;                    // debris figures present
   std::map<std::string, double> figures;  // the numeric debris columns by name
   std::string site;                       // "inside", "outside", "none"

@@ -16,6 +16,7 @@
 #include "macro/studies/Shard.h"
 #include "macro/studies/EnsembleStudy.h"
 #include "macro/studies/EnsembleTable.h"
+#include "macro/studies/RunTiming.h"
 
 namespace c2d {
 
@@ -99,10 +100,7 @@ std::vector<std::pair<int, std::string>> planRows(const std::string& text, std::
     throw Refused("its header is not a plans table's (run,stem,...,status,...)");
   std::vector<std::pair<int, std::string>> rows;
   int lineNo = 1;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty()) continue;
+  while (nextTableLine(in, line, lineNo)) {
     const std::vector<std::string> c = splitCsv(line);
     const std::string at = "line " + std::to_string(lineNo) + ": ";
     if (c.size() != head.size())
@@ -152,6 +150,8 @@ struct Joined {
   std::string header;
   std::vector<JoinedRow> rows;
   CurveOverlay overlay;
+  std::vector<std::pair<int, std::string>> timing;  // (run, line) of the parts' timing tables
+  int timingParts = 0;
 };
 
 ShardManifest readManifest(const fs::path& file, int i, int n, const Joined& joined) {
@@ -209,6 +209,28 @@ std::vector<int> readTable(const std::string& text, int i, const ShardManifest& 
   return runs;
 }
 
+// A part's timing table (RunTiming.h): the runs of its ensemble table, added to joined.
+void readTimingPart(const fs::path& timing, const std::vector<int>& runs, Joined& joined,
+                    fs::path& file) {
+  file = timing;
+  std::vector<std::pair<int, std::string>> rows;
+  try {
+    rows = readTimingRows(readPart(file));
+  } catch (const Refused&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const IoError*>(&e)) throw;
+    throw Refused(e.what());
+  }
+  std::vector<int> held;
+  for (const auto& [run, line] : rows) held.push_back(run);
+  if (held != runs)
+    throw Refused("it holds runs " + runList(held) + ", where its ensemble table holds runs " +
+                  runList(runs));
+  joined.timing.insert(joined.timing.end(), rows.begin(), rows.end());
+  ++joined.timingParts;
+}
+
 // Part i of n of the study: its manifest, table and curves, checked and added
 // to joined. Throws Refused naming the file (file is set to it).
 void readStudyPart(const fs::path& dir, const std::string& stem, int i, int n,
@@ -233,6 +255,8 @@ void readStudyPart(const fs::path& dir, const std::string& stem, int i, int n,
                   std::to_string(n) + " of this deck (" + std::to_string(m.runs) +
                   " runs) holds runs " + runList(expected));
   checkFingerprint(text, m.tableHash);
+  if (kinds != files.tables.end() && m.table == "ensemble" && kinds->second.count("timing"))
+    readTimingPart(kinds->second.at("timing"), runs, joined, file);
   if (m.curves == 0) return;
   file = dir / (stem + tag + "_curves.csv");
   if (!fs::exists(fs::symlink_status(file)))
@@ -267,6 +291,24 @@ void checkEnsembleOrder(const std::vector<JoinedRow>& rows, const fs::path& dir,
   }
 }
 
+// The parts' CPU times in run order as <stem>_timing.csv, when every part has them.
+void writeJoinedTiming(const fs::path& dir, const std::string& stem, int n, Joined& joined,
+                       std::ostream& out) {
+  if (joined.timingParts == 0) return;
+  if (joined.timingParts < n) {
+    out << "  " << stem << "_timing.csv not written: " << joined.timingParts << " of " << n
+        << " parts have their CPU times\n";
+    return;
+  }
+  std::stable_sort(joined.timing.begin(), joined.timing.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::string text = std::string(kTimingHeader) + "\n";
+  for (const auto& [run, line] : joined.timing) text += line + "\n";
+  const fs::path file = dir / (stem + "_timing.csv");
+  AtomicFile::write(file, text);
+  out << "  " << file.filename().string() << "\n";
+}
+
 // Writes the joined table and what follows from it; returns the log's text.
 std::string writeJoined(const fs::path& dir, const std::string& stem, int n, Joined& joined,
                         std::ostream& out) {
@@ -291,6 +333,7 @@ std::string writeJoined(const fs::path& dir, const std::string& stem, int n, Joi
         << " parts\n"
         << report.summary;
     for (const auto& f : report.files) out << "  " << f.filename().string() << "\n";
+    writeJoinedTiming(dir, stem, n, joined, out);
     logText << "  ensemble: " << file.filename().string() << " (" << joined.rows.size()
             << " runs)\n\n"
             << report.text;
@@ -418,7 +461,7 @@ bool partCounts(const std::string& i, const std::string& n, const fs::path& file
 
 Found findParts(const fs::path& dir) {
   Found found;
-  const std::regex part(R"((.+)_part([0-9]+)of([0-9]+)_(manifest|plans|ensemble|curves)\.csv)");
+  const std::regex part(R"((.+)_part([0-9]+)of([0-9]+)_(manifest|plans|ensemble|curves|timing)\.csv)");
   const std::regex batch(R"(batch_part([0-9]+)of([0-9]+)\.csv)");
   for (const auto& entry : fs::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();

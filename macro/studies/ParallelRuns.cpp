@@ -117,7 +117,7 @@ int runDeckInParallel(const std::string& deck, const BatchOptions& options,
     for (int i = 1; i <= n; ++i) {
       const std::string part = stem + "_part" + std::to_string(i) + "of" + std::to_string(n);
       for (const char* suffix :
-           {".out", "_manifest.csv", "_plans.csv", "_ensemble.csv", "_curves.csv"})
+           {".out", "_manifest.csv", "_plans.csv", "_ensemble.csv", "_curves.csv", "_timing.csv"})
         fs::remove(dir / (part + suffix));
     }
   } catch (const IoError& e) {

@@ -4,6 +4,14 @@
 // processes and merged. Counter: runs per minute of wall time. The full
 // ensemble (felling_ensemble.inp, 3 x 20) is timed from the command line
 // (docs/history.md, "Ensembles").
+// Counters of the outputs (tests/unit/StudyBytes.h): the bytes of a plan's
+// first sample (all its outputs: ParaView frames, pictures, the full log),
+// of another sample (its time history, debris row, log section, table rows)
+// and of a study of 3 plans x 200 samples. Measured (2026-12, one process):
+// first 28.8 MB (26.7 MB of them 272 ParaView frames, 1.9 MB log), other
+// 57 kB (tplot 48-54 kB), so 600 runs: 3 x 28.8 + 597 x 0.057 = 120 MB, of
+// which the 597 samples after the first 34 MB; a study of this deck below
+// 100 MB keeps to 2 plans, or fewer ParaView frames in its deck.
 // Run: build/tests/benchmarks --benchmark_filter=Ensemble
 #include <benchmark/benchmark.h>
 
@@ -13,6 +21,7 @@
 
 #include "macro/studies/ParallelRuns.h"
 #include "tests/bench/DeckBench.h"
+#include "tests/unit/StudyBytes.h"
 
 namespace {
 
@@ -39,6 +48,10 @@ void BM_FellingEnsembleTwoProcesses(benchmark::State& st) {
     }
     runs += 6;
   }
+  const c2d::testing::StudyBytes bytes = c2d::testing::studyBytes(dir, "felling_ensemble_short");
+  st.counters["first_sample_MB"] = bytes.first * 1e-6;
+  st.counters["other_sample_kB"] = bytes.other * 1e-3;
+  st.counters["MB_of_600_runs"] = bytes.study(3, 200) * 1e-6;
   st.counters["runs"] = runs;
   st.counters["runs_per_minute"] = seconds > 0 ? 60 * runs / seconds : 0;
 }

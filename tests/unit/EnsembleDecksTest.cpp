@@ -305,6 +305,14 @@ TEST(EnsembleDecks, PlansSeeTheSameDrawsSampleBySample) {
   EXPECT_NE(log.find(": significant"), std::string::npos);
 }
 
+// The run,plan,sample cells of a timing table, one line per run.
+std::string timingKeys(const fs::path& csv) {
+  std::istringstream in(slurp(csv));
+  std::string line, keys;
+  while (std::getline(in, line)) keys += line.substr(0, line.rfind(',')) + "\n";
+  return keys;
+}
+
 // The files of a study one process writes.
 const std::vector<std::string> kStudyFiles = {
     "sliding_plans_ensemble.csv", "sliding_plans_plans.csv", "sliding_plans_sensitivity.csv",
@@ -325,6 +333,16 @@ TEST(EnsembleDecks, TwoShardsMergedEqualTheWholeRun) {
     ASSERT_TRUE(fs::exists(dir.path() / "parts" / f)) << f;
     EXPECT_EQ(slurp(dir.path() / "parts" / f), slurp(dir.path() / "whole" / f)) << f;
   }
+  // The runs' numerics are in the table (the same bytes); their CPU times,
+  // which differ, beside it, in the same runs' order.
+  const EnsembleData whole = table(dir.path() / "whole" / "sliding_plans_ensemble.csv", 1);
+  ASSERT_EQ(whole.runs.size(), 12u);
+  for (const EnsembleRun& r : whole.runs) {
+    EXPECT_GT(r.numerics.steps, 0) << r.run;
+    EXPECT_GE(r.numerics.iterations, r.numerics.steps) << r.run;
+  }
+  EXPECT_EQ(timingKeys(dir.path() / "parts" / "sliding_plans_timing.csv"),
+            timingKeys(dir.path() / "whole" / "sliding_plans_timing.csv"));
   EXPECT_NE(out.str().find("best plan: 1 (a = 0.3)"), std::string::npos) << out.str();
 }
 
@@ -343,6 +361,9 @@ TEST(EnsembleDecks, RunInTwoProcessesEqualsTheWholeRun) {
   // The parts are merged and gone; the log holds every run in order.
   EXPECT_FALSE(fs::exists(dir.path() / "j2" / "sliding_plans_part1of2.out"));
   EXPECT_FALSE(fs::exists(dir.path() / "j2" / "sliding_plans_part2of2_ensemble.csv"));
+  EXPECT_FALSE(fs::exists(dir.path() / "j2" / "sliding_plans_part2of2_timing.csv"));
+  EXPECT_EQ(timingKeys(dir.path() / "j2" / "sliding_plans_timing.csv"),
+            timingKeys(dir.path() / "whole" / "sliding_plans_timing.csv"));
   const std::string log = slurp(dir.path() / "j2" / "sliding_plans.out");
   std::size_t at = 0;
   for (int k = 1; k <= 12; ++k) {

@@ -209,6 +209,57 @@ TEST(Merge, RefusesABadEnsemblePart) {
       << err2.str();
 }
 
+// The parts' CPU times join by run into <stem>_timing.csv, beside the ensemble
+// table; a timing part whose runs are not its table's is refused by name, and
+// without every part's times none are joined (and merge says so).
+TEST(Merge, JoinsThePartsCpuTimesByRun) {
+  testing::DeckTempDir dir;
+  runParts(std::string(C2D_SOURCE_DIR) + "/decks/ensemble/sliding_plans.inp", dir.path());
+  const fs::path f = dir.path() / "sliding_plans_part2of2_timing.csv";
+  const std::string good = slurp(f);
+  {
+    std::ostringstream out, err;
+    ASSERT_EQ(mergeParts(dir.path(), out, err), 0) << err.str();
+    std::istringstream in(slurp(dir.path() / "sliding_plans_timing.csv"));
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "run,plan,sample,cpu_s");
+    for (int run = 1; run <= 12; ++run) {
+      ASSERT_TRUE(std::getline(in, line)) << run;
+      const int plan = (run - 1) / 6 + 1, sample = (run - 1) % 6 + 1;
+      EXPECT_EQ(line.rfind(std::to_string(run) + "," + std::to_string(plan) + "," +
+                               std::to_string(sample) + ",",
+                           0),
+                0u)
+          << line;
+    }
+    EXPECT_FALSE(std::getline(in, line));
+  }
+  fs::remove(dir.path() / "sliding_plans_timing.csv");
+  fs::remove(dir.path() / "sliding_plans_ensemble.csv");
+  spit(f, good.substr(0, good.rfind('\n', good.size() - 2) + 1));  // its last run dropped
+  {
+    std::ostringstream out, err;
+    EXPECT_EQ(mergeParts(dir.path(), out, err), 1);
+    EXPECT_NE(err.str().find("sliding_plans_part2of2_timing.csv: it holds runs 2, 4, 6, 8, 10 (5 "
+                             "runs), where its ensemble table holds runs 2, 4, 6, 8, 10, 12 (6 "
+                             "runs)"),
+              std::string::npos)
+        << err.str();
+    EXPECT_FALSE(fs::exists(dir.path() / "sliding_plans_ensemble.csv"));
+  }
+  fs::remove(f);
+  {
+    std::ostringstream out, err;
+    EXPECT_EQ(mergeParts(dir.path(), out, err), 0) << err.str();
+    EXPECT_NE(out.str().find("sliding_plans_timing.csv not written: 1 of 2 parts have their CPU "
+                             "times"),
+              std::string::npos)
+        << out.str();
+    EXPECT_FALSE(fs::exists(dir.path() / "sliding_plans_timing.csv"));
+  }
+}
+
 // The names of stray files give counts out of range (a part count beyond the
 // limit, or 0): each is refused by name, nothing is read or written for it.
 TEST(Merge, RefusesPartCountsOutOfRangeInFileNames) {
@@ -257,7 +308,8 @@ TEST(Merge, RefusesAnInfiniteFigureInAnEnsemblePart) {
   std::string t = slurp(f);
   const std::size_t row = t.find('\n') + 1;
   const std::size_t ok = t.find(",ok,", row);
-  const std::size_t cell = t.find(',', ok + 4) + 1;  // the first debris figure
+  std::size_t cell = ok + 4;  // the reason, then steps, iterations, cuts, energy_error
+  for (int k = 0; k < 5; ++k) cell = t.find(',', cell) + 1;  // the first debris figure
   t.replace(cell, t.find(',', cell) - cell, "inf");
   spit(f, t);
   std::ostringstream out, err;
