@@ -701,9 +701,9 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
   // A failed run whose deck has values that look like another unit names them.
   auto unitText = [&] {
     const std::string at = warnings.unitLocations();
-    return at.empty() ? std::string()
-                      : "\n  advice: the deck's warnings name values that look like another "
-                        "unit (" + at + "): check them first";
+    if (at.empty()) return std::string();
+    return "\n  advice: the deck's warnings name values that look like another unit (" + at +
+           "): check them first";
   };
   try {
     const Deck deck = parseDeck(path);
@@ -781,9 +781,9 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
         const std::filesystem::path file = dir / (partStem + "_ensemble.csv");
         AtomicFile::write(file, text);
         AtomicFile::write(dir / (partStem + "_timing.csv"), timingCsv(*table));
-        log->stream() << "\n  ensemble: " << file.filename().string() << " (" << table->rows().size()
-                      << " runs, " << table->failed() << " failed; CPU times in " << partStem
-                      << "_timing.csv)\n";
+        log->stream() << "\n  ensemble: " << file.filename().string() << " ("
+                      << table->rows().size() << " runs, " << table->failed()
+                      << " failed; CPU times in " << partStem << "_timing.csv)\n";
         // A shard's table is a part: `collapse2d merge` makes the study of the whole.
         if (options.shards <= 1) {
           const EnsembleStudyReport report =
@@ -816,9 +816,8 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
                     << " runs failed\n";
       outcome.exitCode = kExitAnalysisFailed;
       outcome.message = path + ": " + std::to_string(outcome.failedRuns) + " of " +
-                        std::to_string(executed) + " runs of the study failed (see " +
-                        partStem + (ensemble ? "_ensemble.csv" : "_plans.csv") + " and the log)" +
-                        unitText();
+                        std::to_string(executed) + " runs of the study failed (see " + partStem +
+                        (ensemble ? "_ensemble.csv" : "_plans.csv") + " and the log)" + unitText();
     } else {
       log->stream() << "\n  run complete\n";
     }

@@ -26,17 +26,17 @@ struct Band {
   double lo, hi;
 };
 constexpr Band kFc{5e3, 1.5e5}, kBarStress{1e5, 2.5e6}, kModulus{1e8, 3e8};
-constexpr double kMaxSize = 30;          // m: no section is so deep
-constexpr double kMaxLayer = 0.05;       // m^2: 40 bars of 40 mm
-constexpr double kMaxRingBar = 5e-3;     // m^2: one bar of 80 mm
-constexpr double kMaxLinkRatio = 0.1;    // Asw/(b s)
-constexpr double kInLine = 0.99;         // cosine: elements continuing one member
+constexpr double kMaxSize = 30;        // m: no section is so deep
+constexpr double kMaxLayer = 0.05;     // m^2: 40 bars of 40 mm
+constexpr double kMaxRingBar = 5e-3;   // m^2: one bar of 80 mm
+constexpr double kMaxLinkRatio = 0.1;  // Asw/(b s)
+constexpr double kInLine = 0.99;       // cosine: elements continuing one member
 
 // 30000 as 30e3, 2e8 as 200e6, 3.14e-4 as 314e-6, 0.005 as 5e-3; others as %g.
 std::string num(double v) {
   char buf[48];
   const double a = std::abs(v);
-  if (a >= 1e4 || (a > 0 && a < 1e-2)) {
+  if (std::isfinite(a) && (a >= 1e4 || (a > 0 && a < 1e-2))) {
     const int e = static_cast<int>(std::floor(std::log10(a) / 3)) * 3;
     std::snprintf(buf, sizeof buf, "%.4ge%d", v / std::pow(10.0, e), e);
   } else {
@@ -77,10 +77,14 @@ void checkStress(const MeshContext& ctx, const Record& r, std::size_t field, con
 // The shape's sizes as its record gives them (fields 2, 3, ...).
 std::vector<double> shapeSizes(const RcSectionData& d) {
   switch (d.shape) {
-    case SectionShapeKind::Rectangle: return {d.b, d.h};
-    case SectionShapeKind::Tee: return {d.b, d.h, d.flangeWidth, d.flangeDepth};
-    case SectionShapeKind::Circle: return {d.h};
-    case SectionShapeKind::Annulus: return {d.h, d.wall};
+    case SectionShapeKind::Rectangle:
+      return {d.b, d.h};
+    case SectionShapeKind::Tee:
+      return {d.b, d.h, d.flangeWidth, d.flangeDepth};
+    case SectionShapeKind::Circle:
+      return {d.h};
+    case SectionShapeKind::Annulus:
+      return {d.h, d.wall};
   }
   return {};
 }
@@ -129,8 +133,8 @@ void checkStirrups(const MeshContext& ctx, const Record& r, const RcSectionData&
              guess(st.area, {2e-5, kMaxLinkRatio * d.b * st.spacing}, kArea, "m^2"));
   if (st.spacing > d.h)
     warn(ctx, r, first + 1,
-         "links at s = " + num(st.spacing) + " are farther apart than the section is deep (h = " +
-             num(d.h) +
+         "links at s = " + num(st.spacing) +
+             " are farther apart than the section is deep (h = " + num(d.h) +
              "): a 45-degree crack may cross none (EC2 9.2.2(6): s <= 0.75 d in beams; 9.5.3: "
              "20 bar diameters, the smaller side, 0.4 m in columns)" +
              guess(st.spacing, {1e-2, d.h}, kLength, "m"));
@@ -217,7 +221,8 @@ void warnMemberLengths(const MeshContext& ctx) {
     if (it == longest.end() || !mat) continue;  // a set no element uses
     if (const auto& d = mat->section) {
       // The depth: h of RECTangular and TEE (field 3), D of the circles (field 2).
-      const bool round = d->shape == SectionShapeKind::Circle || d->shape == SectionShapeKind::Annulus;
+      const bool round =
+          d->shape == SectionShapeKind::Circle || d->shape == SectionShapeKind::Annulus;
       warnLonger(ctx, origin.section, round ? 2 : 3, "the section's depth", d->h, set, it->second);
       if (d->stirrups) {
         const Record& r = origin.stirrups;

@@ -19,6 +19,8 @@ std::vector<double> values(const MeshContext& ctx, const Record& r, const std::s
 bool looksNumeric(const std::string& t);
 // The first number field of a record of numbers only (REBAr d1 A1 ...,
 // STIRrups Asw s): field 1, or 2 after an empty field ("STIRrups,,1e-4,0.2").
-inline std::size_t firstNumber(const Record& r) { return r.size() > 1 && r.text(1).empty() ? 2 : 1; }
+inline std::size_t firstNumber(const Record& r) {
+  return r.size() > 1 && r.text(1).empty() ? 2 : 1;
+}
 
 }  // namespace c2d::subrecord

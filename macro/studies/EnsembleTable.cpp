@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <climits>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 

@@ -461,7 +461,8 @@ bool partCounts(const std::string& i, const std::string& n, const fs::path& file
 
 Found findParts(const fs::path& dir) {
   Found found;
-  const std::regex part(R"((.+)_part([0-9]+)of([0-9]+)_(manifest|plans|ensemble|curves|timing)\.csv)");
+  const std::regex part(
+      R"((.+)_part([0-9]+)of([0-9]+)_(manifest|plans|ensemble|curves|timing)\.csv)");
   const std::regex batch(R"(batch_part([0-9]+)of([0-9]+)\.csv)");
   for (const auto& entry : fs::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();

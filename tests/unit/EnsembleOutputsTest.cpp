@@ -31,8 +31,8 @@ const fs::path& study() {
     o.quiet = true;
     const SolutionCommands commands;
     std::ostringstream console;
-    return runDeck(std::string(C2D_SOURCE_DIR) + "/decks/ensemble/sliding_plans.inp", o,
-                   commands, console)
+    return runDeck(std::string(C2D_SOURCE_DIR) + "/decks/ensemble/sliding_plans.inp", o, commands,
+                   console)
                .exitCode == 0;
   }();
   EXPECT_TRUE(ran);
@@ -69,7 +69,7 @@ TEST(EnsembleOutputs, SixHundredRunsWriteLessThanAHundredMegabytes) {
   std::cout << "  bytes: a plan's first sample " << b.first << ", another sample " << b.other
             << ", the study's files " << b.shared << " (2 plans); 600 runs: " << total * 1e-6
             << " MB\n";
-  EXPECT_GT(b.other, 1000);     // its time history, debris row, log section, table rows
+  EXPECT_GT(b.other, 1000);           // its time history, debris row, log section, table rows
   EXPECT_LT(b.other, 0.1 * b.first);  // a short log, no pictures
   EXPECT_LT(total, 100e6);
 }

@@ -76,9 +76,10 @@ TEST(SectionUnits, LengthsAndAreasInAnotherUnit) {
   // A layer of 0.3 m^2 in a 3 m square (3.4 % of it: below the tenth refused).
   expectOne(columnDeck("3 3 30e3 500e3", "0.1 0.3 2.9 0.01", ""), 15, 12,
             "a bar layer of 0.3 m^2 is more than 0.05 m^2");
-  expectOne("FEAP * * x\n0 0 0 2 3 2\nCOOR\n 1 0 0 0\n 2 0 0 5\n\nELEM\n 1 0 1 1 2\n\n"
-            "MATE,1\n FRAMe\n SECTion CIRCular 2 30e3 500e3\n REBAr RING 12 6e-3 0.1\n\nEND\n",
-            13, 16, "a bar of 6e-3 m^2 is more than 5e-3 m^2");
+  expectOne(
+      "FEAP * * x\n0 0 0 2 3 2\nCOOR\n 1 0 0 0\n 2 0 0 5\n\nELEM\n 1 0 1 1 2\n\n"
+      "MATE,1\n FRAMe\n SECTion CIRCular 2 30e3 500e3\n REBAr RING 12 6e-3 0.1\n\nEND\n",
+      13, 16, "a bar of 6e-3 m^2 is more than 5e-3 m^2");
   // Asw in cm^2: one 1.0 cm^2 pair of legs.
   expectOne(columnDeck(kSection, kBars, " STIRrups 1.0 0.2"), 16, 11,
             "links of Asw/(b s) = 16.67 are more than 0.1 of the section");
@@ -99,10 +100,11 @@ TEST(SectionUnits, LengthsAgainstTheMembers) {
   expectOne(columnDeck("0.3 4 30e3 500e3", "0.04 4e-4 3.9 9.42e-4", ""), 14, 26,
             "the section's depth = 4 is longer than the longest member of material set 1 (3 m");
   // A hand-given shortest piece Lb in mm.
-  expectOne("FEAP * * x\n0 0 0 2 3 2\nCOOR\n 1 0 0 0\n 2 0 0 1.5\n 3 0 0 3\n\n"
-            "ELEM\n 1 0 1 1 2\n 2 0 1 2 3\n\nMATE,1\n FRAMe\n RESUltant STIFfness 1e6 1e6 1e3\n"
-            " SOFTening LINEar 100 -1e3 0.5 0 500\n\nEND\n",
-            15, 34, "the shortest piece Lb = 500 is longer than the longest member");
+  expectOne(
+      "FEAP * * x\n0 0 0 2 3 2\nCOOR\n 1 0 0 0\n 2 0 0 1.5\n 3 0 0 3\n\n"
+      "ELEM\n 1 0 1 1 2\n 2 0 1 2 3\n\nMATE,1\n FRAMe\n RESUltant STIFfness 1e6 1e6 1e3\n"
+      " SOFTening LINEar 100 -1e3 0.5 0 500\n\nEND\n",
+      15, 34, "the shortest piece Lb = 500 is longer than the longest member");
 }
 
 TEST(SectionUnits, MembersAreElementsInLineOfOneSet) {

@@ -16,8 +16,8 @@
 namespace c2d::testing {
 
 struct StudyBytes {
-  std::map<int, double> run;  // by run number
-  double shared = 0;          // the study's files
+  std::map<int, double> run;    // by run number
+  double shared = 0;            // the study's files
   double first = 0, other = 0;  // the largest run of a plan's sample 1, of the other samples
   int plans = 0;
   // A study of `plans` plans of `samples` samples each (the shared files scale
