@@ -9,6 +9,7 @@
 #include "macro/deck/DeckParser.h"
 #include "macro/deck/MeshBinder.h"
 #include "macro/deck/Warnings.h"
+#include "tests/unit/RunDeckSupport.h"
 
 namespace c2d {
 namespace {
@@ -105,6 +106,33 @@ TEST(SectionUnits, LengthsAgainstTheMembers) {
       "ELEM\n 1 0 1 1 2\n 2 0 1 2 3\n\nMATE,1\n FRAMe\n RESUltant STIFfness 1e6 1e6 1e3\n"
       " SOFTening LINEar 100 -1e3 0.5 0 500\n\nEND\n",
       15, 34, "the shortest piece Lb = 500 is longer than the longest member");
+}
+
+// A study whose runs fail names the unit warnings in its message, as a run
+// that fails does (decks/errors/section_units_failure.inp).
+TEST(SectionUnits, AFailedStudyNamesTheUnitWarnings) {
+  testing::DeckTempDir dir;
+  const std::string deck =
+      "SWEEp\n  P = 60 70\n\n"  // lines 1-3
+      "FEAP * * fy in MPa\n  0 0 0 2 3 2\n\nCOORdinates\n  1 0 0 0\n  2 0 0 1.5\n  3 0 0 3\n\n"
+      "ELEMents\n  1 0 1 1 2\n  2 0 1 2 3\n\nMATErial,1\n  FRAMe\n"  // lines 4-17
+      "    SECTion RECTangular 0.3 0.5 30e3 500\n"                   // line 18, fy at 38
+      "    REBAr 0.05 9.42e-4 0.45 9.42e-4\n    STIRrups 1e-4 0.2\n\n"
+      "BOUNdary\n  1 0 1 1 1\n\nFORCe\n  3 0 P 0 0\n\nEND\n"
+      "BATCh\n  PROP,,1\n  DT,,0.25\n  LOOP,,4\n    TIME\n    LOOP,,30\n      TANG,,1\n"
+      "    NEXT\n  NEXT\nEND\n\nSTOP\n";
+  const auto r = testing::runDeckText(dir, "fy_mpa.inp", deck);
+  EXPECT_EQ(r.outcome.exitCode, kExitAnalysisFailed) << r.outcome.message;
+  EXPECT_NE(r.outcome.message.find("2 of 2 runs of the study failed"), std::string::npos)
+      << r.outcome.message;
+  EXPECT_NE(
+      r.outcome.message.find("advice: the deck's warnings name values that look like "
+                             "another unit (" +
+                             (dir.path() / "fy_mpa.inp").string() + ":18:38): check them first"),
+      std::string::npos)
+      << r.outcome.message;
+  ASSERT_EQ(r.outcome.warnings.size(), 1u);
+  EXPECT_TRUE(r.outcome.warnings[0].unit);
 }
 
 TEST(SectionUnits, MembersAreElementsInLineOfOneSet) {
