@@ -189,5 +189,45 @@ TEST(RcDecks, ColumnRemovalVerdictAndSagDoNotDependOnTheMesh) {
   EXPECT_EQ(runs, 3u);
 }
 
+// decks/rc/piece_impact.inp: a column piece struck by the ground fails as the
+// air's loads would fail it. The rigid rod's estimate of element 1's shear in
+// the first strike, 0.6875 cos 30 v sqrt(k m / 3.25), brackets Vu = 290 kN:
+// 113 kN after a drop of 0.05 m (the piece bounces whole), 718 kN after 2 m
+// (it fails in shear at its struck end within the strike, and breaks up).
+TEST(RcDecks, APieceStruckBeyondItsShearCapacityFailsInTheStrike) {
+  const Ran r = runRcDeck("piece_impact.inp");
+  const double g = 9.81, m = 1.2, k = 1e5, vu = 290.2832;
+  auto estimate = [&](double h) {
+    return 0.6875 * std::cos(M_PI / 6) * std::sqrt(2 * g * h) * std::sqrt(k * m / 3.25);
+  };
+  ASSERT_LT(estimate(0.05), vu);
+  ASSERT_GT(estimate(2.0), vu);
+  // The low drop: element 1's shear stays below Vu and within the rod's
+  // estimate; nothing fails in that run.
+  const auto low = testing::readCsv(r.dir / "piece_impact_h=0.05_tplot.csv");
+  double peak = 0;
+  for (double v : low.column("stre_1_2")) peak = std::max(peak, std::abs(v));
+  EXPECT_LT(peak, vu);
+  EXPECT_GT(peak, 0.5 * estimate(0.05));
+  EXPECT_LT(peak, 1.2 * estimate(0.05));
+  const std::size_t second = r.log.find("run 2 of 2, outputs piece_impact_h=2");
+  ASSERT_NE(second, std::string::npos);
+  EXPECT_EQ(r.log.rfind("  shear  failure", second), std::string::npos);
+  EXPECT_EQ(r.log.rfind("  hinge  opened", second), std::string::npos);
+  // The high drop: the first shear failure is element 1's, within the strike
+  // (the strike at sqrt(2 h / g); the contact lasts pi sqrt(m / (3.25 k))).
+  const std::string key = "shear  failure at t = ";
+  const std::size_t p = r.log.find(key);
+  ASSERT_NE(p, std::string::npos);
+  EXPECT_GT(p, second);  // in the high drop's run
+  const double tf = std::stod(r.log.substr(p + key.size(), 14));
+  const double strike = std::sqrt(2 * 2.0 / g), lasts = M_PI * std::sqrt(m / (3.25 * k));
+  EXPECT_GT(tf, strike);
+  EXPECT_LT(tf, strike + lasts);
+  EXPECT_NE(r.log.substr(p, 80).find(": element 1 separates at node 2"), std::string::npos)
+      << r.log.substr(p, 120);
+  EXPECT_NE(r.log.find("4 members parted in shear", second), std::string::npos);
+}
+
 }  // namespace
 }  // namespace c2d
