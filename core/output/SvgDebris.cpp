@@ -118,7 +118,8 @@ std::string debrisSvg(const Model& model, const State& state, const DebrisFigure
   // x axis ticks: footprint and site limits, the debris extent.
   auto tick = [&](double x, const char* color) {
     o << "<text x=\"" << px(X(x)) << "\" y=\"" << px(histBottom + 16)
-      << "\" text-anchor=\"middle\" fill=\"" << color << "\">" << shortNum(x) << "</text>\n";
+      << "\" text-anchor=\"middle\" fill=\"" << color << "\">" << shortNum(onAxis(x, x1 - x0))
+      << "</text>\n";
   };
   tick(d.footprintMin, "#666666");
   tick(d.footprintMax, "#666666");

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "core/output/SvgChart.h"
+#include "core/output/SvgNumber.h"
 
 namespace c2d {
 
@@ -170,8 +171,8 @@ std::string ensembleSvg(const EnsembleData& data, const std::vector<PlanStats>& 
   auto beyond = [&f](double x) { return f.beyond(x); };
   char xlabel[256];
   std::snprintf(xlabel, sizeof xlabel,
-                "beyond the footprint (m): left < 0 < right (footprint x = %.4g to %.4g m)", fpMin,
-                fpMax);
+                "beyond the footprint (m): left < 0 < right (footprint x = %.4g to %.4g m)",
+                onAxis(fpMin, fpMax - fpMin), onAxis(fpMax, fpMax - fpMin));
   std::vector<SvgChart> charts(same ? 1 : 2);
   const char* titles[2] = {same ? "probability that debris lies at and reaches past u"
                                 : "probability that the debris reaches past u",
