@@ -108,17 +108,17 @@ std::string VtkWriter::unstructuredGrid(const Model& model, const State& state) 
   o << "      <PointData Vectors=\"displacement\" Scalars=\"rotation\">\n";
   open("Float64", "displacement", 3);
   for (int n = 0; n < numNodes; ++n)
-    o << "          " << num(stateValue(state.u, n, 0)) << ' ' << num(stateValue(state.u, n, 1)) << " 0\n";
+    o << num(stateValue(state.u, n, 0)) << ' ' << num(stateValue(state.u, n, 1)) << " 0\n";
   o << close;
   open("Float64", "rotation", 1);
-  for (int n = 0; n < numNodes; ++n) o << "          " << num(stateValue(state.u, n, 2)) << '\n';
+  for (int n = 0; n < numNodes; ++n) o << num(stateValue(state.u, n, 2)) << '\n';
   o << close;
   open("Float64", "velocity", 3);
   for (int n = 0; n < numNodes; ++n)
-    o << "          " << num(stateValue(state.v, n, 0)) << ' ' << num(stateValue(state.v, n, 1)) << " 0\n";
+    o << num(stateValue(state.v, n, 0)) << ' ' << num(stateValue(state.v, n, 1)) << " 0\n";
   o << close;
   open("UInt8", "joint", 1);
-  for (int n = 0; n < numNodes; ++n) o << "          " << int(inJoint[n]) << '\n';
+  for (int n = 0; n < numNodes; ++n) o << int(inJoint[n]) << '\n';
   o << close;
   o << "      </PointData>\n";
 
@@ -135,7 +135,7 @@ std::string VtkWriter::unstructuredGrid(const Model& model, const State& state) 
   }
   auto cellColumn = [&](const char* type, const char* name, auto value) {
     open(type, name, 1);
-    for (std::size_t k = 0; k < cells.size(); ++k) o << "          " << value(k) << '\n';
+    for (std::size_t k = 0; k < cells.size(); ++k) o << value(k) << '\n';
     o << close;
   };
   cellColumn("Float64", "N", [&](std::size_t k) { return num(forces[k].N); });
@@ -152,20 +152,20 @@ std::string VtkWriter::unstructuredGrid(const Model& model, const State& state) 
   o << "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
   for (int n = 0; n < numNodes; ++n) {
     const Vec2& x = model.coord(n);
-    o << "          " << num(x.x() + stateValue(state.u, n, 0)) << ' ' << num(x.y() + stateValue(state.u, n, 1))
+    o << num(x.x() + stateValue(state.u, n, 0)) << ' ' << num(x.y() + stateValue(state.u, n, 1))
       << " 0\n";
   }
   o << close << "      </Points>\n";
 
   o << "      <Cells>\n";
   open("Int64", "connectivity", 1);
-  for (const Cell& c : cells) o << "          " << c.nodes[0] << ' ' << c.nodes[1] << '\n';
+  for (const Cell& c : cells) o << c.nodes[0] << ' ' << c.nodes[1] << '\n';
   o << close;
   open("Int64", "offsets", 1);
-  for (std::size_t k = 0; k < cells.size(); ++k) o << "          " << 2 * (k + 1) << '\n';
+  for (std::size_t k = 0; k < cells.size(); ++k) o << 2 * (k + 1) << '\n';
   o << close;
   open("UInt8", "types", 1);
-  for (std::size_t k = 0; k < cells.size(); ++k) o << "          3\n";  // VTK_LINE
+  for (std::size_t k = 0; k < cells.size(); ++k) o << "3\n";  // VTK_LINE
   o << close;
   o << "      </Cells>\n"
     << "    </Piece>\n"

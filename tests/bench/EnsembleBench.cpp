@@ -8,10 +8,9 @@
 // first sample (all its outputs: ParaView frames, pictures, the full log),
 // of another sample (its time history, debris row, log section, table rows)
 // and of a study of 3 plans x 200 samples. Measured (2026-12, one process):
-// first 28.8 MB (26.7 MB of them 272 ParaView frames, 1.9 MB log), other
-// 57 kB (tplot 48-54 kB), so 600 runs: 3 x 28.8 + 597 x 0.057 = 120 MB, of
-// which the 597 samples after the first 34 MB; a study of this deck below
-// 100 MB keeps to 2 plans, or fewer ParaView frames in its deck.
+// first about 18.9 MB (16.9 MB of them 272 ParaView frames, 1.9 MB log),
+// other 52 kB (mostly the time history), so 600 runs: 3 x 18.9 + 597 x
+// 0.052 = 88 MB.
 // Run: build/tests/benchmarks --benchmark_filter=Ensemble
 #include <benchmark/benchmark.h>
 
