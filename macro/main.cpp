@@ -14,7 +14,7 @@
 
 #include "macro/studies/BatchRunner.h"
 #include "macro/DeckRunner.h"
-#include "macro/commands/Help.h"
+#include "macro/Help.h"
 #include "macro/deck/Parameters.h"
 #include "macro/studies/Shard.h"
 #include "macro/studies/Csv.h"

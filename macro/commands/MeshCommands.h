@@ -12,7 +12,7 @@
 
 #include "core/Model.h"
 #include "core/State.h"
-#include "macro/commands/CommandSpec.h"
+#include "macro/deck/CommandSpec.h"
 #include "macro/deck/Deck.h"
 #include "macro/deck/Parameters.h"
 #include "macro/deck/Warnings.h"

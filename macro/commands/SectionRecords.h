@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/MaterialSet.h"
-#include "macro/commands/CommandSpec.h"
+#include "macro/deck/CommandSpec.h"
 #include "macro/commands/MeshCommands.h"
 
 namespace c2d {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "macro/commands/CommandSpec.h"
+#include "macro/deck/CommandSpec.h"
 #include "macro/deck/Macro.h"
 #include "macro/deck/Parameters.h"
 #include "macro/deck/Warnings.h"

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "macro/commands/CommandSpec.h"
+#include "macro/deck/CommandSpec.h"
 
 namespace c2d::units {
 

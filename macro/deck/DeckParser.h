@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "macro/commands/CommandSpec.h"
+#include "macro/deck/CommandSpec.h"
 #include "macro/deck/Deck.h"
 #include "macro/deck/Record.h"
 

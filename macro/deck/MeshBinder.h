@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/Model.h"
-#include "macro/commands/CommandSpec.h"
+#include "macro/deck/CommandSpec.h"
 #include "macro/deck/Deck.h"
 #include "macro/commands/MeshCommands.h"
 #include "macro/deck/Parameters.h"

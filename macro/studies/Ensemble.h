@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "macro/commands/CommandSpec.h"
+#include "macro/deck/CommandSpec.h"
 #include "macro/deck/Deck.h"
 #include "macro/studies/Detonators.h"
 #include "macro/studies/Distribution.h"

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "macro/commands/CommandSpec.h"
+#include "macro/deck/CommandSpec.h"
 #include "macro/deck/Deck.h"
 
 namespace c2d {

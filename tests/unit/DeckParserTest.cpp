@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "macro/commands/CommandSpec.h"
+#include "macro/deck/CommandSpec.h"
 #include "macro/deck/DeckParser.h"
 #include "macro/deck/DeckReader.h"
 #include "macro/commands/MeshCommands.h"

@@ -10,7 +10,7 @@
 
 #include "core/output/SvgChart.h"
 #include "macro/deck/DeckParser.h"
-#include "macro/commands/Help.h"
+#include "macro/Help.h"
 #include "macro/run/ProblemRun.h"
 #include "macro/run/RunOutputs.h"
 #include "tests/unit/OutputTestSupport.h"

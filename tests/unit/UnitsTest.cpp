@@ -4,7 +4,7 @@
 
 #include <sstream>
 
-#include "macro/commands/Help.h"
+#include "macro/Help.h"
 #include "macro/commands/MeshCommands.h"
 #include "macro/commands/SolutionCommand.h"
 #include "macro/studies/Sweep.h"

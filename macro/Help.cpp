@@ -1,4 +1,4 @@
-#include "macro/commands/Help.h"
+#include "macro/Help.h"
 
 #include <string>
 

@@ -1,4 +1,4 @@
-#include "macro/commands/CommandSpec.h"
+#include "macro/deck/CommandSpec.h"
 
 #include <algorithm>
 #include <ostream>
