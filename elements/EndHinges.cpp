@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "elements/ElementFactory.h"
 #include "elements/InelasticFrame.h"
 #include "elements/JointedElement.h"
 #include "elements/Joints.h"
@@ -46,10 +47,12 @@ bool due(const Member& m) {
   return std::abs(m.section.endHinge[0]) == 1 || std::abs(m.section.endHinge[1]) == 1;
 }
 
-// M/V at end a from the element's end moments (linear between the nodes).
+// M/V at end a from the element's end moments (linear between its ends: the
+// faces of rigid end zones, whose moments they are).
 double shearSpanAt(const Model& model, const Element& el, const Member& m, int a) {
   const std::array<int, 2> n = el.nodes();
-  const double L = (model.coord(n[1]) - model.coord(n[0])).norm();
+  const std::array<double, 2> o = rigidOffsets(innermost(el));
+  const double L = (model.coord(n[1]) - model.coord(n[0])).norm() - o[0] - o[1];
   return shearSpan(L, m.section.endMoment[a], m.section.endMoment[1 - a]);
 }
 

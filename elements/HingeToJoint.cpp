@@ -26,6 +26,7 @@ constexpr double kTieTolerance = 1e-12;
 struct Relative {
   int master = -1;
   double psi = 0, vel = 0, acc = 0;
+  Vec2 shiftVel = Vec2::Zero(), shiftAcc = Vec2::Zero();  // a joint at a rigid zone's face
 };
 
 const ReissnerFrame* asReissner(const Element& e) {
@@ -116,7 +117,8 @@ std::vector<CreatedJoint> convert(
     for (auto* je = asJointed(&el); je; je = asJointed(&je->inner()))
       slaves[je->slaveNode()] =
           Relative{je->masterNode(), je->committedRelativeRotation(),
-                   je->committedRelativeVelocity(), je->committedRelativeAcceleration()};
+                   je->committedRelativeVelocity(), je->committedRelativeAcceleration(),
+                   je->committedShiftVelocity(), je->committedShiftAcceleration()};
     forces[e] = in.sectionForces();
     sections[e] = sectionOf(el);
     endForces[e] = r;
@@ -161,7 +163,7 @@ std::vector<CreatedJoint> convert(
     cj.position = h.position;
     cj.jump = h.jump;
     cj.relativeRotation = end == 0 ? h.jump : -h.jump;
-    slaves[cj.slave] = Relative{cj.master, cj.relativeRotation, 0, 0};
+    slaves[cj.slave] = Relative{cj.master, cj.relativeRotation, 0, 0, Vec2::Zero(), Vec2::Zero()};
     hingeEnd[e] = end;
     created.push_back(cj);
   }
@@ -192,7 +194,8 @@ std::vector<CreatedJoint> convert(
                                                  model.coord(nodes[1]), rigidOffsets(*old));
 
     // Displacements the new element sees: a slave end moves with its master and
-    // rotates by psi_m + psi_r.
+    // rotates by psi_m + psi_r; with a rigid end zone its face moves with the
+    // master's arm (the slave node shifted, elements/JointedElement.h).
     ElemVec d;
     for (int a = 0; a < 2; ++a) {
       int node = nodes[a];
@@ -203,7 +206,10 @@ std::vector<CreatedJoint> convert(
       }
       d.segment<kNodeDofs>(a * kNodeDofs) =
           state.u.segment<kNodeDofs>(static_cast<Eigen::Index>(node) * kNodeDofs);
+      const double psiM = d(a * kNodeDofs + 2);
       d(a * kNodeDofs + 2) += extra;
+      const RigidEnds& rigid = frame->rigidEnds();
+      d.segment<2>(a * kNodeDofs) += rigid.armMotion(a, psiM) - rigid.armMotion(a, psiM + extra);
     }
     const SectionForces& f = forces[e];
     const Vec3 c = frame->sectionStiffness();
@@ -230,7 +236,8 @@ std::vector<CreatedJoint> convert(
   for (JointedElement* je : jointedElements(model)) {
     auto it = slaves.find(je->slaveNode());
     if (it == slaves.end()) continue;
-    je->setRelativeState(it->second.psi, it->second.vel, it->second.acc);
+    je->setRelativeState(it->second.psi, it->second.vel, it->second.acc, it->second.shiftVel,
+                         it->second.shiftAcc);
   }
   syncSlaveNodes(model, state);
   state.un = state.u;

@@ -25,6 +25,13 @@ constexpr double kSmallStep = 1e-9;
 // start (radians).
 constexpr double kGuessRange = 0.05;
 
+// The element inside any wrappers.
+const Element& innermostOf(const Element& e) {
+  const Element* in = &e;
+  while (const JointedElement* j = asJointed(in)) in = &j->inner();
+  return *in;
+}
+
 }  // namespace
 
 JointedElement::JointedElement(std::unique_ptr<Element> inner, int slaveEnd, int master)
@@ -34,44 +41,77 @@ JointedElement::JointedElement(std::unique_ptr<Element> inner, int slaveEnd, int
   slave_ = nodes_[slaveEnd_];
   nodes_[slaveEnd_] = master;
   findMember();
+  arm_ = JointArm(innermostOf(*inner_), slaveEnd_);
 }
 
 std::shared_ptr<const MomentCapacity> memberCapacity(const Element& member) {
-  const Element* e = &member;
-  while (const JointedElement* j = asJointed(e)) e = &j->inner();
+  const Element* e = &innermostOf(member);
   if (const auto* f = dynamic_cast<const InelasticFrame*>(e)) return f->bendingLaw().capacity();
   if (const auto* f = dynamic_cast<const ReissnerFrame*>(e)) return f->bendingLaw().capacity();
   return nullptr;
 }
 
 void JointedElement::findMember() {
-  const Element* e = inner_.get();
-  while (const JointedElement* j = asJointed(e)) e = j->inner_.get();
-  member_ = dynamic_cast<const RcMember*>(e);
+  member_ = dynamic_cast<const RcMember*>(&innermostOf(*inner_));
   if (member_ && !member_->followsAxialForce()) member_ = nullptr;
 }
 
-ElemVec JointedElement::innerAxialGradient() const {
-  if (const JointedElement* j = asJointed(inner_.get())) return j->axialGradient_;
-  return member_->axialForceGradient();
+ElemVec JointedElement::innerAxialGradient(const ElemVec& d) const {
+  const JointedElement* j = asJointed(inner_.get());
+  const ElemVec g = j ? j->axialGradient_ : member_->axialForceGradient();
+  return arm_.any() ? arm_.faceGradient(g, d) : g;
 }
 
-ElementKinematics JointedElement::innerKinematics(const ElementKinematics& outer,
-                                                  double psi) const {
-  ElementKinematics in = outer;
+ElementKinematics JointedElement::faceKinematics(const ElementKinematics& outer) const {
+  ElementKinematics face = outer;
+  if (arm_.any()) arm_.toFace(face);
+  return face;
+}
+
+ElementKinematics JointedElement::fromFace(const ElementKinematics& face, double psi) const {
+  ElementKinematics in = face;
   const int k = dof();
   in.d(k) += psi;
   in.dn(k) += committed_.psi;
   in.vn(k) += committed_.vel;
   in.an(k) += committed_.acc;
+  if (arm_.any()) {
+    const int t = kNodeDofs * slaveEnd_;
+    arm_.toNode(in, true);
+    in.vn.segment<2>(t) += committed_.shiftVel;
+    in.an.segment<2>(t) += committed_.shiftAcc;
+  }
   return in;
+}
+
+ElementKinematics JointedElement::innerKinematics(const ElementKinematics& outer,
+                                                  double psi) const {
+  return fromFace(faceKinematics(outer), psi);
+}
+
+void JointedElement::turnSlave(ElementKinematics& in, const ElementKinematics& face,
+                               double psi) const {
+  const int k = dof();
+  in.d(k) = face.d(k) + psi;
+  if (arm_.any()) {
+    const int t = kNodeDofs * slaveEnd_;
+    in.d.segment<2>(t) = face.d.segment<2>(t);
+    arm_.toNode(in, false);
+  }
+}
+
+Status JointedElement::evaluateInner(const ElementKinematics& in, const StepRule& rule,
+                                     ElemVec& residual, ElemMat& tangent) {
+  if (Status st = inner_->evaluate(in, rule, true, residual, tangent); !st) return st;
+  if (arm_.any()) arm_.faceForces(in, rule, residual, &tangent);
+  return Status::success();
 }
 
 bool JointedElement::evaluateLink(JointedElement& j, const ElementKinematics& kin,
                                   const StepRule& rule, bool wantTangent, ElemVec& residual,
                                   ElemMat& tangent) {
   const int ko = dof(), ki = j.dof();
-  if (ko == ki) return false;
+  if (ko == ki || arm_.any() || j.arm_.any()) return false;
   Element& core = *j.inner_;
   // Starts as the nested iteration's: each relative rotation's first-order
   // change with the kinematics its own wrapper sees.
@@ -144,6 +184,22 @@ bool JointedElement::evaluateLink(JointedElement& j, const ElementKinematics& ki
 
 Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& rule,
                                 bool wantTangent, ElemVec& residual, ElemMat& tangent) {
+  if (!arm_.any()) return evaluateAtFace(kin, rule, wantTangent, residual, tangent);
+  const ElementKinematics face = faceKinematics(kin);
+  if (Status st = evaluateAtFace(face, rule, wantTangent, residual, tangent); !st) return st;
+  // From the face to the master node (the arm turning with psi_m).
+  arm_.nodeForces(kin, rule, residual, wantTangent ? &tangent : nullptr);
+  if (member_) axialGradient_ = arm_.nodeGradient(axialGradient_, kin.d);
+  // The shift's rates over the step.
+  const int k = dof();
+  const Vec2 ds = arm_.shift(kin.d(k), trial_.psi) - arm_.shift(kin.dn(k), committed_.psi);
+  trial_.shiftVel = rule.velocity(ds, committed_.shiftVel, committed_.shiftAcc);
+  trial_.shiftAcc = rule.acceleration(ds, committed_.shiftVel, committed_.shiftAcc);
+  return Status::success();
+}
+
+Status JointedElement::evaluateAtFace(const ElementKinematics& kin, const StepRule& rule,
+                                      bool wantTangent, ElemVec& residual, ElemMat& tangent) {
   if (JointedElement* j = asJointed(inner_.get());
       j && freeJoint() && j->freeJoint() &&
       evaluateLink(*j, kin, rule, wantTangent, residual, tangent))
@@ -159,7 +215,7 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
     const double change = guessSlope_.dot(kin.d - guessD_);
     if (std::abs(change) <= kGuessRange) psi += change;
   }
-  ElementKinematics in = innerKinematics(kin, psi);
+  ElementKinematics in = fromFace(kin, psi);
   ElemMat kin6;
   double krr = 0;
   bool lastPass = false, converged = false;
@@ -182,8 +238,8 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
   };
   if (bounded && !(std::abs(increment(psi)) < hi)) psi = in.dn(k) - kin.d(k);
   for (int it = 0; it < kMaxLocalIterations; ++it) {
-    in.d(k) = kin.d(k) + psi;
-    if (Status st = inner_->evaluate(in, rule, true, residual, kin6); !st) return st;
+    turnSlave(in, kin, psi);
+    if (Status st = evaluateInner(in, rule, residual, kin6); !st) return st;
     double dm = 0;
     const double m = friction(psi, dm);
     const double slaveSlope = friction_ > 0 ? rule.rotationRateSlope(increment(psi)) : 0.0;
@@ -238,7 +294,7 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
 
   trial_.moment = -residual(k);
   if (member_) {  // the member's axial force with psi_r(d): dpsi_r/dd = -G_d/G_psi
-    const ElemVec g = innerAxialGradient();
+    const ElemVec g = innerAxialGradient(in.d);
     ElemVec gd = kin6.row(k).transpose();
     double gpsi = kin6(k, k);
     if (friction_ > 0) {
@@ -280,7 +336,7 @@ Status JointedElement::evaluateHinge(const ElementKinematics& kin, const StepRul
   const int k = dof();
   const EndHinge& law = *hinge_;
   const double masterRate = rule.rotationRate(kin.d(k) - kin.dn(k));
-  ElementKinematics in = innerKinematics(kin, committed_.psi);
+  ElementKinematics in = fromFace(kin, committed_.psi);
   ElemMat kin6;
   auto axial = [&]() { return member_ ? member_->axialForce() : 0.0; };
   auto rates = [&](double psi) {
@@ -293,8 +349,8 @@ Status JointedElement::evaluateHinge(const ElementKinematics& kin, const StepRul
   // moment at the capacity to round-off (relative 1e-8) slips with a zero
   // increment, as LinearSoftening's hinge: a hinge at its capacity is taken to
   // go on softening (its tangent at the state it opened in is the softening one).
-  in.d(k) = kin.d(k) + committed_.psi;
-  if (Status st = inner_->evaluate(in, rule, true, residual, kin6); !st) return st;
+  turnSlave(in, kin, committed_.psi);
+  if (Status st = evaluateInner(in, rule, residual, kin6); !st) return st;
   const double stick = -residual(k);
   const EndHinge::Value c0 = law.capacity(committed_.slip, axial());
   if (std::abs(stick) < c0.C * (1 - 1e-8)) {
@@ -302,7 +358,7 @@ Status JointedElement::evaluateHinge(const ElementKinematics& kin, const StepRul
     trial_.slip = committed_.slip;
     trial_.moment = stick;
     rates(committed_.psi);
-    if (member_) axialGradient_ = innerAxialGradient();
+    if (member_) axialGradient_ = innerAxialGradient(in.d);
     if (wantTangent) tangent = kin6;
     return Status::success();
   }
@@ -321,15 +377,15 @@ Status JointedElement::evaluateHinge(const ElementKinematics& kin, const StepRul
   EndHinge::Value cv;
   bool lastPass = false, converged = false;
   for (int it = 0; it < kMaxLocalIterations; ++it) {
-    in.d(k) = kin.d(k) + psi;
+    turnSlave(in, kin, psi);
     if (it > 0)
-      if (Status st = inner_->evaluate(in, rule, true, residual, kin6); !st) return st;
+      if (Status st = evaluateInner(in, rule, residual, kin6); !st) return st;
     const double inc = kin.d(k) + psi - in.dn(k);
     const double w = rule.rotationRate(inc) - masterRate;
     slip = committed_.slip + std::max(0.0, sigma * w);
     cv = law.capacity(slip, axial());
     m = sigma * cv.C;
-    const double nk = member_ ? innerAxialGradient()(k) : 0.0;
+    const double nk = member_ ? innerAxialGradient(in.d)(k) : 0.0;
     mPsi = cv.dXi * rule.rotationRateSlope(inc) + sigma * cv.dN * nk;
     G = residual(k) + m;
     Gpsi = kin6(k, k) + mPsi;
@@ -374,7 +430,7 @@ Status JointedElement::evaluateHinge(const ElementKinematics& kin, const StepRul
   md(k) = cv.dXi * (rule.rotationRateSlope(kin.d(k) + psi - in.dn(k)) -
                     rule.rotationRateSlope(kin.d(k) - kin.dn(k)));
   if (member_) {
-    const ElemVec g = innerAxialGradient();
+    const ElemVec g = innerAxialGradient(in.d);
     md += sigma * cv.dN * g;
     gd = kin6.row(k).transpose() + md;
     axialGradient_ = g - (g(k) / Gpsi) * gd;
@@ -438,17 +494,21 @@ void JointedElement::revert() {
 double JointedElement::kineticEnergy(const ElemVec& v) const {
   ElemVec vin = v;
   vin(dof()) += trial_.vel;
+  vin.segment<2>(kNodeDofs * slaveEnd_) += trial_.shiftVel;
   return inner_->kineticEnergy(vin);
 }
 
 ElemVec JointedElement::momentum(const ElemVec& v) const {
   ElemVec vin = v;
   vin(dof()) += trial_.vel;
+  vin.segment<2>(kNodeDofs * slaveEnd_) += trial_.shiftVel;
   return inner_->momentum(vin);
 }
 
-void JointedElement::setRelativeState(double psi, double vel, double acc) {
-  trial_ = committed_ = Relative{psi, vel, acc, committed_.slip, committed_.moment};
+void JointedElement::setRelativeState(double psi, double vel, double acc, const Vec2& shiftVel,
+                                      const Vec2& shiftAcc) {
+  trial_ = committed_ =
+      Relative{psi, vel, acc, committed_.slip, committed_.moment, shiftVel, shiftAcc};
   guessValid_ = false;
 }
 
@@ -465,6 +525,7 @@ void JointedElement::replaceInner(std::unique_ptr<Element> inner) {
   nodes_ = inner_->nodes();
   nodes_[slaveEnd_] = master;
   findMember();
+  arm_ = JointArm(innermostOf(*inner_), slaveEnd_);
 }
 
 // ------------------------------------------------------------ restart files
@@ -476,6 +537,8 @@ void JointedElement::writeState(std::ostream& out) const {
   for (int n : nodes_) put(out, n);
   for (const Relative* r : {&trial_, &committed_})
     for (double x : {r->psi, r->vel, r->acc, r->slip, r->moment}) put(out, x);
+  for (const Relative* r : {&trial_, &committed_})
+    for (const Vec2* x : {&r->shiftVel, &r->shiftAcc}) putFixed(out, *x);
   put(out, slaveRotation_);
   put(out, friction_);
   put(out, frictionEps_);
@@ -497,6 +560,8 @@ void JointedElement::readState(std::istream& in) {
   for (int& n : nodes_) n = get<int>(in);
   for (Relative* r : {&trial_, &committed_})
     for (double* x : {&r->psi, &r->vel, &r->acc, &r->slip, &r->moment}) *x = get<double>(in);
+  for (Relative* r : {&trial_, &committed_})
+    for (Vec2* x : {&r->shiftVel, &r->shiftAcc}) getFixed(in, *x);
   slaveRotation_ = get<double>(in);
   friction_ = get<double>(in);
   frictionEps_ = get<double>(in);

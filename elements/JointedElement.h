@@ -31,6 +31,33 @@
 // dependence on the member's axial force N enters the condensed tangent. Once
 // the capacity is spent the joint is free. The slip's work sigma C w >= 0 is
 // the hinge's dissipation.
+//
+// Rigid end zones (elements/RigidEnds.h) of the wrapped element at the slave
+// end, arm a: the joint is at the FACE. The arm belongs to the member the
+// joint's master is part of and turns with psi_m; the flexible part's end
+// section turns with psi_m + psi_r:
+//   face translation  u_f = u_m + phi(psi_m),  phi(t) = (R(t) - I) a
+//   (t W a, the linear part, for elements of SMALl kinematics, whose arms are linear).
+// The wrapped element applies its own arm with the rotation it is given, so
+// its slave node gets the translation u_f - phi(psi_m + psi_r) = u_m + s,
+//   s = phi(psi_m) - phi(psi_m + psi_r)   (the shift),
+// which lands its face where it must. Internally the local problem is posed in
+// face coordinates z (u_f, psi_s at the slave end): the wrapped element's
+// residual and tangent come to z through the face-to-node map (RigidEnds with
+// arm -a, its transpose, geometric term and, under the mid-point scheme, the
+// algorithmic transpose that keeps the work identity), psi_r is condensed there
+// exactly as above (its local equation is the face moment's), and the result
+// goes to the master through the node-to-face map (arm a). Both maps preserve
+// the work of the forces on the step's increments, so the energy identities of
+// the wrapped element hold for the jointed one. The shift has its own velocity
+// and acceleration history (advanced with the step rule's affine formulas, as
+// psi_r's), added to the master's for the wrapped element's slave node: its
+// inertia, kinetic energy and momentum are those of the wrapped element's mass
+// (the full length's, lumped at its nodes) with the slave end's translational
+// mass carried by the point u_m + s, rigidly attached to the flexible part's
+// end section at the arm's distance from the face (the node itself while
+// psi_r = 0). Links (joints at both ends) with arms are solved by the nested
+// iteration.
 #include <array>
 #include <memory>
 #include <optional>
@@ -41,6 +68,7 @@
 #include "core/Element.h"
 #include "core/Hinge.h"
 #include "core/MaterialChange.h"
+#include "elements/JointArm.h"
 #include "materials/EndHinge.h"
 
 namespace c2d {
@@ -96,9 +124,20 @@ class JointedElement final : public Element, public Checkpoint, public MaterialC
   double committedRelativeRotation() const { return committed_.psi; }
   double committedRelativeVelocity() const { return committed_.vel; }
   double committedRelativeAcceleration() const { return committed_.acc; }
-  // Sets psi_r and its rates in both the trial and the committed state (the
-  // start of a phase).
-  void setRelativeState(double psi, double vel = 0, double acc = 0);
+  // Sets psi_r and its rates (and the shift's, rigid end zones) in both the
+  // trial and the committed state (the start of a phase).
+  void setRelativeState(double psi, double vel = 0, double acc = 0,
+                        const Vec2& shiftVel = Vec2::Zero(), const Vec2& shiftAcc = Vec2::Zero());
+  // Rigid end zone at the slave end (see above): its reference arm (zero: none),
+  // the shift s of the wrapped element's slave node for the master's rotation
+  // psiM and the relative rotation psiR, and the shift's rates.
+  const Vec2& arm() const { return arm_.arm(); }
+  bool hasArm() const { return arm_.any(); }
+  Vec2 shiftAt(double psiM, double psiR) const { return arm_.shift(psiM, psiR); }
+  const Vec2& shiftVelocity() const { return trial_.shiftVel; }
+  const Vec2& shiftAcceleration() const { return trial_.shiftAcc; }
+  const Vec2& committedShiftVelocity() const { return committed_.shiftVel; }
+  const Vec2& committedShiftAcceleration() const { return committed_.shiftAcc; }
   // Rotation of the slave node, psi_m + psi_r, at the last evaluated state.
   double slaveRotation() const { return slaveRotation_; }
 
@@ -153,9 +192,23 @@ class JointedElement final : public Element, public Checkpoint, public MaterialC
     double psi = 0, vel = 0, acc = 0;
     double slip = 0;    // the hinge's accumulated |slip| (rad)
     double moment = 0;  // the joint's moment on the slave section (hinge, friction)
+    Vec2 shiftVel = Vec2::Zero(), shiftAcc = Vec2::Zero();  // the shift's rates (rigid end zone)
   };
 
   int dof() const { return kNodeDofs * slaveEnd_ + 2; }
+  // The whole evaluation in face coordinates (no arm: the outer ones).
+  Status evaluateAtFace(const ElementKinematics& face, const StepRule& rule, bool wantTangent,
+                        ElemVec& residual, ElemMat& tangent);
+  // Face coordinates of the outer kinematics (translations at the slave end
+  // moved by phi(psi_m)); the wrapped element's kinematics from them and psi_r.
+  ElementKinematics faceKinematics(const ElementKinematics& outer) const;
+  ElementKinematics fromFace(const ElementKinematics& face, double psi) const;
+  // The slave end of the wrapped element's kinematics `in` at relative rotation psi.
+  void turnSlave(ElementKinematics& in, const ElementKinematics& face, double psi) const;
+  // The wrapped element's residual and tangent at `in`, in face coordinates.
+  Status evaluateInner(const ElementKinematics& in, const StepRule& rule, ElemVec& residual,
+                       ElemMat& tangent);
+
   // No moment law acts: no friction, no hinge or a spent one.
   bool freeJoint() const {
     return friction_ <= 0 && (!hinge_ || hinge_->failed(committed_.slip));
@@ -163,8 +216,9 @@ class JointedElement final : public Element, public Checkpoint, public MaterialC
   // The local problem with the hinge law (stick or slip).
   Status evaluateHinge(const ElementKinematics& kin, const StepRule& rule, bool wantTangent,
                        ElemVec& residual, ElemMat& tangent);
-  // The wrapped element's axial force gradient (through an inner wrapper's).
-  ElemVec innerAxialGradient() const;
+  // The wrapped element's axial force gradient (through an inner wrapper's),
+  // in face coordinates at its kinematics d.
+  ElemVec innerAxialGradient(const ElemVec& d) const;
   void findMember();
   // A link (this wrapper around another, joints at both ends, neither with
   // friction): both relative rotations by one Newton iteration on the
@@ -183,6 +237,9 @@ class JointedElement final : public Element, public Checkpoint, public MaterialC
   Relative trial_, committed_;
   double slaveRotation_ = 0;
   double friction_ = 0, frictionEps_ = 1;
+  // The slave end's rigid arm (the innermost element's zone there; none: a
+  // joint at the node).
+  JointArm arm_;
   std::optional<EndHinge> hinge_;
   // The innermost element's axial force and laws (null: none that follow N).
   const RcMember* member_ = nullptr;

@@ -341,6 +341,16 @@ void syncSlaveNodes(const Model& model, State& state) {
     state.un[s + 2] += je->committedRelativeRotation();
     state.vn[s + 2] += je->committedRelativeVelocity();
     state.an[s + 2] += je->committedRelativeAcceleration();
+    // A joint at the face of a rigid end zone: the wrapped element's slave
+    // node is shifted (JointedElement.h).
+    if (je->hasArm()) {
+      state.u.segment<2>(s) += je->shiftAt(state.u[m + 2], je->relativeRotation());
+      state.v.segment<2>(s) += je->shiftVelocity();
+      state.a.segment<2>(s) += je->shiftAcceleration();
+      state.un.segment<2>(s) += je->shiftAt(state.un[m + 2], je->committedRelativeRotation());
+      state.vn.segment<2>(s) += je->committedShiftVelocity();
+      state.an.segment<2>(s) += je->committedShiftAcceleration();
+    }
   }
 }
 

@@ -32,6 +32,17 @@ RigidEnds::RigidEnds(const Vec2& x1, const Vec2& x2, double o1, double o2) : off
   arms_ = {o1 * t, -o2 * t};
 }
 
+RigidEnds RigidEnds::single(int end, const Vec2& arm) {
+  RigidEnds r;
+  r.offsets_[end] = arm.norm();
+  r.arms_[end] = arm;
+  return r;
+}
+
+Vec2 RigidEnds::armMotion(int end, double theta) const {
+  return rotated(theta, arms_[end]) - arms_[end];
+}
+
 ElemMat RigidEnds::linearMap() const {
   ElemMat g = ElemMat::Identity();
   for (int a = 0; a < 2; ++a) g.block<2, 1>(kNodeDofs * a, rotDof(a)) = quarter(arms_[a]);

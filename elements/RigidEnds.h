@@ -37,6 +37,9 @@ class RigidEnds {
   // x1, x2: the nodes' reference coordinates; offsets o1, o2 >= 0 with
   // o1 + o2 < |x2 - x1| (std::invalid_argument otherwise).
   RigidEnds(const Vec2& x1, const Vec2& x2, double o1, double o2);
+  // One arm, any reference vector, at end `end` (none at the other): the maps
+  // of a joint at a face (elements/JointedElement.h).
+  static RigidEnds single(int end, const Vec2& arm);
 
   bool any() const { return offsets_[0] > 0 || offsets_[1] > 0; }
   double offset(int end) const { return offsets_[end]; }
@@ -45,6 +48,9 @@ class RigidEnds {
   const Vec2& arm(int end) const { return arms_[end]; }
   // The faces' reference coordinates (the flexible part's ends).
   Vec2 face(int end, const Vec2& node) const { return node + arms_[end]; }
+
+  // The arm's motion (R(theta) - I) a at end `end` for the nodal rotation theta.
+  Vec2 armMotion(int end, double theta) const;
 
   // The linear (SMALl) map: d_face = G d.
   ElemMat linearMap() const;

@@ -55,14 +55,6 @@ void applyRigidEnds(MeshContext& ctx) {
     const auto it = ctx.elements.find(p.element);
     if (it == ctx.elements.end()) notBuilt(ctx, p);
     const MaterialSet& mat = *model.material(it->second.material);
-    if (mat.softening || mat.section)
-      failAt(p.origin, 0,
-             "element " + std::to_string(p.element) + " has hinge laws (material set " +
-                 std::to_string(mat.number) + ": " + (mat.section ? "SECTion" : "SOFTening") +
-                 "): its hinges become joints at the element's nodes, not at the faces of "
-                 "rigid end zones",
-             "give the member elastic or HARDening laws, or no rigid end zones (the node at the "
-             "face)");
     const std::array<int, 2> nodes{it->second.nodes[0] - 1, it->second.nodes[1] - 1};
     const Vec2 x1 = model.coord(nodes[0]), x2 = model.coord(nodes[1]);
     try {
@@ -90,9 +82,11 @@ std::vector<MeshCommandEntry> rigidCommandTable() {
                 "stiffness and strength are those of the flexible length between the faces "
                 "(its end moments, where end hinges are checked, are the faces'); the nodes "
                 "drive the faces through rigid arms (exact rotation under FINIte kinematics). "
-                "Mass and self-weight stay those of the full length. Refused for members with "
-                "hinge laws (SOFTening, SECTion), whose hinges would become joints at the "
-                "nodes. The log echoes each element's flexible length.",
+                "Mass and self-weight stay those of the full length. Hinge laws (SOFTening, "
+                "SECTion): a hinge at an end forms at the face, and the joint it becomes is "
+                "there: the rigid zone turns with the node, the flexible part's end section "
+                "with the node plus the joint's rotation. The log echoes each element's "
+                "flexible length.",
                 {}, "e offset1 offset2",
                 {expr("e", "element number"), expr("offset1", "rigid zone at the first node (m)"),
                  expr("offset2", "rigid zone at the second node (m)")}),

@@ -118,13 +118,14 @@ void printHingeTable(std::ostream& os, Model& model, const State& state, double 
     ++count;
   }
   // Hinges at the element ends (HINGes ENDS, SECTion): the joints carrying
-  // their laws, at their nodes; Jump is the joint's relative rotation.
+  // their laws, at their nodes or at the faces of rigid end zones (reference
+  // positions); Jump is the joint's relative rotation.
   for (int e = 0; e < model.numElements(); ++e) {
     if (!model.hasElement(e)) continue;
     for (const JointedElement* j = asJointed(&model.element(e)); j; j = asJointed(&j->inner())) {
       if (!j->hingeLaw()) continue;
       const HingeInfo info = j->hingeInfo();
-      const Vec2 p = model.coord(j->masterNode());
+      const Vec2 p = model.coord(j->masterNode()) + j->arm();
       const int step = e < static_cast<int>(activationStep.size()) ? activationStep[e] : 0;
       line(os, "%7d %5d %12.5E %12.5E %12.5E %12.5E  %s, end %d", e + 1, step, clean(p.x()),
            clean(p.y()), clean(info.jump), clean(info.moment), info.failed ? "failed" : "active",

@@ -105,13 +105,16 @@ TEST(RcMember, FiniteElementTangentWithInteractionAtLargeRotations) {
 
 // A member with its hinge at end 2 carried by a joint (elements/JointedElement
 // with materials/EndHinge): sticking, slipping with the capacity following the
-// member's axial force, and spent (a free joint).
+// member's axial force, and spent (a free joint). offsets: rigid end zones
+// (the joint at the face of the one at end 2).
 template <class Frame>
-void expectHingeJointTangents(Kinematics kin, const StepRule& rule) {
+void expectHingeJointTangents(Kinematics kin, const StepRule& rule,
+                              const std::array<double, 2>& offsets = {0.0, 0.0}) {
   const MaterialSet mat = rcMaterial(kin);
   for (double rot : {0.004, 0.02, 0.2}) {
     for (double stretch : {-2e-4, 0.0, 3e-5, 6e-5, 1e-4, 2e-3}) {
-      auto inner = std::make_unique<Frame>(mat, std::array<int, 2>{0, 2}, Vec2(0, 0), Vec2(1.5, 0));
+      auto inner =
+          std::make_unique<Frame>(mat, std::array<int, 2>{0, 2}, Vec2(0, 0), Vec2(1.5, 0), offsets);
       JointedElement e(std::move(inner), 1, 1);
       const MomentLaw l = mat.capacity->at(1, 0.0);
       e.setHinge(EndHinge(mat.capacity, 1, l.Mu, l.xiF));
@@ -146,6 +149,15 @@ TEST(RcMember, HingeJointTangentSmall) {
 TEST(RcMember, HingeJointTangentFinite) {
   for (const StepRule& rule : {StepRule{}, midPointRule(), midPointRule(Scheme::Newmark)})
     expectHingeJointTangents<ReissnerFrame>(Kinematics::Finite, rule);
+}
+
+TEST(RcMember, HingeJointAtTheFaceOfARigidZoneTangent) {
+  for (const StepRule& rule : {StepRule{}, midPointRule()}) {
+    expectHingeJointTangents<InelasticFrame>(Kinematics::Small, rule, {0.2, 0.4});
+    expectHingeJointTangents<ReissnerFrame>(Kinematics::Finite, rule, {0.2, 0.4});
+  }
+  expectHingeJointTangents<ReissnerFrame>(Kinematics::Finite, midPointRule(Scheme::Newmark),
+                                          {0.0, 0.4});
 }
 
 // A member at rest whose strain comes out of its node positions as +-1e-16

@@ -63,11 +63,18 @@ TEST(RigidCommand, Errors) {
   expectError(kBeam + "RIGId\n 1 0.1 0.1\n 1 0.2 0\n\n", 17, 2,
               "element 1 has rigid end zones already (line 16)");
   expectError(kBeam + "RIGId\n 1 0.1 0.1 7\n\n", 16, 12, "too many fields");
+}
+
+// Members with hinge laws take rigid zones too: their hinges form at the faces
+// (the joints made there: elements/JointedElement.h).
+TEST(RigidCommand, MembersWithHingeLawsTakeZones) {
   const std::string hinged =
       "COOR\n 1 1 0 0\n 4 0 3 0\n\n"
       "MATErial,1\n FRAMe\n RESUltant STIFfness 1e7 1e7 1e4\n SOFTening LINEar 10 -100\n\n"
       "ELEM\n 1 1 1 1 2\n 3 0 1 3 4\n\n";
-  expectError(hinged + "RIGId\n 1 0.1 0\n\n", 17, 2, "has hinge laws (material set 1: SOFTening)");
+  const Model m = build(hinged + "RIGId\n 1 0.1 0\n 3 0 0.25\n\n");
+  EXPECT_EQ(rigidOffsets(m.element(0)), (std::array<double, 2>{0.1, 0.0}));
+  EXPECT_EQ(rigidOffsets(m.element(2)), (std::array<double, 2>{0.0, 0.25}));
 }
 
 TEST(RigidCommand, RemovedOrEarlierElementsAreRefused) {
