@@ -6,8 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -17,10 +16,7 @@ namespace c2d {
 namespace {
 
 testing::DeckResult runWallsDeck(const testing::DeckTempDir& dir, const std::string& name) {
-  std::ifstream in(std::string(C2D_SOURCE_DIR) + "/decks/walls/" + name);
-  std::stringstream text;
-  text << in.rdbuf();
-  return testing::runDeckText(dir, name, text.str());
+  return testing::runDeckFile(dir, std::string(C2D_SOURCE_DIR) + "/decks/walls/" + name);
 }
 
 TEST(FaceHinge, CantileverOpensAtTheFaceAndTurnsAboutIt) {
@@ -68,6 +64,19 @@ TEST(FaceHinge, RcCantileverOpensAtTheFace) {
   EXPECT_NE(r.log.find("end 1 (node 1, joint's slave node 8)"), std::string::npos) << r.log;
   EXPECT_NE(r.log.find("shear span L_V = 2.600000e+00"), std::string::npos);
   EXPECT_LT(-f.back(), 0.7 * Mu / (L - o));  // softening at the face
+}
+
+// RC beams framing into a wall's faces through rigid zones: their hinges open
+// at the faces (x = 6 and 10 m on the beams' axis y = 3), at the beam's Mu(N).
+TEST(FaceHinge, BeamsFramingIntoAWallHingeAtItsFaces) {
+  const testing::DeckTempDir dir;
+  const testing::DeckResult r = runWallsDeck(dir, "wall_rc_beams.inp");
+  ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
+  for (const std::string& row : {std::string(R"(\n +16 +\d+ +6\.00000E\+00 +3\.00000E\+00 .*end 2\n)"),
+                                 std::string(R"(\n +17 +\d+ +1\.00000E\+01 +3\.00000E\+00 .*end 1\n)")})
+    EXPECT_TRUE(std::regex_search(r.log, std::regex(row))) << row << "\n" << r.log;
+  EXPECT_NE(r.log.find("element 16 end 2 (node 10,"), std::string::npos);
+  EXPECT_NE(r.log.find("element 17 end 1 (node 10,"), std::string::npos);
 }
 
 }  // namespace

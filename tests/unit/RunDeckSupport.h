@@ -21,9 +21,8 @@ struct DeckResult {
   std::string log;            // the <stem>.out log
 };
 
-inline DeckResult runDeckText(const DeckTempDir& dir, const std::string& name, const std::string& text,
-                              bool quiet = true) {
-  const std::string path = dir.write(name, text);
+// Runs the deck at path (its includes beside it) with its outputs in <dir>/out.
+inline DeckResult runDeckFile(const DeckTempDir& dir, const std::string& path, bool quiet = true) {
   DeckOptions o;
   o.outDir = dir.path() / "out";
   o.quiet = quiet;
@@ -33,11 +32,16 @@ inline DeckResult runDeckText(const DeckTempDir& dir, const std::string& name, c
   r.outcome = runDeck(path, o, commands, console);
   r.console = console.str();
   r.out = o.outDir;
-  std::ifstream log(o.outDir / (std::filesystem::path(name).stem().string() + ".out"));
+  std::ifstream log(o.outDir / (std::filesystem::path(path).stem().string() + ".out"));
   std::stringstream ss;
   ss << log.rdbuf();
   r.log = ss.str();
   return r;
+}
+
+inline DeckResult runDeckText(const DeckTempDir& dir, const std::string& name, const std::string& text,
+                              bool quiet = true) {
+  return runDeckFile(dir, dir.write(name, text), quiet);
 }
 
 // A CSV file of numbers with a header row (TPLOt, debris and plan tables).
