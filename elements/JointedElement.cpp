@@ -494,14 +494,14 @@ void JointedElement::revert() {
 double JointedElement::kineticEnergy(const ElemVec& v) const {
   ElemVec vin = v;
   vin(dof()) += trial_.vel;
-  vin.segment<2>(kNodeDofs * slaveEnd_) += trial_.shiftVel;
+  if (arm_.any()) vin.segment<2>(kNodeDofs * slaveEnd_) += trial_.shiftVel;
   return inner_->kineticEnergy(vin);
 }
 
 ElemVec JointedElement::momentum(const ElemVec& v) const {
   ElemVec vin = v;
   vin(dof()) += trial_.vel;
-  vin.segment<2>(kNodeDofs * slaveEnd_) += trial_.shiftVel;
+  if (arm_.any()) vin.segment<2>(kNodeDofs * slaveEnd_) += trial_.shiftVel;
   return inner_->momentum(vin);
 }
 

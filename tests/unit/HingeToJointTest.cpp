@@ -299,7 +299,9 @@ TEST(HingeToJoint, SoftenedCantileverBecomesAPendulumWithContinuousSectionForces
 // turning against each other: the member would fold through any angle). The
 // switch keeps the first joint's relative rotation and rates as the motion
 // left them, and the member's section forces and stored energy.
-TEST(JointFailedHinges, AMemberFailedTwiceBecomesALinkPinnedAtBothEnds) {
+// With rigid end zones on that member (offsets) its joints are at the faces:
+// each face stays where the master's arm puts it through the switch.
+void memberFailedTwice(const std::array<double, 2>& offsets) {
   const MaterialSet mat = test::hingedRodMaterial(0.6);
   Model m;
   m.materials()[1] = mat;
@@ -307,7 +309,8 @@ TEST(JointFailedHinges, AMemberFailedTwiceBecomesALinkPinnedAtBothEnds) {
   for (int i = 0; i < 4; ++i) m.setCoord(i, Vec2(1.0 * i, 0));
   for (int e = 0; e < 3; ++e)
     m.setElement(e, std::make_unique<ReissnerFrame>(mat, std::array{e, e + 1}, m.coord(e),
-                                                    m.coord(e + 1)));
+                                                    m.coord(e + 1),
+                                                    e == 1 ? offsets : std::array{0.0, 0.0}));
   // Element 1 on a slave of node 1: the joint of its first failure.
   const int first = m.addNode(m.coord(1));
   m.element(1).setNodes({first, 2});
@@ -330,8 +333,14 @@ TEST(JointFailedHinges, AMemberFailedTwiceBecomesALinkPinnedAtBothEnds) {
   }
   s.un = s.u;
   s.vn = s.v;
-  jointedElements(m).front()->setRelativeState(0.2, 0.5, 0);
+  jointedElements(m).front()->setRelativeState(0.2, 0.5, 0, Vec2(0.1, -0.3), Vec2(0, 0));
   syncSlaveNodes(m, s);
+  // The slave node carries the wrapped element's end: the master's motion
+  // plus the shift of a joint at a face, and the shift's velocity.
+  const JointedElement& firstJoint = *jointedElements(m).front();
+  EXPECT_EQ(s.u.segment<2>(3 * first), s.u.segment<2>(3) + firstJoint.shiftAt(s.u[5], 0.2));
+  EXPECT_EQ(s.v.segment<2>(3 * first),
+            s.v.segment<2>(3) + (firstJoint.hasArm() ? Vec2(0.1, -0.3) : Vec2::Zero()));
   const StepRule statics{};
   auto innerEnergy = [&] {
     ElemVec r;
@@ -340,6 +349,16 @@ TEST(JointFailedHinges, AMemberFailedTwiceBecomesALinkPinnedAtBothEnds) {
     EXPECT_TRUE(in.evaluate(innermostKinematics(m.element(1), s), statics, false, r, k));
     return std::pair{in.strainEnergy(), in.sectionForces()};
   };
+  // The inner element's face at `end` less where the master's arm puts it.
+  auto faceMiss = [&](int end, int master) {
+    const auto& frame = dynamic_cast<const ReissnerFrame&>(innermost(m.element(1)));
+    const ElementKinematics in = innermostKinematics(m.element(1), s);
+    const Vec2 face = in.d.segment<2>(3 * end) + frame.rigidEnds().armMotion(end, in.d(3 * end + 2));
+    const double psiM = s.u[3 * master + 2];
+    const Vec2 node = s.u.segment<2>(3 * master);
+    return (face - node - frame.rigidEnds().armMotion(end, psiM)).norm();
+  };
+  EXPECT_LT(faceMiss(0, 1), 1e-15);
   const auto [energyBefore, forcesBefore] = innerEnergy();
   const double alpha = dynamic_cast<const HingeCarrier&>(innermost(m.element(1))).hinge().jump;
 
@@ -370,6 +389,8 @@ TEST(JointFailedHinges, AMemberFailedTwiceBecomesALinkPinnedAtBothEnds) {
   EXPECT_NEAR(forcesAfter.N, forcesBefore.N, 1e-9 * std::abs(forcesBefore.N));
   EXPECT_NEAR(forcesAfter.V, forcesBefore.V, 1e-9 * std::abs(forcesBefore.N));
   EXPECT_NEAR(forcesAfter.M, 0, 1e-9);
+  EXPECT_LT(faceMiss(0, 1), 1e-15);
+  EXPECT_LT(faceMiss(1, 2), 1e-15);
 
   // A link pinned at both ends opens no hinge and gets no third joint: a
   // failed hinge there leaves it as it is.
@@ -377,6 +398,14 @@ TEST(JointFailedHinges, AMemberFailedTwiceBecomesALinkPinnedAtBothEnds) {
   const int version = m.topologyVersion();
   EXPECT_TRUE(jointFailedHinges(m, s).empty());
   EXPECT_EQ(m.topologyVersion(), version);
+}
+
+TEST(JointFailedHinges, AMemberFailedTwiceBecomesALinkPinnedAtBothEnds) {
+  memberFailedTwice({0.0, 0.0});
+}
+
+TEST(JointFailedHinges, AMemberWithRigidZonesFailedTwiceIsPinnedAtItsFaces) {
+  memberFailedTwice({0.2, 0.3});
 }
 
 // A member breaks where it carries a moment to the rest of the model, never
