@@ -377,7 +377,8 @@ END
 BATCh
 )";
 
-TEST(Restart, RcMemberWithAnOpenEndHingeContinuesBitForBit) {
+// deck: kRcColumn or a variant of it.
+void rcColumnContinuesBitForBit(const std::string& deck) {
   DeckTempDir dir;
   const std::string start =
       "  PROP,,1\n  PROP,,2\n  TPLOt\n  DT,,1\n" + newtonLoop("TIME", 1) + "  DT,,0.002\n";
@@ -386,14 +387,14 @@ TEST(Restart, RcMemberWithAnOpenEndHingeContinuesBitForBit) {
   const std::string restData = "reac,1,3\ndisp,5,1\nstre,1,1\n\nSTOP\n";
   const DeckResult whole =
       runDeckText(dir, "whole.inp",
-                  kRcColumn + start + newtonLoop("TIME", 30) + "  SAVE,whole_end\nEND\n" + data);
+                  deck + start + newtonLoop("TIME", 30) + "  SAVE,whole_end\nEND\n" + data);
   expectRan(whole);
   const DeckResult first = runDeckText(
-      dir, "first.inp", kRcColumn + start + newtonLoop("TIME", 15) + "  SAVE,mid\nEND\n" + data);
+      dir, "first.inp", deck + start + newtonLoop("TIME", 15) + "  SAVE,mid\nEND\n" + data);
   expectRan(first);
   const DeckResult rest =
       runDeckText(dir, "rest.inp",
-                  std::string(kRcColumn) + "  REST,mid\n  TPLOt\n" + newtonLoop("TIME", 15) +
+                  deck + "  REST,mid\n  TPLOt\n" + newtonLoop("TIME", 15) +
                       "  SAVE,rest_end\nEND\n" + restData);
   expectRan(rest);
   // The save falls while the base hinge softens: its joint is in the model.
@@ -407,6 +408,28 @@ TEST(Restart, RcMemberWithAnOpenEndHingeContinuesBitForBit) {
   expectSameTail(readText(whole.out / "whole_tplot.csv"), readText(first.out / "first_tplot.csv"),
                  readText(rest.out / "rest_tplot.csv"));
   expectSameState(whole.out / "whole_end.rst", rest.out / "rest_end.rst");
+}
+
+TEST(Restart, RcMemberWithAnOpenEndHingeContinuesBitForBit) { rcColumnContinuesBitForBit(kRcColumn); }
+
+// The column with a rigid zone of 0.3 m at its base: its hinge's joint is at
+// the face (elements/JointedElement.h), the shift's history in the file.
+TEST(Restart, RcMemberWithAHingeAtAZonesFaceContinuesBitForBit) {
+  std::string deck = kRcColumn;
+  const std::string at = "BOUNdary\n";
+  deck.insert(deck.find(at), "RIGId\n  1 0.3 0\n\n");
+  rcColumnContinuesBitForBit(deck);
+  DeckTempDir dir;
+  const DeckResult run = runDeckText(
+      dir, "zone.inp",
+      deck + "  PROP,,1\n  PROP,,2\n  DT,,1\n" + newtonLoop("TIME", 1) + "  DT,,0.002\n" +
+          newtonLoop("TIME", 15) + "  SAVE,mid\nEND\n2\n  0 1 1e6 1\n\n2\n  0 0 1 0 1e6 1e6-1\n\nSTOP\n");
+  expectRan(run);
+  const Loaded mid(run.out / "mid.rst");
+  const std::vector<const JointedElement*> joints = jointedElements(mid.model);
+  ASSERT_EQ(joints.size(), 1u);
+  EXPECT_TRUE(joints.front()->hasArm());
+  EXPECT_NE(joints.front()->committedRelativeRotation(), 0.0);
 }
 
 // A bar dropped on a crushing ground, run until at rest (TIME,REST).
