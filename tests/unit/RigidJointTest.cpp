@@ -142,6 +142,31 @@ INSTANTIATE_TEST_SUITE_P(
                        ::testing::Values(Inner::Reissner, Inner::Timoshenko),
                        ::testing::Values(0, 1)));
 
+// A joint with friction at a face: the tangent matches central differences.
+TEST(RigidJoint, FrictionAtAFaceTangentMatchesCentralDifferences) {
+  for (Scheme scheme : {Scheme::Static, Scheme::Newmark, Scheme::MidPoint})
+    for (Inner kind : {Inner::Reissner, Inner::Timoshenko})
+      for (int slaveEnd : {0, 1}) {
+        std::mt19937 gen(11 + static_cast<int>(kind) + slaveEnd);
+        JointedElement e(makeInner(kind), slaveEnd, 7);
+        e.setRelativeState(0.3, 0.5, -0.2, Vec2(0.1, -0.2), Vec2(0.3, 0.4));
+        const double Mr = 40;
+        e.setFriction(Mr, 0.3);
+        const StepRule rule = ruleFor(scheme);
+        for (int trial = 0; trial < 3; ++trial) {
+          const ElementKinematics kin = trialKinematics(gen, kind, trial);
+          ElemVec r;
+          ElemMat k;
+          ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
+          const ElemMat fd = test::centralDifferenceTangent(e, kin, rule);
+          EXPECT_LT((fd - k).cwiseAbs().maxCoeff(), 2e-6 * k.cwiseAbs().maxCoeff())
+              << "scheme " << static_cast<int>(scheme) << "\nK =\n"
+              << k << "\nFD =\n"
+              << fd;
+        }
+      }
+}
+
 // The shift's rates go through a restart file.
 TEST(RigidJoint, RestartKeepsTheShiftRates) {
   JointedElement e(makeInner(Inner::Reissner), 0, 7);
