@@ -167,6 +167,42 @@ TEST(RigidJoint, FrictionAtAFaceTangentMatchesCentralDifferences) {
       }
 }
 
+// A link (joints at both ends, both at faces) by the nested iteration: each
+// wrapped element's face where its master's arm puts it, the tangent the
+// derivative of the residual.
+TEST(RigidJoint, LinkWithZonesAtBothFacesTangentMatchesCentralDifferences) {
+  for (Scheme scheme : {Scheme::Static, Scheme::MidPoint})
+    for (Inner kind : {Inner::Reissner, Inner::Timoshenko}) {
+      std::mt19937 gen(31 + static_cast<int>(kind));
+      auto inner = std::make_unique<JointedElement>(makeInner(kind), 0, 7);
+      inner->setRelativeState(0.3, 0.5, -0.2);
+      JointedElement link(std::move(inner), 1, 8);
+      link.setRelativeState(-0.2, -0.4, 0.3);
+      ASSERT_TRUE(link.hasArm());
+      const StepRule rule = ruleFor(scheme);
+      for (int trial = 0; trial < 3; ++trial) {
+        const ElementKinematics kin = trialKinematics(gen, kind, trial);
+        ElemVec r;
+        ElemMat k;
+        ASSERT_TRUE(link.evaluate(kin, rule, true, r, k).ok);
+        const auto& j = dynamic_cast<const JointedElement&>(link.inner());
+        const ElementKinematics in =
+            j.innerKinematics(link.innerKinematics(kin, link.relativeRotation()), j.relativeRotation());
+        for (int end : {0, 1}) {
+          const Vec2 a = end == 0 ? j.arm() : link.arm();
+          const int t = 3 * end;
+          const Vec2 face = in.d.segment<2>(t) + armMotion(kind, a, in.d(t + 2));
+          EXPECT_LT((face - kin.d.segment<2>(t) - armMotion(kind, a, kin.d(t + 2))).norm(), 1e-14);
+        }
+        const ElemMat fd = test::centralDifferenceTangent(link, kin, rule);
+        EXPECT_LT((fd - k).cwiseAbs().maxCoeff(), 2e-7 * k.cwiseAbs().maxCoeff())
+            << "scheme " << static_cast<int>(scheme) << "\nK =\n"
+            << k << "\nFD =\n"
+            << fd;
+      }
+    }
+}
+
 // The shift's rates go through a restart file.
 TEST(RigidJoint, RestartKeepsTheShiftRates) {
   JointedElement e(makeInner(Inner::Reissner), 0, 7);
