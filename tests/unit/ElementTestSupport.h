@@ -94,7 +94,7 @@ inline MaterialSet hingedRodMaterial(double thetaR) {
   m.density = 1;
   m.A = 10;
   m.I = 1e-2;
-  m.hardening = HardeningData{1.0, 2.0, 400, 40};
+  m.hardening = HardeningData{{1.0, 2.0, 400, 40}};
   m.softening = SofteningData{2.4, -8, thetaR};
   return m;
 }

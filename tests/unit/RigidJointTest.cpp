@@ -79,7 +79,10 @@ using Case = std::tuple<Scheme, Inner, int>;
 class RigidJointTangent : public ::testing::TestWithParam<Case> {};
 
 TEST_P(RigidJointTangent, FaceFollowsTheMasterAndTangentMatchesCentralDifferences) {
-  const auto [scheme, kind, slaveEnd] = GetParam();
+  // Named copies, not a structured binding: the lambdas below capture them.
+  const Scheme scheme = std::get<0>(GetParam());
+  const Inner kind = std::get<1>(GetParam());
+  const int slaveEnd = std::get<2>(GetParam());
   std::mt19937 gen(23 + 3 * static_cast<int>(kind) + slaveEnd);
   JointedElement e(makeInner(kind), slaveEnd, 7);
   ASSERT_TRUE(e.hasArm());
