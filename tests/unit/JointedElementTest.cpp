@@ -15,12 +15,13 @@
 #include "core/DofMap.h"
 #include "core/Model.h"
 #include "elements/JointedElement.h"
-#include "tests/unit/ElementTestSupport.h"
 #include "elements/Joints.h"
 #include "elements/LinearFrame.h"
 #include "elements/ReissnerFrame.h"
 #include "solvers/Analysis.h"
 #include "solvers/TimeIntegrator.h"
+#include "tests/unit/ElementTestSupport.h"
+#include "tests/unit/JointTestSupport.h"
 
 namespace c2d {
 namespace {
@@ -29,7 +30,7 @@ enum class Inner { Reissner, Timoshenko, EulerBernoulli };
 
 MaterialSet frameMaterial(Inner kind) {
   return test::resultantMaterial(kind == Inner::Reissner ? Kinematics::Finite : Kinematics::Small,
-                                  kind != Inner::EulerBernoulli);
+                                 kind != Inner::EulerBernoulli);
 }
 
 std::unique_ptr<Element> makeInner(Inner kind, const Vec2& x1, const Vec2& x2) {
@@ -38,27 +39,7 @@ std::unique_ptr<Element> makeInner(Inner kind, const Vec2& x1, const Vec2& x2) {
   return std::make_unique<LinearFrame>(m, std::array{3, 4}, x1, x2);
 }
 
-StepRule ruleFor(Scheme s) {
-  switch (s) {
-    case Scheme::Static:
-      return TimeIntegrator::statics().rule(0.05);
-    case Scheme::Newmark:
-      return TimeIntegrator::newmark(0.3, 0.6).rule(0.05);
-    case Scheme::MidPoint:
-      return TimeIntegrator::midPoint(0.1, 0.05).rule(0.05);
-  }
-  return {};
-}
-
-Eigen::Matrix2d rot(double a) {
-  return (Eigen::Matrix2d() << std::cos(a), -std::sin(a), std::sin(a), std::cos(a)).finished();
-}
-
-ElemVec rigidMotion(const Vec2& x1, const Vec2& x2, double w, const Vec2& t) {
-  ElemVec d;
-  d << rot(w) * x1 + t - x1, w, rot(w) * x2 + t - x2, w;
-  return d;
-}
+StepRule ruleFor(Scheme s) { return test::integratorRule(s); }
 
 // The tangent checks' element: kind's element from x1 to x2 jointed at its end
 // slaveEnd (slave node 7), a relative rotation under way.
@@ -73,11 +54,8 @@ std::unique_ptr<JointedElement> trialJoint(Inner kind, int slaveEnd) {
 // trial rad from t_n, perturbed (0.15 for the Reissner element, else 0.05),
 // with random rates and accelerations at t_n.
 ElementKinematics trialKinematics(std::mt19937& gen, Inner kind, int trial) {
-  const double scale = kind == Inner::Reissner ? 0.15 : 0.05;
-  const Vec2 &x1 = kTrialX1, &x2 = kTrialX2;
-  return {rigidMotion(x1, x2, 0.8 * trial, Vec2(0.2, -0.1)) + test::randomVec(gen, scale),
-          rigidMotion(x1, x2, 0.8 * trial - 0.1, Vec2(0.1, 0)) + test::randomVec(gen, scale),
-          test::randomVec(gen, 1.0), test::randomVec(gen, 5.0)};
+  return test::trialKinematics(gen, kTrialX1, kTrialX2, kind == Inner::Reissner ? 0.15 : 0.05,
+                               trial);
 }
 
 using TangentCase = std::tuple<Scheme, Inner, int>;
@@ -112,11 +90,9 @@ TEST_P(JointedElementTangent, CondensedTangentMatchesCentralDifferences) {
     const ElemMat cond = kin6 - kin6.col(kr) * kin6.row(kr) / kin6(kr, kr);
     EXPECT_LT((cond - k).cwiseAbs().maxCoeff(), 1e-13 * k.cwiseAbs().maxCoeff());
 
-    const ElemMat fd = test::centralDifferenceTangent(e, kin, rule);
-    EXPECT_LT((fd - k).cwiseAbs().maxCoeff(), 2e-7 * k.cwiseAbs().maxCoeff())
-        << "scheme " << static_cast<int>(scheme) << ", trial " << trial << "\nK =\n"
-        << k << "\nFD =\n"
-        << fd;
+    test::expectTangentMatchesDifferences(
+        e, kin, rule, k, 2e-7,
+        "scheme " + std::to_string(static_cast<int>(scheme)) + ", trial " + std::to_string(trial));
   }
 }
 
@@ -142,8 +118,8 @@ class Counted final : public Element {
   void setNodes(const std::array<int, 2>& n) override { e_->setNodes(n); }
   int materialNumber() const override { return e_->materialNumber(); }
   std::string typeName() const override { return e_->typeName(); }
-  Status evaluate(const ElementKinematics& kin, const StepRule& rule, bool wantTangent,
-                  ElemVec& r, ElemMat& k) override {
+  Status evaluate(const ElementKinematics& kin, const StepRule& rule, bool wantTangent, ElemVec& r,
+                  ElemMat& k) override {
     ++count_;
     return e_->evaluate(kin, rule, wantTangent, r, k);
   }
@@ -201,12 +177,12 @@ TEST_P(JointedElementLink, BothJointsSolvedAtOnceAsByTheNestedIteration) {
     // The innermost element's residual at the rotations found.
     ElemVec rin;
     ElemMat kin6;
-    ASSERT_TRUE(inner.inner()
-                    .evaluate(inner.innerKinematics(
-                                  link->innerKinematics(kin, link->relativeRotation()),
-                                  inner.relativeRotation()),
-                              rule, true, rin, kin6)
-                    .ok);
+    ASSERT_TRUE(
+        inner.inner()
+            .evaluate(inner.innerKinematics(link->innerKinematics(kin, link->relativeRotation()),
+                                            inner.relativeRotation()),
+                      rule, true, rin, kin6)
+            .ok);
     EXPECT_EQ((rin - r).cwiseAbs().maxCoeff(), 0.0);
     const ElemMat fd = test::centralDifferenceTangent(*link, kin, rule);
     EXPECT_LT((fd - k).cwiseAbs().maxCoeff(), 2e-7 * k.cwiseAbs().maxCoeff())
@@ -229,10 +205,10 @@ TEST_P(JointedElementLink, BothJointsSolvedAtOnceAsByTheNestedIteration) {
   EXPECT_EQ(evaluations - before, 2);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    JointedElement, JointedElementLink,
-    ::testing::Combine(::testing::Values(Scheme::Static, Scheme::Newmark, Scheme::MidPoint),
-                       ::testing::Values(Inner::Reissner, Inner::Timoshenko)));
+INSTANTIATE_TEST_SUITE_P(JointedElement, JointedElementLink,
+                         ::testing::Combine(::testing::Values(Scheme::Static, Scheme::Newmark,
+                                                              Scheme::MidPoint),
+                                            ::testing::Values(Inner::Reissner, Inner::Timoshenko)));
 
 // With friction Mr the moment on the master is the friction's reaction, at most
 // Mr, and the condensed tangent is still the derivative of the residual, when
@@ -255,11 +231,10 @@ TEST(JointedElement, FrictionTangentMatchesCentralDifferences) {
           const int kr = 5;
           EXPECT_LE(std::abs(r(kr)), Mr);
           EXPECT_GT(std::abs(r(kr)), 1e-3 * Mr);
-          const ElemMat fd = test::centralDifferenceTangent(e, kin, rule);
-          EXPECT_LT((fd - k).cwiseAbs().maxCoeff(), 2e-6 * k.cwiseAbs().maxCoeff())
-              << "scheme " << static_cast<int>(scheme) << ", eps " << eps << "\nK =\n"
-              << k << "\nFD =\n"
-              << fd;
+          test::expectTangentMatchesDifferences(e, kin, rule, k, 2e-6,
+                                                "scheme " +
+                                                    std::to_string(static_cast<int>(scheme)) +
+                                                    ", eps " + std::to_string(eps));
         }
       }
 }
@@ -273,7 +248,7 @@ TEST(JointedElement, FiniteRigidMotionReleasesThePinnedEnd) {
     JointedElement e(makeInner(Inner::Reissner, x1, x2), end, 0);
     e.setRelativeState(0.4);
     for (double w : {0.0, 1.3, 4.0, -9.0}) {
-      const ElemVec d = rigidMotion(x1, x2, w, Vec2(1.0, -3.0));
+      const ElemVec d = test::rigidMotion(x1, x2, w, Vec2::Zero(), Vec2(1.0, -3.0));
       ElemVec r;
       ElemMat k;
       ASSERT_TRUE(
@@ -325,8 +300,8 @@ TEST(JointedElement, CommitRevertAndRelativeRatesFollowTheStepRule) {
   JointedElement e(makeInner(Inner::Reissner, x1, x2), 0, 2);
   e.setRelativeState(0.2, 0.7, -1.5);
   const StepRule rule = ruleFor(Scheme::Newmark);
-  const ElementKinematics a{test::randomVec(gen, 0.1), test::randomVec(gen, 0.1), test::randomVec(gen, 1.0),
-                            test::randomVec(gen, 1.0)};
+  const ElementKinematics a{test::randomVec(gen, 0.1), test::randomVec(gen, 0.1),
+                            test::randomVec(gen, 1.0), test::randomVec(gen, 1.0)};
   ElementKinematics b = a;
   b.d += test::randomVec(gen, 0.1);
   ElemVec r;
@@ -520,8 +495,8 @@ TEST(JointedElementSetup, NodeHeldOnlyByJointsHasNoRotationEquation) {
   EXPECT_GE(DofMap(m).eq(2, 2), 0);
   m.resizeNodes(7);
   m.setCoord(6, m.coord(2));
-  auto inner = std::make_unique<ReissnerFrame>(m.materials()[1], std::array{1, 6}, m.coord(1),
-                                               m.coord(6));
+  auto inner =
+      std::make_unique<ReissnerFrame>(m.materials()[1], std::array{1, 6}, m.coord(1), m.coord(6));
   m.setElement(1, std::make_unique<JointedElement>(std::move(inner), 1, 2));
   m.bumpTopology();
   const DofMap dofs(m);
