@@ -1,5 +1,6 @@
 #include "macro/Help.h"
 
+#include <array>
 #include <string>
 
 #include "macro/commands/MeshCommands.h"
@@ -62,16 +63,26 @@ void printSpec(std::ostream& os, const CommandSpec& s) {
     printWrapped(os, "      units:", 8, u);
 }
 
+// The deck's command registries, in the order help lists them.
+struct DeckRegistries {
+  CommandRegistry mesh{"Mesh commands"}, sub{"Material sets: element types and sub-records"},
+      blocks{"Top-level blocks (before a problem)"};
+  DeckRegistries() {
+    registerMeshCommands(mesh);
+    registerMaterialSubRecords(sub);
+    registerDeckBlocks(blocks);
+    registerEnsembleBlock(blocks);
+  }
+  std::array<const CommandRegistry*, 4> all(const SolutionCommands& solution) const {
+    return {&mesh, &sub, &blocks, &solution.registry()};
+  }
+};
+
 }  // namespace
 
 void printAllHelp(std::ostream& os, const SolutionCommands& solution) {
-  CommandRegistry mesh("Mesh commands"), sub("Material sets: element types and sub-records");
-  registerMeshCommands(mesh);
-  registerMaterialSubRecords(sub);
-  CommandRegistry blocks("Top-level blocks (before a problem)");
-  registerDeckBlocks(blocks);
-  registerEnsembleBlock(blocks);
-  for (const CommandRegistry* r : {static_cast<const CommandRegistry*>(&mesh), static_cast<const CommandRegistry*>(&sub), static_cast<const CommandRegistry*>(&blocks), &solution.registry()}) {
+  const DeckRegistries deck;
+  for (const CommandRegistry* r : deck.all(solution)) {
     os << r->title() << "\n";
     for (const CommandSpec& s : r->specs()) printSpec(os, s);
     os << "\n";
@@ -84,14 +95,9 @@ bool printCommandHelp(std::ostream& os, const SolutionCommands& solution, const 
     printWrapped(os, "", 0, units::systemHelp());
     return true;
   }
-  CommandRegistry mesh("Mesh commands"), sub("Material sets: element types and sub-records");
-  registerMeshCommands(mesh);
-  registerMaterialSubRecords(sub);
-  CommandRegistry blocks("Top-level blocks (before a problem)");
-  registerDeckBlocks(blocks);
-  registerEnsembleBlock(blocks);
+  const DeckRegistries deck;
   bool found = false;
-  for (const CommandRegistry* r : {static_cast<const CommandRegistry*>(&mesh), static_cast<const CommandRegistry*>(&sub), static_cast<const CommandRegistry*>(&blocks), &solution.registry()}) {
+  for (const CommandRegistry* r : deck.all(solution)) {
     if (const CommandSpec* s = r->find(word)) {
       os << r->title() << ":\n";
       printSpec(os, *s);
@@ -100,7 +106,7 @@ bool printCommandHelp(std::ostream& os, const SolutionCommands& solution, const 
   }
   if (!found) {
     os << "no command '" << word << "'";
-    for (const CommandRegistry* r : {static_cast<const CommandRegistry*>(&mesh), static_cast<const CommandRegistry*>(&sub), static_cast<const CommandRegistry*>(&blocks), &solution.registry()}) {
+    for (const CommandRegistry* r : deck.all(solution)) {
       const std::string hint = r->suggest(word);
       if (!hint.empty()) {
         os << "; " << hint;
