@@ -162,8 +162,7 @@ void Assembler::evaluateMemberContact(const State& s, const StepRule& rule, bool
   // touching: the pairs about to touch, not every pair of the search (whose
   // couplings would only add fill to the factors). Within by their
   // penetration, not only by their boxes: the boxes of members lying along
-  // each other overlap far beyond it (the main example's pile: 880 pairs in
-  // the pattern by their boxes, 450 by their penetration, 140-170 touching).
+  // each other overlap far beyond it (docs/design/member-contact.md).
   patternPairs_.clear();
   const double reserve = 0.25 * members_->margin();
   // (The pairs with a force always: they are candidates, in the same order.)
@@ -315,7 +314,7 @@ double Assembler::strainEnergy() const {
   return w;
 }
 
-double Assembler::contactEnergy(const State& s) const {
+double Assembler::contactEnergy(const State& s) {
   double w = 0;
   if (members_) {
     // At the committed positions the member contact's last commit found the
@@ -367,7 +366,7 @@ const Eigen::VectorXd& Assembler::stretchesOf(const State& s) const {
   return evaluated ? stretch_ : s.stretch;
 }
 
-double Assembler::contactDissipation(const State& s, const StepRule& rule) const {
+double Assembler::contactDissipation(const State& s, const StepRule& rule) {
   double d = members_ ? members_->dissipation(model_, s, rule) : 0.0;
   const auto& ground = model_.ground();
   if (!ground) return d;
@@ -382,7 +381,7 @@ double Assembler::contactDissipation(const State& s, const StepRule& rule) const
   return d;
 }
 
-void Assembler::contactMotions(const State& s, std::vector<ContactMotion>& out) const {
+void Assembler::contactMotions(const State& s, std::vector<ContactMotion>& out) {
   out.clear();
   if (const auto& ground = model_.ground())
     for (int n = 0; n < model_.numNodes(); ++n) {

@@ -14,7 +14,7 @@
 //
 // Member contact couples a node with the ends of an element segment: its pairs
 // are in the pattern too. The pattern holds the candidate pairs of the contact
-// search (core/contact/MemberContact.h) whose penetration is within a quarter of the
+// search (core/contact/ContactSearch.h) whose penetration is within a quarter of the
 // search margin of touching (so the pairs that come into contact over the next
 // steps are mostly there already) and is rebuilt, with the current candidates, only when
 // a pair carrying a force is not in it; structureVersion() then changes and the
@@ -79,7 +79,9 @@ class Assembler {
 
   // Energies at the last assembled state.
   double strainEnergy() const;
-  double contactEnergy(const State& s) const;  // ground and member contact penalty energy
+  // Ground and member contact penalty energy (not const, as the other
+  // questions about the member contact below: it keeps what it finds).
+  double contactEnergy(const State& s);
   // The contacts' state at the end of the last assembled step into s when it
   // is committed: the ground's loading points and friction stretches, the
   // member contact pairs' memory. Returns the energy that released without
@@ -92,7 +94,7 @@ class Assembler {
   // After the member contact starts or the topology changes (s committed):
   // pairs set free inside each other's contact distance start at zero force
   // (MemberContact::openPairs).
-  void openContacts(State& s) const {
+  void openContacts(State& s) {
     if (members_) members_->openPairs(model_, s);
   }
   double kineticEnergy(const State& s) const;
@@ -108,18 +110,18 @@ class Assembler {
   // (mid-point scheme) and the ground friction. Under the static and Newmark
   // rules the penalty forces are plain gradients at t_n+1; what that loses or
   // gains is the integrator's, not counted here.
-  double contactDissipation(const State& s, const StepRule& rule) const;
+  double contactDissipation(const State& s, const StepRule& rule);
 
   // The motion over the step from the committed state to s of every contact
   // that touches at either end (ground nodes, then member pairs), into out.
-  void contactMotions(const State& s, std::vector<ContactMotion>& out) const;
+  void contactMotions(const State& s, std::vector<ContactMotion>& out);
 
   // Starts the member contact search and its pattern afresh, as a new
   // assembler would (a continuation from a restart file is then bit for bit).
   void restartContactSearch();
 
   // The member contact (null without a MEMBers record).
-  const MemberContact* memberContact() const { return members_.get(); }
+  MemberContact* memberContact() { return members_.get(); }
 
  private:
   void buildPattern();

@@ -7,8 +7,8 @@
 #include "core/Brace.h"
 #include "core/DebrisZones.h"
 #include "core/FloorLoad.h"
+#include "core/contact/ContactSearch.h"
 #include "core/contact/GroundContact.h"
-#include "core/contact/MemberContact.h"
 
 namespace c2d {
 

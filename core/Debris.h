@@ -125,7 +125,7 @@ struct GroundDepth {
 };
 GroundDepth deepestNode(const Model& model, const DofMap& dofs, const State& state);
 // Half the section depth of the members at a node: the largest contact radius
-// (core/contact/MemberContact.h sectionRadius) of the elements holding it; 0 when none
+// (core/contact/ContactSearch.h sectionRadius) of the elements holding it; 0 when none
 // gives a section.
 double halfSectionDepth(const Model& model, int node);
 

@@ -318,7 +318,7 @@ Status Analysis::afterCommitEvents() {
   // Until nothing changes: a change can make another (a joint formed at a
   // failed hinge can find its neighbour's hinge failed, or rupture at once).
   bool removed = false, joints = false;
-  const MemberContact* members = assembler_.memberContact();  // replaced at a topology change
+  MemberContact* members = assembler_.memberContact();  // replaced at a topology change
   const bool hadMembers = members != nullptr;
   const double membersBefore = hadMembers ? members->committedEnergy(model_, state_) : 0.0;
   for (int pass = 0; pass < 16; ++pass) {
@@ -340,7 +340,7 @@ Status Analysis::afterCommitEvents() {
   // but for member contacts that a new joint made part of one piece: their
   // energy is released (pairs set free start at zero force: no change).
   if (joints && !removed && hadMembers) {
-    const MemberContact* now = assembler_.memberContact();
+    MemberContact* now = assembler_.memberContact();
     account_.released(membersBefore - (now ? now->energy(model_, state_) : 0.0));
   }
   if (joints) account_.restartFrom(energy());

@@ -13,7 +13,7 @@ void EnergyAccount::resize(int numNodes) {
   }
 }
 
-void EnergyAccount::commitStep(const Assembler& a, const State& s, const StepRule& rule,
+void EnergyAccount::commitStep(Assembler& a, const State& s, const StepRule& rule,
                                const Eigen::VectorXd& loadFactors,
                                const Eigen::VectorXd& loadFactorsN) {
   const Eigen::Index nd = s.u.size();
@@ -68,7 +68,7 @@ void EnergyAccount::removed(const Eigen::VectorXd& forces, const Eigen::VectorXd
   storedN_ = stored;
 }
 
-Energy EnergyAccount::energy(const Assembler& a, const State& s) const {
+Energy EnergyAccount::energy(Assembler& a, const State& s) const {
   Energy e;
   e.kinetic = a.kineticEnergy(s);
   e.strain = a.strainEnergy();

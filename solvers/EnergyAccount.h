@@ -44,10 +44,10 @@ class EnergyAccount {
   // assembler's last evaluation at s under `rule` and the load factors
   // `loadFactors` of that evaluation; loadFactorsN: the factors at t_n (used by
   // the trapezoidal rule).
-  void commitStep(const Assembler& a, const State& s, const StepRule& rule,
+  void commitStep(Assembler& a, const State& s, const StepRule& rule,
                   const Eigen::VectorXd& loadFactors, const Eigen::VectorXd& loadFactorsN);
   // The account now, with the energies of the last evaluation.
-  Energy energy(const Assembler& a, const State& s) const;
+  Energy energy(Assembler& a, const State& s) const;
   // Node count changed (nodes appended): keeps the values of the existing nodes.
   void resize(int numNodes);
   // After a topology change at a committed state (a joint formed or ruptured):
@@ -65,7 +65,7 @@ class EnergyAccount {
     storedN_ = stored;
   }
   // Stored energy the commit released without work (a member contact whose
-  // node was pushed past the centre line of the member: core/contact/MemberContact.h).
+  // node was pushed past the centre line of the member: core/contact/PairMemories.h).
   void released(double energy) {
     storedN_ -= energy;
     dissipated_ += energy;

@@ -67,7 +67,7 @@ double ImpactSteps::need(const ContactMotion& c, const StepRule& rule, double ne
   return std::max(eta, std::abs(error) / (kTolerance * c.e * c.e * energy));
 }
 
-double ImpactSteps::check(const Assembler& a, const State& s, const StepRule& rule, double dt) {
+double ImpactSteps::check(Assembler& a, const State& s, const StepRule& rule, double dt) {
   const double previous = proposal_;
   proposal_ = 0;
   if (!enabled_ || !rule.dynamic() || rule.h <= 0) return 0;

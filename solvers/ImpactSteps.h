@@ -55,7 +55,7 @@ class ImpactSteps {
   // After a converged dynamic step from the committed state to s under rule
   // (rule.h its length), dt the deck's step: 0 when the step stands (and the
   // next is proposed), else the length to take it again with.
-  double check(const Assembler& a, const State& s, const StepRule& rule, double dt);
+  double check(Assembler& a, const State& s, const StepRule& rule, double dt);
   // The length of the next step that the last step standing proposes (0: none).
   double proposal() const { return proposal_; }
   // A step was taken that was not checked (a static one, a located event's

@@ -32,7 +32,7 @@ struct DamperForce {
 // The Newmark dashpot's ramp: the weight w = min(1, (p_n+1 - ps) / |p_n+1 -
 // p_n|) of c dp/dt while touching (p_n+1 > ps; 0 otherwise) and dw/dp_n+1.
 // Shared by the ground (damperForce) and the member pairs, whose rate is a
-// vector's (core/contact/MemberContact.cpp).
+// vector's (core/contact/PairContact.cpp).
 struct DamperRamp {
   double w = 0;
   double slope = 0;  // dw / dp_n+1

@@ -1,5 +1,5 @@
 #pragma once
-// One node-segment pair of the member contact (core/contact/MemberContact.h):
+// One node-segment pair of the member contact (docs/design/member-contact.md):
 // a node and an element it does not belong to, with their contact distance.
 #include <cstdint>
 

@@ -5,7 +5,7 @@
 
 #include "core/Brace.h"
 #include "core/contact/ContactGrid.h"
-#include "core/contact/MemberContact.h"
+#include "core/contact/ContactSearch.h"
 
 namespace c2d {
 

@@ -1,7 +1,7 @@
 // One node-segment pair of the member contact: its penetration (side, rounded
 // ends, the held side of a ruptured joint's pair), the friction's coordinate
 // along the segment, and the force and tangent of its law over a step (the
-// model and the formulas: core/contact/MemberContact.h).
+// model and the formulas: docs/design/member-contact.md).
 #include "core/contact/PairContact.h"
 
 #include <algorithm>

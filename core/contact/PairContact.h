@@ -1,5 +1,5 @@
 #pragma once
-// One node-segment pair of the member contact (core/contact/MemberContact.h
+// One node-segment pair of the member contact (docs/design/member-contact.md
 // describes the model: the penetration, the held sides, the friction along the
 // segment and the discrete-gradient force): the pair's side and penetration,
 // and its force law over a step.
@@ -24,7 +24,7 @@ int pairSide(const PairPositions& q);
 // face > 0: the node is held on the side s (a ruptured joint's pair), also
 // beyond the segment's ends, and meets the segment's end faces; face is the
 // pair's full contact distance (its reach h may be offset to about 0), which
-// scales the faces (core/contact/MemberContact.h).
+// scales the faces (docs/design/member-contact.md).
 double pairPenetration(const PairPositions& q, int side, double h, double face = 0);
 
 // The rate of the pair's penetration p for the velocities v of its points

@@ -16,7 +16,7 @@ void SweptBoxes::update(const Model& model, const State& s) {
                             sizeof(double) * static_cast<std::size_t>(s.un.size())) == 0);
   double moved = 0;
   for (int n = 0; n < nn; ++n) {
-    // As MemberContact::positions forms them, to the bit.
+    // As pairPositions (core/contact/PairMotion.h) forms them, to the bit.
     const Vec2 x0 = nodePosition(model, s.un, n), x1 = nodePosition(model, s.u, n);
     Box b = Box::point(x0.x(), x0.y());
     b.add(x1.x(), x1.y());

@@ -2,11 +2,10 @@
 // The boxes the nodes sweep over a step (their positions at t_n and t_n+1),
 // found once per assembly: the member contact's first test of a candidate
 // pair. A node's box inflated by the pair's reach that misses the box of the
-// segment (its two nodes' boxes joined) is the same test MemberContact makes
-// on the pair's positions (core/contact/MemberContact.h: positions), from a few
-// contiguous boxes instead of nine scattered coordinates and displacements: of
-// the 1840 candidates per assembly of the main example with member contact,
-// 316 pass it and 121 carry a force.
+// segment (its two nodes' boxes joined) is the same test as that on the
+// pair's positions (core/contact/PairMotion.h pairPositions), from a few
+// contiguous boxes instead of nine scattered coordinates and displacements;
+// most candidates fail it.
 #include <Eigen/Core>
 #include <vector>
 
@@ -32,8 +31,7 @@ class SweptBoxes {
   // quarter of the slack from that state's (a box grows by at most that a
   // side, so a pair comes at most half the slack closer). A step's Newton
   // iterations move the nodes little: most assemblies test these few pairs
-  // instead of every candidate (the main example's pile: 2600 candidates,
-  // 320 within reach).
+  // instead of every candidate.
   const std::vector<int>& near(const State& s, const std::vector<ContactPair>& candidates,
                                int version, double extra, double slack);
   // Counts the lists near() has found: a new value, a list found afresh at
