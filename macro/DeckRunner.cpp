@@ -8,7 +8,6 @@
 #include <set>
 #include <sstream>
 
-#include "core/Hinge.h"
 #include "core/output/AtomicFile.h"
 #include "macro/studies/CurveOverlay.h"
 #include "macro/deck/DeckParser.h"
@@ -134,55 +133,6 @@ std::vector<RunPlan> planRuns(const std::vector<RunInfo>& runs, const std::strin
 
 }  // namespace
 
-std::string runSummaryText(const RunSummary& s) {
-  char buf[256];
-  // The counts say what they count, for SECTion hinges (joints as they open)
-  // and hand-given laws (a hinge softens fully into a joint) alike.
-  std::snprintf(buf, sizeof buf, "%d step%s, %d iteration%s, %d cut%s, %d hinge%s opened",
-                s.steps, s.steps == 1 ? "" : "s", s.iterations, s.iterations == 1 ? "" : "s",
-                s.cuts, s.cuts == 1 ? "" : "s", s.hinges, s.hinges == 1 ? "" : "s");
-  std::string out = buf;
-  if (s.jointsFormed || s.jointsRuptured) {
-    std::snprintf(buf, sizeof buf,
-                  ", %d softened fully into joint%s, %d member%s parted past the rotation capacity",
-                  s.jointsFormed, s.jointsFormed == 1 ? "" : "s", s.jointsRuptured,
-                  s.jointsRuptured == 1 ? "" : "s");
-    out += buf;
-  }
-  if (s.fractures > 0)
-    out += ", " + std::to_string(s.fractures) + " member" + (s.fractures == 1 ? "" : "s") +
-           " parted by their bars";
-  if (s.shears > 0)
-    out += ", " + std::to_string(s.shears) + " member" + (s.shears == 1 ? "" : "s") +
-           " parted in shear";
-  if (s.removed > 0) out += ", " + std::to_string(s.removed) + " removed";
-  if (s.outsideRuns > 0)
-    out += s.debrisRuns == 1 ? std::string(", debris OUTSIDE the site")
-                             : ", debris OUTSIDE the site in " + std::to_string(s.outsideRuns) +
-                                   " of " + std::to_string(s.debrisRuns) + " runs";
-  if (s.unintendedRuns > 0)
-    out += s.debrisRuns == 1 ? ", fall NOT AS INTENDED (" + s.verdict + ")"
-                             : ", fall NOT AS INTENDED in " + std::to_string(s.unintendedRuns) +
-                                   " of " + std::to_string(s.debrisRuns) + " runs";
-  if (s.movingRuns > 0)
-    out += s.debrisRuns == 1 ? std::string(", debris STILL MOVING at the end")
-                             : ", debris STILL MOVING at the end in " +
-                                   std::to_string(s.movingRuns) + " of " +
-                                   std::to_string(s.debrisRuns) + " runs";
-  if (s.maxMomentRatio > 0) {
-    std::snprintf(buf, sizeof buf, ", max |M|/Mu %.4f", s.maxMomentRatio);
-    out += buf;
-  }
-  std::snprintf(buf, sizeof buf, ", energy error %.2e", s.energyError);
-  out += buf;
-  if (s.energyGained > kEnergyBalanceTolerance) {
-    std::snprintf(buf, sizeof buf, ", energy gained %.2e", s.energyGained);
-    out += buf;
-  }
-  std::snprintf(buf, sizeof buf, ", %.2f s", s.seconds);
-  return out + buf;
-}
-
 namespace {
 
 // A failure as the plans table gives it: its first line, the deck named
@@ -225,70 +175,6 @@ std::vector<std::string> sweptNames(const std::vector<RunInfo>& runs) {
 }
 
 }  // namespace
-
-std::vector<std::string> runWarnings(const RunSummary& s) {
-  std::vector<std::string> out;
-  char buf[256];
-  if (s.energyError > kEnergyBalanceTolerance) {
-    std::snprintf(buf, sizeof buf,
-                  "warning: the energy balance changed by %.2e of the peak energy (more than "
-                  "%.0e): a force does work the model does not account for, or the tolerance "
-                  "is loose",
-                  s.energyError, kEnergyBalanceTolerance);
-    out.push_back(buf);
-  }
-  if (s.gainStep > 0) out.push_back("warning: " + energyGainText(s.energyGained, s.gainStep, s.gainTime));
-  if (s.crossings > 0) {
-    std::snprintf(buf, sizeof buf,
-                  "warning: %d pair%s of members cross each other at the end (listed in the "
-                  "log): they passed through each other; %s",
-                  s.crossings, s.crossings == 1 ? "" : "s",
-                  s.memberContact ? "the member contact was too soft for an impact, or the "
-                                    "pieces of a ruptured joint slid through each other"
-                                  : "CONTact MEMBers,,k keeps them apart");
-    out.push_back(buf);
-  }
-  if (s.maxMomentRatio > 1 + kCapacityTolerance) {
-    std::snprintf(buf, sizeof buf,
-                  "warning: a member carried |M|/Mu = %.4f, past its capacity by more than "
-                  "%.1f %% (the element and the time in the log)",
-                  s.maxMomentRatio, 100 * kCapacityTolerance);
-    out.push_back(buf);
-  }
-  if (s.folded > 0) {
-    std::snprintf(buf, sizeof buf,
-                  "warning: %d member%s bent through more than a quarter turn at the end "
-                  "(listed in the log): no RC member does that whole",
-                  s.folded, s.folded == 1 ? " is" : "s are");
-    out.push_back(buf);
-  }
-  if (s.sunk > 0) {
-    std::snprintf(buf, sizeof buf,
-                  "warning: %s a node went deeper into the ground than half the section depth "
-                  "of its members (the log's debris lines): the ground is too soft for the "
-                  "impact (GROUnd's k)",
-                  s.sunk == 1 ? "in this run" : (std::to_string(s.sunk) + " runs:").c_str());
-    out.push_back(buf);
-  }
-  if (s.movingRuns > 0) {
-    std::snprintf(buf, sizeof buf,
-                  "warning: %s the debris was still moving at the end (kinetic energy %.2e of "
-                  "its peak): its figures are not final; run longer, or end the run at rest "
-                  "with TIME,REST",
-                  s.movingRuns == 1 ? "in this run" : (std::to_string(s.movingRuns) + " runs:").c_str(),
-                  s.kineticRatio);
-    out.push_back(buf);
-  }
-  if (s.blastsNotMade > 0) {
-    std::snprintf(buf, sizeof buf,
-                  "warning: %d blast%s of the BLASt plan did not happen (listed in the log): "
-                  "the run ended before %s time, or %s elements were removed before",
-                  s.blastsNotMade, s.blastsNotMade == 1 ? "" : "s",
-                  s.blastsNotMade == 1 ? "its" : "their", s.blastsNotMade == 1 ? "its" : "their");
-    out.push_back(buf);
-  }
-  return out;
-}
 
 namespace {
 
@@ -560,36 +446,7 @@ class Walker {
                            row.reason, row.debris, plan.planName,
                            RunNumerics{s.steps, s.iterations, s.cuts, s.energyError}, cpu});
     }
-    total_.steps += s.steps;
-    total_.iterations += s.iterations;
-    total_.factorizations += s.factorizations;
-    total_.cuts += s.cuts;
-    total_.hinges += s.hinges;
-    total_.energyError = std::max(total_.energyError, s.energyError);
-    if (s.energyGained > total_.energyGained) {
-      total_.energyGained = s.energyGained;
-      total_.gainStep = s.gainStep;
-      total_.gainTime = s.gainTime;
-    }
-    total_.seconds += s.seconds;
-    total_.dynamic = total_.dynamic || s.dynamic;
-    total_.maxMomentRatio = std::max(total_.maxMomentRatio, s.maxMomentRatio);
-    total_.jointsFormed += s.jointsFormed;
-    total_.jointsRuptured += s.jointsRuptured;
-    total_.fractures += s.fractures;
-    total_.shears += s.shears;
-    total_.removed += s.removed;
-    total_.crossings += s.crossings;
-    total_.folded += s.folded;
-    total_.sunk += s.sunk;
-    total_.memberContact = total_.memberContact || s.memberContact;
-    total_.blastsNotMade += s.blastsNotMade;
-    total_.debrisRuns += s.debrisRuns;
-    total_.outsideRuns += s.outsideRuns;
-    total_.movingRuns += s.movingRuns;
-    total_.unintendedRuns += s.unintendedRuns;
-    if (!s.verdict.empty()) total_.verdict = s.verdict;
-    total_.kineticRatio = std::max(total_.kineticRatio, s.kineticRatio);
+    total_ += s;
     if (!row.ok) return;
     if (brief && row.debris) log_ << debrisLogLines(*row.debris);
     log_ << "\n  summary: " << runSummaryText(s) << "\n";

@@ -58,20 +58,6 @@ struct DeckOutcome {
 // "<stem>_part<i>of<n>" for a shard, "<stem>" otherwise.
 std::string shardStem(const std::string& stem, const DeckOptions& options);
 
-// The summary of a run: steps, iterations, cuts, hinges, joints formed and
-// ruptured, debris outside the site, the largest |M|/Mu, the energy error (the
-// largest change of the energy balance kinetic + strain + contact - external +
-// dissipated over the largest energy of the run, solvers/EnergyAccount.h),
-// wall time.
-std::string runSummaryText(const RunSummary& s);
-// Above this energy error a run is warned about: the balance closes to the
-// Newton tolerance in every analysis, static or dynamic.
-constexpr double kEnergyBalanceTolerance = 1e-6;
-// The warnings a run's summary gives, one line each: an energy balance that
-// changed by more than kEnergyBalanceTolerance, members crossing at the end,
-// blasts whose time the run never reached.
-std::vector<std::string> runWarnings(const RunSummary& s);
-
 DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
                     const SolutionCommands& commands, std::ostream& out);
 

@@ -18,6 +18,7 @@
 #include "macro/run/EnergyWatch.h"
 #include "macro/run/RunCursor.h"
 #include "macro/run/RunOutputs.h"
+#include "macro/run/RunSummary.h"
 #include "macro/commands/SolutionCommand.h"
 #include "macro/run/TimeHistory.h"
 #include "macro/run/TopologyLog.h"
@@ -47,45 +48,6 @@ struct RunOptions {
   // Pictures and ParaView files (PLOT, PVIEw) are written (an ensemble's
   // samples after the first write their tables only).
   bool pictures = true;
-};
-
-struct RunSummary {
-  int steps = 0, iterations = 0, factorizations = 0, cuts = 0, hinges = 0;
-  // max |balance - initial balance| / max energy scale, the balance being kinetic + strain +
-  // contact - external + dissipated (solvers/EnergyAccount.h): how well the run's energy
-  // account closes, in static and dynamic runs
-  double energyError = 0;
-  // The energy the motion gained without work per the energy put in
-  // (macro/run/EnergyWatch.h), and the step and time it passed the warning's
-  // tolerance (0: it did not).
-  double energyGained = 0;
-  int gainStep = 0;
-  double gainTime = 0;
-  double seconds = 0;
-  bool dynamic = false;         // some step was dynamic
-  double maxMomentRatio = 0;    // largest |M|/Mu of an element with a softening law, any time
-  int jointsFormed = 0, jointsRuptured = 0;  // during the run (fully softened hinges, ruptures)
-  int fractures = 0;                          // members parted at their bars' fracture
-  int shears = 0;                             // members parted by a shear failure
-  int removed = 0;                            // elements removed (BLASt, REMOve)
-  int crossings = 0;  // pairs of members crossing each other at the end
-  int folded = 0;     // RC members bent through more than a quarter turn at the end
-  int sunk = 0;       // runs in which a node went deeper into the ground than half its section
-  bool memberContact = false;  // the crossing members had member contact (CONTact MEMBers)
-  // BLASt records whose time the run never reached, or whose elements had all
-  // been removed before (REMOve): they removed nothing.
-  int blastsNotMade = 0;
-  // Runs that ended with ground contact (debris figures), and those of them whose
-  // debris left the site (SITE).
-  int debrisRuns = 0, outsideRuns = 0;
-  // Runs whose debris was still moving at the end (its kinetic energy above
-  // TIME,REST's ratio of its peak), and the largest such ratio.
-  int movingRuns = 0;
-  double kineticRatio = 0;
-  // Runs whose building did not go as SITE's dir intends (core/FallVerdict.h),
-  // and the verdict of the last of them.
-  int unintendedRuns = 0;
-  std::string verdict = {};
 };
 
 class ProblemRun {
