@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "macro/run/ProblemRun.h"
+#include "solvers/NewtonVerdict.h"
 
 namespace c2d {
 
@@ -155,8 +156,8 @@ Flow ProblemRun::newtonIteration(const Macro& m, bool update, bool lineSearch, b
            << fmt("%.4e", info.shortened) << "\n";
     return Flow::Next;
   }
-  const auto& h = analysis_->stepHistory();
-  if (h.size() > 4 && info.energy > 1e30 * h.front().energy) {
+  const NewtonVerdict verdict = newtonVerdict(info, analysis_->stepHistory());
+  if (verdict == NewtonVerdict::Diverged) {
     diverged_ = true;
     return Flow::ExitLoop;
   }
@@ -164,19 +165,12 @@ Flow ProblemRun::newtonIteration(const Macro& m, bool update, bool lineSearch, b
     log_ << "  " << (symmetric ? "TANG " : "UTAN ") << "  step " << s.step + 1
          << ": Newton's iterates cycle (energy or residual repeating with a period of one to "
             "six) or run away (the residual growing); the line search of TANG,LINE takes over\n";
-  // Stalled: the energy repeats with period one or two (a fixed point or a
-  // two-cycle of Newton's method that the line search did not break): no later
-  // iteration of the loop converges, so the step is cut (or reported) now.
-  if (!info.converged && h.size() >= 6) {
-    double energies[6];
-    const std::size_t n = std::min<std::size_t>(h.size(), 6);
-    for (std::size_t k = 0; k < n; ++k) energies[k] = h[h.size() - n + k].energy;
-    if (repeatsWithPeriod(energies, n, 2, 3)) {
-      stalled_ = true;
-      return Flow::ExitLoop;
-    }
+  // Stalled: the step is cut (or reported) now, not at the end of the loop.
+  if (verdict == NewtonVerdict::Stalled) {
+    stalled_ = true;
+    return Flow::ExitLoop;
   }
-  return info.converged ? Flow::ExitLoop : Flow::Next;
+  return verdict == NewtonVerdict::Converged ? Flow::ExitLoop : Flow::Next;
 }
 
 Flow ProblemRun::formResidual(const Macro& m) {
