@@ -22,12 +22,13 @@ std::string ProblemRun::runState() const {
   putCount(out, hingeStep_.size());
   for (int s : hingeStep_) put(out, s);
   put(out, hingeCount_);
-  putBool(out, cutting_);
+  const StepControl::Saved steps = steps_.saved();
+  putBool(out, steps.cutting);
   for (double x :
-       {dtMin_, dtNominal_, capacity_.maxRatio(), peakGroundForce_,
+       {steps.dtMin, steps.dtNominal, capacity_.maxRatio(), peakGroundForce_,
         peakGroundTime_, peakKinetic_, restRatio_, lastMoving_, deepest_.depth, deepestTime_})
     put(out, x);
-  for (int x : {stepsSinceCut_, cuts_, topology_.jointsFormed, topology_.jointsRuptured, removed_,
+  for (int x : {steps.stepsSinceCut, steps.cuts, topology_.jointsFormed, topology_.jointsRuptured, removed_,
                 deepest_.node, topology_.hinges, topology_.fractures, topology_.shears})
     put(out, x);
   energy_.save(out);
@@ -43,18 +44,20 @@ void ProblemRun::setRunState(const std::string& bytes) {
   if (static_cast<int>(hingeStep_.size()) != model_.numElements())
     throw CheckpointError("hinge steps do not match the element count");
   hingeCount_ = get<int>(in);
-  cutting_ = getBool(in);
+  StepControl::Saved steps;
+  steps.cutting = getBool(in);
   double maxMomentRatio = 0;
-  for (double* x : {&dtMin_, &dtNominal_, &maxMomentRatio,
+  for (double* x : {&steps.dtMin, &steps.dtNominal, &maxMomentRatio,
                     &peakGroundForce_, &peakGroundTime_, &peakKinetic_, &restRatio_, &lastMoving_,
                     &deepest_.depth, &deepestTime_})
     *x = get<double>(in);
-  for (int* x : {&stepsSinceCut_, &cuts_, &topology_.jointsFormed, &topology_.jointsRuptured,
+  for (int* x : {&steps.stepsSinceCut, &steps.cuts, &topology_.jointsFormed, &topology_.jointsRuptured,
                  &removed_, &deepest_.node, &topology_.hinges, &topology_.fractures,
                  &topology_.shears})
     *x = get<int>(in);
   if (deepest_.node >= model_.numNodes())
     throw CheckpointError("the deepest node is not in the model");
+  steps_.restore(steps);
   capacity_.setMaxRatio(maxMomentRatio);
   energy_.load(in);
   dynamicSeen_ = getBool(in);

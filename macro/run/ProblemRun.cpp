@@ -50,12 +50,6 @@ ProblemRun::ProblemRun(const Problem& problem, Parameters& params, const Solutio
   outputs_->setPictures(options_.pictures);
 }
 
-std::string ProblemRun::fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
 // A run that ends by an exception leaves no progress line for the message to run into.
 ProblemRun::~ProblemRun() { progress(true); }
 
@@ -117,6 +111,7 @@ void ProblemRun::run() {
   analysis_ = std::make_unique<Analysis>(model_);
   if (!analysis_->setLinearSolver(options_.solver))
     throw AnalysisError("unknown linear solver '" + options_.solver + "'");
+  steps_.attach(*analysis_);
   hingeStep_.assign(model_.numElements(), 0);
   input_ = ModelFingerprint::of(model_);  // before any solution command changes the model
   analysis_->onCommit = [this] { onCommit(); };
@@ -218,7 +213,7 @@ RunSummary ProblemRun::summary() const {
   s.steps = analysis_->state().step;
   s.iterations = analysis_->totalIterations();
   s.factorizations = analysis_->totalFactorizations();
-  s.cuts = cuts_;
+  s.cuts = steps_.cuts();
   s.hinges = hingeCount_ + topology_.hinges;
   s.energyError = energy_.error();
   s.energyGained = energy_.gained();
@@ -286,24 +281,28 @@ Flow ProblemRun::execList(const std::vector<Macro>& list, bool topLevel, int pas
   return Flow::Next;
 }
 
-Flow ProblemRun::runLoop(const Macro& m) {
-  const int n = m.has(0) ? m.numbers[0].evalInt(params_, "loop count") : 1;
-  const bool newton = m.newtonLoop();
-  diverged_ = stalled_ = false;
-  lastFailure_.clear();
-  for (int i = 0, part = parts_; i < n; ++i) {
-    const Flow f = execList(m.body, false, i, n);
+int ProblemRun::loopCount(const Macro& loop) const {
+  return loop.has(0) ? loop.numbers[0].evalInt(params_, "loop count") : 1;
+}
+
+Flow ProblemRun::loopPasses(const Macro& loop, int passes, bool newton) {
+  for (int i = 0, part = steps_.parts(); i < passes; ++i) {
+    const Flow f = execList(loop.body, false, i, passes);
     if (f == Flow::Stop) return f;
-    if (f == Flow::ExitLoop || diverged_) break;
-    if (newton && parts_ != part) i = -1, part = parts_;
+    if (f == Flow::ExitLoop || steps_.diverged()) break;
+    if (newton && steps_.parts() != part) i = -1, part = steps_.parts();
   }
-  if (newton && !analysis_->stepConverged()) {
-    const std::string why =
-        diverged_  ? "diverged" + (lastFailure_.empty() ? std::string() : " (" + lastFailure_ + ")")
-        : stalled_ ? "stalled (its energy repeats)"
-                   : "did not converge in " + std::to_string(n) + " iterations";
-    return retryWithCut(m, why);
-  }
+  return Flow::Next;
+}
+
+Flow ProblemRun::runLoop(const Macro& m) {
+  const int n = loopCount(m);
+  const bool newton = m.newtonLoop();
+  steps_.loopBegins();
+  if (loopPasses(m, n, newton) == Flow::Stop) return Flow::Stop;
+  if (newton && !analysis_->stepConverged())
+    return steps_.retry(m, steps_.unconverged(n), n,
+                        [&] { return loopPasses(m, loopCount(m), true); });
   return Flow::Next;
 }
 
@@ -546,7 +545,7 @@ void ProblemRun::progress(bool final) {
   std::snprintf(line, sizeof line, "%s: step %d  t = %.4g  load %.4g  Newton it %d  hinges %d%s",
                 options_.stem.c_str(), s.step, s.t, analysis_->loadFactor(),
                 h.empty() ? 0 : h.back().iteration, hingeCount_,
-                cuts_ ? ("  cuts " + std::to_string(cuts_)).c_str() : "");
+                steps_.cuts() ? ("  cuts " + std::to_string(steps_.cuts())).c_str() : "");
   // A line longer than the terminal would wrap, and '\r' would not return to its start.
   std::size_t width = 80;
   winsize ws{};

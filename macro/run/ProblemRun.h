@@ -19,6 +19,8 @@
 #include "macro/run/RunCursor.h"
 #include "macro/run/RunOutputs.h"
 #include "macro/run/RunSummary.h"
+#include "macro/run/StepControl.h"
+#include "macro/run/LogNumber.h"
 #include "macro/commands/SolutionCommand.h"
 #include "macro/run/TimeHistory.h"
 #include "macro/run/TopologyLog.h"
@@ -97,8 +99,6 @@ class ProblemRun {
   };
   Flow advanceTime(const Macro& m, std::optional<double> tmax, std::optional<Rest> rest = {});
   void setDt(double dt);
-  // Under step cutting the path-following increment follows dt / nominal dt.
-  void scalePathIncrement();
   void setProportionalLoad(const Macro& m);
   void setIntegrator(const Macro& m, const TimeIntegrator& ti);
   // AUTO,CUT,dtmin,pred: with pred a dynamic step whose predicted start
@@ -131,16 +131,16 @@ class ProblemRun {
 
  private:
   // A number in the log: printf's format f (one conversion).
-  static std::string fmt(const char* f, double v);
+  static std::string fmt(const char* f, double v) { return logNumber(f, v); }
   // pass (0-based) of passes: a loop's body (runLoop), else a BATCh block.
   Flow execList(const std::vector<Macro>& list, bool topLevel = false, int pass = -1,
                 int passes = 1);
   void safePoint();
-  Flow retryWithCut(const Macro& loop, const std::string& why);
-  // Back to the committed state, the step cut to dt (a proposed shorter step
-  // through an impact halved with it: solvers/ImpactSteps), counted and logged,
-  // and begun again.
-  Status cutStep(double dt);
+  // A LOOP's count of passes.
+  int loopCount(const Macro& loop) const;
+  // The passes of a loop's body; a Newton loop's count starts again with each
+  // part of a step its iterations begin (StepControl::parts).
+  Flow loopPasses(const Macro& loop, int passes, bool newton);
   [[noreturn]] void fail(const Macro& m, const std::string& what) const;
   // At a commit: the command that made it (current_), the step and time.
   [[noreturn]] void failAtCommit(const std::string& what) const;
@@ -153,10 +153,6 @@ class ProblemRun {
   // coordinates' limit (the residual would be no number) fails at the TIME
   // command, naming the node, the DISPlacement value, the factor and its table.
   void checkPrescribedReach(const Macro& m) const;
-  std::string historyText() const;
-  // What to try after a failed Newton loop (the reason, whether it used the
-  // line search, its iteration count when it ran out of iterations).
-  std::string advice(const std::string& why, bool lineSearch, int iterations) const;
   std::vector<int> selection(const Macro& m, int count) const;
   void onCommit();
   // The debris report (macro/run/DebrisReport.cpp).
@@ -187,19 +183,7 @@ class ProblemRun {
   std::unique_ptr<TimeHistory> history_;
   std::unique_ptr<RunOutputs> outputs_;  // PLOT and PVIEw files
 
-  // Step cutting (AUTO,CUT).
-  bool cutting_ = false;
-  double dtMin_ = 0, dtNominal_ = 0;
-  bool cutPrediction_ = false;  // a diverging predicted start cuts the step (AUTO,CUT,,1)
-  int stepsSinceCut_ = 0;
-  int cuts_ = 0;
-  std::string lastFailure_;
-  ModelFingerprint input_;  // the model as the deck's mesh input built it (SAVE / REST)  // why the last Newton iteration failed (under step cutting)
-  bool diverged_ = false;
-  bool stalled_ = false;  // the Newton loop left because its energy repeats
-  // Parts of steps begun by Newton iterations (a landing time, an impact's
-  // shorter step): each part has the Newton loop's count of iterations.
-  int parts_ = 0;
+  ModelFingerprint input_;  // the model as the deck's mesh input built it (SAVE / REST)
 
   bool arcLengthFromDt_ = false;  // ARCL without dlambda0: set up when the first step starts
   bool longFormat_ = false;       // FORM,LONG
@@ -214,6 +198,7 @@ class ProblemRun {
   int blastsNotMade_ = 0;
   CapacityWatch capacity_;
   EnergyWatch energy_;
+  StepControl steps_{log_, energy_};  // step cutting (AUTO,CUT) and the loops' verdicts
   bool dynamicSeen_ = false;
   // TIME,REST: the kinetic energy's peak, the ratio watched (0: none yet) and
   // the last committed time at which the kinetic energy was above it.

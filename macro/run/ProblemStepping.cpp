@@ -38,29 +38,17 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::op
       return Flow::ExitLoop;
     }
   }
-  if (cutting_ && s.dt < dtNominal_ && ++stepsSinceCut_ >= 2) {
-    analysis_->setDt(std::min(2 * s.dt, dtNominal_));
-    stepsSinceCut_ = 0;
-  }
+  steps_.growBack();
   // The last step of a phase ends on tmax; a picture loop's never (RunCursor.h).
-  if (cutting_ && tmax && s.t + s.dt > *tmax && RunCursor::lands(cursor_.afterLoop(params_)))
+  if (steps_.cutting() && tmax && s.t + s.dt > *tmax && RunCursor::lands(cursor_.afterLoop(params_)))
     analysis_->setDt(*tmax - s.t);
   if (arcLengthFromDt_) {
     analysis_->setPathFollowing(PathFollowing::arcLength(s.dt));
     arcLengthFromDt_ = false;
   }
-  scalePathIncrement();
+  steps_.scalePathIncrement();
   sample_.stepBegins(s);
-  Status st = analysis_->advance();
-  // The converged step could not be committed (an element cannot be evaluated
-  // at it): with step cutting it is dropped and taken again in halves.
-  while (!st && cutting_) {
-    const double dt = 0.5 * s.dt;
-    log_ << "  *** step " << s.step + 1 << " not committed: " << st.why << "\n";
-    if (dt < dtMin_)
-      fail(m, st.why + "; step cutting gave up at the minimum step " + fmt("%.4e", dtMin_));
-    st = cutStep(dt);
-  }
+  const Status st = steps_.cutUntilCommitted(analysis_->advance());
   if (!st) fail(m, st.why);
   checkPrescribedReach(m);
   log_ << "  TIME   t = " << fmt("%.6e", s.t) << "  prop = " << fmt("%.6e", analysis_->loadFactor())
@@ -89,30 +77,16 @@ void ProblemRun::checkPrescribedReach(const Macro& m) const {
   }
 }
 
-void ProblemRun::scalePathIncrement() {
-  // A cut step is a cut path increment too (displacement increment or arc
-  // length): otherwise the retried step would repeat the same Newton history.
-  PathFollowing* p = analysis_->pathFollowing();
-  if (!p) return;
-  const double dt = analysis_->state().dt;
-  p->setIncrementScale(cutting_ && dtNominal_ > 0 && dt < dtNominal_ ? dt / dtNominal_ : 1.0);
-}
-
 void ProblemRun::setDt(double dt) {
   // An ensemble's JITTer scales the steps of the motion; a static path is a
   // load path (its steps reach the deck's load levels), not a motion.
   if (options_.sample && analysis_->integrator().dynamic()) dt *= options_.sample->stepFactor;
   analysis_->setDt(dt);
-  dtNominal_ = dt;
+  steps_.setNominal(dt);
 }
 
 void ProblemRun::setStepCutting(bool on, double dtMin, bool cutDivergingPrediction) {
-  cutting_ = on;
-  cutPrediction_ = on && cutDivergingPrediction;
-  dtNominal_ = analysis_->state().dt;
-  dtMin_ = dtMin > 0 ? dtMin : dtNominal_ / 1024;
-  log_ << "  AUTO   step cutting " << (on ? "on, dtmin = " + fmt("%.4e", dtMin_) : "off")
-       << (cutPrediction_ ? ", a diverging predicted start cuts the step" : "") << "\n";
+  steps_.set(on, dtMin, cutDivergingPrediction);
 }
 
 void ProblemRun::setIntegrator(const Macro& m, const TimeIntegrator& ti) {
