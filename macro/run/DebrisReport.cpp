@@ -19,27 +19,12 @@ std::string shortTime(double t) {
 
 }  // namespace
 
-DebrisFigures ProblemRun::debrisNow(const State& s) const {
-  DebrisFigures d = debrisFigures(model_, s);
-  d.peakGroundForce = peakGroundForce_;
-  d.peakTime = peakGroundTime_;
-  d.kineticRatio = peakKinetic_ > 0 ? analysis_->kineticEnergy() / peakKinetic_ : 0.0;
-  d.restRatio = restRatio_ > 0 ? restRatio_ : Rest{}.ratio;
-  if (deepest_.node >= 0) {
-    d.deepestNode = deepest_.node;
-    d.deepest = deepest_.depth;
-    d.deepestTime = deepestTime_;
-    d.deepestLimit = halfSectionDepth(model_, deepest_.node);
-  }
-  return d;
-}
-
 void ProblemRun::reportDebris() {
   // Where the debris ends up, against the footprint and the site: the log's lines,
   // <stem>_debris.csv (one row), and the picture when PLOT,DEBRis asked for one.
-  const DebrisFigures d = debrisNow(analysis_->state());
+  const DebrisFigures d = watches_.debrisNow(analysis_->state());
   if (d.leftNode < 0) return;
-  debris_ = d;
+  watches_.setDebris(d);
   log_ << "\n" << debrisLogLines(d);
   const std::filesystem::path csv = options_.outDir / (options_.stem + "_debris.csv");
   const std::vector<std::string> zones = zoneNames(d);
@@ -50,7 +35,7 @@ void ProblemRun::reportDebris() {
 
 void ProblemRun::plotDebris() {
   const State& s = outputState();
-  const DebrisFigures d = debrisNow(s);
+  const DebrisFigures d = watches_.debrisNow(s);
   std::string title = RunOutputs::displayTitle(problem_.title);
   if (!options_.label.empty()) title += (title.empty() ? "" : ", ") + options_.label;
   title += (title.empty() ? "" : ": ") + std::string("debris at t = ") + shortTime(s.t);

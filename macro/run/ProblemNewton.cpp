@@ -22,7 +22,7 @@ Flow ProblemRun::newtonIteration(const Macro& m, bool update, bool lineSearch, b
   if (!st) {
     if (steps_.iterationFailed(st.why)) return Flow::ExitLoop;
     fail(m, st.why + "\n" + newtonHistoryText(*analysis_) +
-                newtonAdvice(*analysis_, energy_, steps_.cutting(), st.why, lineSearch, 0));
+                newtonAdvice(*analysis_, watches_.energy(), steps_.cutting(), st.why, lineSearch, 0));
   }
   if (info.restarted && steps_.cutsDivergingPrediction()) return Flow::ExitLoop;
   if (info.restarted) {

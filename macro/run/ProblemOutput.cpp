@@ -58,7 +58,8 @@ void ProblemRun::printStresses(const Macro& m) {
 }
 
 void ProblemRun::printHinges() {
-  printHingeTable(log_, model_, analysis_->state(), analysis_->loadFactor(), hingeStep_);
+  printHingeTable(log_, model_, analysis_->state(), analysis_->loadFactor(),
+                  watches_.hingeSteps());
 }
 
 }  // namespace c2d

@@ -16,51 +16,53 @@ std::filesystem::path ProblemRun::restartPath(const Macro& m) const {
   return options_.outDir / name;
 }
 
+// The order of the file's fields (format of solvers/RestartFile.h): the
+// watches' and the step control's interleaved.
 std::string ProblemRun::runState() const {
   using namespace checkpoint;
   std::ostringstream out(std::ios::binary);
-  putCount(out, hingeStep_.size());
-  for (int s : hingeStep_) put(out, s);
-  put(out, hingeCount_);
+  const RunWatches::Saved w = watches_.saved();
   const StepControl::Saved steps = steps_.saved();
+  putCount(out, w.hingeStep.size());
+  for (int s : w.hingeStep) put(out, s);
+  put(out, w.hingeCount);
   putBool(out, steps.cutting);
-  for (double x :
-       {steps.dtMin, steps.dtNominal, capacity_.maxRatio(), peakGroundForce_,
-        peakGroundTime_, peakKinetic_, restRatio_, lastMoving_, deepest_.depth, deepestTime_})
+  for (double x : {steps.dtMin, steps.dtNominal, w.maxMomentRatio, w.peakGroundForce,
+                   w.peakGroundTime, w.peakKinetic, w.restRatio, w.lastMoving, w.deepest.depth,
+                   w.deepestTime})
     put(out, x);
-  for (int x : {steps.stepsSinceCut, steps.cuts, topology_.jointsFormed, topology_.jointsRuptured, removed_,
-                deepest_.node, topology_.hinges, topology_.fractures, topology_.shears})
+  for (int x : {steps.stepsSinceCut, steps.cuts, w.jointsFormed, w.jointsRuptured, w.removed,
+                w.deepest.node, w.hinges, w.fractures, w.shears})
     put(out, x);
-  energy_.save(out);
-  putBool(out, dynamicSeen_);
+  watches_.saveEnergy(out);
+  putBool(out, w.dynamicSeen);
   return out.str();
 }
 
 void ProblemRun::setRunState(const std::string& bytes) {
   using namespace checkpoint;
   std::istringstream in(bytes, std::ios::binary);
-  hingeStep_.resize(getCount(in));
-  for (int& s : hingeStep_) s = get<int>(in);
-  if (static_cast<int>(hingeStep_.size()) != model_.numElements())
-    throw CheckpointError("hinge steps do not match the element count");
-  hingeCount_ = get<int>(in);
+  RunWatches::Saved w;
   StepControl::Saved steps;
+  w.hingeStep.resize(getCount(in));
+  for (int& s : w.hingeStep) s = get<int>(in);
+  if (static_cast<int>(w.hingeStep.size()) != model_.numElements())
+    throw CheckpointError("hinge steps do not match the element count");
+  w.hingeCount = get<int>(in);
   steps.cutting = getBool(in);
-  double maxMomentRatio = 0;
-  for (double* x : {&steps.dtMin, &steps.dtNominal, &maxMomentRatio,
-                    &peakGroundForce_, &peakGroundTime_, &peakKinetic_, &restRatio_, &lastMoving_,
-                    &deepest_.depth, &deepestTime_})
+  for (double* x : {&steps.dtMin, &steps.dtNominal, &w.maxMomentRatio, &w.peakGroundForce,
+                    &w.peakGroundTime, &w.peakKinetic, &w.restRatio, &w.lastMoving,
+                    &w.deepest.depth, &w.deepestTime})
     *x = get<double>(in);
-  for (int* x : {&steps.stepsSinceCut, &steps.cuts, &topology_.jointsFormed, &topology_.jointsRuptured,
-                 &removed_, &deepest_.node, &topology_.hinges, &topology_.fractures,
-                 &topology_.shears})
+  for (int* x : {&steps.stepsSinceCut, &steps.cuts, &w.jointsFormed, &w.jointsRuptured,
+                 &w.removed, &w.deepest.node, &w.hinges, &w.fractures, &w.shears})
     *x = get<int>(in);
-  if (deepest_.node >= model_.numNodes())
+  if (w.deepest.node >= model_.numNodes())
     throw CheckpointError("the deepest node is not in the model");
+  watches_.loadEnergy(in);
+  w.dynamicSeen = getBool(in);
   steps_.restore(steps);
-  capacity_.setMaxRatio(maxMomentRatio);
-  energy_.load(in);
-  dynamicSeen_ = getBool(in);
+  watches_.restore(w);
 }
 
 void ProblemRun::saveRestart(const Macro& m) {

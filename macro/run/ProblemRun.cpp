@@ -9,10 +9,7 @@
 #include <map>
 #include <set>
 
-#include "core/contact/MemberCrossing.h"
-#include "elements/EndHinges.h"
 #include "elements/Joints.h"
-#include "elements/MemberFold.h"
 #include "macro/commands/BlastOfRemoved.h"
 #include "macro/commands/MasslessLoads.h"
 #include "macro/commands/OutputCommands.h"
@@ -20,7 +17,6 @@
 #include "macro/deck/DeckReader.h"
 #include "macro/deck/MeshBinder.h"
 #include "macro/run/Interrupt.h"
-#include "macro/run/RemovalLog.h"
 #include "macro/run/StaleOutputs.h"
 #include "solvers/FiniteResults.h"
 
@@ -112,22 +108,14 @@ void ProblemRun::run() {
   if (!analysis_->setLinearSolver(options_.solver))
     throw AnalysisError("unknown linear solver '" + options_.solver + "'");
   steps_.attach(*analysis_);
-  hingeStep_.assign(model_.numElements(), 0);
+  watches_.attach(*analysis_);
   input_ = ModelFingerprint::of(model_);  // before any solution command changes the model
   analysis_->onCommit = [this] { onCommit(); };
   analysis_->onHingeActivated = [this](int e, const HingeInfo& h) {
-    log_ << "  " << (h.shear ? "shear  element " : h.fracture ? "bars   element " : "hinge  element ")
-         << e + 1 << " activated at t = " << fmt("%.6e", analysis_->state().t)
-         << (h.shear      ? ": shear at its capacity Vu(N)"
-             : h.fracture ? ": fracture strain"
-                          : ", M = " + fmt("%.6e", h.moment))
-         << "\n";
+    watches_.hingeActivated(e, h);
   };
   analysis_->topologyEvents().onEvent = [this](const TopologyEvent& ev) {
-    hingeStep_.resize(model_.numElements(), 0);
-    if (ev.kind == TopologyEvent::Kind::HingeOpened && hingeStep_[ev.element] == 0)
-      hingeStep_[ev.element] = analysis_->state().step;
-    logTopologyEvent(log_, model_, analysis_->state().t, ev, topology_);
+    watches_.topologyEvent(ev);
   };
   analysis_->infillEvents().onEvent = [this](const InfillEvent& ev) {
     log_ << "  infill panel " << ev.panel << " crushed at t = " << fmt("%.6e", ev.time)
@@ -136,10 +124,7 @@ void ProblemRun::run() {
   };
   analysis_->removals().onEvent = [this](const RemovalEvent& ev) {
     refuseScatteredIntoStatics(ev);
-    removed_ += static_cast<int>(ev.elements.size());
-    const RemovalLog line = removalLog(ev);
-    blastsNotMade_ += line.warning ? 1 : 0;
-    log_ << line.text;
+    watches_.removal(ev);
   };
   cursor_.reset(batches_);
   for (const auto& batch : batches_)
@@ -153,94 +138,15 @@ void ProblemRun::run() {
   }
   outputs_->finish(model_, analysis_->state(), history_.get());
   if (model_.ground()) reportDebris();
-  reportCrossings();
-  reportFolds();
-  log_ << topology_.folding.summary();
-  // A blast plan the run did not reach is not silently dropped.
-  for (const Blast& b : model_.blasts())
-    if (!b.done) {
-      ++blastsNotMade_;
-      log_ << "  warning: the blast at t = " << fmt("%.6e", b.time)
-           << " did not happen: the run ended at t = " << fmt("%.6e", analysis_->state().t) << "\n";
-    }
+  watches_.reportEnd();
   progress(true);
 }
 
-void ProblemRun::reportCrossings() {
-  // Members that passed through each other (core/contact/MemberCrossing.h).
-  const std::vector<MemberCrossing> crossings = findCrossings(model_, analysis_->state());
-  crossings_ = static_cast<int>(crossings.size());
-  const std::size_t shown = std::min<std::size_t>(crossings.size(), 20);
-  for (std::size_t i = 0; i < shown; ++i) {
-    const MemberCrossing& c = crossings[i];
-    log_ << (i == 0 ? "\n" : "") << "  warning: members " << c.first + 1 << " and " << c.second + 1
-         << " cross at t = " << fmt("%.6e", analysis_->state().t) << ", at ("
-         << fmt("%.3f", c.point.x()) << ", " << fmt("%.3f", c.point.y())
-         << ") m: " << fmt("%.3f", c.fromNode[0]) << " m from node " << c.nearNode[0] + 1 << " and "
-         << fmt("%.3f", c.fromNode[1]) << " m from node " << c.nearNode[1] + 1 << "\n";
-  }
-  if (crossings.size() > shown)
-    log_ << "  warning: " << crossings.size() - shown << " more pairs of members cross\n";
-  // Members that went through each other during the run, whatever the end.
-  if (const Assembler& a = analysis_->assembler(); a.pushedThrough() > 0)
-    log_ << "  warning: " << a.pushedThrough()
-         << " times a node in contact with a member was pushed past its centre line ("
-         << fmt("%.3e", a.pushedThroughEnergy())
-         << " kJ of contact energy released): the member contact is too soft for the impact, or "
-            "the pieces of a ruptured joint slid through each other\n";
-}
-
-void ProblemRun::reportFolds() {
-  // RC members folded beyond what a member does whole (elements/MemberFold.h).
-  const std::vector<MemberFold> folds = foldedMembers(model_, analysis_->state());
-  folded_ = static_cast<int>(folds.size());
-  for (std::size_t i = 0; i < std::min<std::size_t>(folds.size(), 20); ++i)
-    log_ << (i == 0 && crossings_ == 0 ? "\n" : "") << "  warning: member " << folds[i].element + 1
-         << " is bent through " << fmt("%.3f", folds[i].fold) << " rad between its ends (nodes "
-         << folds[i].nodes[0] + 1 << " and " << folds[i].nodes[1] + 1
-         << ") at t = " << fmt("%.6e", analysis_->state().t)
-         << ": more than a quarter turn, which no RC member bends whole"
-         << (folds[i].failedHinge ? " (about its failed hinge, which made no joint: the member "
-                                    "had a joint at an end, or the hinge lies within the "
-                                    "shortest piece Lb of a joint or a free end)"
-                                  : "")
-         << "\n";
-}
-
 RunSummary ProblemRun::summary() const {
-  RunSummary s;
-  if (!analysis_) return s;
-  s.steps = analysis_->state().step;
-  s.iterations = analysis_->totalIterations();
-  s.factorizations = analysis_->totalFactorizations();
-  s.cuts = steps_.cuts();
-  s.hinges = hingeCount_ + topology_.hinges;
-  s.energyError = energy_.error();
-  s.energyGained = energy_.gained();
-  s.gainStep = energy_.gainStep();
-  s.gainTime = energy_.gainTime();
-  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  s.dynamic = dynamicSeen_;
-  s.maxMomentRatio = capacity_.maxRatio();
-  s.jointsFormed = topology_.jointsFormed;
-  s.jointsRuptured = topology_.jointsRuptured;
-  s.fractures = topology_.fractures;
-  s.shears = topology_.shears;
-  s.removed = removed_;
-  s.crossings = crossings_;
-  s.folded = folded_;
-  s.sunk = debris_ && debris_->sunk() ? 1 : 0;
-  s.memberContact = crossings_ > 0 && model_.memberContact().has_value();
-  s.blastsNotMade = blastsNotMade_;
-  s.debrisRuns = debris_ ? 1 : 0;
-  s.outsideRuns = debris_ && debris_->outside() ? 1 : 0;
-  s.movingRuns = debris_ && !debris_->atRest() ? 1 : 0;
-  if (debris_ && debris_->unintendedFall()) {
-    s.unintendedRuns = 1;
-    s.verdict = fallVerdictName(debris_->verdict);
-  }
-  if (debris_) s.kineticRatio = debris_->kineticRatio;
-  return s;
+  if (!analysis_) return {};
+  return watches_.summary(
+      steps_.cuts(),
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
 }
 
 std::vector<std::filesystem::path> ProblemRun::keepOutputs(std::string_view tag) noexcept {
@@ -448,7 +354,7 @@ void ProblemRun::reenterMesh(const Macro& m) {
   installJoints(model_);
   model_.bumpTopology();
   analysis_->topologyChanged();
-  hingeStep_.resize(model_.numElements(), 0);
+  watches_.elementsChanged();
   log_ << "  MESH   re-entered: " << model_.numNodes() << " nodes, " << model_.numElements()
        << " elements, " << analysis_->assembler().dofs().numEquations() << " equations\n";
 }
@@ -458,7 +364,7 @@ void ProblemRun::hingesToJoints(const Macro& m, MemberLaws laws) {
   if (!st) fail(m, st.why);
   const std::vector<CreatedJoint> joints = hingeToJoint(model_, analysis_->state(), laws);
   analysis_->topologyChanged();
-  hingeStep_.resize(model_.numElements(), 0);
+  watches_.elementsChanged();
   log_ << "  HINGE2JOINT  " << joints.size() << " hinges became joints, members "
        << (laws == MemberLaws::Elastic ? "elastic" : "keep their laws") << "; " << model_.numNodes()
        << " nodes, " << analysis_->assembler().dofs().numEquations() << " equations\n";
@@ -476,7 +382,7 @@ void ProblemRun::removeMembers(const Macro& m) {
   if (!(td >= 0)) fail(m, "the release time td must be zero or positive");
   const Status st = analysis_->removeElements(elements, td);
   if (!st) fail(m, st.why);
-  hingeStep_.resize(model_.numElements(), 0);
+  watches_.elementsChanged();
 }
 
 void ProblemRun::onCommit() {
@@ -487,41 +393,9 @@ void ProblemRun::onCommit() {
           nonFiniteResult(model_, s, analysis_->assembler().nodalResidual(), en);
       !bad.empty())
     failAtCommit("a result is not a finite number: " + bad);
-  for (const auto& [e, h] : analysis_->hingeCarriers()) {
-    if (hingeStep_[e] != 0) continue;
-    const HingeInfo info = h->hinge();
-    if (!info.active) continue;
-    hingeStep_[e] = s.step;
-    ++hingeCount_;
-    log_ << "  hinge  formed in element " << e + 1 << " at step " << s.step
-         << " (t = " << fmt("%.6e", s.t) << ", M = " << fmt("%.6e", info.moment) << ")\n";
-  }
-  for (const auto& [e, h] : analysis_->hingeCarriers()) {
-    const HingeInfo info = h->hinge();
-    if (info.ultimate > 0) capacity_.observe(e, std::abs(info.moment) / info.ultimate, s.t, log_);
-  }
-  int endElement = -1;
-  const double endRatio = endHingeRatio(model_, &endElement);
-  capacity_.observe(endElement, endRatio, s.t, log_);
+  watches_.observeHinges();
   if (history_) history_->record(*analysis_);
-  if (model_.ground()) {
-    const double f = groundForce(model_, analysis_->assembler().dofs(), s);
-    if (f > peakGroundForce_) {
-      peakGroundForce_ = f;
-      peakGroundTime_ = s.t;
-    }
-    if (const GroundDepth d = deepestNode(model_, analysis_->assembler().dofs(), s);
-        d.node >= 0 && d.depth > deepest_.depth) {
-      deepest_ = d;
-      deepestTime_ = s.t;
-    }
-  }
-  dynamicSeen_ = dynamicSeen_ || analysis_->integrator().dynamic();
-  energy_.onCommit(en, analysis_->integrator().dynamic(), s.step, s.t);
-  if (analysis_->integrator().dynamic()) {
-    peakKinetic_ = std::max(peakKinetic_, en.kinetic);
-    if (en.kinetic > restRatio_ * peakKinetic_) lastMoving_ = s.t;
-  }
+  watches_.observeMotion(en);
   outputs_->onCommit(model_, analysis_->state());
   progress(false);
 }
@@ -544,7 +418,7 @@ void ProblemRun::progress(bool final) {
   char line[256];
   std::snprintf(line, sizeof line, "%s: step %d  t = %.4g  load %.4g  Newton it %d  hinges %d%s",
                 options_.stem.c_str(), s.step, s.t, analysis_->loadFactor(),
-                h.empty() ? 0 : h.back().iteration, hingeCount_,
+                h.empty() ? 0 : h.back().iteration, watches_.hinges(),
                 steps_.cuts() ? ("  cuts " + std::to_string(steps_.cuts())).c_str() : "");
   // A line longer than the terminal would wrap, and '\r' would not return to its start.
   std::size_t width = 80;

@@ -14,16 +14,14 @@
 #include "core/Debris.h"
 #include "core/Model.h"
 #include "macro/deck/Deck.h"
-#include "macro/run/CapacityWatch.h"
-#include "macro/run/EnergyWatch.h"
 #include "macro/run/RunCursor.h"
 #include "macro/run/RunOutputs.h"
+#include "macro/run/RunWatches.h"
 #include "macro/run/RunSummary.h"
 #include "macro/run/StepControl.h"
 #include "macro/run/LogNumber.h"
 #include "macro/commands/SolutionCommand.h"
 #include "macro/run/TimeHistory.h"
-#include "macro/run/TopologyLog.h"
 #include "elements/HingeToJoint.h"
 #include "macro/deck/Warnings.h"
 #include "macro/studies/Ensemble.h"
@@ -85,7 +83,7 @@ class ProblemRun {
     return sample_.outputState(model_, analysis_->state(), analysis_->integrator());
   }
   // TIME,REST ended a loop at rest and no step has been taken since.
-  bool atRest() const { return restLogged_ && analysis_->state().t == restTime_; }
+  bool atRest() const { return watches_.atRest(); }
 
   Flow runLoop(const Macro& m);
   Flow newtonIteration(const Macro& m, bool update, bool lineSearch, bool symmetric);
@@ -94,9 +92,7 @@ class ProblemRun {
   // TIME,REST: the motion is at rest when the kinetic energy has stayed at or
   // below `ratio` of its peak (in this run's dynamic analysis) for `hold`
   // time units; then the loop ends without a step.
-  struct Rest {
-    double ratio = 1e-5, hold = 0.5;
-  };
+  using Rest = RunWatches::Rest;
   Flow advanceTime(const Macro& m, std::optional<double> tmax, std::optional<Rest> rest = {});
   void setDt(double dt);
   void setProportionalLoad(const Macro& m);
@@ -125,7 +121,7 @@ class ProblemRun {
   // final state at the end of the run.
   void plotDebris();
   // The debris figures of a run that ended with ground contact.
-  const std::optional<DebrisFigures>& debris() const { return debris_; }
+  const std::optional<DebrisFigures>& debris() const { return watches_.debris(); }
   // The BLASt times of an ensemble's sample with DETOnators (one per record).
   const std::vector<double>& drawnBlastTimes() const { return drawnBlastTimes_; }
 
@@ -157,12 +153,6 @@ class ProblemRun {
   void onCommit();
   // The debris report (macro/run/DebrisReport.cpp).
   void reportDebris();
-  // The debris figures of the state s, with the run's peak ground force and
-  // deepest node.
-  DebrisFigures debrisNow(const State& s) const;
-  void reportCrossings();
-  // RC members bent through more than a quarter turn at the end: log lines.
-  void reportFolds();
   void progress(bool final);
   std::filesystem::path restartPath(const Macro& m) const;
   // This class's own part of a restart file: hinge steps, step cutting, energy check.
@@ -189,30 +179,10 @@ class ProblemRun {
   bool longFormat_ = false;       // FORM,LONG
   int extraHistories_ = 0;        // TPLOt commands of the run after the first
 
-  std::vector<int> hingeStep_;  // step at which each element's hinge formed
-  int hingeCount_ = 0;
-  TopologyCounts topology_;
-  int removed_ = 0;
-  int crossings_ = 0;
-  int folded_ = 0;
-  int blastsNotMade_ = 0;
-  CapacityWatch capacity_;
-  EnergyWatch energy_;
-  StepControl steps_{log_, energy_};  // step cutting (AUTO,CUT) and the loops' verdicts
-  bool dynamicSeen_ = false;
-  // TIME,REST: the kinetic energy's peak, the ratio watched (0: none yet) and
-  // the last committed time at which the kinetic energy was above it.
-  double peakKinetic_ = 0, restRatio_ = 0, lastMoving_ = 0;
-  bool restLogged_ = false;
-  double restTime_ = 0;  // when TIME,REST last ended a loop at rest
+  RunWatches watches_{log_, model_};  // the run's watches and counters: its summary
+  StepControl steps_{log_, watches_.energy()};  // step cutting (AUTO,CUT), the loops' verdicts
   RunCursor cursor_;    // where the run is in its commands (TIME,,tmax: land on it or not)
   DenseOutput sample_;  // outputs at the tmax a picture loop's last step passed
-  // Debris: the largest total ground force so far and its time; the figures at the end.
-  double peakGroundForce_ = 0, peakGroundTime_ = 0;
-  // The deepest any node went into the ground, and when.
-  GroundDepth deepest_;
-  double deepestTime_ = 0;
-  std::optional<DebrisFigures> debris_;
   bool debrisPlot_ = false;
   std::vector<double> drawnBlastTimes_;
   std::vector<double> nominalBlastTimes_;  // the deck's, before DETOnators scattered them

@@ -20,23 +20,7 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::op
       fail(m,
            "TIME,REST needs a dynamic analysis (DYNAmic): a static one has no motion to come "
            "to rest");
-    // A new ratio is watched from now on.
-    if (rest->ratio != restRatio_) {
-      restRatio_ = rest->ratio;
-      lastMoving_ = s.t;
-    }
-    const double kinetic = analysis_->kineticEnergy();
-    if (peakKinetic_ > 0 && kinetic <= restRatio_ * peakKinetic_ &&
-        s.t - lastMoving_ >= rest->hold) {
-      if (!restLogged_)
-        log_ << "  TIME   at rest at t = " << fmt("%.6e", s.t) << ": the kinetic energy "
-             << fmt("%.4e", kinetic) << " has stayed at most " << fmt("%.1e", restRatio_)
-             << " of its peak " << fmt("%.4e", peakKinetic_)
-             << " since t = " << fmt("%.6e", lastMoving_) << "\n";
-      restLogged_ = true;
-      restTime_ = s.t;
-      return Flow::ExitLoop;
-    }
+    if (watches_.atRestNow(*rest)) return Flow::ExitLoop;
   }
   steps_.growBack();
   // The last step of a phase ends on tmax; a picture loop's never (RunCursor.h).
