@@ -40,8 +40,8 @@ struct IterationInfo {
   int hingeActivated = -1;  // element index of a hinge activated at this iteration
   bool restarted = false;   // the step was started again from the committed state
   // Plain Newton cycled (energy or residual repeating with a period of one to
-  // six): the line search takes over (a static step starts again from the
-  // committed state).
+  // six) at this iteration: the line search takes over from the next one (a
+  // static step starts again from the committed state).
   bool globalized = false;
   // The converged step was committed at a landing time, or taken again
   // shorter through an impact (solvers/ImpactSteps.h): a new part of the step

@@ -234,6 +234,9 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
   // whole velocity: the line search took 9-10 iterations more from there on
   // the main example with member contact).
   if (!info.converged && !lineSearch && !globalized_ && !path_ && cycling()) {
+    // The iterations from here on are the line search's (a static step's
+    // history starts again with them).
+    history_.back().globalized = true;
     if (!integrator_.dynamic()) {
       for (auto& el : model_.elements())
         if (el) el->revert();

@@ -25,6 +25,11 @@ constexpr double kNewtonBlowUp = 1e30;
 //   - stalled: not converged after six iterations or more, and each of the last
 //     three energies equal to the one two iterations before (to 1e-6): a fixed
 //     point or a two-cycle of Newton's method that the line search did not break;
+//     once the line search took over in the step (the iteration marked
+//     `globalized`), only the iterations after it count (a freshly opened hinge
+//     at the end of a short link, whose slip stiffness is its rotary inertia
+//     alone, cycles plain Newton across its stick band at every step length;
+//     the line search's iterations converge it);
 //   - converged: the convergence test passed (info.converged);
 //   - iterating otherwise.
 // `history`: the step's iterations so far (Analysis::stepHistory), ending with `info`'s.

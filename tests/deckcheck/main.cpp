@@ -275,7 +275,9 @@ int main(int argc, char** argv) {
     if (ref.expectExit == 0) {
       std::vector<std::string> csv;
       for (const auto& ent : fs::directory_iterator(dir))
-        if (ent.path().extension() == ".csv") csv.push_back(ent.path().filename().string());
+        // A study's <stem>_timing.csv holds CPU seconds: never a reference.
+        if (ent.path().extension() == ".csv" && !ent.path().stem().string().ends_with("_timing"))
+          csv.push_back(ent.path().filename().string());
       std::sort(csv.begin(), csv.end());
       if (fs::exists(dir / (stem + ".out")) && !logTables(dir / (stem + ".out")).empty())
         names.push_back(stem + ".out tables");

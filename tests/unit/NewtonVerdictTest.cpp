@@ -59,5 +59,27 @@ TEST(NewtonVerdict, StalledWhenTheEnergyRepeatsWithPeriodOneOrTwo) {
   EXPECT_EQ(verdict({1.0, 0.5, 0.2, 0.5, 0.2, 0.5}, true), NewtonVerdict::Converged);
 }
 
+TEST(NewtonVerdict, UnderALineSearchThatTookOverOnlyItsOwnIterationsCount) {
+  // Plain Newton's two-cycle called the line search in at iteration 6.
+  std::vector<IterationInfo> h = history({1.0, 0.5, 0.2, 0.5, 0.2, 0.5}, false);
+  h.back().globalized = true;
+  EXPECT_EQ(newtonVerdict(h.back(), h), NewtonVerdict::Iterating);
+  // Its own iterations: five are too few to call a stall, even with the
+  // plain iterations' cycle in the window.
+  for (double e : {0.2, 0.5, 0.2, 0.5, 0.2}) {
+    IterationInfo i;
+    i.iteration = static_cast<int>(h.size()) + 1;
+    i.energy = e;
+    h.push_back(i);
+    EXPECT_EQ(newtonVerdict(h.back(), h), NewtonVerdict::Iterating) << h.size();
+  }
+  // The sixth of its own that goes on cycling: stalled.
+  IterationInfo i;
+  i.iteration = static_cast<int>(h.size()) + 1;
+  i.energy = 0.5;
+  h.push_back(i);
+  EXPECT_EQ(newtonVerdict(h.back(), h), NewtonVerdict::Stalled);
+}
+
 }  // namespace
 }  // namespace c2d
