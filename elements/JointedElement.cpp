@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -376,6 +377,7 @@ Status JointedElement::evaluateHinge(const ElementKinematics& kin, const StepRul
   double psi = psiN, G = 0, Gpsi = 0, m = 0, mPsi = 0, slip = 0;
   EndHinge::Value cv;
   bool lastPass = false, converged = false;
+  double lastStep = std::numeric_limits<double>::infinity(), stepBeforeLast = lastStep;
   for (int it = 0; it < kMaxLocalIterations; ++it) {
     turnSlave(in, kin, psi);
     if (it > 0)
@@ -404,11 +406,17 @@ Status JointedElement::evaluateHinge(const ElementKinematics& kin, const StepRul
       continue;
     }
     (G < 0 ? lo : hi) = psi;
-    if (!(Gpsi > 0) || !(psi + step > lo && psi + step < hi)) {
-      const bool finite = std::abs(hi) < 1e299 && std::abs(lo) < 1e299;
+    // Newton's steps that do not halve from one to the next but one bounce
+    // between the sides of a kink (the wrapped element's own joint turning
+    // from stick to slip): the bracket then shrinks by little each time, and
+    // bisection takes over (a safeguarded Newton, as rtsafe's).
+    const bool finite = std::abs(hi) < 1e299 && std::abs(lo) < 1e299;
+    if (!(Gpsi > 0) || !(psi + step > lo && psi + step < hi) ||
+        (finite && std::abs(step) > 0.5 * stepBeforeLast))
       step = (finite ? 0.5 * (lo + hi) : psi + sigma * 0.1) - psi;
-    }
     if (!std::isfinite(step)) break;
+    stepBeforeLast = lastStep;
+    lastStep = std::abs(step);
     psi += step;
   }
   if (!converged) {
