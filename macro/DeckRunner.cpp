@@ -1,7 +1,6 @@
 #include "macro/DeckRunner.h"
 
 #include <algorithm>
-#include <ctime>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -9,13 +8,11 @@
 #include <sstream>
 
 #include "core/output/AtomicFile.h"
-#include "macro/studies/CurveOverlay.h"
+#include "macro/CheckPass.h"
+#include "macro/ExecutePass.h"
 #include "macro/deck/DeckParser.h"
 #include "macro/run/Interrupt.h"
-#include "macro/deck/Limits.h"
-#include "macro/deck/ParameterNote.h"
 #include "macro/deck/Suggest.h"
-#include "macro/studies/PlanTable.h"
 #include "macro/studies/RunTiming.h"
 #include "macro/run/StaleOutputs.h"
 #include "macro/studies/Sweep.h"
@@ -31,30 +28,8 @@ namespace {
 // The longest stem of a deck's own outputs (as fitFileStem cuts a run's).
 constexpr std::size_t kMaxDeckStem = 160;
 
-// What the check pass learns about each run, to name it before anything runs.
-struct RunInfo {
-  SweepValues sweep;                     // empty outside a SWEEp
-  std::string planName;                  // the SWEEp's PLAN name of its value set, if any
-  std::map<std::string, double> params;  // the parameter table as the problem starts
-  int plan = 0;                          // an ensemble's plan (1-based), 0 outside one
-  int sample = 0, samples = 0;           // its sample 1..samples, 0 outside an ensemble
-  DrawnValues drawn;                     // the sample's drawn values
-  std::vector<std::string> zones;        // the site's protected zones (SITE)
-};
-
-// Output stem and legend label of each run, and what an ensemble's table says of it.
-struct RunPlan {
-  std::string stem, label;
-  int plan = 0, sample = 0;
-  DrawnValues drawn;
-  std::string planName;  // the SWEEp's PLAN name, if any
-};
-
-// A named plan's tag and label is its name; else its swept values.
+// A named plan's tag is its name; else its swept values.
 std::string planTag(const RunInfo& r) { return r.planName.empty() ? sweepTag(r.sweep) : r.planName; }
-std::string planLabel(const SweepValues& sweep, const std::string& name) {
-  return name.empty() ? sweepLabel(sweep) : name;
-}
 
 // "_s07" for sample 7 of 20 (as many digits as the count).
 std::string sampleTag(int sample, int samples) {
@@ -135,18 +110,6 @@ std::vector<RunPlan> planRuns(const std::vector<RunInfo>& runs, const std::strin
 
 namespace {
 
-// A failure as the plans table gives it: its first line, the deck named
-// without its directory ("deck.inp:41:5: error: ...").
-std::string failureReason(const std::string& what) {
-  std::string r = what.substr(0, what.find('\n'));
-  const std::size_t e = r.find(": error: ");
-  if (e != std::string::npos) {
-    const std::size_t slash = r.rfind('/', e);
-    if (slash != std::string::npos) r = r.substr(slash + 1);
-  }
-  return r;
-}
-
 // The drawn names of the deck's ensemble in order of first appearance.
 std::vector<std::string> drawnNames(const std::vector<RunInfo>& runs) {
   std::vector<std::string> names;
@@ -178,17 +141,6 @@ std::vector<std::string> sweptNames(const std::vector<RunInfo>& runs) {
 
 namespace {
 
-// A name a study sets for each run cannot be given from outside the deck too:
-// the study's tables and file names would show values the runs did not take.
-void refuseOverride(const Parameters& params, const std::string& name, const Record& rec,
-                    const std::string& how) {
-  if (!params.overridden(name)) return;
-  throw DeckError(rec[0].loc,
-                  "'" + name + "' is " + how + " by this study for each run: it cannot also be given "
-                  "from outside the deck (--set, params)",
-                  rec.excerpt(rec[0].loc), "give the study's values here, or drop this name from the given ones");
-}
-
 // A value given from outside the deck (--set) whose name no PARAmeter record
 // of the deck assigns: it would change nothing, silently.
 class UnusedParameter : public std::runtime_error {
@@ -212,286 +164,6 @@ std::string givenText(const std::map<std::string, double>& given) {
   for (const auto& [name, v] : given) s += (s.empty() ? " given " : " ") + name + "=" + exactNumber(v);
   return s;
 }
-
-// Walks the top-level items: PARAmeter blocks, problems, loops, sweeps. In the
-// check pass every problem is bound only (and what names its run is noted); in
-// the run pass bound and run.
-class Walker {
- public:
-  Walker(const SolutionCommands& commands, const DeckOptions& options, std::ostream& log,
-         std::ostream* console, std::vector<RunPlan> plans, std::string stem = {},
-         Warnings* warnings = nullptr)
-      : commands_(commands),
-        options_(options),
-        log_(log),
-        console_(console),
-        execute_(!plans.empty()),
-        plans_(std::move(plans)),
-        stem_(std::move(stem)),
-        warnings_(warnings) {}
-
-  void walk(const std::vector<TopItem>& items, Parameters& params) {
-    for (const TopItem& item : items) {
-      if (const auto* pb = std::get_if<ParamBlock>(&item)) {
-        pb->apply(params);
-      } else if (const auto* loop = std::get_if<TopLoop>(&item)) {
-        const int n = loop->count.evalInt(params, "loop count");
-        if (n < 0 || n > DeckLimits::kMaxRuns) {
-          const Record& h = loop->head;
-          const SourceLoc at = loop->count.loc();
-          throw DeckError(
-              at,
-              "top-level LOOP count " + std::to_string(n) +
-                  (n < 0 ? " is negative"
-                         : " is beyond the largest this program takes (" +
-                               std::to_string(DeckLimits::kMaxRuns) + " runs of its problems)"),
-              h.excerpt(at));
-        }
-        const StudySize::Scope scope(size_, loop->head, n,
-                                     "the LOOP of line " + std::to_string(loop->head.loc.line) +
-                                         ": " + std::to_string(n) + " passes");
-        for (int i = 0; i < n; ++i) walk(loop->body, params);
-      } else if (const auto* sweep = std::get_if<TopSweep>(&item)) {
-        // The swept names may not be set again by the deck (Parameters::protect).
-        for (const SweepVariable& v : sweep->variables) refuseOverride(params, v.name, v.record, "swept");
-        const std::vector<SweepValues> sets = sweepRuns(*sweep, params);
-        const std::vector<std::string> names = sweepPlanNames(*sweep);
-        const std::string by = "swept by the SWEEp of line " + std::to_string(sweep->head.loc.line);
-        const StudySize::Scope scope(size_, sweep->head, static_cast<long long>(sets.size()),
-                                     "the SWEEp of line " + std::to_string(sweep->head.loc.line) +
-                                         ": " + std::to_string(sets.size()) + " value sets");
-        for (std::size_t k = 0; k < sets.size(); ++k) {
-          const SweepValues& set = sets[k];
-          sweep_ = set;
-          planName_ = k < names.size() ? names[k] : std::string();
-          for (const auto& [name, x] : sweep_) {
-            params.set(name, x);
-            params.protect(name, by);
-          }
-          walk(sweep->body, params);
-        }
-        for (const SweepVariable& v : sweep->variables) params.unprotect(v.name);
-        sweep_.clear();
-        planName_.clear();
-      } else if (const auto* e = std::get_if<TopEnsemble>(&item)) {
-        walkEnsemble(*e, params);
-      } else {
-        try {
-          runProblem(std::get<Problem>(item), params);
-        } catch (const DeckError& e) {
-          throw noteParameters(e, params);
-        }
-      }
-    }
-  }
-
-  const std::vector<RunInfo>& infos() const { return infos_; }
-  int runs() const { return runs_; }
-  const RunSummary& total() const { return total_; }
-  const CurveOverlay& overlay() const { return overlay_; }
-  // The study's table: set before walking when the deck has a SWEEp.
-  void setPlanTable(PlanTable table) { planTable_ = std::move(table); }
-  const std::optional<PlanTable>& planTable() const { return planTable_; }
-  // The outputs a failed or interrupted run kept (tagged names).
-  const std::vector<std::filesystem::path>& kept() const { return kept_; }
-  // The ensemble's table: set before walking when the deck has an ENSEmble.
-  void setEnsembleTable(EnsembleTable table) { ensembleTable_ = std::move(table); }
-  const std::optional<EnsembleTable>& ensembleTable() const { return ensembleTable_; }
-  // The first ENSEmble record walked, if any.
-  const Record* ensembleHead() const { return ensembleHead_; }
-  // The title of the last problem walked.
-  const std::string& title() const { return title_; }
-
- private:
-  // Every sample of the ensemble runs the body (PARAmeter blocks, the problem)
-  // from the same parameter table, with its drawn values set (and protected).
-  void walkEnsemble(const TopEnsemble& e, Parameters& params) {
-    if (!ensembleHead_) ensembleHead_ = &e.head;
-    for (const DrawRecord& d : e.draws) refuseOverride(params, d.name, d.record, "drawn");
-    detonators_ = e.detonators ? &*e.detonators : nullptr;
-    const EnsembleSpec spec = evaluateEnsemble(e, params);
-    pairing_.check(e, spec, plan_ + 1);
-    const Parameters base = params;
-    const std::string by = "drawn by the ENSEmble of line " + std::to_string(e.head.loc.line);
-    const StudySize::Scope scope(size_, e.head, spec.samples,
-                                 "the ENSEmble of line " + std::to_string(e.head.loc.line) + ": " +
-                                     std::to_string(spec.samples) + " samples");
-    ++plan_;
-    for (int k = 1; k <= spec.samples; ++k) {
-      params = base;
-      const SampleDraws draws = drawSample(spec, k);
-      for (const auto& [name, v] : draws.values) {
-        params.set(name, v);
-        params.protect(name, by);
-      }
-      sample_ = &draws;
-      samples_ = spec.samples;
-      try {
-        walk(e.body, params);
-      } catch (const StudySizeError&) {
-        throw;  // of the study, not of this sample's draws
-      } catch (const DeckError& err) {
-        // A value that only some draws make bad: say which sample drew what.
-        std::string drawn;
-        for (const auto& [name, v] : draws.values)
-          drawn += (drawn.empty() ? "" : ", ") + name + " = " + formatSweepValue(v);
-        throw DeckError(err.loc(),
-                        err.message() + " (in sample " + std::to_string(k) + " of the ENSEmble of line " +
-                            std::to_string(e.head.loc.line) + (drawn.empty() ? "" : ", which drew " + drawn) +
-                            ")",
-                        err.text(), err.hint());
-      }
-      sample_ = nullptr;
-    }
-    params = base;
-  }
-
-  void runProblem(const Problem& p, Parameters& params) {
-    if (!execute_) {  // the planning: its size checked, a signal stops it
-      size_.checkProblem(p.head, runs_, DeckLimits::kMaxRuns);
-      throwIfInterrupted("the planning of run " + std::to_string(runs_ + 1));
-    }
-    ++runs_;
-    title_ = RunOutputs::displayTitle(p.title);
-    RunOptions ro;
-    ro.outDir = options_.outDir.empty() ? std::filesystem::path(".") : options_.outDir;
-    ro.progress = options_.progress && !options_.quiet;
-    ro.solver = options_.solver;
-    ro.sample = sample_;
-    if (!execute_) {
-      RunInfo info{sweep_, planName_, {}, sample_ ? plan_ : 0, sample_ ? sample_->sample : 0, samples_, {}, {}};
-      for (const std::string& n : params.names()) info.params[n] = params.get(n);
-      ro.warnings = warnings_;
-      ProblemRun run(p, params, commands_, ro, log_);
-      run.bind(false);
-      if (sample_) {
-        info.drawn = sample_->values;
-        if (sample_->jitter) info.drawn.emplace_back("dt_factor", sample_->stepFactor);
-        const std::vector<double>& blasts = run.drawnBlastTimes();
-        if (sample_->detonators && blasts.empty() && warnings_ && detonators_)
-          warnings_->add((*detonators_)[0].loc,
-                         "DETOnators, and the problem has no BLASt record: there is no blast "
-                         "time to scatter",
-                         detonators_->excerpt((*detonators_)[0].loc));
-        for (std::size_t i = 0; i < blasts.size(); ++i)
-          info.drawn.emplace_back("blast_" + std::to_string(i + 1), blasts[i]);
-      }
-      info.zones = zoneNames(run.model().site());
-      infos_.push_back(std::move(info));
-      // PARA commands in the BATCh blocks change the table for what follows (a
-      // later top-level LOOP count), as they will when the problem runs.
-      params = run.boundParams();
-      return;
-    }
-    // A count that depends on what ran (PARA inside a BATCh loop) may give more
-    // runs than the check pass planned: they are numbered on.
-    if (static_cast<std::size_t>(runs_) > plans_.size())
-      plans_.push_back({stem_ + "_" + std::to_string(runs_), "run " + std::to_string(runs_), 0, 0, {}, {}});
-    // A shard runs every n-th run only (runs k with k mod n == i - 1, k from 0).
-    if (options_.shards > 1 && (runs_ - 1) % options_.shards != options_.shard - 1) return;
-    const RunPlan plan = plans_.at(static_cast<std::size_t>(runs_ - 1));
-    ro.stem = plan.stem;
-    ro.label = plan.label;
-    log_ << "\n  collapse2d  " << p.title << "\n";
-    log_ << "  run " << runs_ << " of " << plans_.size() << ", outputs " << ro.stem
-         << (plan.label.empty() ? "" : " (" + plan.label + ")") << "\n";
-    if (!plan.drawn.empty()) {
-      log_ << "  drawn:";
-      for (std::size_t i = 0; i < plan.drawn.size(); ++i)
-        log_ << (i ? ", " : " ") << plan.drawn[i].first << " = " << exactNumber(plan.drawn[i].second);
-      log_ << "\n";
-    }
-    // The samples after an ensemble plan's first keep their tables (time
-    // history, debris) and a short log: a study of hundreds of runs would
-    // otherwise write gigabytes of pictures, animations and Newton lines.
-    const bool brief = sample_ && sample_->sample > 1;
-    ro.pictures = !brief;
-    if (brief) log_ << "  (the log of a sample after the first: its summary and debris)\n";
-    log_ << "\n";
-    ro.safePoint = options_.safePoint;
-    std::ostream discard(nullptr);
-    ProblemRun run(p, params, commands_, ro, brief ? discard : log_);
-    // A run of a study (SWEEp, ENSEmble) that fails is reported and the study
-    // goes on; elsewhere a failure ends the deck.
-    const bool inStudy = (!sweep_.empty() && planTable_) || (sample_ && ensembleTable_);
-    PlanRow row{runs_, ro.stem, sweep_, true, {}, {}, plan.planName};
-    const std::clock_t cpuStart = std::clock();  // the process's CPU time: runs go one by one
-    try {
-      run.bind(true);
-      try {
-        run.run();
-      } catch (const Interrupted&) {
-        kept_ = run.keepOutputs("interrupted");
-        throw;
-      } catch (...) {
-        kept_ = run.keepOutputs("failed");
-        throw;
-      }
-    } catch (const std::runtime_error& e) {
-      const bool expected = dynamic_cast<const AnalysisError*>(&e) || dynamic_cast<const DeckError*>(&e);
-      if (!inStudy || !expected) throw;
-      row.ok = false;
-      row.reason = failureReason(e.what());
-      ++failed_;
-      log_ << "\n  *** run failed\n" << e.what() << "\n";
-      if (console_ && !options_.quiet)
-        *console_ << "  " << ro.stem << ": FAILED: " << row.reason << "\n" << std::flush;
-    }
-    row.debris = run.debris();
-    const RunSummary s = run.summary();
-    if (planTable_ && !sample_) planTable_->add(row);
-    if (ensembleTable_ && sample_) {
-      const double cpu = static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
-      ensembleTable_->add({runs_, plan.plan, plan.sample, ro.stem, sweep_, plan.drawn, row.ok,
-                           row.reason, row.debris, plan.planName,
-                           RunNumerics{s.steps, s.iterations, s.cuts, s.energyError}, cpu});
-    }
-    total_ += s;
-    if (!row.ok) return;
-    if (brief && row.debris) log_ << debrisLogLines(*row.debris);
-    log_ << "\n  summary: " << runSummaryText(s) << "\n";
-    const std::vector<std::string> warnings = runWarnings(s);
-    for (const std::string& w : warnings) log_ << "  " << w << "\n";
-    if (console_ && !options_.quiet && plans_.size() > 1)
-      *console_ << "  " << ro.stem << ": " << runSummaryText(s) << "\n" << std::flush;
-    // Warnings go where the deck's warnings go (standard error), not with the summaries.
-    if (console_)
-      for (const std::string& w : warnings) std::cerr << ro.stem << ": " << w << "\n" << std::flush;
-    // An ensemble's plans are overlaid by their first sample.
-    if (!brief)
-      overlay_.add(runs_, sample_ ? planLabel(sweep_, plan.planName) : plan.label, p.title,
-                   run.outputs().curves(run.history()));
-  }
-
-  const SolutionCommands& commands_;
-  const DeckOptions& options_;
-  std::ostream& log_;
-  std::ostream* console_;
-  bool execute_;
-  std::vector<RunPlan> plans_;
-  std::string stem_;
-  Warnings* warnings_;
-  std::vector<RunInfo> infos_;
-  SweepValues sweep_;
-  std::string planName_;  // the PLAN name of the sweep's value set walked
-  const SampleDraws* sample_ = nullptr;  // the ensemble's sample being walked
-  int samples_ = 0, plan_ = 0;           // its sample count; the ensemble plans walked
-  EnsemblePairing pairing_;              // the same n and seed in every plan
-  std::optional<EnsembleTable> ensembleTable_;
-  const Record* ensembleHead_ = nullptr;
-  const Record* detonators_ = nullptr;  // the DETOnators record of the ensemble walked
-  std::string title_;
-  int runs_ = 0;
-  RunSummary total_;
-  CurveOverlay overlay_;
-  std::optional<PlanTable> planTable_;
-  int failed_ = 0;
-  StudySize size_;  // the passes of the LOOPs, SWEEps and ENSEmble being walked
-
- public:
-  int failed() const { return failed_; }
-  std::vector<std::filesystem::path> kept_;
-};
 
 }  // namespace
 
@@ -518,7 +190,7 @@ DeckPlan planDeck(const std::string& path, const SolutionCommands& commands,
   Parameters params;
   params.setOverrides(given);
   const DeckOptions options;
-  Walker check(commands, options, discard, nullptr, {});
+  CheckPass check(commands, options, discard);
   check.walk(deck.items, params);
   DeckPlan plan;
   plan.runs = check.runs();
@@ -568,7 +240,7 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     std::ostringstream discard;
     Parameters checkParams;
     checkParams.setOverrides(options.params);
-    Walker check(commands, options, discard, nullptr, {}, stem, &warnings);
+    CheckPass check(commands, options, discard, &warnings);
     check.walk(deck.items, checkParams);
     checkOverridesUsed(checkParams, path);
     const std::vector<RunPlan> plans = planRuns(check.infos(), stem);
@@ -606,7 +278,7 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     runOptions.safePoint = [&log] { log->check(); };
     Parameters params;
     params.setOverrides(options.params);
-    Walker runner(commands, runOptions, log->stream(), &out, plans, stem);
+    ExecutePass runner(commands, runOptions, log->stream(), &out, plans, stem);
     const std::vector<std::string> swept = sweptNames(check.infos());
     const bool named =
         std::any_of(infos.begin(), infos.end(), [](const RunInfo& r) { return !r.planName.empty(); });
