@@ -1,38 +1,21 @@
 #include "macro/run/ProblemRun.h"
 
-#include <sys/ioctl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
-#include <set>
 
 #include "elements/Joints.h"
 #include "macro/commands/BlastOfRemoved.h"
 #include "macro/commands/MasslessLoads.h"
 #include "macro/commands/OutputCommands.h"
 #include "macro/deck/DeckParser.h"
-#include "macro/deck/DeckReader.h"
 #include "macro/deck/MeshBinder.h"
 #include "macro/run/Interrupt.h"
+#include "macro/run/MeshReentry.h"
 #include "macro/run/StaleOutputs.h"
 #include "solvers/FiniteResults.h"
 
 namespace c2d {
-
-namespace {
-
-// What a MESH re-entry may not change in a material set with elements.
-struct MaterialShape {
-  Kinematics kinematics = Kinematics::Small;
-  bool elastic = false;  // SMALl without HARDening/SOFTening: elastic frame elements
-};
-void checkMaterialChanges(const std::vector<Macro>& list, std::map<int, MaterialShape>& sets,
-                          const std::set<int>& used, const Parameters& params, bool& collapse);
-
-}  // namespace
 
 ProblemRun::ProblemRun(const Problem& problem, Parameters& params, const SolutionCommands& table,
                        RunOptions options, std::ostream& log)
@@ -47,12 +30,7 @@ ProblemRun::ProblemRun(const Problem& problem, Parameters& params, const Solutio
 }
 
 // A run that ends by an exception leaves no progress line for the message to run into.
-ProblemRun::~ProblemRun() { progress(true); }
-
-namespace {
-void checkMeshReentries(const Problem& problem, const Parameters& start, const Parameters& bound,
-                        const std::vector<std::vector<Macro>>& batches);
-}  // namespace
+ProblemRun::~ProblemRun() { progress_.erase(); }
 
 void ProblemRun::bind(bool echo) {
   MeshFacts mesh;
@@ -88,21 +66,12 @@ void ProblemRun::bind(bool echo) {
                       rec.excerpt(rec.fieldLoc(field)),
                       "add PROP,," + std::to_string(table) + " to a BATCh block");
     }
-  std::map<int, MaterialShape> sets;
-  for (const auto& [number, mat] : model_.materials())
-    sets[number] = {mat.kinematics,
-                    mat.kinematics == Kinematics::Small && !mat.hardening && !mat.softening};
-  std::set<int> used;
-  for (const auto& e : model_.elements())
-    if (e) used.insert(e->materialNumber());
-  bool collapse = false;
-  for (const auto& batch : batches_)
-    checkMaterialChanges(batch, sets, used, boundParams_, collapse);
-  checkMeshReentries(problem_, params_, boundParams_, batches_);
+  checkMeshReentries(problem_, model_, params_, boundParams_, batches_);
 }
 
 void ProblemRun::run() {
-  start_ = lastProgress_ = std::chrono::steady_clock::now();
+  start_ = std::chrono::steady_clock::now();
+  progress_.start();
   removeStaleOutputs(options_.outDir, options_.stem);
   analysis_ = std::make_unique<Analysis>(model_);
   if (!analysis_->setLinearSolver(options_.solver))
@@ -139,7 +108,7 @@ void ProblemRun::run() {
   outputs_->finish(model_, analysis_->state(), history_.get());
   if (model_.ground()) reportDebris();
   watches_.reportEnd();
-  progress(true);
+  progress_.erase();
 }
 
 RunSummary ProblemRun::summary() const {
@@ -240,112 +209,6 @@ void ProblemRun::failAtCommit(const std::string& what) const {
                       " (t = " + fmt("%.6e", s.t) + "): " + what);
 }
 
-namespace {
-
-std::vector<MeshItem> meshReentryItems(const Macro& m) {
-  std::vector<Record> records;
-  if (!m.optionText.empty()) {
-    const std::filesystem::path base = std::filesystem::path(m.record.loc.file).parent_path();
-    const std::filesystem::path file = base / m.optionText;
-    if (!std::filesystem::exists(file))
-      throw DeckError(m.record.fieldLoc(1), "MESH: no file '" + file.string() + "'",
-                      m.record.excerpt(m.record.fieldLoc(1)));
-    records = DeckReader::readFile(file.string());
-  } else {
-    records = m.data;
-  }
-  return parseMeshRecords(std::move(records), m.record.loc.file);
-}
-
-// MATErial records of MESH re-entries, in deck order, that would change the
-// kinematics of a set whose elements exist, or give HARDening/SOFTening to its
-// elastic frame elements (before HINGe2joint, which makes them elastic Reissner
-// beams that ignore the laws): refused before any computing (the re-entry checks
-// again when it is applied). A re-entry that builds elements is left to that check.
-void checkMaterialChanges(const std::vector<Macro>& list, std::map<int, MaterialShape>& sets,
-                          const std::set<int>& used, const Parameters& params, bool& collapse) {
-  for (const Macro& m : list) {
-    checkMaterialChanges(m.body, sets, used, params, collapse);
-    if (m.is("hing")) collapse = true;
-    if (!m.is("mesh")) continue;
-    const std::vector<MeshItem> items = meshReentryItems(m);
-    bool builds = false;
-    for (const MeshItem& item : items)
-      if (const auto* c = std::get_if<MeshCommand>(&item))
-        builds = builds || c->head.is("ELEMents") || c->head.is("BLOCk");
-    if (builds) continue;
-    for (const MeshItem& item : items) {
-      const auto* c = std::get_if<MeshCommand>(&item);
-      if (!c || !c->head.is("MATErial") || c->head.size() < 2) continue;
-      int number = 0;
-      try {
-        number = Expression::parse(c->head[1]).evalInt(params, "material number");
-      } catch (const DeckError&) {
-        continue;  // a parameter set later: checked when the re-entry is applied
-      }
-      Kinematics kin = Kinematics::Small;
-      const Record* where = &c->head;
-      const Record* law = nullptr;
-      for (const Record& r : c->data) {
-        if (r.is("SMALl") || r.is("FINIte")) {
-          kin = r.is("SMALl") ? Kinematics::Small : Kinematics::Finite;
-          where = &r;
-        }
-        if (!law && (r.is("HARDening") || r.is("SOFTening"))) law = &r;
-      }
-      auto it = sets.find(number);
-      if (it != sets.end() && used.count(number)) {
-        if (it->second.kinematics != kin)
-          refuseKinematicsChange(*where, number, it->second.kinematics);
-        if (it->second.elastic && law && !collapse)
-          throw DeckError(law->fieldLoc(0),
-                          "material " + std::to_string(number) +
-                              " has elastic frame elements (built without HARDening and "
-                              "SOFTening): the laws cannot be added in a MESH re-entry",
-                          law->excerpt(law->fieldLoc(0).col),
-                          "give the laws in the mesh input, where the elements are built");
-        continue;  // the elements keep their class
-      }
-      sets[number] = {kin, kin == Kinematics::Small && !law};
-    }
-  }
-}
-
-// The MESH re-entries of the BATCh blocks applied in deck order to a model
-// built again from the mesh input, with the parameters the bind pass ends
-// with: their deck errors (an unknown record, an undefined parameter, a
-// negative mu) are found before the first step. What depends on the run
-// before the re-entry (the nodes' positions against a new ground) is left to
-// the re-entry itself.
-void applyReentries(const std::vector<Macro>& list, Model& model, Parameters& params) {
-  for (const Macro& m : list) {
-    applyReentries(m.body, model, params);
-    if (!m.is("mesh")) continue;
-    try {
-      applyMesh(meshReentryItems(m), params, model, nullptr, nullptr, nullptr);
-    } catch (const AnalysisError&) {
-      // The ground against the nodes as the run will have moved them: at the re-entry.
-    }
-  }
-}
-
-bool hasReentry(const std::vector<Macro>& list) {
-  return std::any_of(list.begin(), list.end(),
-                     [](const Macro& m) { return m.is("mesh") || hasReentry(m.body); });
-}
-
-void checkMeshReentries(const Problem& problem, const Parameters& start,
-                        const Parameters& bound, const std::vector<std::vector<Macro>>& batches) {
-  if (std::none_of(batches.begin(), batches.end(), [](const auto& b) { return hasReentry(b); }))
-    return;
-  Parameters params = start;
-  Model model = buildModel(problem, params, nullptr, nullptr);
-  params = bound;
-  for (const auto& batch : batches) applyReentries(batch, model, params);
-}
-
-}  // namespace
-
 void ProblemRun::reenterMesh(const Macro& m) {
   const std::vector<MeshItem> items = meshReentryItems(m);
   const Status st = analysis_->commit();
@@ -397,38 +260,7 @@ void ProblemRun::onCommit() {
   if (history_) history_->record(*analysis_);
   watches_.observeMotion(en);
   outputs_->onCommit(model_, analysis_->state());
-  progress(false);
-}
-
-void ProblemRun::progress(bool final) {
-  if (!options_.progress) return;
-  // One line on the terminal, rewritten in place (at most every 0.1 s) and
-  // erased when the run ends, so that the run's summary takes its place.
-  if (final) {
-    if (progressShown_) std::fprintf(stderr, "\r\033[K");
-    std::fflush(stderr);
-    progressShown_ = false;
-    return;
-  }
-  const auto now = std::chrono::steady_clock::now();
-  if (progressShown_ && now - lastProgress_ < std::chrono::milliseconds(100)) return;
-  lastProgress_ = now;
-  const State& s = analysis_->state();
-  const auto& h = analysis_->stepHistory();
-  char line[256];
-  std::snprintf(line, sizeof line, "%s: step %d  t = %.4g  load %.4g  Newton it %d  hinges %d%s",
-                options_.stem.c_str(), s.step, s.t, analysis_->loadFactor(),
-                h.empty() ? 0 : h.back().iteration, watches_.hinges(),
-                steps_.cuts() ? ("  cuts " + std::to_string(steps_.cuts())).c_str() : "");
-  // A line longer than the terminal would wrap, and '\r' would not return to its start.
-  std::size_t width = 80;
-  winsize ws{};
-  if (ioctl(STDERR_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0) width = ws.ws_col;
-  std::string text = line;
-  if (text.size() >= width) text.resize(width - 1);
-  std::fprintf(stderr, "\r\033[K%s", text.c_str());
-  std::fflush(stderr);
-  progressShown_ = true;
+  progress_.show(*analysis_, watches_.hinges(), steps_.cuts());
 }
 
 }  // namespace c2d

@@ -14,6 +14,7 @@
 #include "core/Debris.h"
 #include "core/Model.h"
 #include "macro/deck/Deck.h"
+#include "macro/run/ProgressLine.h"
 #include "macro/run/RunCursor.h"
 #include "macro/run/RunOutputs.h"
 #include "macro/run/RunWatches.h"
@@ -153,7 +154,6 @@ class ProblemRun {
   void onCommit();
   // The debris report (macro/run/DebrisReport.cpp).
   void reportDebris();
-  void progress(bool final);
   std::filesystem::path restartPath(const Macro& m) const;
   // This class's own part of a restart file: hinge steps, step cutting, energy check.
   std::string runState() const;
@@ -187,8 +187,7 @@ class ProblemRun {
   std::vector<double> drawnBlastTimes_;
   std::vector<double> nominalBlastTimes_;  // the deck's, before DETOnators scattered them
   std::chrono::steady_clock::time_point start_;
-  std::chrono::steady_clock::time_point lastProgress_;
-  bool progressShown_ = false;
+  ProgressLine progress_{options_.progress, options_.stem};
 };
 
 }  // namespace c2d

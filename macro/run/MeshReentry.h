@@ -1,0 +1,31 @@
+#pragma once
+// MESH inside a BATCh block: a re-entry of mesh records (its data lines or a
+// file) applied to the model between two solution commands. Its records, and
+// the bind pass's checks of every re-entry of a problem before any computing.
+#include <vector>
+
+#include "core/Model.h"
+#include "macro/deck/Deck.h"
+#include "macro/deck/Macro.h"
+#include "macro/deck/MeshBinder.h"
+
+namespace c2d {
+
+// The mesh records of a re-entry (MESH with data lines, or MESH,file).
+// Throws DeckError (a file that does not exist, a record that is no mesh record).
+std::vector<MeshItem> meshReentryItems(const Macro& m);
+
+// The re-entries of the bound BATCh blocks (`batches`) checked before any
+// computing: a MATErial record that would change the kinematics of a set whose
+// elements exist (`model`: the mesh input as built), or give HARDening or
+// SOFTening to its elastic frame elements before HINGe2joint; then every
+// re-entry applied in deck order to the mesh input built again from the
+// parameters at the start (`start`), with those the bind pass ends with
+// (`bound`): their deck errors (an unknown record, an undefined parameter, a
+// negative mu) are found before the first step. What depends on the run
+// before the re-entry (the nodes' positions against a new ground) is left to
+// the re-entry itself. Throws DeckError.
+void checkMeshReentries(const Problem& problem, const Model& model, const Parameters& start,
+                        const Parameters& bound, const std::vector<std::vector<Macro>>& batches);
+
+}  // namespace c2d
