@@ -1,9 +1,11 @@
 #include "macro/DeckRunner.h"
 
 #include <algorithm>
+#include <exception>
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -198,10 +200,230 @@ DeckPlan planDeck(const std::string& path, const SolutionCommands& commands,
   return plan;
 }
 
+namespace {
+
+// The deck's log: written through a temporary that becomes <log> when the
+// whole deck has run; a failed or interrupted deck keeps it as
+// <stem>.failed.out or <stem>.interrupted.out, with the reason as its last
+// lines. And the outputs a failed or interrupted run kept.
+struct DeckLog {
+  std::unique_ptr<AtomicFile> file;
+  std::vector<std::filesystem::path> kept;
+
+  void keep(std::string_view tag, const std::string& why) {
+    if (!file) return;
+    try {
+      file->stream() << "\n  *** run " << tag << "\n" << why << "\n";
+      kept.insert(kept.begin(), file->keep(tag));
+    } catch (...) {
+      // The log cannot be written (the reason is the message already).
+    }
+  }
+  std::string keptText() const {
+    return kept.empty() ? std::string() : "\n  computed results kept: " + fileList(kept);
+  }
+};
+
+// A failed run whose deck has values that look like another unit names them.
+std::string unitText(const Warnings& warnings) {
+  const std::string at = warnings.unitLocations();
+  if (at.empty()) return std::string();
+  return "\n  advice: the deck's warnings name values that look like another unit (" + at +
+         "): check them first";
+}
+
+// What the check pass planned: the runs' facts and their stems and labels.
+struct CheckedDeck {
+  std::vector<RunInfo> infos;
+  std::vector<RunPlan> plans;
+  bool ensemble = false;  // the runs are an ENSEmble's samples
+};
+
+// The check pass: everything bound with a scratch parameter table, its log discarded.
+CheckedDeck checkDeck(const Deck& deck, const std::string& path, const std::string& stem,
+                      const DeckOptions& options, const SolutionCommands& commands,
+                      Warnings& warnings) {
+  std::ostringstream discard;
+  Parameters checkParams;
+  checkParams.setOverrides(options.params);
+  CheckPass check(commands, options, discard, &warnings);
+  check.walk(deck.items, checkParams);
+  checkOverridesUsed(checkParams, path);
+  CheckedDeck checked;
+  checked.infos = check.infos();
+  checked.plans = planRuns(checked.infos, stem);
+  const auto& infos = checked.infos;
+  checked.ensemble =
+      std::any_of(infos.begin(), infos.end(), [](const RunInfo& r) { return r.sample > 0; });
+  if (checked.ensemble && std::any_of(infos.begin(), infos.end(), [](const RunInfo& r) { return r.sample == 0; })) {
+    const Record& h = *check.ensembleHead();
+    throw DeckError(h[0].loc, "a deck with an ENSEmble runs its study alone: another problem of this deck runs outside it",
+                    h.excerpt(h[0].loc), "put the other problems in decks of their own");
+  }
+  return checked;
+}
+
+// The deck's log opened (its stem checked, an earlier failed or interrupted
+// run's log removed), with its head: the deck, its warnings, the given values.
+std::unique_ptr<AtomicFile> openLog(const std::filesystem::path& dir, const std::string& partStem,
+                                    const std::string& path, const DeckOptions& options,
+                                    const Warnings& warnings) {
+  // The deck's outputs add at most ~60 characters to its stem (the runs'
+  // stems are cut to 160 by fitFileStem): a longer stem would lose the
+  // study's tables to "File name too long" after all the computing.
+  if (partStem.size() > kMaxDeckStem)
+    throw IoError("the deck's outputs would be named '" + partStem.substr(0, 40) + "...' (" +
+                  std::to_string(partStem.size()) + " characters, at most " +
+                  std::to_string(kMaxDeckStem) +
+                  " before the suffixes of its files): give the deck a shorter name");
+  removeStaleOutputs(dir, partStem);  // an earlier failed or interrupted run's log
+  auto log = std::make_unique<AtomicFile>(dir /
+                                          (options.logName.empty() ? partStem + ".out" : options.logName));
+  log->stream() << "  collapse2d  " << path << "\n";
+  for (const DeckWarning& w : warnings.list()) log->stream() << w.str() << "\n";
+  for (const auto& [name, v] : options.params)
+    log->stream() << "  given: " << name << " = " << exactNumber(v) << " (in place of the deck's value)\n";
+  return log;
+}
+
+// Where the deck's own outputs go and what they are named after.
+struct DeckFiles {
+  std::string path;              // the deck
+  std::string stem, partStem;    // the deck's stem; a shard's <stem>_part<i>of<n>
+  std::filesystem::path dir;     // the output directory
+};
+
+// After the runs: the overlay (a shard of a study: its curves, for `collapse2d
+// merge`), the plans or ensemble table (and, unsharded, the ensemble's study),
+// a shard's manifest. Returns the ensemble study's summary for the console.
+std::string writeStudyOutputs(const ExecutePass& runner, const DeckFiles& f,
+                              const DeckOptions& options, int plannedRuns,
+                              const std::vector<std::string>& swept, std::ostream& log) {
+  std::string studySummary;
+  // A shard of a study: its overlays are drawn by `collapse2d merge` from
+  // the parts' curves (a part without a study's table draws its own).
+  const bool studyPart = options.shards > 1 && (runner.planTable() || runner.ensembleTable());
+  std::string curvesText, tableText;  // a part's, for its manifest's fingerprints
+  if (studyPart && runner.overlay().numRuns() > 0)
+    AtomicFile::write(f.dir / (f.partStem + "_curves.csv"), curvesText = runner.overlay().csv());
+  else
+    for (const auto& file : runner.overlay().write(f.dir, f.partStem))
+      log << "\n  overlay of the runs: " << file.filename().string() << "\n";
+  if (const auto& table = runner.planTable()) {
+    const std::filesystem::path file = f.dir / (f.partStem + "_plans.csv");
+    AtomicFile::write(file, tableText = table->csv());
+    log << "\n  plans: " << file.filename().string() << " (" << table->rows().size()
+        << " runs, " << table->failed() << " failed)\n";
+  }
+  if (const auto& table = runner.ensembleTable()) {
+    const std::string text = tableText = table->csv();
+    const std::filesystem::path file = f.dir / (f.partStem + "_ensemble.csv");
+    AtomicFile::write(file, text);
+    AtomicFile::write(f.dir / (f.partStem + "_timing.csv"), timingCsv(*table));
+    log << "\n  ensemble: " << file.filename().string() << " (" << table->rows().size()
+        << " runs, " << table->failed() << " failed; CPU times in " << f.partStem
+        << "_timing.csv)\n";
+    // A shard's table is a part: `collapse2d merge` makes the study of the whole.
+    if (options.shards <= 1) {
+      const EnsembleStudyReport report =
+          writeEnsembleStudy(f.dir, f.stem, readEnsembleTable(text, swept.size()), runner.title());
+      log << "\n" << report.text;
+      studySummary = report.summary;
+    }
+  }
+  if (options.shards > 1 && (runner.planTable() || runner.ensembleTable()))
+    writeShardManifest(f.dir, f.partStem,
+                       {f.path, deckFingerprint(f.path) + givenText(options.params), options.shard,
+                        options.shards, plannedRuns, runner.ensembleTable() ? "ensemble" : "plans",
+                        swept, runner.title(), runner.overlay().numRuns(),
+                        contentFingerprint(tableText),
+                        curvesText.empty() ? std::string() : contentFingerprint(curvesText)});
+  return studySummary;
+}
+
+// The outcome of the runs: the totals, the runs this part executed, a study's
+// failed runs; the log committed, the deck's summary on the console.
+void finishRuns(DeckOutcome& outcome, const ExecutePass& runner, const DeckFiles& f,
+                const DeckOptions& options, bool ensemble, const Warnings& warnings,
+                AtomicFile& log, const std::string& studySummary, std::ostream& out) {
+  outcome.total = runner.total();
+  outcome.runs = runner.runs();
+  outcome.failedRuns = runner.failed();
+  int executed = outcome.runs;
+  if (options.shards > 1) {
+    executed = outcome.runs >= options.shard ? (outcome.runs - options.shard) / options.shards + 1 : 0;
+    outcome.runs = executed;
+  }
+  if (outcome.failedRuns > 0) {
+    log.stream() << "\n  run complete: " << outcome.failedRuns << " of " << executed
+                 << " runs failed\n";
+    outcome.exitCode = kExitAnalysisFailed;
+    outcome.message = f.path + ": " + std::to_string(outcome.failedRuns) + " of " +
+                      std::to_string(executed) + " runs of the study failed (see " + f.partStem +
+                      (ensemble ? "_ensemble.csv" : "_plans.csv") + " and the log)" + unitText(warnings);
+  } else {
+    log.stream() << "\n  run complete\n";
+  }
+  log.commit();
+  if (!options.quiet)
+    out << f.path << ": " << (executed == 1 ? "" : std::to_string(executed) + " runs, ")
+        << (outcome.failedRuns ? std::to_string(outcome.failedRuns) + " failed, " : "")
+        << runSummaryText(outcome.total) << "\n"
+        << studySummary;
+}
+
+// The outcome of a deck that failed with `error`: its exit code and message,
+// its log kept under a tagged name. `printWarnings`: the deck's warnings
+// printed (a deck error or an unused given value).
+void failDeck(DeckOutcome& outcome, const std::exception_ptr& error, const std::string& path,
+              DeckLog& log, const Warnings& warnings, const std::function<void()>& printWarnings) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const DeckError& e) {
+    printWarnings();
+    outcome.exitCode = kExitDeckError;
+    outcome.message = e.what();
+    outcome.errorAt = e.loc();
+    log.keep("failed", e.what());
+    outcome.message += log.keptText();
+  } catch (const UnusedParameter& e) {
+    printWarnings();
+    outcome.exitCode = kExitUsage;
+    outcome.message = e.what();
+  } catch (const AnalysisError& e) {
+    outcome.exitCode = kExitAnalysisFailed;
+    log.keep("failed", e.what() + unitText(warnings));
+    outcome.message = e.what() + unitText(warnings) + log.keptText();
+  } catch (const Interrupted& e) {
+    outcome.exitCode = interruptExitCode(e.signal());
+    outcome.interrupted = e.signal();
+    const std::string msg = path + ": " + e.what();
+    log.keep("interrupted", msg);
+    outcome.message = msg + log.keptText();
+  } catch (const IoError& e) {
+    outcome.exitCode = kExitInternal;
+    const std::string msg = path + ": I/O error: " + e.what();
+    log.keep("failed", msg);
+    outcome.message = msg + log.keptText();
+  } catch (const std::filesystem::filesystem_error& e) {
+    outcome.exitCode = kExitInternal;
+    std::string msg = path + ": I/O error: " + e.code().message();
+    if (!e.path1().empty()) msg += ": '" + e.path1().string() + "'";
+    log.keep("failed", msg);
+    outcome.message = msg + log.keptText();
+  } catch (const std::exception& e) {
+    outcome.exitCode = kExitInternal;
+    const std::string msg = std::string(path) + ": internal error: " + e.what();
+    log.keep("failed", msg);
+    outcome.message = msg + log.keptText();
+  }
+}
+
+}  // namespace
+
 DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
                     const SolutionCommands& commands, std::ostream& out) {
   DeckOutcome outcome;
-  const std::string stem = std::filesystem::path(path).stem().string();
   Warnings warnings;
   bool printed = false;
   auto printWarnings = [&] {
@@ -210,189 +432,45 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     for (const DeckWarning& w : warnings.list()) std::cerr << w.str() << "\n";
     outcome.warnings = warnings.list();
   };
-  // The log is written through a temporary and becomes <log> when the whole deck
-  // has run; a failed or interrupted deck keeps it as <stem>.failed.out or
-  // <stem>.interrupted.out, with the reason as its last lines.
-  std::unique_ptr<AtomicFile> log;
-  std::vector<std::filesystem::path> kept;
-  auto keepLog = [&](std::string_view tag, const std::string& why) {
-    if (!log) return;
-    try {
-      log->stream() << "\n  *** run " << tag << "\n" << why << "\n";
-      kept.insert(kept.begin(), log->keep(tag));
-    } catch (...) {
-      // The log cannot be written (the reason is the message already).
-    }
-  };
-  auto keptText = [&] {
-    return kept.empty() ? std::string() : "\n  computed results kept: " + fileList(kept);
-  };
-  // A failed run whose deck has values that look like another unit names them.
-  auto unitText = [&] {
-    const std::string at = warnings.unitLocations();
-    if (at.empty()) return std::string();
-    return "\n  advice: the deck's warnings name values that look like another unit (" + at +
-           "): check them first";
-  };
+  DeckLog log;
   try {
     const Deck deck = parseDeck(path);
-    // Check pass: bind everything with a scratch parameter table, log discarded.
-    std::ostringstream discard;
-    Parameters checkParams;
-    checkParams.setOverrides(options.params);
-    CheckPass check(commands, options, discard, &warnings);
-    check.walk(deck.items, checkParams);
-    checkOverridesUsed(checkParams, path);
-    const std::vector<RunPlan> plans = planRuns(check.infos(), stem);
-    const auto& infos = check.infos();
-    const bool ensemble =
-        std::any_of(infos.begin(), infos.end(), [](const RunInfo& r) { return r.sample > 0; });
-    if (ensemble && std::any_of(infos.begin(), infos.end(), [](const RunInfo& r) { return r.sample == 0; })) {
-      const Record& h = *check.ensembleHead();
-      throw DeckError(h[0].loc, "a deck with an ENSEmble runs its study alone: another problem of this deck runs outside it",
-                      h.excerpt(h[0].loc), "put the other problems in decks of their own");
-    }
+    DeckFiles f{path, std::filesystem::path(path).stem().string(), {}, {}};
+    const CheckedDeck checked = checkDeck(deck, path, f.stem, options, commands, warnings);
     printWarnings();
     throwIfInterrupted("the start");
 
-    const std::filesystem::path dir =
-        options.outDir.empty() ? std::filesystem::path(".") : options.outDir;
-    std::filesystem::create_directories(dir);
-    const std::string partStem = shardStem(stem, options);
-    // The deck's outputs add at most ~60 characters to its stem (the runs'
-    // stems are cut to 160 by fitFileStem): a longer stem would lose the
-    // study's tables to "File name too long" after all the computing.
-    if (partStem.size() > kMaxDeckStem)
-      throw IoError("the deck's outputs would be named '" + partStem.substr(0, 40) + "...' (" +
-                    std::to_string(partStem.size()) + " characters, at most " +
-                    std::to_string(kMaxDeckStem) +
-                    " before the suffixes of its files): give the deck a shorter name");
-    removeStaleOutputs(dir, partStem);  // an earlier failed or interrupted run's log
-    log = std::make_unique<AtomicFile>(dir /
-                                       (options.logName.empty() ? partStem + ".out" : options.logName));
-    log->stream() << "  collapse2d  " << path << "\n";
-    for (const DeckWarning& w : warnings.list()) log->stream() << w.str() << "\n";
-    for (const auto& [name, v] : options.params)
-      log->stream() << "  given: " << name << " = " << exactNumber(v) << " (in place of the deck's value)\n";
+    f.dir = options.outDir.empty() ? std::filesystem::path(".") : options.outDir;
+    std::filesystem::create_directories(f.dir);
+    f.partStem = shardStem(f.stem, options);
+    log.file = openLog(f.dir, f.partStem, path, options, warnings);
     DeckOptions runOptions = options;
-    runOptions.safePoint = [&log] { log->check(); };
+    runOptions.safePoint = [&log] { log.file->check(); };
     Parameters params;
     params.setOverrides(options.params);
-    ExecutePass runner(commands, runOptions, log->stream(), &out, plans, stem);
-    const std::vector<std::string> swept = sweptNames(check.infos());
+    ExecutePass runner(commands, runOptions, log.file->stream(), &out, checked.plans, f.stem);
+    const auto& infos = checked.infos;
+    const std::vector<std::string> swept = sweptNames(infos);
     const bool named =
         std::any_of(infos.begin(), infos.end(), [](const RunInfo& r) { return !r.planName.empty(); });
-    if (ensemble)
-      runner.setEnsembleTable(EnsembleTable(swept, drawnNames(check.infos()), studyZones(infos), named));
+    if (checked.ensemble)
+      runner.setEnsembleTable(EnsembleTable(swept, drawnNames(infos), studyZones(infos), named));
     else if (!swept.empty())
       runner.setPlanTable(PlanTable(swept, studyZones(infos), named));
     std::string studySummary;
     try {
-      if (!plans.empty()) runner.walk(deck.items, params);
-      if (options.shards > 1) log->stream() << "\n" << kEndOfRuns << "\n";
-      // A shard of a study: its overlays are drawn by `collapse2d merge` from
-      // the parts' curves (a part without a study's table draws its own).
-      const bool studyPart = options.shards > 1 && (runner.planTable() || runner.ensembleTable());
-      std::string curvesText, tableText;  // a part's, for its manifest's fingerprints
-      if (studyPart && runner.overlay().numRuns() > 0)
-        AtomicFile::write(dir / (partStem + "_curves.csv"), curvesText = runner.overlay().csv());
-      else
-        for (const auto& f : runner.overlay().write(dir, partStem))
-          log->stream() << "\n  overlay of the runs: " << f.filename().string() << "\n";
-      if (const auto& table = runner.planTable()) {
-        const std::filesystem::path file = dir / (partStem + "_plans.csv");
-        AtomicFile::write(file, tableText = table->csv());
-        log->stream() << "\n  plans: " << file.filename().string() << " (" << table->rows().size()
-                      << " runs, " << table->failed() << " failed)\n";
-      }
-      if (const auto& table = runner.ensembleTable()) {
-        const std::string text = tableText = table->csv();
-        const std::filesystem::path file = dir / (partStem + "_ensemble.csv");
-        AtomicFile::write(file, text);
-        AtomicFile::write(dir / (partStem + "_timing.csv"), timingCsv(*table));
-        log->stream() << "\n  ensemble: " << file.filename().string() << " ("
-                      << table->rows().size() << " runs, " << table->failed()
-                      << " failed; CPU times in " << partStem << "_timing.csv)\n";
-        // A shard's table is a part: `collapse2d merge` makes the study of the whole.
-        if (options.shards <= 1) {
-          const EnsembleStudyReport report =
-              writeEnsembleStudy(dir, stem, readEnsembleTable(text, swept.size()), runner.title());
-          log->stream() << "\n" << report.text;
-          studySummary = report.summary;
-        }
-      }
-      if (options.shards > 1 && (runner.planTable() || runner.ensembleTable()))
-        writeShardManifest(dir, partStem,
-                           {path, deckFingerprint(path) + givenText(options.params), options.shard,
-                            options.shards, static_cast<int>(plans.size()), runner.ensembleTable() ? "ensemble" : "plans",
-                            swept, runner.title(), runner.overlay().numRuns(),
-                            contentFingerprint(tableText),
-                            curvesText.empty() ? std::string() : contentFingerprint(curvesText)});
+      if (!checked.plans.empty()) runner.walk(deck.items, params);
+      if (options.shards > 1) log.file->stream() << "\n" << kEndOfRuns << "\n";
+      studySummary = writeStudyOutputs(runner, f, options, static_cast<int>(checked.plans.size()),
+                                       swept, log.file->stream());
     } catch (...) {
-      kept = runner.kept();
+      log.kept = runner.kept();
       throw;
     }
-    outcome.total = runner.total();
-    outcome.runs = runner.runs();
-    outcome.failedRuns = runner.failed();
-    int executed = outcome.runs;
-    if (options.shards > 1) {
-      executed = outcome.runs >= options.shard ? (outcome.runs - options.shard) / options.shards + 1 : 0;
-      outcome.runs = executed;
-    }
-    if (outcome.failedRuns > 0) {
-      log->stream() << "\n  run complete: " << outcome.failedRuns << " of " << executed
-                    << " runs failed\n";
-      outcome.exitCode = kExitAnalysisFailed;
-      outcome.message = path + ": " + std::to_string(outcome.failedRuns) + " of " +
-                        std::to_string(executed) + " runs of the study failed (see " + partStem +
-                        (ensemble ? "_ensemble.csv" : "_plans.csv") + " and the log)" + unitText();
-    } else {
-      log->stream() << "\n  run complete\n";
-    }
-    log->commit();
-    if (!options.quiet)
-      out << path << ": " << (executed == 1 ? "" : std::to_string(executed) + " runs, ")
-          << (outcome.failedRuns ? std::to_string(outcome.failedRuns) + " failed, " : "")
-          << runSummaryText(outcome.total) << "\n"
-          << studySummary;
-  } catch (const DeckError& e) {
-    printWarnings();
-    outcome.exitCode = kExitDeckError;
-    outcome.message = e.what();
-    outcome.errorAt = e.loc();
-    keepLog("failed", e.what());
-    outcome.message += keptText();
-  } catch (const UnusedParameter& e) {
-    printWarnings();
-    outcome.exitCode = kExitUsage;
-    outcome.message = e.what();
-  } catch (const AnalysisError& e) {
-    outcome.exitCode = kExitAnalysisFailed;
-    keepLog("failed", e.what() + unitText());
-    outcome.message = e.what() + unitText() + keptText();
-  } catch (const Interrupted& e) {
-    outcome.exitCode = interruptExitCode(e.signal());
-    outcome.interrupted = e.signal();
-    const std::string msg = path + ": " + e.what();
-    keepLog("interrupted", msg);
-    outcome.message = msg + keptText();
-  } catch (const IoError& e) {
-    outcome.exitCode = kExitInternal;
-    const std::string msg = path + ": I/O error: " + e.what();
-    keepLog("failed", msg);
-    outcome.message = msg + keptText();
-  } catch (const std::filesystem::filesystem_error& e) {
-    outcome.exitCode = kExitInternal;
-    std::string msg = path + ": I/O error: " + e.code().message();
-    if (!e.path1().empty()) msg += ": '" + e.path1().string() + "'";
-    keepLog("failed", msg);
-    outcome.message = msg + keptText();
-  } catch (const std::exception& e) {
-    outcome.exitCode = kExitInternal;
-    const std::string msg = std::string(path) + ": internal error: " + e.what();
-    keepLog("failed", msg);
-    outcome.message = msg + keptText();
+    finishRuns(outcome, runner, f, options, checked.ensemble, warnings, *log.file, studySummary,
+               out);
+  } catch (...) {
+    failDeck(outcome, std::current_exception(), path, log, warnings, printWarnings);
   }
   return outcome;
 }
