@@ -12,6 +12,38 @@ namespace {
 
 using namespace batchspec;
 
+// PROP: the law of a proportional load table, set in the analysis and logged.
+void setProportionalLoad(const Macro& m, Parameters& params_, Analysis& analysis,
+                         std::ostream& log_) {
+  const Record& first = m.data.front();
+  const int table =
+      m.has(0) && !m.record.text(2).empty() ? m.numbers[0].evalInt(params_, "table number") : 1;
+  if (first.blank()) {
+    analysis.setLoadFunction(table, ProportionalLoad::ramp());
+    log_ << "  PROP   table " << table << ": ramp p = t\n";
+    return;
+  }
+  auto value = [&](const Record& r, std::size_t i) {
+    return i < r.size() ? Expression::parse(r[i]).eval(params_) : 0.0;
+  };
+  const int type = static_cast<int>(value(first, 0));
+  if (type == 1) {
+    std::array<double, 5> a{};
+    for (int i = 0; i < 5; ++i) a[i] = value(first, 4 + i);
+    const int k = static_cast<int>(value(first, 1));
+    analysis.setLoadFunction(
+        table, ProportionalLoad::formula(k == 0 ? 1 : k, value(first, 2), value(first, 3), a));
+    log_ << "  PROP   table " << table << ": type 1\n";
+    return;
+  }
+  std::vector<std::pair<double, double>> pts;
+  for (std::size_t r = 1; r < m.data.size(); ++r)
+    for (std::size_t i = 0; i + 1 < m.data[r].size(); i += 2)
+      pts.emplace_back(value(m.data[r], i), value(m.data[r], i + 1));
+  analysis.setLoadFunction(table, ProportionalLoad::table(std::move(pts)));
+  log_ << "  PROP   table " << table << ": type 2\n";
+}
+
 class DtCommand final : public SolutionCommand {
  public:
   CommandSpec spec() const override {
@@ -155,7 +187,7 @@ class PropCommand final : public SolutionCommand {
     }
   }
   Flow run(const Macro& m, ProblemRun& r) const override {
-    r.setProportionalLoad(m);
+    setProportionalLoad(m, r.params(), r.analysis(), r.log());
     return Flow::Next;
   }
 };

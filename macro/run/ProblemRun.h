@@ -15,6 +15,7 @@
 #include "core/Model.h"
 #include "macro/deck/Deck.h"
 #include "macro/run/ProgressLine.h"
+#include "macro/run/RunOptions.h"
 #include "macro/run/RunCursor.h"
 #include "macro/run/RunOutputs.h"
 #include "macro/run/RunWatches.h"
@@ -31,25 +32,6 @@
 #include "solvers/ModelFingerprint.h"
 
 namespace c2d {
-
-struct RunOptions {
-  std::filesystem::path outDir = ".";
-  std::string stem = "run";  // base name of the output files of this run
-  std::string label;         // what tells this run apart (sweep values) in titles and legends
-  bool progress = false;     // a single updating progress line on stderr
-  std::string solver = "auto";
-  Warnings* warnings = nullptr;  // where bind() puts deck warnings (null: dropped)
-  // Called at every safe point of the run (between two solution commands), e.g.
-  // to check that the log is still being written.
-  std::function<void()> safePoint;
-  // A sample of an ENSEmble (macro/studies/Ensemble.h): its nodes jittered
-  // before the elements are built, its time steps scaled, its blast times
-  // scattered. Null outside an ensemble.
-  const SampleDraws* sample = nullptr;
-  // Pictures and ParaView files (PLOT, PVIEw) are written (an ensemble's
-  // samples after the first write their tables only).
-  bool pictures = true;
-};
 
 class ProblemRun {
  public:
@@ -96,7 +78,6 @@ class ProblemRun {
   using Rest = RunWatches::Rest;
   Flow advanceTime(const Macro& m, std::optional<double> tmax, std::optional<Rest> rest = {});
   void setDt(double dt);
-  void setProportionalLoad(const Macro& m);
   void setIntegrator(const Macro& m, const TimeIntegrator& ti);
   // AUTO,CUT,dtmin,pred: with pred a dynamic step whose predicted start
   // diverges is cut (dt halved, from the prediction again) rather than started
@@ -146,18 +127,11 @@ class ProblemRun {
   // its columns held statically, whose Newton loop then fails without a word
   // of the blast), so the run fails there, naming the blast and both times.
   void refuseScatteredIntoStatics(const RemovalEvent& ev) const;
-  // After TIME: a prescribed value that the proportional load took beyond the
-  // coordinates' limit (the residual would be no number) fails at the TIME
-  // command, naming the node, the DISPlacement value, the factor and its table.
-  void checkPrescribedReach(const Macro& m) const;
   std::vector<int> selection(const Macro& m, int count) const;
   void onCommit();
   // The debris report (macro/run/DebrisReport.cpp).
   void reportDebris();
   std::filesystem::path restartPath(const Macro& m) const;
-  // This class's own part of a restart file: hinge steps, step cutting, energy check.
-  std::string runState() const;
-  void setRunState(const std::string& bytes);
 
   const Problem& problem_;
   Parameters& params_;

@@ -1,10 +1,10 @@
-// ProblemRun's time and load stepping (TIME, DT, AUTO, DYNAmic, PROP, ARCL,
+// ProblemRun's time and load stepping (TIME, DT, AUTO, DYNAmic, ARCL,
 // TPLOt's set-up): a step begun, its length and its cutting, the integrator,
 // the proportional loads, the path following.
 #include <algorithm>
 #include <cmath>
 
-#include "macro/deck/Limits.h"
+#include "macro/run/PrescribedReach.h"
 #include "macro/run/ProblemRun.h"
 
 namespace c2d {
@@ -34,31 +34,10 @@ Flow ProblemRun::advanceTime(const Macro& m, std::optional<double> tmax, std::op
   sample_.stepBegins(s);
   const Status st = steps_.cutUntilCommitted(analysis_->advance());
   if (!st) fail(m, st.why);
-  checkPrescribedReach(m);
+  if (const std::string why = prescribedBeyondReach(model_, *analysis_); !why.empty()) fail(m, why);
   log_ << "  TIME   t = " << fmt("%.6e", s.t) << "  prop = " << fmt("%.6e", analysis_->loadFactor())
        << "\n";
   return Flow::Next;
-}
-
-void ProblemRun::checkPrescribedReach(const Macro& m) const {
-  const State& s = analysis_->state();
-  const DofMap& dofs = analysis_->assembler().dofs();
-  for (int n = 0; n < model_.numNodes(); ++n) {
-    if (!dofs.used(n)) continue;
-    for (int d = 0; d < kNodeDofs; ++d) {
-      const double given = model_.disp(n)[d];
-      const double u = s.u[static_cast<Eigen::Index>(n) * kNodeDofs + d];
-      if (!dofs.restrained(n, d) || given == 0 || std::abs(u) <= DeckLimits::kMaxCoordinate)
-        continue;
-      const int table = std::max(1, model_.loadTable(n)[d]);
-      fail(m, "the prescribed " + std::string(d < 2 ? "displacement" : "rotation") + " of node " +
-                  std::to_string(n + 1) + ", dof " + std::to_string(d + 1) + " reaches " +
-                  fmt("%.6e", u) + " (DISPlacement " + fmt("%.6e", given) + " times the factor " +
-                  fmt("%.6e", analysis_->tableFactor(table, s.t)) + " of proportional load table " +
-                  std::to_string(table) + "): beyond the largest this program takes (" +
-                  fmt("%g", DeckLimits::kMaxCoordinate) + ", the limit of the coordinates)");
-    }
-  }
 }
 
 void ProblemRun::setDt(double dt) {
@@ -90,36 +69,6 @@ void ProblemRun::setIntegrator(const Macro& m, const TimeIntegrator& ti) {
   if (!begun) return;
   if (const Status st = analysis_->advance(); !st) fail(m, st.why);
   log_ << "  DYNA   the step to t = " << fmt("%.6e", s.t) << " begins again under it\n";
-}
-
-void ProblemRun::setProportionalLoad(const Macro& m) {
-  const Record& first = m.data.front();
-  const int table =
-      m.has(0) && !m.record.text(2).empty() ? m.numbers[0].evalInt(params_, "table number") : 1;
-  if (first.blank()) {
-    analysis_->setLoadFunction(table, ProportionalLoad::ramp());
-    log_ << "  PROP   table " << table << ": ramp p = t\n";
-    return;
-  }
-  auto value = [&](const Record& r, std::size_t i) {
-    return i < r.size() ? Expression::parse(r[i]).eval(params_) : 0.0;
-  };
-  const int type = static_cast<int>(value(first, 0));
-  if (type == 1) {
-    std::array<double, 5> a{};
-    for (int i = 0; i < 5; ++i) a[i] = value(first, 4 + i);
-    const int k = static_cast<int>(value(first, 1));
-    analysis_->setLoadFunction(
-        table, ProportionalLoad::formula(k == 0 ? 1 : k, value(first, 2), value(first, 3), a));
-    log_ << "  PROP   table " << table << ": type 1\n";
-    return;
-  }
-  std::vector<std::pair<double, double>> pts;
-  for (std::size_t r = 1; r < m.data.size(); ++r)
-    for (std::size_t i = 0; i + 1 < m.data[r].size(); i += 2)
-      pts.emplace_back(value(m.data[r], i), value(m.data[r], i + 1));
-  analysis_->setLoadFunction(table, ProportionalLoad::table(std::move(pts)));
-  log_ << "  PROP   table " << table << ": type 2\n";
 }
 
 void ProblemRun::setPathFollowing(const Macro& m) {
@@ -167,31 +116,7 @@ void ProblemRun::setPathFollowing(const Macro& m) {
 }
 
 void ProblemRun::setTimeHistory(const Macro& m) {
-  std::vector<TimeHistory::Column> cols;
-  for (const Record& rec : m.data) {
-    const std::string k = commandKey(rec.text(0));
-    TimeHistory::Column c{TimeHistory::Kind::Ener};
-    if (k == "arcl") c.kind = TimeHistory::Kind::Arcl;
-    if (k == "mome") c.kind = TimeHistory::Kind::Mome;
-    if (k != "ener" && k != "arcl" && k != "mome") {
-      c.kind = k == "disp"   ? TimeHistory::Kind::Disp
-               : k == "velo" ? TimeHistory::Kind::Velo
-               : k == "acce" ? TimeHistory::Kind::Acce
-               : k == "reac" ? TimeHistory::Kind::Reac
-                             : TimeHistory::Kind::Stre;
-      c.index = Expression::parse(rec[1]).evalInt(params_, "number") - 1;
-      c.component = Expression::parse(rec[2]).evalInt(params_, "component") - 1;
-      const int limit =
-          c.kind == TimeHistory::Kind::Stre ? model_.numElements() : model_.numNodes();
-      if (c.index < 0 || c.index >= limit || c.component < 0 || c.component > 2)
-        throw DeckError(rec[1].loc,
-                        "TPLOt: no such " +
-                            std::string(c.kind == TimeHistory::Kind::Stre ? "element" : "node") +
-                            " or component",
-                        rec.excerpt(rec[1].loc));
-    }
-    cols.push_back(c);
-  }
+  std::vector<TimeHistory::Column> cols = TimeHistory::columnsOf(m.data, params_, model_);
   const int every =
       m.has(0) && !m.record.text(2).empty() ? m.numbers[0].evalInt(params_, "TPLOt increment") : 1;
   if (every < 1)

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "macro/deck/Expression.h"
+
 namespace c2d {
 
 TimeHistory::TimeHistory(std::filesystem::path path, std::vector<Column> columns, int every,
@@ -88,6 +90,37 @@ void TimeHistory::record(Analysis& analysis, bool force) {
 
 void TimeHistory::finish() {
   if (!file_.committed()) file_.commit();
+}
+
+std::vector<TimeHistory::Column> TimeHistory::columnsOf(const std::vector<Record>& data,
+                                                      const Parameters& params,
+                                                      const Model& model) {
+  std::vector<Column> cols;
+  for (const Record& rec : data) {
+    const std::string k = commandKey(rec.text(0));
+    TimeHistory::Column c{TimeHistory::Kind::Ener};
+    if (k == "arcl") c.kind = TimeHistory::Kind::Arcl;
+    if (k == "mome") c.kind = TimeHistory::Kind::Mome;
+    if (k != "ener" && k != "arcl" && k != "mome") {
+      c.kind = k == "disp"   ? TimeHistory::Kind::Disp
+               : k == "velo" ? TimeHistory::Kind::Velo
+               : k == "acce" ? TimeHistory::Kind::Acce
+               : k == "reac" ? TimeHistory::Kind::Reac
+                             : TimeHistory::Kind::Stre;
+      c.index = Expression::parse(rec[1]).evalInt(params, "number") - 1;
+      c.component = Expression::parse(rec[2]).evalInt(params, "component") - 1;
+      const int limit =
+          c.kind == TimeHistory::Kind::Stre ? model.numElements() : model.numNodes();
+      if (c.index < 0 || c.index >= limit || c.component < 0 || c.component > 2)
+        throw DeckError(rec[1].loc,
+                        "TPLOt: no such " +
+                            std::string(c.kind == TimeHistory::Kind::Stre ? "element" : "node") +
+                            " or component",
+                        rec.excerpt(rec[1].loc));
+    }
+    cols.push_back(c);
+  }
+  return cols;
 }
 
 }  // namespace c2d

@@ -17,6 +17,8 @@
 #include <vector>
 
 #include "core/output/AtomicFile.h"
+#include "macro/deck/Parameters.h"
+#include "macro/deck/Record.h"
 #include "solvers/Analysis.h"
 
 namespace c2d {
@@ -37,6 +39,12 @@ class TimeHistory {
     int index = 0;      // 0-based node or element
     int component = 0;  // 0-based dof or section force (N, V, M)
   };
+
+  // The columns of TPLOt's records (DISP/VELO/ACCE/REAC node dof, STRE element
+  // component, ENER, ARCL, MOME). Throws DeckError for a node, element or
+  // component the model does not have.
+  static std::vector<Column> columnsOf(const std::vector<Record>& data, const Parameters& params,
+                                       const Model& model);
 
   // tables: the number of load tables in use (prop_k columns when above 1).
   TimeHistory(std::filesystem::path path, std::vector<Column> columns, int every, int tables = 1);
