@@ -15,11 +15,11 @@ namespace c2d {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::readFile;
-using testing::TempDir;
+using testing::readText;
+using testing::DeckTempDir;
 
 TEST(AtomicFile, NothingAtTheFinalPathBeforeCommit) {
-  TempDir dir;
+  DeckTempDir dir;
   const fs::path path = dir / "result.txt";
   AtomicFile file(path);
   EXPECT_EQ(file.partPath(), testing::partFileOf(path));
@@ -30,12 +30,12 @@ TEST(AtomicFile, NothingAtTheFinalPathBeforeCommit) {
   EXPECT_TRUE(fs::exists(file.partPath()));
   file.commit();
   EXPECT_TRUE(file.committed());
-  EXPECT_EQ(readFile(path), "line 1\nline 2\n");
+  EXPECT_EQ(readText(path), "line 1\nline 2\n");
   EXPECT_FALSE(fs::exists(file.partPath()));
 }
 
 TEST(AtomicFile, DestroyedWithoutCommitLeavesNothing) {
-  TempDir dir;
+  DeckTempDir dir;
   const fs::path path = dir / "result.txt";
   {
     AtomicFile file(path);
@@ -48,32 +48,32 @@ TEST(AtomicFile, DestroyedWithoutCommitLeavesNothing) {
 }
 
 TEST(AtomicFile, PreviousFileSurvivesAnAbandonedWrite) {
-  TempDir dir;
+  DeckTempDir dir;
   const fs::path path = dir / "result.txt";
   AtomicFile::write(path, "old complete file\n");
   {
     AtomicFile file(path);
     file.stream() << "new but unfinished";
     file.stream().flush();
-    EXPECT_EQ(readFile(path), "old complete file\n");
+    EXPECT_EQ(readText(path), "old complete file\n");
   }
-  EXPECT_EQ(readFile(path), "old complete file\n");
+  EXPECT_EQ(readText(path), "old complete file\n");
   AtomicFile::write(path, "new complete file\n");
-  EXPECT_EQ(readFile(path), "new complete file\n");
+  EXPECT_EQ(readText(path), "new complete file\n");
 }
 
 TEST(AtomicFile, CreatesTheDirectoryAndRefusesASecondCommit) {
-  TempDir dir;
+  DeckTempDir dir;
   const fs::path path = dir / "out" / "deep" / "r.vtu";
   AtomicFile file(path);
   file.stream() << "x";
   file.commit();
-  EXPECT_EQ(readFile(path), "x");
+  EXPECT_EQ(readText(path), "x");
   EXPECT_THROW(file.commit(), std::logic_error);
 }
 
 TEST(AtomicFile, UnwritablePlaceThrowsWithTheFileName) {
-  TempDir dir;
+  DeckTempDir dir;
   AtomicFile::write(dir / "plain", "a file, not a directory");
   try {
     AtomicFile file(dir / "plain" / "result.txt");
@@ -90,11 +90,11 @@ TEST(AtomicFile, TaggedNameKeepsTheExtension) {
 }
 
 TEST(AtomicFile, KeepCommitsUnderTheTaggedName) {
-  TempDir dir;
+  DeckTempDir dir;
   AtomicFile file(dir / "h.csv");
   file.stream() << "t\n0\n";
   EXPECT_EQ(file.keep("failed"), dir / "h.failed.csv");
-  EXPECT_EQ(readFile(dir / "h.failed.csv"), "t\n0\n");
+  EXPECT_EQ(readText(dir / "h.failed.csv"), "t\n0\n");
   EXPECT_FALSE(fs::exists(dir / "h.csv"));
   EXPECT_TRUE(testing::partFileOf(dir / "h.csv").empty());
 }
@@ -103,40 +103,40 @@ TEST(AtomicFile, KeepCommitsUnderTheTaggedName) {
 // "<path>.part" of old), or under the final name, is never written through:
 // the victim keeps its text; the result replaces the link.
 TEST(AtomicFile, APlantedLinkIsNeverWrittenThrough) {
-  TempDir dir;
+  DeckTempDir dir;
   const fs::path victim = dir / "victim.txt";
   AtomicFile::write(victim, "precious\n");
   const fs::path path = dir / "run.out";
   fs::create_symlink(victim, dir / "run.out.part");
   AtomicFile::write(path, "the log\n");
-  EXPECT_EQ(readFile(victim), "precious\n");
-  EXPECT_EQ(readFile(path), "the log\n");
+  EXPECT_EQ(readText(victim), "precious\n");
+  EXPECT_EQ(readText(path), "the log\n");
   fs::remove(path);
   fs::create_symlink(victim, path);
   AtomicFile::write(path, "the log again\n");
-  EXPECT_EQ(readFile(victim), "precious\n");
+  EXPECT_EQ(readText(victim), "precious\n");
   EXPECT_FALSE(fs::is_symlink(path));
-  EXPECT_EQ(readFile(path), "the log again\n");
+  EXPECT_EQ(readText(path), "the log again\n");
 }
 
 // Two writers of one path at once (two merges of one folder) each write
 // through a temporary of their own: both commit, the last one's text stays.
 TEST(AtomicFile, TwoWritersOfOnePathDoNotCollide) {
-  TempDir dir;
+  DeckTempDir dir;
   const fs::path path = dir / "joined.csv";
   AtomicFile a(path), b(path);
   EXPECT_NE(a.partPath(), b.partPath());
   a.stream() << "from a\n";
   b.stream() << "from b\n";
   a.commit();
-  EXPECT_EQ(readFile(path), "from a\n");
+  EXPECT_EQ(readText(path), "from a\n");
   b.commit();
-  EXPECT_EQ(readFile(path), "from b\n");
+  EXPECT_EQ(readText(path), "from b\n");
 }
 
 // A full disk: every write fails with ENOSPC (SimulatedWriteFailure).
 TEST(AtomicFile, FullDiskIsAnIoErrorWithTheReasonAndLeavesNothing) {
-  TempDir dir;
+  DeckTempDir dir;
   const fs::path path = dir / "result.txt";
   const SimulatedWriteFailure full("result.txt", ENOSPC);
   try {
@@ -151,7 +151,7 @@ TEST(AtomicFile, FullDiskIsAnIoErrorWithTheReasonAndLeavesNothing) {
 }
 
 TEST(AtomicFile, CheckReportsAFailedWriteDuringTheRun) {
-  TempDir dir;
+  DeckTempDir dir;
   const fs::path path = dir / "run.out";
   const SimulatedWriteFailure full("run.out", ENOSPC);
   AtomicFile file(path);
@@ -170,7 +170,7 @@ TEST(AtomicFile, CheckReportsAFailedWriteDuringTheRun) {
 }
 
 TEST(AtomicFile, MissingDirectoryUnderAFileIsAnIoErrorWithTheReason) {
-  TempDir dir;
+  DeckTempDir dir;
   AtomicFile::write(dir / "plain", "x");
   try {
     AtomicFile file(dir / "plain" / "sub" / "r.txt");
@@ -183,7 +183,7 @@ TEST(AtomicFile, MissingDirectoryUnderAFileIsAnIoErrorWithTheReason) {
 }
 
 TEST(AtomicAppendFile, EverySyncLeavesACompleteDocumentUnderPart) {
-  TempDir dir;
+  DeckTempDir dir;
   const fs::path path = dir / "list.xml";
   const fs::path part = dir / "list.xml.part";
   AtomicAppendFile file(path, "<list>\n", "</list>\n");
@@ -191,23 +191,23 @@ TEST(AtomicAppendFile, EverySyncLeavesACompleteDocumentUnderPart) {
   file.append("  <item n=\"1\"/>\n");
   EXPECT_FALSE(fs::exists(part));  // nothing synced yet
   file.sync();
-  EXPECT_EQ(readFile(part), "<list>\n  <item n=\"1\"/>\n</list>\n");
+  EXPECT_EQ(readText(part), "<list>\n  <item n=\"1\"/>\n</list>\n");
   file.append("  <item n=\"2\"/>\n");
   EXPECT_EQ(file.pendingBytes(), 16u);
-  EXPECT_EQ(readFile(part), "<list>\n  <item n=\"1\"/>\n</list>\n");  // unchanged until the next sync
+  EXPECT_EQ(readText(part), "<list>\n  <item n=\"1\"/>\n</list>\n");  // unchanged until the next sync
   file.sync();
   EXPECT_EQ(file.pendingBytes(), 0u);
-  EXPECT_EQ(readFile(part), "<list>\n  <item n=\"1\"/>\n  <item n=\"2\"/>\n</list>\n");
+  EXPECT_EQ(readText(part), "<list>\n  <item n=\"1\"/>\n  <item n=\"2\"/>\n</list>\n");
   // Only a completed document gets the final name.
   EXPECT_FALSE(fs::exists(path));
   file.close();
-  EXPECT_EQ(readFile(path), "<list>\n  <item n=\"1\"/>\n  <item n=\"2\"/>\n</list>\n");
+  EXPECT_EQ(readText(path), "<list>\n  <item n=\"1\"/>\n  <item n=\"2\"/>\n</list>\n");
   EXPECT_FALSE(fs::exists(part));
   EXPECT_THROW(file.append("late"), std::logic_error);
 }
 
 TEST(AtomicAppendFile, DestructorLeavesThePartOfAnInterruptedRun) {
-  TempDir dir;
+  DeckTempDir dir;
   const fs::path path = dir / "history.csv";
   try {
     AtomicAppendFile file(path, "time,u\n");
@@ -217,47 +217,47 @@ TEST(AtomicAppendFile, DestructorLeavesThePartOfAnInterruptedRun) {
     throw std::runtime_error("analysis failed");
   } catch (const std::runtime_error&) {
   }
-  EXPECT_EQ(readFile(dir / "history.csv.part"), "time,u\n0,0\n0.1,0.5\n");
+  EXPECT_EQ(readText(dir / "history.csv.part"), "time,u\n0,0\n0.1,0.5\n");
   EXPECT_FALSE(fs::exists(path));
 }
 
 TEST(AtomicAppendFile, KeepWritesTheTaggedNameAndRemovesThePart) {
-  TempDir dir;
+  DeckTempDir dir;
   AtomicAppendFile file(dir / "c.pvd", "<a>\n", "</a>\n");
   file.append("  <b/>\n");
   file.sync();
   EXPECT_EQ(file.keep("failed"), dir / "c.failed.pvd");
-  EXPECT_EQ(readFile(dir / "c.failed.pvd"), "<a>\n  <b/>\n</a>\n");
+  EXPECT_EQ(readText(dir / "c.failed.pvd"), "<a>\n  <b/>\n</a>\n");
   EXPECT_FALSE(fs::exists(dir / "c.pvd.part"));
   EXPECT_FALSE(fs::exists(dir / "c.pvd"));
   EXPECT_TRUE(file.closed());
 }
 
 TEST(AtomicAppendFile, MinimumIntervalThrottlesButCloseWritesAll) {
-  TempDir dir;
+  DeckTempDir dir;
   const fs::path path = dir / "history.csv";
   const fs::path part = dir / "history.csv.part";
   AtomicAppendFile file(path, "t\n", "", std::chrono::hours(1));
   file.append("1\n");
   file.sync();  // the first sync always writes
-  EXPECT_EQ(readFile(part), "t\n1\n");
+  EXPECT_EQ(readText(part), "t\n1\n");
   file.append("2\n");
   file.sync();  // within the interval: skipped
-  EXPECT_EQ(readFile(part), "t\n1\n");
+  EXPECT_EQ(readText(part), "t\n1\n");
   EXPECT_GT(file.pendingBytes(), 0u);
   file.close();
-  EXPECT_EQ(readFile(path), "t\n1\n2\n");
+  EXPECT_EQ(readText(path), "t\n1\n2\n");
   EXPECT_TRUE(file.closed());
 }
 
 TEST(AtomicAppendFile, EmptyDocumentIsStillComplete) {
-  TempDir dir;
+  DeckTempDir dir;
   const fs::path path = dir / "c.pvd";
   {
     AtomicAppendFile file(path, "<a>\n", "</a>\n");
     file.close();
   }
-  EXPECT_EQ(readFile(path), "<a>\n</a>\n");
+  EXPECT_EQ(readText(path), "<a>\n</a>\n");
 }
 
 }  // namespace

@@ -10,18 +10,13 @@
 #include "solvers/linear/AutoSolver.h"
 #include "solvers/linear/CheckedSolve.h"
 #include "solvers/linear/KluSolver.h"
+#include "tests/unit/LinearSolverTestSupport.h"
 
 namespace c2d {
 namespace {
 
-using Triplets = std::vector<Eigen::Triplet<double, int>>;
-
-SparseMatrix fromTriplets(int n, const Triplets& t) {
-  SparseMatrix A(n, n);
-  A.setFromTriplets(t.begin(), t.end());
-  A.makeCompressed();
-  return A;
-}
+using test::fromTriplets;
+using test::Triplets;
 
 // A nonsymmetric, diagonally dominant chain (condition number of order ten).
 SparseMatrix chain(int n) {

@@ -21,33 +21,19 @@ namespace {
 
 using Columns = std::map<std::string, std::vector<double>>;
 
-// Runs a deck into a scratch directory and reads the TPLOt file <stem>_tplot.csv.
+// Runs a deck into a directory of its own and reads the TPLOt file <stem>_tplot.csv.
 Columns runAndRead(const std::string& deck, const std::string& stem) {
-  // One directory per process: tests run in parallel (and other builds' tests) read their own files.
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                    ("c2d_collapse_" + stem + "_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const testing::DeckTempDir dir;
   DeckOptions opt;
-  opt.outDir = dir;
+  opt.outDir = dir.path();
   opt.quiet = true;
   SolutionCommands commands;
   std::ostringstream out;
   const DeckOutcome o = runDeck(std::string(C2D_SOURCE_DIR) + "/decks/" + deck, opt, commands, out);
   EXPECT_EQ(o.exitCode, 0) << o.message;
-  std::ifstream in(dir / (stem + "_tplot.csv"));
-  std::string line, cell;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  for (std::stringstream ss(line); std::getline(ss, cell, ',');) names.push_back(cell);
+  const testing::Csv csv = testing::readCsv(dir.path() / (stem + "_tplot.csv"));
   Columns cols;
-  while (std::getline(in, line)) {
-    std::stringstream ss(line);
-    for (const auto& n : names) {
-      std::getline(ss, cell, ',');
-      cols[n].push_back(std::stod(cell));
-    }
-  }
-  std::filesystem::remove_all(dir);
+  for (const std::string& n : csv.names) cols[n] = csv.column(n);
   return cols;
 }
 
@@ -267,15 +253,9 @@ TEST(CollapseDecks, SixStoryCollapseWithMemberContactLeavesNoCrossingMembers) {
   // crossing each other (the run's log says so); with it, none.
   namespace fs = std::filesystem;
   const fs::path src = fs::path(C2D_SOURCE_DIR) / "decks" / "paper";
-  const fs::path dir =
-      fs::temp_directory_path() / ("c2d_collapse_six_story_members_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  auto read = [](const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  };
+  const testing::DeckTempDir scratch;
+  const fs::path& dir = scratch.path();
+  using testing::readText;
   auto replaced = [](std::string text, const std::string& from, const std::string& to) {
     const auto at = text.find(from);
     EXPECT_NE(at, std::string::npos) << from;
@@ -287,10 +267,10 @@ TEST(CollapseDecks, SixStoryCollapseWithMemberContactLeavesNoCrossingMembers) {
       fs::copy_file(entry.path(), dir / entry.path().filename(),
                     fs::copy_options::overwrite_existing);
   std::ofstream(dir / "six_story_workflow.inc")
-      << replaced(read(src / "six_story_workflow.inc"), "  GROUnd,,0,1e5\n",
+      << replaced(readText(src / "six_story_workflow.inc"), "  GROUnd,,0,1e5\n",
                   "  GROUnd,,0,1e5\n  MEMBers,,1e5\n");
   std::ofstream(dir / "members.inp")
-      << replaced(read(src / "six_story_collapse_short.inp"), "tend = 30 ", "tend = 200 ");
+      << replaced(readText(src / "six_story_collapse_short.inp"), "tend = 30 ", "tend = 200 ");
   DeckOptions opt;
   opt.outDir = dir;
   opt.quiet = true;
@@ -298,11 +278,10 @@ TEST(CollapseDecks, SixStoryCollapseWithMemberContactLeavesNoCrossingMembers) {
   std::ostringstream out;
   const DeckOutcome o = runDeck((dir / "members.inp").string(), opt, commands, out);
   ASSERT_EQ(o.exitCode, 0) << o.message;
-  const std::string log = read(dir / "members.out");
+  const std::string log = readText(dir / "members.out");
   EXPECT_NE(log.find("M e m b e r   C o n t a c t"), std::string::npos);
   EXPECT_NE(log.find("debris:"), std::string::npos);
   EXPECT_EQ(log.find("warning: members"), std::string::npos) << log.substr(log.find("debris:"));
-  fs::remove_all(dir);
 }
 
 TEST(CollapseDecks, SchemeComparison) {

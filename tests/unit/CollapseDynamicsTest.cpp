@@ -1,7 +1,7 @@
 // Collapse-phase dynamics with whole analyses (Analysis + mid-point scheme):
-// pendulums with revolute joints (verification.md V5), energy and momentum of
-// the energy conserving/decaying scheme (V7, V8), and penalty contact with the
-// ground (V6).
+// pendulums with revolute joints (verification.md V5), and energy and
+// momentum of the energy conserving/decaying scheme (V7, V8). The penalty
+// contact with the ground (V6): GroundContactTest.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -25,38 +25,14 @@
 namespace c2d {
 namespace {
 
+using test::addRod;
+using test::position;
+using test::rod;
+using test::solveStep;
+using test::zeroCrossings;
+
 constexpr double kPi = std::numbers::pi;
-constexpr double kG = 9.81;
-
-// Resultant stiffnesses; mass rhoA per length and rotary inertia rhoI per length.
-MaterialSet rodMaterial(double ea, double ga, double ei, double rhoA, double rhoI) {
-  MaterialSet m;
-  m.number = 1;
-  m.elementType = "FRAMe";
-  m.kinematics = Kinematics::Finite;
-  m.resEA = ea;
-  m.resGA = ga;
-  m.resEI = ei;
-  m.density = 1.0;
-  m.A = rhoA;
-  m.I = rhoI;
-  return m;
-}
-
-// Appends n elements on a straight line from node `from` to a new end point;
-// returns the last node.
-int addRod(Model& m, int from, const Vec2& to, int n) {
-  const Vec2 x0 = m.coord(from);
-  int prev = from;
-  for (int i = 1; i <= n; ++i) {
-    const int node = m.addNode(x0 + (to - x0) * (double(i) / n));
-    m.setElement(m.numElements(),
-                 std::make_unique<ReissnerFrame>(m.materials().at(1), std::array{prev, node},
-                                                 m.coord(prev), m.coord(node)));
-    prev = node;
-  }
-  return prev;
-}
+constexpr double kG = test::kGravity;
 
 // A chain of rods hanging from a fixed pivot (node 0), link i at angle angles[i]
 // from the downward vertical, consecutive links joined by Condensed joints (the
@@ -81,61 +57,10 @@ std::vector<std::array<int, 2>> buildChain(Model& m, const MaterialSet& mat,
   return links;
 }
 
-// One time step with Newton iterations; prints the iteration history when it
-// does not converge (unless quiet).
-bool solveStep(Analysis& an, int maxIterations = 40, bool quiet = false) {
-  if (!an.advance()) return false;
-  IterationInfo info;
-  for (int i = 0; i < maxIterations; ++i) {
-    if (!an.iterate(false, false, info)) return false;
-    if (info.converged) return true;
-  }
-  if (quiet) return false;
-  for (const IterationInfo& h : an.stepHistory())
-    std::printf("  iteration %d: residual %.3e energy %.3e\n", h.iteration, h.residual, h.energy);
-  return false;
-}
-
-Vec2 position(const Model& m, const State& s, int node) {
-  return m.coord(node) + s.u.segment<2>(3 * node);
-}
-
 // Angle from the downward vertical of the chord from node a to node b.
 double chordAngle(const Model& m, const State& s, int a, int b) {
   const Vec2 d = position(m, s, b) - position(m, s, a);
   return std::atan2(d.x(), -d.y());
-}
-
-// Roots of y(t) from cubic interpolation through the four samples around each
-// sign change.
-std::vector<double> zeroCrossings(const std::vector<double>& t, const std::vector<double>& y) {
-  std::vector<double> roots;
-  for (size_t i = 1; i + 2 < y.size(); ++i) {
-    if ((y[i] > 0) == (y[i + 1] > 0)) continue;
-    auto p = [&](double x, double& dp) {
-      double v = 0;
-      dp = 0;
-      for (size_t a = i - 1; a <= i + 2; ++a) {
-        double la = 1, dla = 0;
-        for (size_t b = i - 1; b <= i + 2; ++b) {
-          if (b == a) continue;
-          dla = dla * (x - t[b]) / (t[a] - t[b]) + la / (t[a] - t[b]);
-          la *= (x - t[b]) / (t[a] - t[b]);
-        }
-        v += y[a] * la;
-        dp += y[a] * dla;
-      }
-      return v;
-    };
-    double x = t[i] - y[i] * (t[i + 1] - t[i]) / (y[i + 1] - y[i]);
-    for (int it = 0; it < 20; ++it) {
-      double dp = 0;
-      const double v = p(x, dp);
-      x -= v / dp;
-    }
-    roots.push_back(x);
-  }
-  return roots;
 }
 
 double periodFromCrossings(const std::vector<double>& c) {
@@ -163,7 +88,7 @@ double midPointElongation(double omega, double h) {
 // pendulum loads ~1e-5, a period change ~3e-6), uniform mass, no rotary
 // inertia. Much stiffer rods put the residual's round-off (EA * 1e-16) above
 // what the Newton energy test can resolve for small motions.
-MaterialSet stiffRod() { return rodMaterial(1e6, 1e6, 1e4, 1.0, 0.0); }
+MaterialSet stiffRod() { return rod(1, 1e6, 1e6, 1e4, 1.0, 0.0); }
 
 double singlePendulumPeriod(double theta0, int stepsPerPeriod, double expectedPeriod,
                             double periods) {
@@ -281,7 +206,7 @@ Momentum momentum(const Model& m, const State& s) {
 // A flexible free beam centred at the origin.
 Model freeBeam() {
   Model m;
-  m.materials()[1] = rodMaterial(1e4, 4e3, 20.0, 1.0, 0.02);
+  m.materials()[1] = rod(1, 1e4, 4e3, 20.0, 1.0, 0.02);
   const int first = m.addNode(Vec2(-1.0, 0.2));
   addRod(m, first, Vec2(1.0, -0.2), 5);
   return m;
@@ -417,7 +342,7 @@ TEST(CollapseDynamicsEnergy, FreeSpinningBeamConservesEnergyAndAngularMomentum) 
   for (auto [mass, alpha] : cases) {
     {
       Model m;
-      m.materials()[1] = rodMaterial(1e4, 4e3, 20.0, 1.0, 0.02);
+      m.materials()[1] = rod(1, 1e4, 4e3, 20.0, 1.0, 0.02);
       m.materials()[1].mass = mass;
       const int first = m.addNode(Vec2(-1.0, 0.2));
       addRod(m, first, Vec2(1.0, -0.2), 5);
@@ -451,7 +376,7 @@ TEST(CollapseDynamicsEnergy, FreeSpinningBeamConservesEnergyAndAngularMomentum) 
 // conserved, with the joints' slave rotations advancing by the Cayley rule too.
 TEST(CollapseDynamicsEnergy, SpinningJointedChainConservesAngularMomentum) {
   Model m;
-  buildChain(m, rodMaterial(1e5, 5e4, 2e2, 1.0, 1e-3), {kPi / 2, kPi / 3, 2.5}, 0.5, 2);
+  buildChain(m, rod(1, 1e5, 5e4, 2e2, 1.0, 1e-3), {kPi / 2, kPi / 3, 2.5}, 0.5, 2);
   m.gravity() = Vec2::Zero();
   Analysis an(m);
   an.setIntegrator(TimeIntegrator::midPoint(0, 0));
@@ -527,7 +452,7 @@ double velocityDissipation(const Model& m, const State& s, double beta) {
 // Three links of two elements each, released from the horizontal.
 Model threeLinks() {
   Model m;
-  buildChain(m, rodMaterial(1e5, 5e4, 2e2, 1.0, 1e-3), {kPi / 2, kPi / 2, kPi / 2}, 0.5, 2);
+  buildChain(m, rod(1, 1e5, 5e4, 2e2, 1.0, 1e-3), {kPi / 2, kPi / 2, kPi / 2}, 0.5, 2);
   return m;
 }
 
@@ -618,7 +543,7 @@ struct Drift {
 // A rod pendulum released at 1.5 rad from the vertical.
 Drift pendulumDrift(const TimeIntegrator& ti, double ea, double dt, int steps) {
   Model m;
-  buildChain(m, rodMaterial(ea, ea, 1e-2 * ea, 1.0, 0.0), {1.5}, 1.0, 4);
+  buildChain(m, rod(1, ea, ea, 1e-2 * ea, 1.0, 0.0), {1.5}, 1.0, 4);
   Analysis an(m);
   an.setIntegrator(ti);
   an.setDt(dt);
@@ -649,266 +574,6 @@ TEST(CollapseDynamicsEnergy, NewmarkDriftsWhereTheMidPointSchemeConserves) {
   ASSERT_TRUE(midStiff.completed);
   EXPECT_LT(midStiff.worst, 1e-10);
   EXPECT_GT(newmarkStiff.worst, 1.0);
-}
-
-// --- ground contact (V6) ----------------------------------------------------
-
-TEST(GroundContact, MidPointForceIsTheDiscreteGradient) {
-  Ground g{0.5, 3.0e3, -1};
-  StepRule rule;
-  rule.scheme = Scheme::MidPoint;
-  const double ys[] = {0.7, 0.5, 0.49, 0.3, 0.2999999, 0.51, -0.1};
-  for (double y0 : ys)
-    for (double y1 : ys) {
-      if (y0 == y1) continue;
-      const ContactForce c = groundContact(g, 0.0, y0, y1, rule);
-      // Work of the upward force over the step = -(U1 - U0).
-      const double work = c.force * (y1 - y0);
-      EXPECT_NEAR(work, -(contactEnergy(g, 0.0, y1) - contactEnergy(g, 0.0, y0)), 1e-12 * g.k)
-          << y0 << " -> " << y1;
-      // Tangent: d force / d penetration(y1) = -d force / d y1.
-      const double h = 1e-7;
-      const double fd =
-          -(groundContact(g, 0.0, y0, y1 + h, rule).force - groundContact(g, 0.0, y0, y1 - h, rule).force) /
-          (2 * h);
-      if (std::abs(y1 - g.y0) > 1e-6) {
-        EXPECT_NEAR(c.tangent, fd, 1e-5 * g.k) << y0 << " " << y1;
-      }
-    }
-  // The dashpot: c (<p1> - <p0>) / h on top while in contact (core/contact/ContactDamper.h).
-  rule.h = 0.01;
-  const GroundDamper d{600.0};
-  const ContactForce c0 = groundContact(g, 0.0, 0.45, 0.40, rule),
-                     c1 = groundContact(g, 0.0, 0.45, 0.40, rule, d);
-  EXPECT_NEAR(c1.force - c0.force, 600.0 * 0.05 / rule.h, 1e-12 * g.k);
-  // Entering or leaving, the dashpot's force is continuous where the node
-  // passes the ground line (a jump there makes Newton's method cycle), never
-  // does work on the node, and its tangent is the derivative of the force.
-  for (double yn : {0.7, 0.52, 0.45, 0.3}) {
-    const double eps = 1e-9;
-    const ContactForce above = groundContact(g, 0.0, yn, g.y0 + eps, rule, d),
-                       below = groundContact(g, 0.0, yn, g.y0 - eps, rule, d);
-    EXPECT_NEAR(above.force, below.force, 10 * (g.k + d.c / rule.h) * eps) << "from y = " << yn;
-    for (double y1 : {0.8, 0.51, 0.49, 0.35}) {
-      const double diss =
-          groundContact(g, 0.0, yn, y1, rule, d).force - groundContact(g, 0.0, yn, y1, rule).force;
-      EXPECT_LE(diss * (y1 - yn), 0.0) << yn << " -> " << y1;
-      const double h = 1e-7;
-      const double fd = -(groundContact(g, 0.0, yn, y1 + h, rule, d).force -
-                          groundContact(g, 0.0, yn, y1 - h, rule, d).force) /
-                        (2 * h);
-      EXPECT_NEAR(groundContact(g, 0.0, yn, y1, rule, d).tangent, fd, 1e-5 * g.k)
-          << yn << " -> " << y1;
-    }
-  }
-}
-
-// A bar of n elements lying flat at height y, stiff and uniform, mass 1.
-Model bar(int n, double y, const Ground& ground, double ei = 1e5) {
-  Model m;
-  m.materials()[1] = rodMaterial(1e3 * ei, 1e3 * ei, ei, 1.0, 1e-4);
-  const int first = m.addNode(Vec2(0, y));
-  addRod(m, first, Vec2(1.0, y), n);
-  m.gravity() = Vec2(0, -kG);
-  m.ground() = ground;
-  return m;
-}
-
-TEST(GroundContact, StaticPenetrationIsWeightOverNodesTimesK) {
-  const double k = 2.0e4, weight = 1.0 * kG;
-  for (int n : {1, 4}) {
-    // Start slightly inside the ground so that the first tangent has contact stiffness.
-    // Equal springs but unequal consistent nodal weights: a very stiff bar, so
-    // that the rigid-bar answer holds node by node (k l^3/EI = 2e-5).
-    Model m = bar(n, 0.0, Ground{1e-5, k, 0}, 1e9);
-    m.bound(0)[0] = 1;  // frictionless: fix the horizontal rigid motion
-    Analysis an(m);
-    an.setDt(1.0);
-    ASSERT_TRUE(solveStep(an));
-    an.commit();
-    double mean = 0;
-    const int nodes = n + 1;
-    for (int i = 0; i < nodes; ++i)
-      mean += penetration(*m.ground(), position(m, an.state(), i).y());
-    mean /= nodes;
-    EXPECT_NEAR(mean, weight / (nodes * k), 1e-12 * weight / k) << n << " elements";
-    for (int i = 0; i < nodes; ++i)
-      EXPECT_NEAR(penetration(*m.ground(), position(m, an.state(), i).y()), weight / (nodes * k),
-                  1e-5 * weight / (nodes * k));
-  }
-}
-
-struct DropResult {
-  double contactTime = 0, maxPenetration = 0, reboundHeight = 0, startHeight = 0;
-  bool energyNeverIncreased = true;
-  // Largest change of total + dissipated energy over the commits, and the
-  // total dissipated energy (the account's).
-  double worstIdentity = 0, dissipated = 0, energyScale = 0;
-};
-
-double mass(const Model& m) {
-  double total = 0;
-  for (int e = 0; e < m.numElements(); ++e) {
-    const ElemMat me = m.element(e).mass();
-    total += me(0, 0) + me(0, 3) + me(3, 0) + me(3, 3);
-  }
-  return total;
-}
-
-// One element bar (equal nodal masses and loads: a rigid translation) thrown
-// down from height y0 with speed v0 onto the ground y = 0 whose dashpot has
-// the damping ratio zeta.
-DropResult drop(double zeta, double k, double y0, double v0, double dt) {
-  Model m = bar(1, y0, Ground{0.0, k, zeta});
-  Analysis an(m);
-  an.setIntegrator(TimeIntegrator::midPoint(0, 0));
-  an.setDt(dt);
-  State& s = an.state();
-  s.resize(m.numNodes());
-  s.v(1) = s.v(4) = -v0;
-  s.vn = s.v;
-  DropResult out;
-  out.startHeight = y0 + v0 * v0 / (2 * kG);
-  std::vector<double> t{0}, p{-y0};
-  out.energyScale = mass(m) * kG * out.startHeight;
-  double before = an.energy().total();
-  // Every commit (the steps through the impact are shortened: solvers/ImpactSteps.h);
-  // the account starts at the first.
-  bool first = true;
-  double balance0 = 0, dissipated0 = 0;
-  an.onCommit = [&] {
-    const Energy e = an.energy();
-    if (first) {
-      balance0 = e.balance();
-      dissipated0 = e.dissipated;
-      first = false;
-    }
-    if (e.total() > before + 1e-12 * out.energyScale) out.energyNeverIncreased = false;
-    out.worstIdentity = std::max(out.worstIdentity, std::abs(e.balance() - balance0));
-    out.dissipated = e.dissipated - dissipated0;
-    before = e.total();
-    t.push_back(s.tn);
-    p.push_back(-(m.coord(0).y() + s.un(1)));
-    EXPECT_NEAR(s.un(4), s.un(1), 1e-12);
-  };
-  bool left = false;
-  for (int i = 0; i < 20000 && !left; ++i) {
-    EXPECT_TRUE(solveStep(an)) << "step " << i;
-    an.commit();
-    // Out of contact and rising for a few steps: done.
-    left = p.size() > 5 && p.back() < 0 && p[p.size() - 2] < 0 && p[p.size() - 4] > 0;
-  }
-  EXPECT_TRUE(left);
-  // Contact from the first to the second crossing of penetration zero.
-  const auto c = zeroCrossings(t, p);
-  EXPECT_EQ(c.size(), 2u);
-  if (c.size() >= 2) out.contactTime = c[1] - c[0];
-  // Maximum penetration from a parabola through the largest sample and its neighbours.
-  const size_t i = std::max_element(p.begin(), p.end()) - p.begin();
-  const double a = p[i - 1], b = p[i], cc = p[i + 1];
-  out.maxPenetration = b + (a - cc) * (a - cc) / (8 * (2 * b - a - cc));
-  // Free flight after the impact is exact for the mid-point rule: y + v^2/(2g).
-  const double y = position(m, s, 0).y(), v = s.v(1);
-  out.reboundHeight = y + v * v / (2 * kG);
-  return out;
-}
-
-TEST(GroundContact, DroppedBarMatchesTheRigidDropFormulas) {
-  const double mass = 1.0, k = 5.0e3, y0 = 0.01, vStart = 2.0;
-  const double kTotal = 2 * k;                                 // two nodes
-  const double v0 = std::sqrt(vStart * vStart + 2 * kG * y0);  // at first contact
-  const double omega = std::sqrt(kTotal / mass);
-  const double tc = (kPi + 2 * std::atan(kG / (omega * v0))) / omega;
-  const double dt = tc / 500;
-  const DropResult r = drop(0, k, y0, vStart, dt);
-  const double st = mass * kG / kTotal;
-  const double pMax = st + std::sqrt(st * st + mass * v0 * v0 / kTotal);
-  EXPECT_NEAR(r.contactTime / tc, 1.0, 2e-5) << r.contactTime << " vs " << tc;
-  EXPECT_NEAR(r.maxPenetration / pMax, 1.0, 1e-6) << r.maxPenetration << " vs " << pMax;
-  EXPECT_NEAR(r.reboundHeight / r.startHeight, 1.0, 1e-10);
-  EXPECT_TRUE(r.energyNeverIncreased);
-  EXPECT_LT(r.worstIdentity, 1e-12 * r.energyScale);
-}
-
-TEST(GroundContact, ContactDampingLowersTheReboundTheSameAtEveryStep) {
-  // The dashpot c = 2 zeta sqrt(k m) of each node's mass m takes
-  // c (<p_n+1> - <p_n>)(p_n+1 - p_n) / h per step and node: the same damper at
-  // every step, so the rebound converges as the step shrinks (the former
-  // alpha k (<p_n+1> - <p_n>) was a damper alpha k h that vanished with it).
-  const double k = 5.0e3, y0 = 0.01, vStart = 2.0, zeta = 0.1;
-  double rebound[2] = {0, 0};
-  int i = 0;
-  for (double dt : {3.3e-2 / 300, 3.3e-2 / 20}) {
-    const DropResult elastic = drop(0, k, y0, vStart, dt);
-    const DropResult damped = drop(zeta, k, y0, vStart, dt);
-    EXPECT_NEAR(elastic.reboundHeight / elastic.startHeight, 1.0, 1e-10);
-    EXPECT_TRUE(damped.energyNeverIncreased);
-    EXPECT_LT(damped.worstIdentity, 1e-12 * damped.energyScale);
-    // The rebound height is lowered by exactly the dissipated energy.
-    EXPECT_NEAR(damped.startHeight - damped.reboundHeight, damped.dissipated / kG,
-                1e-10 * damped.startHeight);
-    EXPECT_GT(damped.dissipated, 1e-2 * damped.energyScale) << "dt " << dt;
-    rebound[i++] = damped.reboundHeight;
-  }
-  EXPECT_NEAR(rebound[1] / rebound[0], 1.0, 0.02);
-}
-
-TEST(GroundContact, AssembledTangentWithContactMatchesFiniteDifferences) {
-  // A jointed two-link frame partly pressed into the ground.
-  Model m;
-  m.materials()[1] = rodMaterial(2e3, 1e3, 30.0, 1.0, 0.01);
-  const int a = m.addNode(Vec2(0, 0.02));
-  const int b = addRod(m, a, Vec2(1.0, -0.03), 2);
-  const Vec2 xb = m.coord(b);
-  const int c = m.addNode(xb);
-  addRod(m, c, Vec2(1.8, 0.4), 2);
-  m.joints().push_back({b, c, JointForm::Condensed});
-  installJoints(m);
-  m.ground() = Ground{0.0, 4.0e3, 0};
-  m.gravity() = Vec2(0, -kG);
-  for (const TimeIntegrator& ti :
-       {TimeIntegrator::statics(), TimeIntegrator::newmark(0.25, 0.5),
-        TimeIntegrator::midPoint(0.1, 0.05), TimeIntegrator::midPoint(0, 0)}) {
-    Assembler as(m);
-    as.refresh();
-    State s;
-    s.resize(m.numNodes());
-    test::scatteredState(s, 0.01, 0.02);
-    const StepRule rule = ti.rule(0.05);
-    const Eigen::VectorXd ones = Eigen::VectorXd::Ones(s.u.size());
-    ASSERT_TRUE(as.assemble(s, rule, ones, true).ok);
-    const Eigen::MatrixXd k = Eigen::MatrixXd(as.tangent());
-    const DofMap& dofs = as.dofs();
-    const int neq = dofs.numEquations();
-    Eigen::VectorXd r0;
-    as.toEquations(as.nodalResidual(), r0);
-    // Penetrating nodes exist and none sits on the ground line.
-    int inContact = 0;
-    for (int n = 0; n < m.numNodes(); ++n) {
-      if (!dofs.used(n)) continue;
-      const double p = -(m.coord(n).y() + s.u(3 * n + 1));
-      ASSERT_GT(std::abs(p), 1e-4);
-      inContact += p > 0;
-    }
-    EXPECT_GE(inContact, 2);
-    Eigen::MatrixXd fd(neq, neq);
-    const double h = 1e-7;
-    for (int n = 0; n < m.numNodes(); ++n)
-      for (int d = 0; d < 3; ++d) {
-        const int eq = dofs.eq(n, d);
-        if (eq < 0) continue;
-        Eigen::VectorXd rp, rm;
-        s.u(3 * n + d) += h;
-        ASSERT_TRUE(as.assemble(s, rule, ones, false).ok);
-        as.toEquations(as.nodalResidual(), rp);
-        s.u(3 * n + d) -= 2 * h;
-        ASSERT_TRUE(as.assemble(s, rule, ones, false).ok);
-        as.toEquations(as.nodalResidual(), rm);
-        s.u(3 * n + d) += h;
-        fd.col(eq) = (rp - rm) / (2 * h);
-      }
-    EXPECT_LT((fd - k).cwiseAbs().maxCoeff(), 1e-6 * k.cwiseAbs().maxCoeff()) << ti.describe();
-  }
 }
 
 }  // namespace

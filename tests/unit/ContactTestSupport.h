@@ -1,19 +1,22 @@
 #pragma once
-// Shared by the contact tests: rods of geometrically exact elements, one time
-// step of Newton iterations, positions, linear momentum and the assembled
-// tangent against central differences of the assembled residual.
+// Shared by the contact tests: rods of geometrically exact elements, positions,
+// linear momentum, the assembled tangent against central differences of the
+// assembled residual and the zero crossings of a time history (a time step's
+// Newton iterations: ElementTestSupport.h).
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 #include "core/Assembler.h"
 #include "core/Model.h"
 #include "core/State.h"
 #include "elements/ReissnerFrame.h"
 #include "solvers/Analysis.h"
+#include "tests/unit/ElementTestSupport.h"
 
 namespace c2d::test {
 
@@ -69,21 +72,6 @@ inline int newRod(Model& m, const Vec2& a, const Vec2& b, int n, int mat = 1) {
   return first;
 }
 
-// One step (TIME) solved by Newton iterations, at most maxIterations for each
-// part of it (a step through an impact is taken in parts: solvers/ImpactSteps.h).
-inline bool solveStep(Analysis& an, int maxIterations = 40) {
-  if (!an.advance()) return false;
-  IterationInfo info;
-  for (int i = 0; i < maxIterations; ++i) {
-    if (!an.iterate(false, false, info)) return false;
-    if (info.converged) return true;
-    if (info.subStep) i = -1;
-  }
-  for (const IterationInfo& h : an.stepHistory())
-    std::printf("  iteration %d: residual %.3e energy %.3e\n", h.iteration, h.residual, h.energy);
-  return false;
-}
-
 inline Vec2 position(const Model& m, const State& s, int node) {
   return m.coord(node) + s.u.segment<2>(3 * node);
 }
@@ -136,6 +124,39 @@ inline double tangentError(Model& m, State& s, const StepRule& rule, double h = 
       fd.col(eq) = (rp - rm) / (2 * h);
     }
   return (fd - k).cwiseAbs().maxCoeff() / k.cwiseAbs().maxCoeff();
+}
+
+// Roots of y(t) from cubic interpolation through the four samples around each
+// sign change.
+inline std::vector<double> zeroCrossings(const std::vector<double>& t,
+                                         const std::vector<double>& y) {
+  std::vector<double> roots;
+  for (size_t i = 1; i + 2 < y.size(); ++i) {
+    if ((y[i] > 0) == (y[i + 1] > 0)) continue;
+    auto p = [&](double x, double& dp) {
+      double v = 0;
+      dp = 0;
+      for (size_t a = i - 1; a <= i + 2; ++a) {
+        double la = 1, dla = 0;
+        for (size_t b = i - 1; b <= i + 2; ++b) {
+          if (b == a) continue;
+          dla = dla * (x - t[b]) / (t[a] - t[b]) + la / (t[a] - t[b]);
+          la *= (x - t[b]) / (t[a] - t[b]);
+        }
+        v += y[a] * la;
+        dp += y[a] * dla;
+      }
+      return v;
+    };
+    double x = t[i] - y[i] * (t[i + 1] - t[i]) / (y[i + 1] - y[i]);
+    for (int it = 0; it < 20; ++it) {
+      double dp = 0;
+      const double v = p(x, dp);
+      x -= v / dp;
+    }
+    roots.push_back(x);
+  }
+  return roots;
 }
 
 }  // namespace c2d::test

@@ -1,5 +1,5 @@
-// Deck structure (problems, mesh data sets, BATCh blocks, top-level LOOP),
-// the command registry, and the parse errors of a dozen bad decks.
+// Deck structure (problems, mesh data sets, BATCh blocks, top-level LOOP) and
+// the parse errors of a dozen bad decks (the command registry: CommandSpecTest).
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -216,70 +216,6 @@ TEST(DeckParserStructure, AssignmentRecords) {
                   1, 1, "not a parameter name");
   expectDeckError([] { DeckParser::parseAssignment(DeckReader::lexLine("x =", "f", 1)); }, "f", 1,
                   4, "has no value");
-}
-
-// --- registry -------------------------------------------------------------
-
-CommandSpec spec(const std::string& name) {
-  CommandSpec s;
-  s.name = name;
-  s.doc = "doc";
-  return s;
-}
-
-TEST(CommandSpecRegistry, FourCharacterKeysAreUnique) {
-  CommandRegistry r("test");
-  r.add(spec("COORdinates"));
-  EXPECT_THROW(r.add(spec("COORx")), std::logic_error);
-  EXPECT_THROW(r.add(spec("coordinate")), std::logic_error);
-  CommandSpec alias = spec("PARAmeter");
-  alias.aliases = {"CONStant"};
-  r.add(alias);
-  EXPECT_THROW(r.add(spec("CONSistent")), std::logic_error);
-  r.add(spec("END"));
-  r.add(spec("ENDS"));  // 'end' and 'ends' differ
-  EXPECT_EQ(r.find("coor")->name, "COORdinates");
-  EXPECT_EQ(r.find("Coordinates")->name, "COORdinates");
-  EXPECT_EQ(r.find("cons")->name, "PARAmeter");
-  EXPECT_EQ(r.find("end")->name, "END");
-  EXPECT_EQ(r.find("endsxx")->name, "ENDS");
-  EXPECT_EQ(r.find("coo"), nullptr);
-  EXPECT_EQ(r.find("xyz"), nullptr);
-}
-
-TEST(CommandSpecRegistry, SuggestsTheNearestCommand) {
-  CommandRegistry r;
-  registerMeshCommands(r);
-  EXPECT_EQ(r.suggest("CORDinates"), "did you mean 'COORdinates'?");
-  EXPECT_EQ(r.suggest("bundary"), "did you mean 'BOUNdary'?");
-  EXPECT_EQ(r.suggest("ELMENTS"), "did you mean 'ELEMents'?");
-  EXPECT_EQ(r.suggest("matrial"), "did you mean 'MATErial'?");
-  EXPECT_EQ(r.suggest("xyzzy"), "");
-}
-
-TEST(CommandSpecRegistry, EveryMeshCommandIsDocumented) {
-  CommandRegistry mesh("Mesh commands"), sub("Material records");
-  ASSERT_NO_THROW(registerMeshCommands(mesh));
-  ASSERT_NO_THROW(registerMaterialSubRecords(sub));
-  for (const char* name :
-       {"COOR", "ELEM", "MATE", "BOUN", "FORC", "DISP", "EBOU", "EFOR", "EDIS", "CBOU", "CFOR",
-        "CDIS", "BLOC", "PRIN", "NOPR", "JOIN", "CONT", "GRAV", "END",  "PARA", "CONS", "INCL"})
-    EXPECT_NE(mesh.find(name), nullptr) << name;
-  for (const char* name :
-       {"FRAM", "ELAS", "CROS", "SHEA", "SMAL", "FINI", "DENS", "MASS", "RESU", "HARD", "SOFT"})
-    EXPECT_NE(sub.find(name), nullptr) << name;
-  for (const auto* reg : {&mesh, &sub})
-    for (const auto& s : reg->specs()) {
-      EXPECT_FALSE(s.doc.empty()) << s.name;
-      if (s.data == DataForm::Records) {
-        EXPECT_FALSE(s.dataSyntax.empty()) << s.name;
-      }
-    }
-  std::ostringstream help;
-  mesh.printHelp(help);
-  EXPECT_NE(help.str().find("COORdinates"), std::string::npos);
-  EXPECT_NE(help.str().find("node ng x y"), std::string::npos);
-  EXPECT_NE(help.str().find("(also CONStant)"), std::string::npos);
 }
 
 // --- errors -----------------------------------------------------------------

@@ -1,6 +1,7 @@
 #pragma once
 // Support for the deck front-end tests: a temporary directory that removes
-// itself, and a check that a call fails with a DeckError at a given place.
+// itself, a file's whole text, a text's lines and whether it holds a string,
+// and a check that a call fails with a DeckError at a given place.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -10,6 +11,7 @@
 #include <functional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "core/Error.h"
 
@@ -37,6 +39,7 @@ class DeckTempDir {
     return p.string();
   }
   const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
 
  private:
   std::filesystem::path path_;
@@ -48,6 +51,19 @@ inline std::string readText(const std::filesystem::path& p) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+// Whether the text holds what.
+inline bool contains(const std::string& text, const std::string& what) {
+  return text.find(what) != std::string::npos;
+}
+
+// The lines of a text, without their ends.
+inline std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) out.push_back(l);
+  return out;
 }
 
 // Runs f, expects a DeckError at file:line:col whose what() contains text.

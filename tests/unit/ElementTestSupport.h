@@ -1,9 +1,11 @@
 #pragma once
 // Shared by the element tests: random element vectors, a section given by its
-// resultant stiffnesses, and the tangent by central differences of an element's
-// residual.
+// resultant stiffnesses, the tangent by central differences of an element's
+// residual, a Reissner element's end displacements for given strains, and one
+// time step of an analysis solved by Newton iterations.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <random>
 
 #include <cmath>
@@ -11,6 +13,7 @@
 #include "core/Element.h"
 #include "core/MaterialSet.h"
 #include "core/StepRule.h"
+#include "solvers/Analysis.h"
 
 namespace c2d::test {
 
@@ -30,6 +33,27 @@ inline ElemVec rigidMotion(const Vec2& x1, const Vec2& x2, double w, const Vec2&
   ElemVec d;
   d << c + rot(w) * (x1 - c) + t - x1, w, c + rot(w) * (x2 - c) + t - x2, w;
   return d;
+}
+
+// Nodal displacements of an element from x1 (the origin) at angle phi, turned
+// rigidly by rho about node 1, with strains eps, gamma and curvature kappa.
+inline ElemVec turned(double l, double phi, double rho, double eps, double gamma, double kappa) {
+  ElemVec d;
+  const double th2 = rho + kappa * l;
+  const Vec2 x2 = l * Vec2(std::cos(phi), std::sin(phi));
+  const Vec2 y2 = l * (rot(phi + 0.5 * (rho + th2)) * Vec2(1 + eps, gamma));
+  d << 0, 0, rho, y2.x() - x2.x(), y2.y() - x2.y(), th2;
+  return d;
+}
+
+// Kinematics d at t_n+1 and dn at t_n, with constant rates at t_n.
+inline ElementKinematics kinAt(const ElemVec& d, const ElemVec& dn) {
+  ElementKinematics kin;
+  kin.d = d;
+  kin.dn = dn;
+  kin.vn.setConstant(0.2);
+  kin.an.setConstant(-1.0);
+  return kin;
 }
 
 // A step rule of the scheme: Newmark's trapezoidal coefficients for dt = 0.05.
@@ -114,6 +138,34 @@ inline ElemMat centralDifferenceTangent(Element& e, const ElementKinematics& kin
     fd.col(j) = (rp - rm) / (2 * h);
   }
   return fd;
+}
+
+// e's tangent at kin against central differences of its residual: the relative
+// error (Frobenius norms); e's trial state is left at kin.
+inline double tangentError(Element& e, const ElementKinematics& kin, const StepRule& rule) {
+  ElemVec r, again;
+  ElemMat k, unused;
+  EXPECT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
+  const ElemMat fd = centralDifferenceTangent(e, kin, rule, 1e-8);
+  EXPECT_TRUE(e.evaluate(kin, rule, true, again, unused).ok);
+  return (k - fd).norm() / k.norm();
+}
+
+// One step (TIME) solved by Newton iterations, at most maxIterations for each
+// part of it (a step through an impact is taken in parts: solvers/ImpactSteps.h);
+// prints the iteration history when it does not converge (unless quiet).
+inline bool solveStep(Analysis& an, int maxIterations = 40, bool quiet = false) {
+  if (!an.advance()) return false;
+  IterationInfo info;
+  for (int i = 0; i < maxIterations; ++i) {
+    if (!an.iterate(false, false, info)) return false;
+    if (info.converged) return true;
+    if (info.subStep) i = -1;
+  }
+  if (quiet) return false;
+  for (const IterationInfo& h : an.stepHistory())
+    std::printf("  iteration %d: residual %.3e energy %.3e\n", h.iteration, h.residual, h.energy);
+  return false;
 }
 
 }  // namespace c2d::test

@@ -72,7 +72,7 @@ TEST(EnergyWatch, NewmarksRuleSwingingAnRcMemberAboutNZeroIsWarnedAbout) {
   const testing::DeckTempDir dir;
   const testing::DeckResult r = testing::runDeckText(
       dir, "column_schemes.inp",
-      testing::readFile(std::string(C2D_SOURCE_DIR) + "/decks/rc/column_schemes.inp"));
+      testing::readText(std::string(C2D_SOURCE_DIR) + "/decks/rc/column_schemes.inp"));
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
   const std::string& text = r.log;
   const std::size_t second = text.find("RC column swinging about N = 0, energy conserving");

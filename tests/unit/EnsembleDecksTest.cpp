@@ -19,18 +19,15 @@
 #include "macro/studies/ParallelRuns.h"
 #include "macro/studies/Statistics.h"
 #include "tests/unit/DeckTestSupport.h"
+#include "tests/unit/EnsembleTestSupport.h"
 
 namespace c2d {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using testing::ksStatistic;
+using testing::readText;
 
 std::string deckPath(const std::string& name) {
   return std::string(C2D_SOURCE_DIR) + "/decks/ensemble/" + name + ".inp";
@@ -48,17 +45,7 @@ DeckOutcome run(const std::string& name, const fs::path& out, int shard = 1, int
 }
 
 EnsembleData table(const fs::path& csv, std::size_t swept) {
-  return readEnsembleTable(slurp(csv), swept);
-}
-
-// The KS statistic of values against a distribution function.
-double ks(std::vector<double> x, double (*cdf)(double)) {
-  std::sort(x.begin(), x.end());
-  const double n = static_cast<double>(x.size());
-  double d = 0;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    d = std::max({d, cdf(x[i]) - i / n, (i + 1) / n - cdf(x[i])});
-  return d;
+  return readEnsembleTable(readText(csv), swept);
 }
 
 TEST(EnsembleDecks, TheBlockParsesBeforeOrAfterTheSweep) {
@@ -217,7 +204,7 @@ TEST(EnsembleDecks, SlidingBlockReachesItsOwnClosedForm) {
         << "mu = " << r.drawn[0];
   }
   // The drawn mu against UNIForm 0.2 0.6 (the 1 % critical value 1.628/sqrt(n)).
-  EXPECT_LT(ks(mu, [](double x) { return std::clamp((x - 0.2) / 0.4, 0.0, 1.0); }),
+  EXPECT_LT(ksStatistic(mu, [](double x) { return std::clamp((x - 0.2) / 0.4, 0.0, 1.0); }),
             1.628 / std::sqrt(20.0));
 }
 
@@ -241,7 +228,7 @@ TEST(EnsembleDecks, ColumnOnAPinFallsToTheSideItLeans) {
     right += lean > 0;
   }
   EXPECT_EQ(outside, right);
-  const auto plans = slurp(dir.path() / "column_on_pin_plans.csv");
+  const auto plans = readText(dir.path() / "column_on_pin_plans.csv");
   const std::string row = plans.substr(plans.find('\n') + 1);
   std::vector<std::string> cells;
   std::stringstream ss(row.substr(0, row.find('\n')));
@@ -263,12 +250,13 @@ TEST(EnsembleDecks, WithoutDrawsTheRunsAreIdentical) {
   testing::DeckTempDir dir;
   const DeckOutcome o = run("bar_drop_repeated", dir.path());
   ASSERT_EQ(o.exitCode, 0) << o.message;
-  const std::string first = slurp(dir.path() / "bar_drop_repeated_s1_tplot.csv");
+  const std::string first = readText(dir.path() / "bar_drop_repeated_s1_tplot.csv");
   ASSERT_FALSE(first.empty());
   for (const char* k : {"2", "3"}) {
-    EXPECT_EQ(slurp(dir.path() / ("bar_drop_repeated_s" + std::string(k) + "_tplot.csv")), first);
-    EXPECT_EQ(slurp(dir.path() / ("bar_drop_repeated_s" + std::string(k) + "_debris.csv")),
-              slurp(dir.path() / "bar_drop_repeated_s1_debris.csv"));
+    EXPECT_EQ(readText(dir.path() / ("bar_drop_repeated_s" + std::string(k) + "_tplot.csv")),
+              first);
+    EXPECT_EQ(readText(dir.path() / ("bar_drop_repeated_s" + std::string(k) + "_debris.csv")),
+              readText(dir.path() / "bar_drop_repeated_s1_debris.csv"));
   }
   const EnsembleData d = table(dir.path() / "bar_drop_repeated_ensemble.csv", 0);
   ASSERT_EQ(d.runs.size(), 3u);
@@ -300,14 +288,14 @@ TEST(EnsembleDecks, PlansSeeTheSameDrawsSampleBySample) {
     }
     EXPECT_LT(p1.figure("right"), p2.figure("right"));
   }
-  const std::string log = slurp(dir.path() / "sliding_plans.out");
+  const std::string log = readText(dir.path() / "sliding_plans.out");
   EXPECT_NE(log.find("best plan: 1 (a = 0.3)"), std::string::npos);
   EXPECT_NE(log.find(": significant"), std::string::npos);
 }
 
 // The run,plan,sample cells of a timing table, one line per run.
 std::string timingKeys(const fs::path& csv) {
-  std::istringstream in(slurp(csv));
+  std::istringstream in(readText(csv));
   std::string line, keys;
   while (std::getline(in, line)) keys += line.substr(0, line.rfind(',')) + "\n";
   return keys;
@@ -331,7 +319,7 @@ TEST(EnsembleDecks, TwoShardsMergedEqualTheWholeRun) {
   ASSERT_EQ(mergeParts(dir.path() / "parts", out, err), 0) << err.str();
   for (const std::string& f : kStudyFiles) {
     ASSERT_TRUE(fs::exists(dir.path() / "parts" / f)) << f;
-    EXPECT_EQ(slurp(dir.path() / "parts" / f), slurp(dir.path() / "whole" / f)) << f;
+    EXPECT_EQ(readText(dir.path() / "parts" / f), readText(dir.path() / "whole" / f)) << f;
   }
   // The runs' numerics are in the table (the same bytes); their CPU times,
   // which differ, beside it, in the same runs' order.
@@ -357,14 +345,14 @@ TEST(EnsembleDecks, RunInTwoProcessesEqualsTheWholeRun) {
   std::ostringstream out, err;
   ASSERT_EQ(runDeckInParallel(deckPath("sliding_plans"), b, commands, out, err), 0) << err.str();
   for (const std::string& f : kStudyFiles)
-    EXPECT_EQ(slurp(dir.path() / "j2" / f), slurp(dir.path() / "whole" / f)) << f;
+    EXPECT_EQ(readText(dir.path() / "j2" / f), readText(dir.path() / "whole" / f)) << f;
   // The parts are merged and gone; the log holds every run in order.
   EXPECT_FALSE(fs::exists(dir.path() / "j2" / "sliding_plans_part1of2.out"));
   EXPECT_FALSE(fs::exists(dir.path() / "j2" / "sliding_plans_part2of2_ensemble.csv"));
   EXPECT_FALSE(fs::exists(dir.path() / "j2" / "sliding_plans_part2of2_timing.csv"));
   EXPECT_EQ(timingKeys(dir.path() / "j2" / "sliding_plans_timing.csv"),
             timingKeys(dir.path() / "whole" / "sliding_plans_timing.csv"));
-  const std::string log = slurp(dir.path() / "j2" / "sliding_plans.out");
+  const std::string log = readText(dir.path() / "j2" / "sliding_plans.out");
   std::size_t at = 0;
   for (int k = 1; k <= 12; ++k) {
     const std::size_t p = log.find("  run " + std::to_string(k) + " of 12,", at);

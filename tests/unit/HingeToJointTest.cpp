@@ -26,6 +26,8 @@
 namespace c2d {
 namespace {
 
+using test::solveStep;
+
 // --- ReissnerFrame initial strain ---------------------------------------------
 
 MaterialSet reissnerMaterial() { return test::resultantMaterial(Kinematics::Finite); }
@@ -121,16 +123,6 @@ Model softeningCantilever() {
   m.bound(kN) = {0, 1, 0};
   m.disp(kN) = {0, 1.0, 0};
   return m;
-}
-
-bool solveStep(Analysis& an, int maxIterations = 40) {
-  if (!an.advance()) return false;
-  IterationInfo info;
-  for (int i = 0; i < maxIterations; ++i) {
-    if (!an.iterate(false, false, info)) return false;
-    if (info.converged) return true;
-  }
-  return false;
 }
 
 double chordAngle(const Model& m, const State& s, int a, int b) {

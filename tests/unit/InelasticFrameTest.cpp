@@ -20,6 +20,8 @@
 namespace c2d {
 namespace {
 
+using test::tangentError;
+
 using namespace test::v2;
 constexpr double kL = 2.5;
 
@@ -53,17 +55,6 @@ ElemVec localState(double l, double eps, double gamma, double kappaD) {
   const double th1 = 0.01, th2 = th1 + kappaD * l;
   dl << 0, 0, th1, eps * l, (gamma + 0.5 * (th1 + th2)) * l, th2;
   return dl;
-}
-
-// Tangent against central differences of the residual; returns the max relative error.
-double tangentError(InelasticFrame& e, const ElementKinematics& kin, const StepRule& rule) {
-  ElemVec r;
-  ElemMat k, dummy;
-  EXPECT_TRUE(e.evaluate(kin, rule, true, r, k));
-  const ElemMat fd = test::centralDifferenceTangent(e, kin, rule, 1e-8);
-  ElemVec rAgain;
-  EXPECT_TRUE(e.evaluate(kin, rule, true, rAgain, dummy));  // leave the trial state at kin
-  return (k - fd).norm() / k.norm();
 }
 
 class InelasticFrameAngles : public ::testing::TestWithParam<double> {};

@@ -28,49 +28,21 @@
 #include "solvers/ProportionalLoad.h"
 #include "solvers/TimeIntegrator.h"
 #include "tests/unit/ElementTestSupport.h"
+#include "tests/unit/DeckTestSupport.h"
 #include "tests/unit/V2Material.h"
 
 namespace c2d {
 namespace {
+
+using test::kinAt;
+using test::tangentError;
+using test::turned;
 
 // verification.md V2.
 using namespace test::v2;
 constexpr double kL = 2.5;
 
 MaterialSet v2Material() { return material(1, 1.25e6, Kinematics::Finite); }
-
-Eigen::Matrix2d rot(double a) {
-  return (Eigen::Matrix2d() << std::cos(a), -std::sin(a), std::sin(a), std::cos(a)).finished();
-}
-
-// Nodal displacements of an element from x1 to x2 (angle phi) turned rigidly by
-// rho about node 1, with strains eps, gamma and curvature kappa.
-ElemVec turned(double l, double phi, double rho, double eps, double gamma, double kappa) {
-  ElemVec d;
-  const double th2 = rho + kappa * l;
-  const Vec2 x2 = l * Vec2(std::cos(phi), std::sin(phi));
-  const Vec2 y2 = l * (rot(phi + 0.5 * (rho + th2)) * Vec2(1 + eps, gamma));
-  d << 0, 0, rho, y2.x() - x2.x(), y2.y() - x2.y(), th2;
-  return d;
-}
-
-double tangentError(ReissnerFrame& e, const ElementKinematics& kin, const StepRule& rule) {
-  ElemVec r, again;
-  ElemMat k, unused;
-  EXPECT_TRUE(e.evaluate(kin, rule, true, r, k));
-  const ElemMat fd = test::centralDifferenceTangent(e, kin, rule, 1e-8);
-  EXPECT_TRUE(e.evaluate(kin, rule, true, again, unused));  // the trial state back at kin
-  return (k - fd).norm() / k.norm();
-}
-
-ElementKinematics kinAt(const ElemVec& d, const ElemVec& dn) {
-  ElementKinematics kin;
-  kin.d = d;
-  kin.dn = dn;
-  kin.vn.setConstant(0.2);
-  kin.an.setConstant(-1.0);
-  return kin;
-}
 
 class InelasticReissnerRotations : public ::testing::TestWithParam<double> {};
 
@@ -237,8 +209,8 @@ TEST(InelasticReissnerV2, EndMomentThroughFailureToOneRadian) {
 // the balance, measured at every commit, closes to round-off (it was off by
 // 1.6e-4 kN m, 6e-7 of the largest energy, the sum of the three jumps).
 TEST(InelasticReissnerPush, TwoStoryFrameClosesItsBalanceThroughTheJointsItForms) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("c2d_two_story_" + std::to_string(::getpid()));
+  const testing::DeckTempDir scratch;
+  const std::filesystem::path& dir = scratch.path();
   DeckOptions opt;
   opt.outDir = dir;
   opt.quiet = true;
@@ -246,7 +218,6 @@ TEST(InelasticReissnerPush, TwoStoryFrameClosesItsBalanceThroughTheJointsItForms
   std::ostringstream out;
   const DeckOutcome o = runDeck(
       std::string(C2D_SOURCE_DIR) + "/decks/finite/two_story_frame_finite.inp", opt, commands, out);
-  std::filesystem::remove_all(dir);
   ASSERT_EQ(o.exitCode, 0) << o.message;
   EXPECT_EQ(o.total.jointsFormed, 6);
   EXPECT_LT(o.total.energyError, 1e-8);

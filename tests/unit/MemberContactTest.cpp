@@ -1,10 +1,10 @@
-// Member-to-member contact (core/contact/MemberContact, core/contact/MemberCrossing):
-// the assembled tangent and pattern, and whole analyses: bars colliding end-on
-// and crosswise (energy and momentum), a bar dropped on a fixed beam
-// (penetration, rebound, dissipation), a bar on a tilted beam (friction), and
-// the crossing check. The pair law: PairContactTest.cpp; the search:
-// ContactSearchTest.cpp; step starts: PairStartsTest.cpp; the pairs' memory
-// over commits: PairMemoriesTest.cpp.
+// Member-to-member contact (core/contact/MemberContact): the assembled tangent
+// and pattern, and whole analyses: bars colliding end-on and crosswise (energy
+// and momentum), a bar dropped on a fixed beam (penetration, rebound,
+// dissipation), a bar on a tilted beam (friction). The pair law:
+// PairContactTest.cpp; the search: ContactSearchTest.cpp; step starts:
+// PairStartsTest.cpp; the pairs' memory over commits: PairMemoriesTest.cpp; the
+// crossing check: MemberCrossingTest.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -386,10 +386,8 @@ TEST(MemberContactDeck, ZeroStiffnessSwitchesMemberContactOff) {
   // for when it turns the contact on): the echo says the contact is off and
   // its other values unused, and the bar falls through the beam as if free
   // (g t^2 / 2 after 0.24 s), where with contact it rebounds.
-  std::ifstream in(std::string(C2D_SOURCE_DIR) + "/decks/collapse/bar_on_beam.inp");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string deck = text.str();
+  std::string deck =
+      testing::readText(std::string(C2D_SOURCE_DIR) + "/decks/collapse/bar_on_beam.inp");
   const std::string on = "  MEMBers,,k\n";
   const auto at = deck.find(on);
   ASSERT_NE(at, std::string::npos);
@@ -401,51 +399,6 @@ TEST(MemberContactDeck, ZeroStiffnessSwitchesMemberContactOff) {
   const std::vector<double> y = testing::readCsv(r.out / "off_tplot.csv").column("disp_4_2");
   ASSERT_FALSE(y.empty());
   EXPECT_NEAR(y.back(), -0.5 * kGravity * 0.24 * 0.24, 1e-9);
-}
-
-// --- crossings ---------------------------------------------------------------
-
-TEST(MemberCrossing, ReportsCrossingMembersOnly) {
-  Model m;
-  m.materials()[1] = rod(1, 1e4, 1e4, 50.0, 1.0, 1e-4);
-  newRod(m, Vec2(0, 0), Vec2(2, 0), 2);           // elements 0, 1
-  newRod(m, Vec2(1.6, -0.5), Vec2(1.6, 0.7), 1);  // element 2 crosses element 1
-  newRod(m, Vec2(0.2, 0.1), Vec2(0.8, 0.1), 1);   // element 3: parallel, above element 0
-  newRod(m, Vec2(2, 0), Vec2(2.5, 0.0), 1);       // element 4 touches element 1's end
-  State s;
-  s.resize(m.numNodes());
-  auto crossings = findCrossings(m, s);
-  ASSERT_EQ(crossings.size(), 1u);
-  EXPECT_EQ(crossings[0].first, 1);
-  EXPECT_EQ(crossings[0].second, 2);
-  // Where: at (1.6, 0), 0.4 m from element 1's node at (2, 0) and 0.5 m from
-  // element 2's node at (1.6, -0.5).
-  EXPECT_NEAR(crossings[0].point.x(), 1.6, 1e-14);
-  EXPECT_NEAR(crossings[0].point.y(), 0.0, 1e-14);
-  EXPECT_EQ(crossings[0].nearNode[0], 2);
-  EXPECT_NEAR(crossings[0].fromNode[0], 0.4, 1e-14);
-  EXPECT_EQ(crossings[0].nearNode[1], 3);
-  EXPECT_NEAR(crossings[0].fromNode[1], 0.5, 1e-14);
-  // Move element 3 down through element 0: now it crosses too.
-  s.u(3 * 5 + 1) = -0.2;
-  crossings = findCrossings(m, s);
-  ASSERT_EQ(crossings.size(), 2u);
-  EXPECT_EQ(crossings[0].first, 0);
-  EXPECT_EQ(crossings[0].second, 3);
-}
-
-TEST(MemberCrossing, TipsPressedTogetherDoNotCross) {
-  // Section radius sqrt(3 I / A) = 0.0173, so tips within 5 % of 0.0346 m
-  // (1.7 mm) of the crossing are pressed together, not through each other.
-  Model m;
-  m.materials()[1] = rod(1, 1e4, 1e4, 50.0, 1.0, 1e-4);
-  newRod(m, Vec2(3, 0), Vec2(4, 0), 1);                   // element 0
-  const int q = newRod(m, Vec2(3.001, 0.5), Vec2(3.0005, -0.0005), 1);  // its tip 0.5 mm under
-  State s;
-  s.resize(m.numNodes());
-  EXPECT_TRUE(findCrossings(m, s).empty());
-  s.u(3 * (q + 1) + 1) = -0.0095;  // the tip 10 mm under: through
-  ASSERT_EQ(findCrossings(m, s).size(), 1u);
 }
 
 }  // namespace

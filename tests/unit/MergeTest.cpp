@@ -20,12 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using testing::readText;
 
 void spit(const fs::path& p, const std::string& text) {
   std::ofstream(p, std::ios::binary) << text;
@@ -81,7 +76,7 @@ TEST(Merge, RefusesAPartCutInTheMiddleOfARow) {
   expectRefused(
       [](const fs::path& d) {
         const fs::path f = d / "plan_study_part1of2_plans.csv";
-        const std::string t = slurp(f);
+        const std::string t = readText(f);
         spit(f, t.substr(0, t.size() - 9));
       },
       "plan_study_part1of2_plans.csv", "ends in the middle of a row");
@@ -91,7 +86,7 @@ TEST(Merge, RefusesAPartMissingItsLastRow) {
   expectRefused(
       [](const fs::path& d) {
         const fs::path f = d / "plan_study_part1of2_plans.csv";
-        std::string t = slurp(f);
+        std::string t = readText(f);
         t.pop_back();
         spit(f, t.substr(0, t.rfind('\n') + 1));
       },
@@ -127,7 +122,7 @@ TEST(Merge, RefusesAPartOfAnotherDeckWithTheSameStem) {
       [](const fs::path& d) {
         // The same study with other plans, in another directory, same file name.
         testing::DeckTempDir other;
-        std::string text = slurp(kPlanDeck);
+        std::string text = readText(kPlanDeck);
         text.replace(text.find("dx = 0.5 1.5 3"), 14, "dx = 0.5 2.5 3");
         const std::string deck = other.write("plan_study.inp", text);
         const SolutionCommands commands;
@@ -146,7 +141,7 @@ TEST(Merge, RefusesTextInANumberColumn) {
   expectRefused(
       [](const fs::path& d) {
         const fs::path f = d / "plan_study_part2of2_plans.csv";
-        std::string t = slurp(f);
+        std::string t = readText(f);
         const std::size_t row = t.find('\n') + 1;
         const std::size_t cell = t.find("1.500000e+00", row);  // right = 1.5 (plan dx = 1.5)
         ASSERT_NE(cell, std::string::npos) << t;
@@ -160,7 +155,7 @@ TEST(Merge, RefusesABadBatchPart) {
   testing::DeckTempDir dir;
   runParts(kPlanDeck, dir.path());
   const fs::path f = dir.path() / "batch_part2of2.csv";
-  std::string t = slurp(f);
+  std::string t = readText(f);
   t.replace(t.rfind(",0,0\n"), 5, ",0,x\n");
   spit(f, t);
   std::ostringstream out, err;
@@ -189,7 +184,7 @@ TEST(Merge, RefusesABadEnsemblePart) {
   testing::DeckTempDir dir;
   runParts(std::string(C2D_SOURCE_DIR) + "/decks/ensemble/sliding_plans.inp", dir.path());
   const fs::path f = dir.path() / "sliding_plans_part2of2_ensemble.csv";
-  std::string t = slurp(f);
+  std::string t = readText(f);
   t.replace(t.find(",ok,"), 4, ",OK,");
   spit(f, t);
   std::ostringstream out, err;
@@ -216,11 +211,11 @@ TEST(Merge, JoinsThePartsCpuTimesByRun) {
   testing::DeckTempDir dir;
   runParts(std::string(C2D_SOURCE_DIR) + "/decks/ensemble/sliding_plans.inp", dir.path());
   const fs::path f = dir.path() / "sliding_plans_part2of2_timing.csv";
-  const std::string good = slurp(f);
+  const std::string good = readText(f);
   {
     std::ostringstream out, err;
     ASSERT_EQ(mergeParts(dir.path(), out, err), 0) << err.str();
-    std::istringstream in(slurp(dir.path() / "sliding_plans_timing.csv"));
+    std::istringstream in(readText(dir.path() / "sliding_plans_timing.csv"));
     std::string line;
     std::getline(in, line);
     EXPECT_EQ(line, "run,plan,sample,cpu_s");
@@ -283,7 +278,7 @@ TEST(Merge, RefusesACountOutOfRangeInAManifest) {
   expectRefused(
       [](const fs::path& d) {
         const fs::path f = d / "plan_study_part2of2_manifest.csv";
-        std::string t = slurp(f);
+        std::string t = readText(f);
         t.replace(t.find("runs,3"), 6, "runs,2147483647");
         spit(f, t);
       },
@@ -305,7 +300,7 @@ TEST(Merge, RefusesAnInfiniteFigureInAnEnsemblePart) {
   testing::DeckTempDir dir;
   runParts(std::string(C2D_SOURCE_DIR) + "/decks/ensemble/sliding_plans.inp", dir.path());
   const fs::path f = dir.path() / "sliding_plans_part2of2_ensemble.csv";
-  std::string t = slurp(f);
+  std::string t = readText(f);
   const std::size_t row = t.find('\n') + 1;
   const std::size_t ok = t.find(",ok,", row);
   std::size_t cell = ok + 4;  // the reason, then steps, iterations, cuts, energy_error
@@ -327,7 +322,7 @@ TEST(Merge, RefusesATableItsManifestDidNotRecord) {
   expectRefused(
       [](const fs::path& d) {
         const fs::path f = d / "plan_study_part2of2_plans.csv";
-        std::string t = slurp(f);
+        std::string t = readText(f);
         const std::size_t cell = t.find("1.500000e+00", t.find('\n') + 1);
         ASSERT_NE(cell, std::string::npos) << t;
         t.replace(cell, 12, "1.600000e+00");
@@ -340,7 +335,7 @@ TEST(Merge, RefusesCurvesThatLostRows) {
   testing::DeckTempDir dir;
   runParts(std::string(C2D_SOURCE_DIR) + "/decks/ensemble/sliding_plans.inp", dir.path());
   const fs::path f = dir.path() / "sliding_plans_part1of2_curves.csv";
-  std::string t = slurp(f);
+  std::string t = readText(f);
   t.pop_back();
   spit(f, t.substr(0, t.rfind('\n') + 1));
   std::ostringstream out, err;
@@ -356,13 +351,13 @@ TEST(Merge, RefusesAnEnsembleRowWhosePlanDisagreesWithItsRun) {
   testing::DeckTempDir dir;
   runParts(std::string(C2D_SOURCE_DIR) + "/decks/ensemble/sliding_plans.inp", dir.path());
   const fs::path f = dir.path() / "sliding_plans_part2of2_ensemble.csv";
-  std::string t = slurp(f);
+  std::string t = readText(f);
   const std::size_t row = t.find('\n') + 1;  // run 2: plan 1, sample 2
   ASSERT_EQ(t.substr(row, 6), "2,1,2,") << t;
   t.replace(row, 6, "2,2,2,");
   spit(f, t);
   const fs::path m = dir.path() / "sliding_plans_part2of2_manifest.csv";
-  std::string mt = slurp(m);
+  std::string mt = readText(m);
   const std::size_t h = mt.find("table_hash,") + 11;
   mt.replace(h, 16, contentFingerprint(t));
   spit(m, mt);
@@ -399,16 +394,6 @@ TEST(Merge, RefusesTwoPartSetsOfOneStem) {
             std::string::npos)
       << err.str();
   EXPECT_FALSE(fs::exists(dir.path() / "plan_study_plans.csv"));
-}
-
-TEST(Shard, CountsAreRangeChecked) {
-  ShardSpec s;
-  EXPECT_TRUE(parseShard("2/4", s));
-  EXPECT_EQ(s.index, 2);
-  EXPECT_EQ(s.count, 4);
-  for (const char* bad : {"1/99999999999", "1/10001", "0/2", "3/2", "1/2x", "1/", "/2", "-1/2",
-                          "1/-2", "99999999999/2", " 1/2"})
-    EXPECT_FALSE(parseShard(bad, s)) << bad;
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #pragma once
 // Support for the tests of mesh commands: a one-problem deck's mesh applied
-// to a new model (control record 0 0 0 2 3 2 unless given), with its echo.
+// to a new model (control record 0 0 0 2 3 2 unless given), with its echo; a
+// cantilever's mesh of a given material and a material of hand-given laws.
 #include <ostream>
 #include <string>
 
@@ -30,6 +31,20 @@ inline Model buildMesh(const std::string& mesh, std::ostream* echo = nullptr,
 // A DeckError at mesh.inp:line:col whose message holds msg.
 inline void expectMeshError(const std::string& mesh, int line, int col, const std::string& msg) {
   expectDeckError([&] { buildMesh(mesh); }, "mesh.inp", line, col, msg);
+}
+
+// MATErial 1, a FRAMe of hand-given laws: bilinear hardening, linear softening
+// and an interaction curve.
+inline const char* const kHand =
+    "MATE,1 beam\n FRAMe\n ELAStic ISOTropic 30e6 0.2\n CROSs SECTion 0.12 1.6e-3\n"
+    " DENSity,,2.5\n HARDening BILInear 40 60 1000 100\n SOFTening LINEar 70 -500 0.3 2\n"
+    " INTEraction CURVe -2000 90 0 70 500 20\n\n";
+
+// A column of material 1 from node 1 at the origin to node 4 at 3 m up (nodes
+// and three elements generated) after the given MATErial records; no
+// boundary conditions.
+inline std::string cantilever(const std::string& material) {
+  return "COOR\n 1 1 0 0\n 4 0 0 3\n\n" + material + "ELEM\n 1 1 1 1 2\n 3 1 1 3 4\n\n";
 }
 
 }  // namespace c2d::testing

@@ -32,17 +32,17 @@ TEST(NamedPlans, NamesAreTheStemsLabelsAndTheTablesColumn) {
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
   for (const char* stem : {"np_gentle_s1", "np_gentle_s2", "np_steep_s1", "np_steep_s2"})
     EXPECT_TRUE(std::filesystem::exists(r.out / (std::string(stem) + "_tplot.csv"))) << stem;
-  const EnsembleData d = readEnsembleTable(testing::readFile(r.out / "np_ensemble.csv"), 1);
+  const EnsembleData d = readEnsembleTable(testing::readText(r.out / "np_ensemble.csv"), 1);
   EXPECT_TRUE(d.named);
   ASSERT_EQ(d.runs.size(), 4u);
   EXPECT_EQ(d.runs[0].name, "gentle");
   EXPECT_EQ(d.runs[3].name, "steep");
   EXPECT_EQ(d.swept, std::vector<std::string>{"a"});
   EXPECT_EQ(d.runs[3].swept, std::vector<double>{0.4});
-  const std::string plans = testing::readFile(r.out / "np_plans.csv");
+  const std::string plans = testing::readText(r.out / "np_plans.csv");
   EXPECT_EQ(plans.rfind("plan,name,a,samples,", 0), 0u) << plans;
   EXPECT_NE(plans.find("\n2,steep,0.4,2,"), std::string::npos) << plans;
-  EXPECT_EQ(testing::readFile(r.out / "np_sensitivity.csv").rfind("plan,name,a,input", 0), 0u);
+  EXPECT_EQ(testing::readText(r.out / "np_sensitivity.csv").rfind("plan,name,a,input", 0), 0u);
   // The console's plan table and verdict name the plans.
   EXPECT_NE(r.console.find("gentle"), std::string::npos) << r.console;
   EXPECT_NE(r.console.find("best plan: 1 (gentle)"), std::string::npos) << r.console;
@@ -53,8 +53,8 @@ TEST(NamedPlans, UnnamedStudiesKeepTheirTables) {
   const testing::DeckResult r = testing::runDeckText(dir, "un.inp", study("  a = 0.3 0.4"));
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
   EXPECT_TRUE(std::filesystem::exists(r.out / "un_a=0.3_s1_tplot.csv"));
-  EXPECT_FALSE(readEnsembleTable(testing::readFile(r.out / "un_ensemble.csv"), 1).named);
-  EXPECT_EQ(testing::readFile(r.out / "un_plans.csv").rfind("plan,a,samples,", 0), 0u);
+  EXPECT_FALSE(readEnsembleTable(testing::readText(r.out / "un_ensemble.csv"), 1).named);
+  EXPECT_EQ(testing::readText(r.out / "un_plans.csv").rfind("plan,a,samples,", 0), 0u);
 }
 
 TEST(NamedPlans, BadNamesAreDeckErrorsAtTheirPlace) {

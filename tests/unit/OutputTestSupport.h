@@ -1,8 +1,8 @@
 #pragma once
 // Support for the tests of the result writers: a strict little XML reader (it
 // rejects unbalanced or misnamed end tags, bad attributes and stray '<' or '&'),
-// a temporary directory, and an element whose section forces and hinge state a
-// test sets directly.
+// and an element whose section forces and hinge state a test sets directly
+// (the temporary directory and a file's text: DeckTestSupport.h).
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -21,6 +21,7 @@
 
 #include "core/Element.h"
 #include "core/Hinge.h"
+#include "tests/unit/DeckTestSupport.h"
 
 namespace c2d::testing {
 
@@ -186,40 +187,12 @@ class XmlReader {
   std::size_t i_ = 0;
 };
 
-inline std::string readFile(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 inline std::vector<double> numbers(const std::string& text) {
   std::istringstream in(text);
   std::vector<double> v;
   for (std::string tok; in >> tok;) v.push_back(std::strtod(tok.c_str(), nullptr));
   return v;
 }
-
-// A fresh directory per test, removed afterwards.
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() /
-            ("c2d-" + std::string(info->test_suite_name()) + "-" + info->name() + "-" + std::to_string(::getpid()));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  std::filesystem::path path_;
-};
 
 // An element that reports what the test sets: section forces and hinge state.
 class ReportingElement final : public Element, public HingeCarrier {

@@ -19,18 +19,9 @@ namespace {
 
 using testing::DeckResult;
 using testing::DeckTempDir;
+using testing::expectRan;
+using testing::readText;
 using testing::runDeckText;
-
-std::string readText(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-void expectRan(const DeckResult& r) {
-  ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message << r.console << r.log;
-}
 
 int count(const std::string& text, const std::string& what) {
   int n = 0;

@@ -16,7 +16,7 @@ namespace {
 
 using testing::DeckTempDir;
 using testing::numbers;
-using testing::readFile;
+using testing::readText;
 using testing::XmlNode;
 using testing::XmlReader;
 
@@ -34,7 +34,7 @@ TEST(PView, CollectionEveryIncSteps) {
       dir, "pv.inp",
       kParams + testing::cantileverProblem(testing::rampBatch(4, "  PVIEw,,2\n", ""), testing::rampData()));
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
-  const XmlNode pvd = XmlReader::parse(readFile(r.out / "pv.pvd"));
+  const XmlNode pvd = XmlReader::parse(readText(r.out / "pv.pvd"));
   const auto sets = pvd.all("DataSet");
   ASSERT_EQ(sets.size(), 3u);  // the initial state, steps 2 and 4
   const double times[] = {0, 0.5, 1};
@@ -42,7 +42,7 @@ TEST(PView, CollectionEveryIncSteps) {
     EXPECT_DOUBLE_EQ(std::stod(sets[i]->attr("timestep")), times[i]);
     const std::string file = "pv_000" + std::to_string(i) + ".vtu";
     EXPECT_EQ(sets[i]->attr("file"), file);
-    const XmlNode vtu = XmlReader::parse(readFile(r.out / file));
+    const XmlNode vtu = XmlReader::parse(readText(r.out / file));
     const auto piece = vtu.all("Piece");
     ASSERT_EQ(piece.size(), 1u);
     EXPECT_EQ(piece[0]->attr("NumberOfPoints"), "3");
@@ -64,12 +64,12 @@ TEST(PView, FinalStateEndsTheCollection) {
       dir, "fin.inp",
       kParams + testing::cantileverProblem(testing::rampBatch(5, "  PVIEw,,2\n", ""), testing::rampData()));
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
-  const XmlNode pvd = XmlReader::parse(readFile(r.out / "fin.pvd"));
+  const XmlNode pvd = XmlReader::parse(readText(r.out / "fin.pvd"));
   const auto sets = pvd.all("DataSet");
   ASSERT_EQ(sets.size(), 4u);
   const char* times[] = {"0", "0.4", "0.8", "1"};
   for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(sets[i]->attr("timestep"), times[i]);
-  const XmlNode last = XmlReader::parse(readFile(r.out / "fin_0003.vtu"));
+  const XmlNode last = XmlReader::parse(readText(r.out / "fin_0003.vtu"));
   const auto u = numbers(dataArray(last, "displacement")->text);
   ASSERT_EQ(u.size(), 9u);
   EXPECT_NEAR(u[7], testing::cantileverTip(10, 3, 2), 1e-15);
@@ -88,7 +88,7 @@ TEST(PView, OffStopsTheAutomaticOutput) {
       "  PVIEw\n";
   const auto r = testing::runDeckText(dir, "off.inp", kParams + testing::cantileverProblem(batch, testing::rampData()));
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
-  const XmlNode pvd = XmlReader::parse(readFile(r.out / "off.pvd"));
+  const XmlNode pvd = XmlReader::parse(readText(r.out / "off.pvd"));
   const auto sets = pvd.all("DataSet");
   ASSERT_EQ(sets.size(), 3u);
   EXPECT_DOUBLE_EQ(std::stod(sets[0]->attr("timestep")), 0);
@@ -116,7 +116,7 @@ TEST(PView, SlaveNodeOfACondensedJointShowsItsState) {
       "END\nBATCh\n  LOOP,,5\n    TANG,,1\n  NEXT\n  PVIEw\n  PLOT,DEFO\nEND\nSTOP\n";
   const auto r = testing::runDeckText(dir, "joint.inp", deck);
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
-  const XmlNode vtu = XmlReader::parse(readFile(r.out / "joint_0000.vtu"));
+  const XmlNode vtu = XmlReader::parse(readText(r.out / "joint_0000.vtu"));
   const auto u = numbers(dataArray(vtu, "displacement")->text);
   const auto rot = numbers(dataArray(vtu, "rotation")->text);
   const auto joint = numbers(dataArray(vtu, "joint")->text);
@@ -131,7 +131,7 @@ TEST(PView, SlaveNodeOfACondensedJointShowsItsState) {
   EXPECT_GT(std::abs(rot[2] - rot[1]), 1e-5);
   EXPECT_EQ(joint, (std::vector<double>{0, 1, 1, 0}));
   // The picture marks the joint once and draws both members.
-  const XmlNode svg = XmlReader::parse(readFile(r.out / "joint_deformed_0000.svg"));
+  const XmlNode svg = XmlReader::parse(readText(r.out / "joint_deformed_0000.svg"));
   EXPECT_EQ(svg.all("path", "member").size(), 2u);
   EXPECT_EQ(svg.all("circle", "joint").size(), 2u);  // on the frame and in the key
 }

@@ -53,10 +53,7 @@ Given runGiven(const DeckTempDir& dir, const std::string& text,
   const SolutionCommands commands;
   std::ostringstream console;
   Given g{runDeck(path, o, commands, console), {}, o.outDir};
-  std::ifstream log(o.outDir / "d.out");
-  std::stringstream ss;
-  ss << log.rdbuf();
-  g.log = ss.str();
+  g.log = testing::readText(o.outDir / "d.out");
   return g;
 }
 

@@ -7,16 +7,12 @@
 #include <vector>
 
 #include "macro/studies/PlanTable.h"
+#include "tests/unit/DeckTestSupport.h"
 
 namespace c2d {
 namespace {
 
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string l; std::getline(in, l);) out.push_back(l);
-  return out;
-}
+using testing::lines;
 
 TEST(PlanTable, RowsWithAndWithoutDebris) {
   PlanTable t({"tb", "e"});

@@ -20,7 +20,7 @@ namespace c2d {
 namespace {
 
 using testing::DeckTempDir;
-using testing::readFile;
+using testing::readText;
 using testing::XmlNode;
 using testing::XmlReader;
 
@@ -40,7 +40,7 @@ TEST(PlotCommand, MeshAndDeformedShapePictures) {
       kParams + testing::cantileverProblem(testing::rampBatch(4, "  PLOT,MESH\n", "  PLOT,DEFOrmed\n"),
                                            testing::rampData()));
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
-  const XmlNode mesh = XmlReader::parse(readFile(r.out / "beam_mesh.svg"));
+  const XmlNode mesh = XmlReader::parse(readText(r.out / "beam_mesh.svg"));
   EXPECT_EQ(mesh.name, "svg");
   EXPECT_EQ(mesh.all("path", "member").size(), 4u);  // one per element
   EXPECT_EQ(mesh.all("g", "nodes").at(0)->children.size(), 5u);
@@ -48,7 +48,7 @@ TEST(PlotCommand, MeshAndDeformedShapePictures) {
   EXPECT_EQ(mesh.all("g", "supports").size(), 1u);
 
   // Step 4 is converged when PLOT runs (TIME has not committed it yet).
-  const XmlNode def = XmlReader::parse(readFile(r.out / "beam_deformed_0004.svg"));
+  const XmlNode def = XmlReader::parse(readText(r.out / "beam_deformed_0004.svg"));
   EXPECT_EQ(def.all("path", "member").size(), 4u);
   EXPECT_EQ(def.all("path", "undeformed").size(), 1u);
   // Tip deflection 1.9e-3 of a 3 m beam: automatic scale 1-2-5 drawing it at about L/10.
@@ -110,7 +110,7 @@ TEST(PlotCurve, ChartHoldsTheScaledHistory) {
     EXPECT_NEAR(curves[0].points[i].first, -lambda * testing::cantileverTip(10, 3, 4), 1e-12);
     EXPECT_NEAR(curves[0].points[i].second, 2 * 10 * lambda, 1e-9);
   }
-  const XmlNode svg = XmlReader::parse(readFile(dir.path() / "c_reac_1_2_vs_disp_5_2.svg"));
+  const XmlNode svg = XmlReader::parse(readText(dir.path() / "c_reac_1_2_vs_disp_5_2.svg"));
   const auto series = svg.all("path", "series");
   ASSERT_EQ(series.size(), 1u);
   EXPECT_EQ(pathPoints(series[0]->attr("d")), 4);
@@ -131,7 +131,7 @@ TEST(PlotCurve, WrittenWhenRunAndCompletedAtTheEnd) {
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
   // When PLOT ran, one step was committed (the second is committed by the next TIME).
   EXPECT_NE(r.log.find("PLOT   curve: c_disp_5_2_vs_time.svg"), std::string::npos) << r.log;
-  const XmlNode svg = XmlReader::parse(readFile(r.out / "c_disp_5_2_vs_time.svg"));
+  const XmlNode svg = XmlReader::parse(readText(r.out / "c_disp_5_2_vs_time.svg"));
   ASSERT_EQ(svg.all("path", "series").size(), 1u);
   EXPECT_EQ(pathPoints(svg.all("path", "series")[0]->attr("d")), 4);
 }

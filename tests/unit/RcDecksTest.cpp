@@ -24,38 +24,23 @@ namespace {
 
 // A deck's run in a directory of its own, removed with it.
 struct Ran {
-  std::filesystem::path dir;
-  std::string log;
-  Ran() = default;
-  Ran(Ran&& o) noexcept : dir(std::move(o.dir)), log(std::move(o.log)) { o.dir.clear(); }
-  Ran& operator=(const Ran&) = delete;
-  ~Ran() {
-    std::error_code ec;
-    if (!dir.empty()) std::filesystem::remove_all(dir, ec);
+  explicit Ran(const std::string& deck) {
+    DeckOptions opt;
+    opt.outDir = dir;
+    opt.quiet = true;
+    const SolutionCommands commands;
+    std::ostringstream console;
+    const DeckOutcome o =
+        runDeck(std::string(C2D_SOURCE_DIR) + "/decks/rc/" + deck, opt, commands, console);
+    EXPECT_EQ(o.exitCode, 0) << o.message;
+    log = testing::readText(dir / (std::filesystem::path(deck).stem().string() + ".out"));
   }
+  const testing::DeckTempDir scratch;
+  const std::filesystem::path dir = scratch.path();
+  std::string log;
 };
 
-Ran runRcDeck(const std::string& deck) {
-  Ran r;
-  r.dir =
-      std::filesystem::temp_directory_path() /
-      ("c2d_rc_" + std::filesystem::path(deck).stem().string() + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(r.dir);
-  std::filesystem::create_directories(r.dir);
-  DeckOptions opt;
-  opt.outDir = r.dir;
-  opt.quiet = true;
-  const SolutionCommands commands;
-  std::ostringstream console;
-  const DeckOutcome o =
-      runDeck(std::string(C2D_SOURCE_DIR) + "/decks/rc/" + deck, opt, commands, console);
-  EXPECT_EQ(o.exitCode, 0) << o.message;
-  std::ifstream log(r.dir / (std::filesystem::path(deck).stem().string() + ".out"));
-  std::stringstream ss;
-  ss << log.rdbuf();
-  r.log = ss.str();
-  return r;
-}
+Ran runRcDeck(const std::string& deck) { return Ran(deck); }
 
 TEST(RcDecks, ColumnReachesTheSectionsUltimateMomentAtItsAxialForce) {
   const Ran r = runRcDeck("column_capacity.inp");

@@ -19,9 +19,12 @@
 #include <vector>
 
 #include "materials/RcSection.h"
+#include "tests/unit/RcTestSupport.h"
 
 namespace c2d {
 namespace {
+
+using test::v20;
 
 constexpr double kC2 = 0.002, kCu = 0.0035;
 
@@ -83,24 +86,10 @@ Hand handYield(const RcSectionData& d, int sign, double N) {
 
 const double kA20 = M_PI * 0.01 * 0.01, kA16 = M_PI * 0.008 * 0.008;
 
-// V20: b = h = 0.5 m, 4 bars of 20 mm at 0.05 m from each face, fc = 30 MPa,
-// fy = 500 MPa, Es = 200 GPa.
-RcSectionData columnV20() {
-  RcSectionData d;
-  d.b = d.h = 0.5;
-  d.fc = 30e3;
-  d.fy = 500e3;
-  d.Es = 200e6;
-  d.fu = 540e3;
-  d.eu = 0.05;
-  d.bars = {{0.05, 4 * kA20}, {0.45, 4 * kA20}};
-  return d;
-}
-
 // An unsymmetric beam: 0.3 x 0.5 m, 2 bars of 16 mm at 0.04 m from the top,
 // 3 of 20 mm at 0.45 m.
 RcSectionData beam() {
-  RcSectionData d = columnV20();
+  RcSectionData d = v20();
   d.b = 0.3;
   d.bars = {{0.04, 2 * kA16}, {0.45, 3 * kA20}};
   return d;
@@ -128,7 +117,7 @@ void expectHand(const RcSection& s, int sign, double N, double xu, double Mu, do
 }
 
 TEST(RcSection, ColumnOfV20AgainstHandCalculations) {
-  const RcSection s(columnV20());
+  const RcSection s(v20());
   for (int sign : {1, -1}) {  // symmetric: both signs alike
     expectHand(s, sign, 0, 0.05072, 269.128, 0.10539, 258.492);
     expectHand(s, sign, -3000, 0.24706, 693.023, 0.28703, 548.725);
@@ -155,7 +144,7 @@ TEST(RcSection, BalancePointOfTheInteractionDiagram) {
   // bar layers yield (the compressed one at 0.0035 (0.2625 - 0.05)/0.2625 =
   // 0.00283 > 0.0025) and cancel: N_b = -17/21 fc b x_b = -3187.5 kN,
   // M_b = 3187.5 (0.25 - 99/238 x_b) + 2 (628.32)(0.2) = 700.16 kN m.
-  const RcSection s(columnV20());
+  const RcSection s(v20());
   const RcSection::State b = s.balance(1);
   const double xb = 0.2625, nb = -17.0 / 21 * 30e3 * 0.5 * xb;
   EXPECT_NEAR(b.depth, xb, 1e-12);
@@ -190,7 +179,7 @@ TEST(RcSection, BalancePointOfTheInteractionDiagram) {
 }
 
 TEST(RcSection, StiffnessesAxialCapacitiesAndHinge) {
-  const RcSection s(columnV20());
+  const RcSection s(v20());
   // Ec = 2 fc/eps_c2 = 30 GPa; transformed: n - 1 = 200/30 - 1, As = 8 A20.
   const double as = 8 * kA20, n1 = 200.0 / 30 - 1;
   EXPECT_NEAR(s.Ec(), 30e6, 1e-6);

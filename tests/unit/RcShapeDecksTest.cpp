@@ -14,10 +14,13 @@
 #include <sstream>
 
 #include "materials/RcSection.h"
+#include "tests/unit/RcTestSupport.h"
 #include "tests/unit/RunDeckSupport.h"
 
 namespace c2d {
 namespace {
+
+using test::c30b500;
 
 using testing::DeckResult;
 using testing::DeckTempDir;
@@ -25,10 +28,8 @@ using testing::DeckTempDir;
 const double kPi = std::acos(-1.0);
 
 DeckResult runRcDeck(const DeckTempDir& dir, const std::string& name) {
-  std::ifstream in(std::string(C2D_SOURCE_DIR) + "/decks/rc/" + name);
-  std::stringstream text;
-  text << in.rdbuf();
-  DeckResult r = testing::runDeckText(dir, name, text.str());
+  const std::string deck = testing::readText(std::string(C2D_SOURCE_DIR) + "/decks/rc/" + name);
+  DeckResult r = testing::runDeckText(dir, name, deck);
   EXPECT_EQ(r.outcome.exitCode, 0) << r.outcome.message << r.console;
   return r;
 }
@@ -37,16 +38,6 @@ double peakMagnitude(const std::filesystem::path& csv, const std::string& column
   double peak = 0;
   for (double x : testing::readCsv(csv).column(column)) peak = std::max(peak, std::abs(x));
   return peak;
-}
-
-RcSectionData c30b500() {
-  RcSectionData d;
-  d.fc = 30e3;
-  d.fy = 500e3;
-  d.Es = 200e6;
-  d.fu = 540e3;
-  d.eu = 0.05;
-  return d;
 }
 
 TEST(RcShapeDecks, TeeBeamReachesTheLargerMuWithItsFlangeCompressed) {

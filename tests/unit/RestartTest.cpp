@@ -30,6 +30,9 @@ namespace {
 
 using testing::DeckResult;
 using testing::DeckTempDir;
+using testing::expectRan;
+using testing::lines;
+using testing::readText;
 using testing::runDeckText;
 
 // A fixed-base portal (columns 3 m, beam 4 m, two elements per member) with the
@@ -110,20 +113,6 @@ const std::string kCollapseStart =
     "  HINGe2joint\n  MESH\n  DYNAmic,ENERgy,0.1,0.1\n  DT,,0.02\n" + newtonLoop("TIME", 10);
 const std::string kCollapseEnd = newtonLoop("TIME", 10);
 
-std::string readText(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string l; std::getline(in, l);) out.push_back(l);
-  return out;
-}
-
 // A model and an analysis read back from a restart file.
 struct Loaded {
   Model model;
@@ -181,10 +170,6 @@ void expectSameTail(const std::string& whole, const std::string& first, const st
   EXPECT_EQ(w.front(), r.front());
   for (std::size_t i = 1; i < r.size(); ++i) EXPECT_EQ(r[i], w[w.size() - r.size() + i]) << "row " << i;
   for (std::size_t i = 1; i < f.size(); ++i) EXPECT_EQ(f[i], w[i]) << "row " << i;
-}
-
-void expectRan(const DeckResult& r) {
-  ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message << r.console << r.log;
 }
 
 TEST(Restart, FailurePhaseContinuesBitForBit) {

@@ -32,16 +32,18 @@ inline DeckResult runDeckFile(const DeckTempDir& dir, const std::string& path, b
   r.outcome = runDeck(path, o, commands, console);
   r.console = console.str();
   r.out = o.outDir;
-  std::ifstream log(o.outDir / (std::filesystem::path(path).stem().string() + ".out"));
-  std::stringstream ss;
-  ss << log.rdbuf();
-  r.log = ss.str();
+  r.log = readText(o.outDir / (std::filesystem::path(path).stem().string() + ".out"));
   return r;
 }
 
 inline DeckResult runDeckText(const DeckTempDir& dir, const std::string& name, const std::string& text,
                               bool quiet = true) {
   return runDeckFile(dir, dir.write(name, text), quiet);
+}
+
+// The run ended well (exit code 0); else its message, console and log are shown.
+inline void expectRan(const DeckResult& r) {
+  ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message << r.console << r.log;
 }
 
 // A CSV file of numbers with a header row (TPLOt, debris and plan tables).

@@ -5,8 +5,7 @@
 // written (a full disk, a directory that cannot be made) is an I/O error with
 // the path and the system's reason, exit status 3, and no file under the final
 // name; SIGTERM stops a run at its next step with exit status 143 and its
-// outputs tagged "interrupted"; the summary words the energy figure and warns
-// when the conserving scheme lost energy.
+// outputs tagged "interrupted". The summary's words: RunSummaryTest.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -29,8 +28,9 @@ namespace c2d {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::contains;
 using testing::DeckTempDir;
-using testing::readFile;
+using testing::readText;
 
 const std::string kParams = "PARAmeter\n  L = 3\n  n = 2\n  P = 10\n\n";
 
@@ -58,10 +58,6 @@ std::vector<std::string> partFiles(const fs::path& dir) {
 
 int lineCount(const std::string& s) {
   return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
-}
-
-bool contains(const std::string& s, const std::string& what) {
-  return s.find(what) != std::string::npos;
 }
 
 TEST(RunOutcome, CompletedRunHasItsFilesUnderTheirNamesOnly) {
@@ -92,11 +88,11 @@ TEST(RunOutcome, FailedRunKeepsWhatItComputedUnderFailedNames) {
   EXPECT_FALSE(fs::exists(r.out / "fail.pvd"));
   EXPECT_TRUE(partFiles(r.out).empty());
   // The converged steps' rows: the header, the initial state and three steps.
-  const std::string tplot = readFile(r.out / "fail_tplot.failed.csv");
+  const std::string tplot = readText(r.out / "fail_tplot.failed.csv");
   EXPECT_GE(lineCount(tplot), 4) << tplot;
-  const testing::XmlNode pvd = testing::XmlReader::parse(readFile(r.out / "fail.failed.pvd"));
+  const testing::XmlNode pvd = testing::XmlReader::parse(readText(r.out / "fail.failed.pvd"));
   EXPECT_EQ(pvd.all("DataSet").size(), 4u);
-  const std::string log = readFile(r.out / "fail.failed.out");
+  const std::string log = readText(r.out / "fail.failed.out");
   EXPECT_TRUE(contains(log, "*** run failed")) << log;
   EXPECT_TRUE(contains(log, "did not converge")) << log;
   EXPECT_FALSE(contains(log, "run complete")) << log;
@@ -133,7 +129,7 @@ TEST(RunOutcome, FullDiskUnderTheTimeHistoryIsAnIoError) {
   EXPECT_TRUE(contains(msg, std::strerror(ENOSPC))) << msg;
   EXPECT_FALSE(fs::exists(r.out / "tp_tplot.csv"));
   EXPECT_FALSE(fs::exists(r.out / "tp.out"));
-  EXPECT_TRUE(contains(readFile(r.out / "tp.failed.out"), std::strerror(ENOSPC)));
+  EXPECT_TRUE(contains(readText(r.out / "tp.failed.out"), std::strerror(ENOSPC)));
 }
 
 TEST(RunOutcome, SingularTangentNamesTheNodeOfTheMechanism) {
@@ -233,54 +229,19 @@ TEST(RunOutcome, SigtermStopsTheRunWhichKeepsItsResults) {
   ::kill(pid, SIGTERM);
   ASSERT_TRUE(running) << "the run wrote nothing";
   EXPECT_EQ(waitChild(pid, 60), 128 + SIGTERM);
-  const std::string msg = readFile(messageFile);
+  const std::string msg = readText(messageFile);
   EXPECT_TRUE(contains(msg, "interrupted by SIGTERM at step ")) << msg;
   EXPECT_TRUE(contains(msg, "computed results kept: ")) << msg;
   EXPECT_FALSE(fs::exists(out / "long.out"));
   EXPECT_FALSE(fs::exists(out / "long_tplot.csv"));
   EXPECT_FALSE(fs::exists(out / "long.pvd"));
   EXPECT_TRUE(partFiles(out).empty());
-  const std::string log = readFile(out / "long.interrupted.out");
+  const std::string log = readText(out / "long.interrupted.out");
   EXPECT_TRUE(contains(log, "*** run interrupted"))
       << log.substr(log.size() > 2000 ? log.size() - 2000 : 0);
-  EXPECT_GT(lineCount(readFile(out / "long_tplot.interrupted.csv")), 1000);
-  const testing::XmlNode pvd = testing::XmlReader::parse(readFile(out / "long.interrupted.pvd"));
+  EXPECT_GT(lineCount(readText(out / "long_tplot.interrupted.csv")), 1000);
+  const testing::XmlNode pvd = testing::XmlReader::parse(readText(out / "long.interrupted.pvd"));
   EXPECT_GE(pvd.all("DataSet").size(), 2u);
-}
-
-TEST(RunOutcome, SummaryWordsTheEnergyErrorAndWarnsWhenTheBalanceDoesNotClose) {
-  RunSummary s;
-  s.energyError = 2.5e-12;
-  EXPECT_TRUE(contains(runSummaryText(s), "energy error 2.50e-12")) << runSummaryText(s);
-  EXPECT_TRUE(runWarnings(s).empty());
-  s.energyError = 0.93;
-  ASSERT_EQ(runWarnings(s).size(), 1u);
-  EXPECT_TRUE(contains(runWarnings(s)[0], "warning: the energy balance changed by 9.30e-01"))
-      << runWarnings(s)[0];
-  // Members crossing at the end: a second warning.
-  s.crossings = 3;
-  ASSERT_EQ(runWarnings(s).size(), 2u);
-  EXPECT_TRUE(contains(runWarnings(s)[1], "warning: 3 pairs of members cross each other at the end"))
-      << runWarnings(s)[1];
-  // Members folded beyond a quarter turn: a third.
-  s.folded = 1;
-  ASSERT_EQ(runWarnings(s).size(), 3u);
-  EXPECT_TRUE(contains(runWarnings(s)[2], "warning: 1 member is bent through more than a quarter"))
-      << runWarnings(s)[2];
-  // A node buried in the ground: a fourth.
-  s.sunk = 1;
-  ASSERT_EQ(runWarnings(s).size(), 4u);
-  EXPECT_TRUE(
-      contains(runWarnings(s)[3], "warning: in this run a node went deeper into the ground"))
-      << runWarnings(s)[3];
-  // A member past its capacity beyond the tolerance (macro/run/CapacityWatch.h): a fifth;
-  // within it, none.
-  s.maxMomentRatio = 1.0003;
-  EXPECT_EQ(runWarnings(s).size(), 4u);
-  s.maxMomentRatio = 1.004;
-  ASSERT_EQ(runWarnings(s).size(), 5u);
-  EXPECT_TRUE(contains(runWarnings(s)[2], "warning: a member carried |M|/Mu = 1.0040"))
-      << runWarnings(s)[2];
 }
 
 }  // namespace

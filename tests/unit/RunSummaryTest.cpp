@@ -1,11 +1,15 @@
 // A deck's summary is its runs' summaries added (RunSummary::operator+=):
-// counts summed, the worst figures kept, the flags or-ed.
+// counts summed, the worst figures kept, the flags or-ed; the summary's words
+// for the energy error and its warnings (runSummaryText, runWarnings).
 #include <gtest/gtest.h>
 
 #include "macro/run/RunSummary.h"
+#include "tests/unit/DeckTestSupport.h"
 
 namespace c2d {
 namespace {
+
+using testing::contains;
 
 RunSummary first() {
   RunSummary s;
@@ -79,6 +83,41 @@ TEST(RunSummary, TheTotalOfTwoRunsSaysHowManyOfThemLeftTheSite) {
       << text;
   EXPECT_NE(text.find("debris OUTSIDE the site in 1 of 2 runs"), std::string::npos) << text;
   EXPECT_NE(text.find("fall NOT AS INTENDED in 1 of 2 runs"), std::string::npos) << text;
+}
+
+TEST(RunOutcome, SummaryWordsTheEnergyErrorAndWarnsWhenTheBalanceDoesNotClose) {
+  RunSummary s;
+  s.energyError = 2.5e-12;
+  EXPECT_TRUE(contains(runSummaryText(s), "energy error 2.50e-12")) << runSummaryText(s);
+  EXPECT_TRUE(runWarnings(s).empty());
+  s.energyError = 0.93;
+  ASSERT_EQ(runWarnings(s).size(), 1u);
+  EXPECT_TRUE(contains(runWarnings(s)[0], "warning: the energy balance changed by 9.30e-01"))
+      << runWarnings(s)[0];
+  // Members crossing at the end: a second warning.
+  s.crossings = 3;
+  ASSERT_EQ(runWarnings(s).size(), 2u);
+  EXPECT_TRUE(contains(runWarnings(s)[1], "warning: 3 pairs of members cross each other at the end"))
+      << runWarnings(s)[1];
+  // Members folded beyond a quarter turn: a third.
+  s.folded = 1;
+  ASSERT_EQ(runWarnings(s).size(), 3u);
+  EXPECT_TRUE(contains(runWarnings(s)[2], "warning: 1 member is bent through more than a quarter"))
+      << runWarnings(s)[2];
+  // A node buried in the ground: a fourth.
+  s.sunk = 1;
+  ASSERT_EQ(runWarnings(s).size(), 4u);
+  EXPECT_TRUE(
+      contains(runWarnings(s)[3], "warning: in this run a node went deeper into the ground"))
+      << runWarnings(s)[3];
+  // A member past its capacity beyond the tolerance (macro/run/CapacityWatch.h): a fifth;
+  // within it, none.
+  s.maxMomentRatio = 1.0003;
+  EXPECT_EQ(runWarnings(s).size(), 4u);
+  s.maxMomentRatio = 1.004;
+  ASSERT_EQ(runWarnings(s).size(), 5u);
+  EXPECT_TRUE(contains(runWarnings(s)[2], "warning: a member carried |M|/Mu = 1.0040"))
+      << runWarnings(s)[2];
 }
 
 }  // namespace

@@ -31,6 +31,10 @@
 namespace c2d {
 namespace {
 
+using test::kinAt;
+using test::tangentError;
+using test::turned;
+
 constexpr double kPi = std::numbers::pi;
 
 // The dashpot's bending moment m(K1) for dM = M0 + kt (K1 - K0) - M0: its work
@@ -66,39 +70,6 @@ StepRule midPoint(double alpha, double dt) {
   return r;
 }
 StepRule newmark(double dt) { return TimeIntegrator::newmark(0.25, 0.5).rule(dt); }
-
-ElementKinematics kinAt(const ElemVec& d, const ElemVec& dn) {
-  ElementKinematics kin;
-  kin.d = d;
-  kin.dn = dn;
-  kin.vn.setConstant(0.2);
-  kin.an.setConstant(-1.0);
-  return kin;
-}
-
-double tangentError(Element& e, const ElementKinematics& kin, const StepRule& rule) {
-  ElemVec r, again;
-  ElemMat k, unused;
-  EXPECT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
-  const ElemMat fd = test::centralDifferenceTangent(e, kin, rule, 1e-8);
-  EXPECT_TRUE(e.evaluate(kin, rule, true, again, unused).ok);
-  return (k - fd).norm() / k.norm();
-}
-
-Eigen::Matrix2d rot(double a) {
-  return (Eigen::Matrix2d() << std::cos(a), -std::sin(a), std::sin(a), std::cos(a)).finished();
-}
-
-// Nodal displacements of an element from x1 (the origin) at angle phi, turned
-// rigidly by rho about node 1, with strains eps, gamma and curvature kappa.
-ElemVec turned(double l, double phi, double rho, double eps, double gamma, double kappa) {
-  ElemVec d;
-  const double th2 = rho + kappa * l;
-  const Vec2 x2 = l * Vec2(std::cos(phi), std::sin(phi));
-  const Vec2 y2 = l * (rot(phi + 0.5 * (rho + th2)) * Vec2(1 + eps, gamma));
-  d << 0, 0, rho, y2.x() - x2.x(), y2.y() - x2.y(), th2;
-  return d;
-}
 
 // Every element type with the V2 laws and a dashpot (a1 = 2e-3 s, f = a1/h =
 // 0.2 at h = 0.01): elastic, hardening and softening steps, each scheme.

@@ -14,12 +14,7 @@
 namespace c2d {
 namespace {
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using testing::readText;
 
 TEST(Shard, ParseAndSelect) {
   ShardSpec s;
@@ -100,13 +95,23 @@ TEST(Shard, PartsOfAStudyMergeIntoOneTable) {
   }
   std::ostringstream out, err;
   EXPECT_EQ(mergeParts(part.outDir, out, err), 0) << err.str();
-  EXPECT_EQ(slurp(part.outDir / "plan_study_plans.csv"),
-            slurp(whole.outDir / "plan_study_plans.csv"));
+  EXPECT_EQ(readText(part.outDir / "plan_study_plans.csv"),
+            readText(whole.outDir / "plan_study_plans.csv"));
   EXPECT_NE(out.str().find("3 plans from 2 parts, 1 failed"), std::string::npos) << out.str();
-  const auto merged = readBatchCsv(slurp(part.outDir / "batch.csv"));
+  const auto merged = readBatchCsv(readText(part.outDir / "batch.csv"));
   ASSERT_EQ(merged.size(), 1u);
   EXPECT_EQ(merged[0].runs, 3);
   EXPECT_EQ(merged[0].exitCode, kExitAnalysisFailed);
+}
+
+TEST(Shard, CountsAreRangeChecked) {
+  ShardSpec s;
+  EXPECT_TRUE(parseShard("2/4", s));
+  EXPECT_EQ(s.index, 2);
+  EXPECT_EQ(s.count, 4);
+  for (const char* bad : {"1/99999999999", "1/10001", "0/2", "3/2", "1/2x", "1/", "/2", "-1/2",
+                          "1/-2", "99999999999/2", " 1/2"})
+    EXPECT_FALSE(parseShard(bad, s)) << bad;
 }
 
 }  // namespace

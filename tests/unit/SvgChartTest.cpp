@@ -238,13 +238,13 @@ TEST(SvgChart, LegendKeepsOffTheCurve) {
 }
 
 TEST(SvgChart, SpansAndSaveAgree) {
-  testing::TempDir dir;
+  testing::DeckTempDir dir;
   const std::vector<double> x = {0, 1, 2}, y = {0, 1, 4};
   SvgChart c;
   EXPECT_EQ(c.addSeries("squares", x, y), 0);
   EXPECT_THROW(c.addSeries("bad", x, std::vector<double>{1.0}), std::invalid_argument);
   c.save(dir / "chart.svg");
-  EXPECT_EQ(testing::readFile(dir / "chart.svg"), c.svg());
+  EXPECT_EQ(testing::readText(dir / "chart.svg"), c.svg());
 }
 
 // The drawn width of a title: its textLength, or the estimate of the font

@@ -277,14 +277,14 @@ TEST(SvgFrame, CurvesLeaveNodesAtTheNodalRotation) {
 }
 
 TEST(SvgFrame, SaveWritesTheSameText) {
-  testing::TempDir dir;
+  testing::DeckTempDir dir;
   Model m = portal();
   State st;
   st.resize(m.numNodes());
   SvgFrame f;
   f.setTitle("saved");
   f.save(dir / "frame.svg", m, st);
-  EXPECT_EQ(testing::readFile(dir / "frame.svg"), f.svg(m, st));
+  EXPECT_EQ(testing::readText(dir / "frame.svg"), f.svg(m, st));
 }
 
 }  // namespace

@@ -17,7 +17,7 @@ namespace c2d {
 namespace {
 
 using testing::DeckTempDir;
-using testing::readFile;
+using testing::readText;
 using testing::XmlNode;
 using testing::XmlReader;
 
@@ -148,7 +148,7 @@ TEST(Sweep, TaggedOutputsAndOverlay) {
     EXPECT_TRUE(std::filesystem::exists(r.out / (stem + "_reac_1_2_vs_disp_3_2.svg"))) << stem;
     EXPECT_NE(r.console.find("  " + stem + ": 2 steps"), std::string::npos) << r.console;
   }
-  const XmlNode overlay = XmlReader::parse(readFile(r.out / "sw_reac_1_2_vs_disp_3_2.svg"));
+  const XmlNode overlay = XmlReader::parse(readText(r.out / "sw_reac_1_2_vs_disp_3_2.svg"));
   EXPECT_EQ(overlay.all("path", "series").size(), 3u);  // one curve per run
   EXPECT_EQ(legend(overlay), (std::vector<std::string>{"P = 10", "P = 20", "P = 30"}));
   EXPECT_NE(r.console.find("sw.inp: 3 runs, 6 steps"), std::string::npos) << r.console;
@@ -181,7 +181,7 @@ TEST(Sweep, TopLevelLoopStudyKeepsNumberedRunsAndGetsAnOverlay) {
     EXPECT_NEAR(lastValue(r.out / ("lp_" + std::to_string(k) + "_tplot.csv"), 2),
                 testing::cantileverTip(10, 3, n), 1e-12);
   }
-  const XmlNode overlay = XmlReader::parse(readFile(r.out / "lp_reac_1_2_vs_time.svg"));
+  const XmlNode overlay = XmlReader::parse(readText(r.out / "lp_reac_1_2_vs_time.svg"));
   EXPECT_EQ(overlay.all("path", "series").size(), 3u);
   EXPECT_EQ(legend(overlay), (std::vector<std::string>{"n = 1", "n = 2", "n = 4"}));
 }

@@ -145,7 +145,7 @@ TEST(VtkWriter, EmptySlotsAndMissingStateAreTolerated) {
 }
 
 TEST(VtkWriter, SeriesFilesAndCollectionValidAfterEveryStep) {
-  testing::TempDir dir;
+  testing::DeckTempDir dir;
   Fixture f = sample();
   VtkWriter writer(dir / "collapse");
   const std::vector<double> times = {0.0, 0.5, 1.25};
@@ -153,11 +153,11 @@ TEST(VtkWriter, SeriesFilesAndCollectionValidAfterEveryStep) {
     f.state.u[3] = 0.01 * static_cast<double>(k);
     const fs::path vtu = writer.write(f.model, f.state, times[k]);
     EXPECT_EQ(vtu.filename().string(), "collapse_000" + std::to_string(k) + ".vtu");
-    EXPECT_EQ(testing::readFile(vtu), VtkWriter::unstructuredGrid(f.model, f.state));
+    EXPECT_EQ(testing::readText(vtu), VtkWriter::unstructuredGrid(f.model, f.state));
     // The collection so far (under .part: the run is not complete) lists
     // exactly the steps written so far.
     EXPECT_FALSE(fs::exists(dir / "collapse.pvd"));
-    const XmlNode pvd = XmlReader::parse(testing::readFile(dir / "collapse.pvd.part"));
+    const XmlNode pvd = XmlReader::parse(testing::readText(dir / "collapse.pvd.part"));
     EXPECT_EQ(pvd.attr("type"), "Collection");
     const auto sets = pvd.all("DataSet");
     ASSERT_EQ(sets.size(), k + 1);
@@ -170,20 +170,20 @@ TEST(VtkWriter, SeriesFilesAndCollectionValidAfterEveryStep) {
   EXPECT_EQ(writer.numWritten(), 3);
   EXPECT_EQ(writer.collectionPath(), dir / "collapse.pvd");
   writer.finish();
-  const XmlNode done = XmlReader::parse(testing::readFile(dir / "collapse.pvd"));
+  const XmlNode done = XmlReader::parse(testing::readText(dir / "collapse.pvd"));
   EXPECT_EQ(done.all("DataSet").size(), 3u);
   for (const auto& entry : fs::directory_iterator(dir.path()))
     EXPECT_NE(entry.path().extension(), ".part") << entry.path();
 }
 
 TEST(VtkWriter, KeptCollectionOfAFailedRun) {
-  testing::TempDir dir;
+  testing::DeckTempDir dir;
   Fixture f = sample();
   VtkWriter writer(dir / "c");
   writer.write(f.model, f.state, 0);
   writer.write(f.model, f.state, 0.5);
   EXPECT_EQ(writer.keep("failed"), dir / "c.failed.pvd");
-  const XmlNode pvd = XmlReader::parse(testing::readFile(dir / "c.failed.pvd"));
+  const XmlNode pvd = XmlReader::parse(testing::readText(dir / "c.failed.pvd"));
   EXPECT_EQ(pvd.all("DataSet").size(), 2u);
   EXPECT_FALSE(fs::exists(dir / "c.pvd"));
   EXPECT_FALSE(fs::exists(dir / "c.pvd.part"));

@@ -1,6 +1,7 @@
-// An ensemble's draws: every law draws finite numbers or is refused at its
-// record; a drawn parameter's random numbers are its own, whatever its name
-// (a parameter named detonator or jitter is not the scatter drawn again).
+// An ensemble's draws (macro/studies/Ensemble): every law draws finite numbers
+// or is refused at its record; a drawn parameter's random numbers are its own,
+// whatever its name (a parameter named detonator or jitter is not the scatter
+// drawn again); the draws of a sample depend on the seed and the sample alone.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -74,6 +75,35 @@ TEST(EnsembleDraws, AParameterNamedLikeTheProgramsOwnDrawsHasAStreamOfItsOwn) {
     // The detonators' first draw of sample k (macro/studies/Detonators.cpp).
     const double scatter = normalQuantile(counterUniform(7, k, streamOf("detonator"), 0));
     EXPECT_NE(drawn, scatter) << "sample " << k;
+  }
+}
+
+TEST(EnsembleDraws, DependOnSeedAndSampleAlone) {
+  // The draws of (seed, sample) whatever the runs before: the same values
+  // called in any order, and every plan's sample k sees the same.
+  EXPECT_EQ(counterUniform(3, 17, streamOf("mu"), 0), counterUniform(3, 17, streamOf("MU"), 0));
+  EXPECT_NE(counterUniform(3, 17, streamOf("mu"), 0), counterUniform(3, 18, streamOf("mu"), 0));
+  EXPECT_NE(counterUniform(3, 17, streamOf("mu"), 0), counterUniform(4, 17, streamOf("mu"), 0));
+  EnsembleSpec spec;
+  spec.samples = 5;
+  spec.seed = 11;
+  spec.draws = {{"mu", {Law::Uniform, 0.4, 0.6}}, {"fMu", {Law::LogNormal, 1, 0.1}}};
+  spec.jitter = JitterSpec{};
+  const SampleDraws late = drawSample(spec, 4);
+  const SampleDraws first = drawSample(spec, 1);
+  EXPECT_EQ(drawSample(spec, 4).values, late.values);
+  EXPECT_EQ(drawSample(spec, 4).stepFactor, late.stepFactor);
+  EXPECT_NE(first.values, late.values);
+  // A draw does not depend on the other records: fMu alone draws the same.
+  EnsembleSpec alone = spec;
+  alone.draws.erase(alone.draws.begin());
+  EXPECT_EQ(drawSample(alone, 4).values[0], late.values[1]);
+  for (int k = 1; k <= 5; ++k) {
+    const SampleDraws d = drawSample(spec, k);
+    EXPECT_GE(d.values[0].second, 0.4);
+    EXPECT_LE(d.values[0].second, 0.6);
+    EXPECT_GE(d.stepFactor, 0.99);
+    EXPECT_LE(d.stepFactor, 1.01);
   }
 }
 

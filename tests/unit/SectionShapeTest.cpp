@@ -16,22 +16,15 @@
 #include <vector>
 
 #include "materials/RcSection.h"
+#include "tests/unit/RcTestSupport.h"
 
 namespace c2d {
 namespace {
 
+using test::c30b500;
+
 constexpr double kC2 = 0.002, kCu = 0.0035;
 const double kPi = std::acos(-1.0);
-
-RcSectionData materials() {
-  RcSectionData d;
-  d.fc = 30e3;
-  d.fy = 500e3;
-  d.Es = 200e6;
-  d.fu = 540e3;
-  d.eu = 0.05;
-  return d;
-}
 
 // The ultimate plane of a neutral axis depth x: the face at eps_cu2 or the
 // farthest bar at eu, whichever comes first; curvature kappa = e_face / x.
@@ -67,7 +60,7 @@ Hand solveDepth(double lo, double hi, double N, const std::function<double(doubl
 const double kA25 = kPi * 0.0125 * 0.0125, kA16 = kPi * 0.008 * 0.008;
 
 RcSectionData teeBeam() {
-  RcSectionData d = materials();
+  RcSectionData d = c30b500();
   d.shape = SectionShapeKind::Tee;
   d.b = 0.3;
   d.h = 0.6;
@@ -225,7 +218,7 @@ void expectRoundUltimate(const RcSectionData& d, const Round& c, double N) {
 
 TEST(RcShape, CircularColumnUltimateMomentsAgainstTheChordWidthsSummed) {
   // D 0.6 m, 12 bars of 20 mm at the cover 0.06 m.
-  RcSectionData d = materials();
+  RcSectionData d = c30b500();
   d.shape = SectionShapeKind::Circle;
   d.b = d.h = 0.6;
   d.bars = ring(0.6, 12, kPi * 1e-4, 0.06);
@@ -240,7 +233,7 @@ TEST(RcShape, CircularColumnUltimateMomentsAgainstTheChordWidthsSummed) {
 
 TEST(RcShape, AnnularChimneyUltimateMomentsAgainstTheChordWidthsSummed) {
   // A chimney's shaft: D 4 m, wall 0.25 m, 60 bars of 20 mm at cover 0.06 m.
-  RcSectionData d = materials();
+  RcSectionData d = c30b500();
   d.shape = SectionShapeKind::Annulus;
   d.b = d.h = 4.0;
   d.wall = 0.25;
@@ -250,7 +243,7 @@ TEST(RcShape, AnnularChimneyUltimateMomentsAgainstTheChordWidthsSummed) {
 }
 
 TEST(RcShape, UncrackedStiffnessesOfTheRoundShapesAgainstClosedForms) {
-  RcSectionData d = materials();
+  RcSectionData d = c30b500();
   d.shape = SectionShapeKind::Circle;
   d.b = d.h = 0.6;
   const int nb = 12;
@@ -298,7 +291,7 @@ TEST(RcShape, UncrackedStiffnessesOfTheRoundShapesAgainstClosedForms) {
 // The closed form of the disk's pieces equals the midpoint sums for planes
 // cutting it anywhere (either kink inside, outside, both), both signs.
 TEST(RcShape, DiskResultantsOfArbitraryPlanes) {
-  RcSectionData d = materials();
+  RcSectionData d = c30b500();
   d.shape = SectionShapeKind::Annulus;
   d.b = d.h = 1.0;
   d.wall = 0.2;
