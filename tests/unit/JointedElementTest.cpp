@@ -1,7 +1,8 @@
 // JointedElement (the paper's condensed revolute joint, eqs 55, 66-68):
 // tangents vs central finite differences of the condensed residual for every
 // scheme and inner element, rigid-body and mechanism modes, commit/revert of
-// the relative rotation, and local failures. The joint set-up is JointsTest's.
+// the relative rotation, local failures, and the hinge's safeguarded local
+// iteration on a kinked residual. The joint set-up is JointsTest's.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -394,6 +395,80 @@ TEST(JointedElement, LocalFailuresAreReturnedAsStatus) {
   JointedElement fine(std::make_unique<ScalarLawElement>(0.0, true), 0, 3);
   ASSERT_TRUE(fine.evaluate({d, zero, zero, zero}, StepRule{}, true, r, k).ok);
   EXPECT_NEAR(fine.relativeRotation(), -1.0, 1e-15);
+}
+
+// Inner element of the hinge's kinked residual: r_2 = 1 + f(d_2), f odd,
+// stiff in a core |x| <= e (a joint that sticks) and ever softer beyond it
+// (one that slips), f(x) = sign(x) |x|^p with p = 1/1.9: there Newton's step
+// from x lands at -0.9 x, on the other side of the root and hardly nearer.
+class KinkedLawElement final : public Element {
+ public:
+  static constexpr double kCore = 1e-6, kPower = 1 / 1.9;
+  std::array<int, 2> nodes() const override { return nodes_; }
+  void setNodes(const std::array<int, 2>& n) override { nodes_ = n; }
+  int materialNumber() const override { return 1; }
+  std::string typeName() const override { return "kinked-law"; }
+  Status evaluate(const ElementKinematics& kin, const StepRule&, bool, ElemVec& r,
+                  ElemMat& k) override {
+    double slope = 0;
+    r = ElemVec::Zero();
+    k = ElemMat::Zero();
+    r(2) = 1 + law(kin.d(2), slope);
+    k(2, 2) = slope;
+    return Status::success();
+  }
+  static double law(double x, double& slope) {
+    const double a = std::abs(x), coreSlope = std::pow(kCore, kPower - 1);
+    if (a <= kCore) return slope = coreSlope, coreSlope * x;
+    slope = kPower * std::pow(a, kPower - 1);
+    return std::copysign(std::pow(a, kPower), x);
+  }
+  ElemMat mass() const override { return ElemMat::Zero(); }
+  ElemVec bodyLoad(const Vec2&) const override { return ElemVec::Zero(); }
+  void commit() override {}
+  void revert() override {}
+  double strainEnergy() const override { return 0; }
+  SectionForces sectionForces() const override { return {}; }
+
+ private:
+  std::array<int, 2> nodes_{0, 1};
+};
+
+// A hinge of Mu = 1 (softening over 1e6 rad: nearly constant) wrapping the
+// kinked law, the master turned 1 rad: the stick moment 2 exceeds Mu and the
+// hinge slips back to the root of G = 1 + f(1 + psi) - C(-psi) near psi = -1.
+// Plain Newton bounces about the root and is still 0.9^60 of the way off after
+// the iteration limit; the safeguarded iteration bisects the bracket instead.
+TEST(JointedElement, HingeIterationBisectsWhereNewtonBouncesOnAKink) {
+  double slope = 0;
+  const double xiF = 1e6;
+  auto G = [&](double psi, double& dG) {
+    const double g = KinkedLawElement::law(1 + psi, slope) - psi / xiF;  // C = 1 + psi / xiF
+    dG = slope - 1 / xiF;
+    return g;
+  };
+  double psi = 0, dG = 0;
+  int newton = 0;
+  for (double g = G(psi, dG); newton < 60 && std::abs(g / dG) > 1e-9; g = G(psi, dG), ++newton)
+    psi -= g / dG;
+  EXPECT_EQ(newton, 60) << "plain Newton converged at psi = " << psi;
+  EXPECT_GT(std::abs(1 + psi), 1e-4);  // still outside the core
+
+  int count = 0;
+  JointedElement hinge(std::make_unique<Counted>(std::make_unique<KinkedLawElement>(), count), 0,
+                       3);
+  hinge.setHinge(EndHinge(nullptr, -1, 1.0, xiF));
+  const ElemVec zero = ElemVec::Zero();
+  ElemVec d = zero, r;
+  d(2) = 1.0;
+  ElemMat k;
+  const Status st = hinge.evaluate({d, zero, zero, zero}, StepRule{}, true, r, k);
+  ASSERT_TRUE(st.ok) << st.why;
+  EXPECT_LT(count, 30);  // the stick trial and fewer than 30 local iterations
+  const double root = hinge.relativeRotation();
+  EXPECT_LT(std::abs(1 + root), KinkedLawElement::kCore);
+  EXPECT_NEAR(G(root, dG), 0.0, 1e-12);
+  EXPECT_NEAR(hinge.hingeSlip(), -root, 1e-15);
 }
 
 }  // namespace
