@@ -1,7 +1,7 @@
 // Restart files (SAVE / REST): a run restarted from a save repeats the
 // uninterrupted run bit for bit, across hinge formation, HINGE2JOINT, MESH
-// re-entry and into the dynamic phase; bad files are clear errors; a killed
-// run leaves only .part files.
+// re-entry and into the dynamic phase; a killed run leaves only .part files.
+// Bad files: RestartFileTest.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,6 +23,7 @@
 #include "elements/ModelCheckpoint.h"
 #include "solvers/RestartFile.h"
 #include "tests/unit/OutputTestSupport.h"
+#include "tests/unit/RestartTestSupport.h"
 #include "tests/unit/RunDeckSupport.h"
 
 namespace c2d {
@@ -31,82 +32,17 @@ namespace {
 using testing::DeckResult;
 using testing::DeckTempDir;
 using testing::expectRan;
+using testing::kLoads;
+using testing::kPortal;
+using testing::kStart;
+using testing::kTplot;
 using testing::lines;
+using testing::newtonLoop;
 using testing::readText;
 using testing::runDeckText;
 
-// A fixed-base portal (columns 3 m, beam 4 m, two elements per member) with the
-// six-story frame's sections: vertical loads P at the top corners (table 1),
-// then a horizontal displacement of the top left node (table 2) until four
-// hinges have formed (beam ends at t = 1.6255, column bases at t = 1.6638).
-const char* kPortal = R"(PARAmeter
-  h = 3
-  b = 4
-  ne = 2
-  P = 50
-
-FEAP * * portal: failure, HINGE2JOINT, collapse
-  0 0 0 2 3 2
-
-COORdinates
-  1 1 0 0
-  ne+1 1 0 h
-  2*ne+1 1 b h
-  3*ne+1 0 b 0
-
-ELEMents
-  1 1 1 1 2
-  ne+1 1 2 ne+1 ne+2
-  2*ne+1 1 1 2*ne+1 2*ne+2
-  3*ne 0 1 3*ne 3*ne+1
-
-MATErial,1 columns
-  FRAMe
-    RESUltant STIFfness 3.6e6 1.2e6 48000
-    CROSs section 0.12 1.6e-3
-    DENSity,,2.5
-    HARDening BILInear 100 245 12450 195
-    SOFTening LINEar 265 -723
-
-MATErial,2 beam
-  FRAMe
-    RESUltant STIFfness 3.6e6 1.2e6 48000
-    CROSs section 0.12 1.6e-3
-    DENSity,,2.5
-    HARDening BILInear 30 150 11190 137
-    SOFTening LINEar 170 -393
-
-BOUNdary
-  1 0 1 1 1
-  3*ne+1 0 1 1 1
-  ne+1 0 1 0 0
-
-FORCe
-  ne+1 0 0 -P 0
-  2*ne+1 0 0 -P 0
-
-FPROportional
-  ne+1 0 2 0 0
-
-DISPlacement
-  ne+1 0 1 0 0
-
-END
-BATCh
-)";
-
-const char* kLoads = "2\n  0 0 1 1 1e6 1\n\n2\n  0 0 1 0 2 0.6 10 1.6\n\n";
-const char* kTplot = "disp,ne+1,1\ndisp,ne+1,2\nreac,ne+1,1\nstre,1,3\nstre,3,3\nener\n\n";
 const char* kCollapseMesh = "CONTact\n  GROUnd,,0,1e5\n\nGRAVity,,0,-9.81\n\nEND\n";
 
-std::string newtonLoop(const std::string& time, int n) {
-  return "  LOOP,," + std::to_string(n) + "\n    " + time +
-         "\n    LOOP,,30\n      TANG,,1\n    NEXT\n  NEXT\n";
-}
-
-// The failure phase, split at t = 1.64 (between the beam hinges and the column hinges).
-const std::string kStart = "  PROP,,1\n  PROP,,2\n  AUTO,CUT,1e-6\n  TPLOt\n  DT,,0.25\n" +
-                           newtonLoop("TIME", 4) + "  DT,,0.02\n" + newtonLoop("TIME,,1.64", 1000);
 const std::string kFailureEnd = newtonLoop("TIME,,2", 1000) + "  STRE,HINGe\n";
 // HINGE2JOINT, ground and gravity by MESH re-entry, ten steps of the mid-point scheme.
 const std::string kCollapseStart =
@@ -472,90 +408,6 @@ TEST(Restart, TimeRestEndsWhereTheUninterruptedRunEnds) {
   const std::string debris = readText(whole.out / "whole_debris.csv");
   EXPECT_NE(debris.find("peak_time,deepest,deepest_time"), std::string::npos) << debris;
   EXPECT_EQ(debris, readText(second.out / "second_debris.csv"));
-}
-
-TEST(Restart, BadFilesAreClearErrors) {
-  DeckTempDir dir;
-  const std::string data = std::string(kLoads) + kTplot;
-  expectRan(runDeckText(dir, "first.inp", kPortal + kStart + "  SAVE,mid\nEND\n" + data));
-  const std::filesystem::path out = dir.path() / "out";
-  const std::string good = readText(out / "mid.rst");
-  ASSERT_GT(good.size(), 100u);
-  auto expectError = [&](const std::string& bytes, const std::string& what) {
-    std::ofstream(out / "bad.rst", std::ios::binary) << bytes;
-    Model model;
-    Analysis analysis(model);
-    try {
-      loadRestart(out / "bad.rst", model, analysis);
-      ADD_FAILURE() << "no error for " << what;
-    } catch (const CheckpointError& e) {
-      const std::string msg = e.what();
-      EXPECT_NE(msg.find("bad.rst"), std::string::npos) << msg;
-      EXPECT_NE(msg.find(what), std::string::npos) << msg;
-    }
-  };
-  expectError(good.substr(0, good.size() / 2), "truncated");
-  expectError(good.substr(0, 12), "truncated");
-  expectError("FEAP * * not a restart file\n", "not a collapse2d restart file");
-  expectError(good + "x", "trailing data");
-  std::string flipped = good;
-  flipped[flipped.size() / 2] ^= 0x10;
-  expectError(flipped, "corrupted");
-  std::string version = good;
-  version[8] = 99;
-  expectError(version, "format version 99");
-
-  // In a deck: the error names the command and the file; a missing file too.
-  std::ofstream(out / "cut.rst", std::ios::binary) << good.substr(0, good.size() - 9);
-  const DeckResult r = runDeckText(dir, "rest.inp", kPortal + std::string("  REST,cut\n  REST,none\nEND\n"));
-  EXPECT_EQ(r.outcome.exitCode, 2) << r.console;
-  EXPECT_NE((r.console + r.outcome.message).find("REST: restart file"), std::string::npos) << r.console << r.outcome.message;
-  EXPECT_NE((r.console + r.outcome.message).find("cut.rst': truncated"), std::string::npos) << r.console << r.outcome.message;
-}
-
-// A crafted file whose checksum is right: a count larger than the bytes left
-// is refused before anything is allocated for it; a file that is not a
-// regular one (a link to /dev/zero, a FIFO) or is larger than the model can
-// explain is refused before it is read.
-TEST(Restart, CraftedCountsAndFilesAreRefusedBeforeAnythingIsAllocated) {
-  DeckTempDir dir;
-  const std::string data = std::string(kLoads) + kTplot;
-  expectRan(runDeckText(dir, "first.inp", kPortal + kStart + "  SAVE,mid\nEND\n" + data));
-  const std::filesystem::path out = dir.path() / "out";
-  const std::string good = readText(out / "mid.rst");
-  auto expectError = [&](const std::filesystem::path& file, const std::string& what) {
-    Model model;
-    Analysis analysis(model);
-    try {
-      loadRestart(file, model, analysis);
-      ADD_FAILURE() << "no error for " << what;
-    } catch (const CheckpointError& e) {
-      const std::string msg = e.what();
-      EXPECT_NE(msg.find(file.filename().string()), std::string::npos) << msg;
-      EXPECT_NE(msg.find(what), std::string::npos) << msg;
-    }
-  };
-  // The node count (after the MODL tag) made 2^31 - 1, the checksum made right.
-  std::string crafted = good;
-  const std::size_t modl = crafted.find("MODL", 24);
-  ASSERT_NE(modl, std::string::npos);
-  const std::uint64_t nodes = 0x7fffffff;
-  std::memcpy(crafted.data() + modl + 4, &nodes, 8);
-  std::uint64_t h = 14695981039346656037ull;
-  for (std::size_t i = 24; i + 8 < crafted.size(); ++i)
-    h = (h ^ static_cast<unsigned char>(crafted[i])) * 1099511628211ull;
-  std::memcpy(crafted.data() + crafted.size() - 8, &h, 8);
-  std::ofstream(out / "crafted.rst", std::ios::binary) << crafted;
-  expectError(out / "crafted.rst", "a count of 2147483647 items where");
-
-  std::filesystem::create_symlink("/dev/zero", out / "zero.rst");
-  expectError(out / "zero.rst", "not a regular file");
-  ASSERT_EQ(::mkfifo((out / "fifo.rst").c_str(), 0600), 0);
-  expectError(out / "fifo.rst", "not a regular file");
-  // An empty model explains 64 MiB at most: a sparse file of 65 MiB is refused.
-  std::ofstream(out / "huge.rst", std::ios::binary) << good;
-  std::filesystem::resize_file(out / "huge.rst", std::uintmax_t{65} << 20);
-  expectError(out / "huge.rst", "bytes, more than the 67108864");
 }
 
 // The collapse2d binary beside the test binary's directory, if built.
