@@ -1,7 +1,7 @@
 #pragma once
 // The element contract. Narrow on purpose: nodes, residual + tangent for a trial
 // state, mass, body load, commit/revert, report. Extra abilities are separate
-// small interfaces (core/Hinge.h for softening hinges, core/output/Checkpoint.h for
+// small interfaces (core/Hinge.h for softening hinges, core/io/Checkpoint.h for
 // restart files); a joint is a decorator (elements/JointedElement.h).
 //
 // Trial state is a pure function of the committed state plus the trial kinematics:

@@ -12,7 +12,7 @@
 // is the largest.
 #include <istream>
 
-#include "core/output/Checkpoint.h"
+#include "core/io/Checkpoint.h"
 #include "core/Types.h"
 
 namespace c2d {

@@ -48,7 +48,7 @@
 #include <memory>
 #include <optional>
 
-#include "core/output/Checkpoint.h"
+#include "core/io/Checkpoint.h"
 #include "core/Element.h"
 #include "core/Hinge.h"
 #include "core/MaterialChange.h"

@@ -21,7 +21,7 @@
 
 #include "core/Brace.h"
 #include "core/Element.h"
-#include "core/output/Checkpoint.h"
+#include "core/io/Checkpoint.h"
 #include "materials/StrutLaw.h"
 
 namespace c2d {

@@ -64,7 +64,7 @@
 #include <string>
 #include <typeinfo>
 
-#include "core/output/Checkpoint.h"
+#include "core/io/Checkpoint.h"
 #include "core/Element.h"
 #include "core/Hinge.h"
 #include "core/MaterialChange.h"

@@ -21,7 +21,7 @@
 #include <array>
 #include <string>
 
-#include "core/output/Checkpoint.h"
+#include "core/io/Checkpoint.h"
 #include "core/Element.h"
 #include "core/MaterialChange.h"
 #include "core/MaterialSet.h"

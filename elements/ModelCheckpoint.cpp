@@ -5,7 +5,7 @@
 #include <limits>
 #include <string>
 
-#include "core/output/Checkpoint.h"
+#include "core/io/Checkpoint.h"
 #include "elements/InelasticFrame.h"
 #include "elements/InfillStrut.h"
 #include "elements/JointedElement.h"

@@ -1,5 +1,5 @@
 #pragma once
-// The model in a restart file (core/output/Checkpoint.h): nodes with their restraint
+// The model in a restart file (core/io/Checkpoint.h): nodes with their restraint
 // codes, loads, prescribed values and load tables, material sets, elements
 // (type, construction data and complete state), joints, ground and gravity:
 // the model as it is now, after any HINGE2JOINT or MESH re-entry.

@@ -9,19 +9,22 @@
 #include <set>
 #include <sstream>
 
-#include "core/output/AtomicFile.h"
+#include "core/io/AtomicFile.h"
 #include "macro/CheckPass.h"
 #include "macro/ExecutePass.h"
+#include "macro/run/ProblemRun.h"
 #include "macro/deck/DeckParser.h"
+#include "macro/mesh/ParseDeck.h"
 #include "macro/run/Interrupt.h"
 #include "macro/deck/Suggest.h"
 #include "macro/studies/RunTiming.h"
 #include "macro/run/StaleOutputs.h"
-#include "macro/studies/Sweep.h"
-#include "macro/studies/Shard.h"
+#include "macro/draws/Sweep.h"
+#include "macro/batch/Shard.h"
 #include "macro/studies/StudySize.h"
 #include "macro/studies/EnsembleStudy.h"
 #include "macro/studies/EnsembleTable.h"
+#include "macro/output/NumberText.h"
 
 namespace c2d {
 
@@ -473,6 +476,17 @@ DeckOutcome runDeck(const std::string& path, const DeckOptions& options,
     failDeck(outcome, std::current_exception(), path, log, warnings, printWarnings);
   }
   return outcome;
+}
+
+DeckCalls deckCalls(const SolutionCommands& commands) {
+  DeckCalls calls;
+  calls.run = [&commands](const std::string& deck, const DeckOptions& options, std::ostream& out) {
+    return runDeck(deck, options, commands, out);
+  };
+  calls.plan = [&commands](const std::string& deck, const std::map<std::string, double>& params) {
+    return planDeck(deck, commands, params);
+  };
+  return calls;
 }
 
 }  // namespace c2d

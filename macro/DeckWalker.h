@@ -12,10 +12,11 @@
 
 #include "macro/DeckRunner.h"
 #include "macro/deck/Deck.h"
-#include "macro/studies/Ensemble.h"
+#include "macro/draws/Ensemble.h"
 #include "macro/studies/EnsembleTable.h"
 #include "macro/studies/StudySize.h"
-#include "macro/studies/Sweep.h"
+#include "macro/draws/Sweep.h"
+#include "macro/run/ProblemRun.h"
 
 namespace c2d {
 

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "macro/run/Interrupt.h"
+#include "macro/output/NumberText.h"
 
 namespace c2d {
 

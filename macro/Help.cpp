@@ -3,11 +3,10 @@
 #include <array>
 #include <string>
 
-#include "macro/commands/MeshCommands.h"
+#include "macro/mesh/MeshCommands.h"
 #include "macro/deck/Record.h"
-#include "macro/studies/Sweep.h"
-#include "macro/studies/Ensemble.h"
-#include "macro/commands/Units.h"
+#include "macro/deck/StudyBlocks.h"
+#include "macro/mesh/Units.h"
 
 namespace c2d {
 

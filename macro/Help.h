@@ -3,7 +3,7 @@
 #include <ostream>
 #include <string>
 
-#include "macro/commands/SolutionCommand.h"
+#include "macro/deck/SolutionCommand.h"
 
 namespace c2d {
 

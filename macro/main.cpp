@@ -12,16 +12,16 @@
 #include <string>
 #include <vector>
 
-#include "macro/studies/BatchRunner.h"
+#include "macro/batch/BatchRunner.h"
 #include "macro/DeckRunner.h"
 #include "macro/Help.h"
 #include "macro/deck/Parameters.h"
-#include "macro/studies/Shard.h"
+#include "macro/batch/Shard.h"
 #include "macro/studies/Csv.h"
-#include "macro/studies/Merge.h"
-#include "macro/studies/ParallelRuns.h"
+#include "macro/batch/Merge.h"
+#include "macro/batch/ParallelRuns.h"
 #include "macro/run/Interrupt.h"
-#include "macro/studies/Shard.h"
+#include "macro/batch/Shard.h"
 #include "macro/deck/Suggest.h"
 #include "solvers/linear/LinearSolver.h"
 
@@ -186,11 +186,12 @@ int batchMain(int argc, char** argv, const c2d::SolutionCommands& commands) {
   decks = c2d::shardDecks(decks, shard, options.deck);
   options.progress = !options.deck.quiet && isatty(STDERR_FILENO);
   c2d::installInterruptHandlers();
+  const c2d::DeckCalls calls = c2d::deckCalls(commands);
   // One deck whose runs are a study: its runs split over the -j processes.
   if (decks.size() == 1 && !shard.active() && options.jobs > 1)
-    if (const int st = c2d::runDeckInParallel(decks[0], options, commands, std::cout, std::cerr); st >= 0)
+    if (const int st = c2d::runDeckInParallel(decks[0], options, calls, std::cout, std::cerr); st >= 0)
       return st;
-  const auto results = c2d::runBatch(decks, options, commands, std::cout);
+  const auto results = c2d::runBatch(decks, options, calls, std::cout);
   if (!options.deck.quiet) c2d::printBatchTable(std::cout, results);
   std::cout.flush();
   if (!std::cout) {

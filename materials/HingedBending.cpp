@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/output/Checkpoint.h"
+#include "core/io/Checkpoint.h"
 
 namespace c2d {
 

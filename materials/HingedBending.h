@@ -84,7 +84,7 @@ struct HingedBendingResponse {
   double dN = 0;       // dM/dN at fixed kappaD (moment-axial interaction)
 };
 
-// Restart files (core/output/Checkpoint.h): every field of the state.
+// Restart files (core/io/Checkpoint.h): every field of the state.
 void putSection(std::ostream& out, const HingedBendingState& s);
 HingedBendingState getSection(std::istream& in);
 

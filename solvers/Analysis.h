@@ -145,7 +145,7 @@ class Analysis {
   // Topology change (MESH re-entry, HINGE2JOINT): carry the state to the new node count.
   void topologyChanged();
 
-  // Restart files (core/output/Checkpoint.h): the state, the integrator and its
+  // Restart files (core/io/Checkpoint.h): the state, the integrator and its
   // parameters, the tolerance, the load tables, the path following state, the
   // energy bookkeeping and the linear solver's name: what a continuation needs
   // to repeat the uninterrupted run bit for bit. readState() expects the model

@@ -2,7 +2,7 @@
 // continue bit for bit, written and read in one order.
 #include <string>
 
-#include "core/output/Checkpoint.h"
+#include "core/io/Checkpoint.h"
 #include "solvers/Analysis.h"
 
 namespace c2d {

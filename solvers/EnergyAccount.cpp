@@ -1,6 +1,6 @@
 #include "solvers/EnergyAccount.h"
 
-#include "core/output/Checkpoint.h"
+#include "core/io/Checkpoint.h"
 
 namespace c2d {
 

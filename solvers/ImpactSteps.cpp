@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/output/Checkpoint.h"
+#include "core/io/Checkpoint.h"
 #include "core/contact/CrushingLaw.h"
 
 namespace c2d {

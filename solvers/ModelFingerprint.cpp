@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-#include "core/output/Checkpoint.h"
+#include "core/io/Checkpoint.h"
 #include "elements/ElementFactory.h"
 
 namespace c2d {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/output/Checkpoint.h"
+#include "core/io/Checkpoint.h"
 
 namespace c2d {
 

@@ -42,7 +42,7 @@ class PathFollowing {
                     const Eigen::VectorXd& duF, double& dlambda);
   void endStep(const Eigen::VectorXd& stepIncrement, double stepDlambda);  // at commit
 
-  // Restart files (core/output/Checkpoint.h): the complete state as raw values.
+  // Restart files (core/io/Checkpoint.h): the complete state as raw values.
   void write(std::ostream& out) const;
   static PathFollowing read(std::istream& in);  // throws CheckpointError
 

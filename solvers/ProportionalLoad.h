@@ -20,7 +20,7 @@ class ProportionalLoad {
 
   double operator()(double t) const;
 
-  // Restart files (core/output/Checkpoint.h): the table as raw values.
+  // Restart files (core/io/Checkpoint.h): the table as raw values.
   void write(std::ostream& out) const;
   static ProportionalLoad read(std::istream& in);  // throws CheckpointError
 

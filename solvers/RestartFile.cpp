@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "core/InputFile.h"
-#include "core/output/AtomicFile.h"
-#include "core/output/Checkpoint.h"
+#include "core/io/AtomicFile.h"
+#include "core/io/Checkpoint.h"
 #include "elements/ModelCheckpoint.h"
 
 namespace c2d {

@@ -13,7 +13,7 @@
 //   checksum    uint64   FNV-1a of the payload
 // Reading checks all of them before it changes anything: a truncated,
 // corrupted or foreign file is an error naming the file, never garbage.
-// Written with core/output/AtomicFile (a temporary, renamed when complete).
+// Written with core/io/AtomicFile (a temporary, renamed when complete).
 // Read only when it is a regular file no larger than the model can explain
 // (core/InputFile.h), every count checked against the bytes left.
 #include <filesystem>

@@ -81,7 +81,7 @@ struct TopLoop {
 
 
 // One value of a sweep (an expression), or a range lo:step:hi: lo, lo + step,
-// ... up to hi (macro/studies/Sweep.h sweepValues).
+// ... up to hi (macro/draws/Sweep.h sweepValues).
 struct SweepItem {
   Expression value;  // the value, or a range's lo
   std::optional<Expression> step, last;
@@ -113,7 +113,7 @@ struct TopSweep {
 };
 
 // [ext] One drawn parameter of an ENSEmble: name = NORMal mean sd | LOGNormal
-// median cov | UNIForm lo hi (macro/studies/Distribution.h).
+// median cov | UNIForm lo hi (macro/draws/Distribution.h).
 struct DrawRecord {
   std::string name;  // as written
   std::string law;   // "norm", "logn" or "unif"
@@ -123,7 +123,7 @@ struct DrawRecord {
 
 // [ext] ENSEmble,,n,seed: every plan (every value set of a SWEEp, or the lone
 // problem) runs n times, sample k with the draws of (seed, k)
-// (macro/studies/Ensemble.h). Records: drawn parameters, JITTer,,dx,fdt and
+// (macro/draws/Ensemble.h). Records: drawn parameters, JITTer,,dx,fdt and
 // DETOnators (,,sd,cov | ,PYROtechnic | ,ELECtronic), ended by a blank record.
 struct TopEnsemble {
   Record head;

@@ -5,10 +5,8 @@
 
 #include "macro/deck/DeckReader.h"
 #include "macro/deck/Limits.h"
-#include "macro/commands/MeshCommands.h"
 #include "macro/deck/Parameters.h"
-#include "macro/studies/Sweep.h"
-#include "macro/studies/Ensemble.h"
+#include "macro/deck/StudyBlocks.h"
 
 namespace c2d {
 
@@ -637,32 +635,6 @@ BatchBlock DeckParser::parseBatch() {
   }
   while (!atEnd() && !endsBatchData()) b.data.push_back(next());
   return b;
-}
-
-namespace {
-
-Deck parseRecords(std::vector<Record> records, const std::string& path) {
-  CommandRegistry mesh("Mesh commands");
-  registerMeshCommands(mesh);
-  CommandRegistry sub("Material records");
-  registerMaterialSubRecords(sub);
-  return DeckParser(std::move(records), path, mesh, sub).parse();
-}
-
-}  // namespace
-
-Deck parseDeck(const std::string& path) { return parseRecords(DeckReader::readFile(path), path); }
-
-std::vector<MeshItem> parseMeshRecords(std::vector<Record> records, const std::string& path) {
-  CommandRegistry mesh("Mesh commands");
-  registerMeshCommands(mesh);
-  CommandRegistry sub("Material records");
-  registerMaterialSubRecords(sub);
-  return DeckParser(std::move(records), path, mesh, sub).parseMeshInput();
-}
-
-Deck parseDeckText(const std::string& text, const std::string& name, const std::string& baseDir) {
-  return parseRecords(DeckReader::readString(text, name, baseDir), name);
 }
 
 }  // namespace c2d

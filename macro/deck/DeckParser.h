@@ -18,7 +18,8 @@ namespace c2d {
 class DeckParser {
  public:
   // meshCommands: the mesh command registry; subRecords: material sub-records
-  // and element types (both from macro/commands/MeshCommands.h).
+  // and element types (both from macro/mesh/MeshCommands.h; parseDeck in
+  // macro/mesh/ParseDeck.h builds them).
   DeckParser(std::vector<Record> records, std::string path, const CommandRegistry& meshCommands,
              const CommandRegistry& subRecords);
 
@@ -71,13 +72,5 @@ class DeckParser {
 // ELEMents/NUMEl 1, MATErial/NUMMat 2, DIMEnsion/NDM 3, DOFS/NDF 4, ELNOdes/NEN
 // 5, ADD/NAD 6, PROPortional/NPD 7, UPROportional/NUD 8), -1 for another word.
 int controlKeywordIndex(std::string_view word);
-
-// Reads (INCLude expanded) and parses a deck file. Throws DeckError.
-Deck parseDeck(const std::string& path);
-// Mesh command records alone (MESH re-entry), END optional. Throws DeckError.
-std::vector<MeshItem> parseMeshRecords(std::vector<Record> records, const std::string& path);
-// The same for deck text in memory (tests, generated decks).
-Deck parseDeckText(const std::string& text, const std::string& name = "<deck>",
-                   const std::string& baseDir = ".");
 
 }  // namespace c2d

@@ -1,21 +1,18 @@
 // ProblemRun's debris report: where the debris of a run with ground contact
-// ends up (core/Debris.h), as log lines, <stem>_debris.csv and the picture of
+// ends up (macro/output/Debris.h), as log lines, <stem>_debris.csv and the picture of
 // PLOT,DEBRis.
 #include <cstdio>
 
-#include "core/output/AtomicFile.h"
-#include "core/output/SvgDebris.h"
+#include "core/io/AtomicFile.h"
+#include "macro/output/SvgDebris.h"
 #include "macro/run/ProblemRun.h"
+#include "macro/output/NumberText.h"
 
 namespace c2d {
 
 namespace {
 
-std::string shortTime(double t) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", t);
-  return buf;
-}
+std::string shortTime(double t) { return formatNumber("%.4g", t); }
 
 }  // namespace
 

@@ -5,10 +5,11 @@
 #include <map>
 #include <set>
 
-#include "macro/commands/MeshCommands.h"
+#include "macro/mesh/MeshCommands.h"
 #include "macro/deck/DeckParser.h"
+#include "macro/mesh/ParseDeck.h"
 #include "macro/deck/DeckReader.h"
-#include "macro/deck/MeshBinder.h"
+#include "macro/mesh/MeshBinder.h"
 
 namespace c2d {
 

@@ -7,7 +7,7 @@
 #include "core/Model.h"
 #include "macro/deck/Deck.h"
 #include "macro/deck/Macro.h"
-#include "macro/deck/MeshBinder.h"
+#include "macro/mesh/MeshBinder.h"
 
 namespace c2d {
 

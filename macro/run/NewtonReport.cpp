@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "macro/run/EnergyWatch.h"
-#include "macro/run/LogNumber.h"
+#include "macro/output/NumberText.h"
 #include "solvers/Analysis.h"
 
 namespace c2d {
@@ -20,7 +20,7 @@ std::string newtonHistoryText(const Analysis& analysis) {
   int node = -1, dof = -1;
   const double r = analysis.largestResidual(node, dof);
   if (node >= 0)
-    os << "    largest residual " << logNumber("%.5e", r) << " at node " << node + 1 << ", dof "
+    os << "    largest residual " << formatNumber("%.5e", r) << " at node " << node + 1 << ", dof "
        << dof + 1 << "\n";
   return os.str();
 }

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "macro/deck/Limits.h"
-#include "macro/run/LogNumber.h"
+#include "macro/output/NumberText.h"
 #include "solvers/Analysis.h"
 
 namespace c2d {
@@ -22,11 +22,11 @@ std::string prescribedBeyondReach(const Model& model, Analysis& analysis) {
       const int table = std::max(1, model.loadTable(n)[d]);
       return "the prescribed " + std::string(d < 2 ? "displacement" : "rotation") + " of node " +
              std::to_string(n + 1) + ", dof " + std::to_string(d + 1) + " reaches " +
-             logNumber("%.6e", u) + " (DISPlacement " + logNumber("%.6e", given) +
-             " times the factor " + logNumber("%.6e", analysis.tableFactor(table, s.t)) +
+             formatNumber("%.6e", u) + " (DISPlacement " + formatNumber("%.6e", given) +
+             " times the factor " + formatNumber("%.6e", analysis.tableFactor(table, s.t)) +
              " of proportional load table " + std::to_string(table) +
              "): beyond the largest this program takes (" +
-             logNumber("%g", DeckLimits::kMaxCoordinate) + ", the limit of the coordinates)";
+             formatNumber("%g", DeckLimits::kMaxCoordinate) + ", the limit of the coordinates)";
     }
   }
   return {};

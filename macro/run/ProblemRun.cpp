@@ -5,11 +5,11 @@
 #include <cstdio>
 
 #include "elements/Joints.h"
-#include "macro/commands/BlastOfRemoved.h"
-#include "macro/commands/MasslessLoads.h"
-#include "macro/commands/OutputCommands.h"
+#include "macro/mesh/BlastOfRemoved.h"
+#include "macro/mesh/MasslessLoads.h"
+#include "macro/run/PlotColumns.h"
 #include "macro/deck/DeckParser.h"
-#include "macro/deck/MeshBinder.h"
+#include "macro/mesh/MeshBinder.h"
 #include "macro/run/Interrupt.h"
 #include "macro/run/MeshReentry.h"
 #include "macro/run/StaleOutputs.h"

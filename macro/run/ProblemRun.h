@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/Debris.h"
+#include "macro/output/Debris.h"
 #include "core/Model.h"
 #include "macro/deck/Deck.h"
 #include "macro/run/ProgressLine.h"
@@ -21,12 +21,12 @@
 #include "macro/run/RunWatches.h"
 #include "macro/run/RunSummary.h"
 #include "macro/run/StepControl.h"
-#include "macro/run/LogNumber.h"
-#include "macro/commands/SolutionCommand.h"
+#include "macro/output/NumberText.h"
+#include "macro/deck/SolutionCommand.h"
 #include "macro/run/TimeHistory.h"
 #include "elements/HingeToJoint.h"
 #include "macro/deck/Warnings.h"
-#include "macro/studies/Ensemble.h"
+#include "macro/draws/Ensemble.h"
 #include "solvers/Analysis.h"
 #include "solvers/DenseOutput.h"
 #include "solvers/ModelFingerprint.h"
@@ -109,7 +109,7 @@ class ProblemRun {
 
  private:
   // A number in the log: printf's format f (one conversion).
-  static std::string fmt(const char* f, double v) { return logNumber(f, v); }
+  static std::string fmt(const char* f, double v) { return formatNumber(f, v); }
   // pass (0-based) of passes: a loop's body (runLoop), else a BATCh block.
   Flow execList(const std::vector<Macro>& list, bool topLevel = false, int pass = -1,
                 int passes = 1);

@@ -1,4 +1,5 @@
 #include "macro/run/RemovalLog.h"
+#include "macro/output/NumberText.h"
 
 #include <cstdio>
 #include <vector>
@@ -21,12 +22,6 @@ std::string numberList(const std::vector<int>& numbers) {
   return out;
 }
 
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
 // "element 3" / "elements 3-5"
 std::string elements(const std::vector<int>& list) {
   return std::string(list.size() == 1 ? "element " : "elements ") + numberList(list);
@@ -36,7 +31,7 @@ std::string elements(const std::vector<int>& list) {
 
 RemovalLog removalLog(const RemovalEvent& ev) {
   RemovalLog out;
-  const std::string when = " at t = " + fmt("%.6e", ev.time);
+  const std::string when = " at t = " + formatNumber("%.6e", ev.time);
   // The record that gave the blast, when known: "(BLASt record f.inp:12:3)".
   const std::string record =
       ev.origin.file.empty() ? std::string() : " (BLASt record " + ev.origin.str() + ")";
@@ -50,7 +45,8 @@ RemovalLog removalLog(const RemovalEvent& ev) {
   std::string& s = out.text;
   s = "  " + std::string(ev.scheduled ? "blast " : "remove") + when + ": " + elements(ev.elements) +
       " removed, ";
-  s += ev.release > 0 ? "forces released over td = " + fmt("%.4e", ev.release) : "at once";
+  s += ev.release > 0 ? "forces released over td = " + formatNumber("%.4e", ev.release)
+                      : "at once";
   if (!ev.nodesLeaving.empty())
     s += std::string("; node") + (ev.nodesLeaving.size() == 1 ? " " : "s ") +
          numberList(ev.nodesLeaving) + " leave" + (ev.nodesLeaving.size() == 1 ? "s" : "") +
@@ -59,7 +55,7 @@ RemovalLog removalLog(const RemovalEvent& ev) {
     s += "; " + std::to_string(ev.jointsDissolved) + " joint" +
          (ev.jointsDissolved == 1 ? "" : "s") + " dissolved";
   if (!ev.goneBefore.empty()) s += "; " + elements(ev.goneBefore) + " removed before" + record;
-  s += "; energy removed " + fmt("%.6e", ev.energy) + "\n";
+  s += "; energy removed " + formatNumber("%.6e", ev.energy) + "\n";
   return out;
 }
 

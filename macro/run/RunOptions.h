@@ -10,7 +10,7 @@
 
 namespace c2d {
 
-struct SampleDraws;  // macro/studies/Ensemble.h
+struct SampleDraws;  // macro/draws/Ensemble.h
 
 struct RunOptions {
   std::filesystem::path outDir = ".";
@@ -22,7 +22,7 @@ struct RunOptions {
   // Called at every safe point of the run (between two solution commands), e.g.
   // to check that the log is still being written.
   std::function<void()> safePoint;
-  // A sample of an ENSEmble (macro/studies/Ensemble.h): its nodes jittered
+  // A sample of an ENSEmble (macro/draws/Ensemble.h): its nodes jittered
   // before the elements are built, its time steps scaled, its blast times
   // scattered. Null outside an ensemble.
   const SampleDraws* sample = nullptr;

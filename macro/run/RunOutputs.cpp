@@ -4,18 +4,15 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/output/SvgChart.h"
-#include "core/output/SvgFrame.h"
+#include "macro/output/SvgChart.h"
+#include "macro/output/SvgFrame.h"
+#include "macro/output/NumberText.h"
 
 namespace c2d {
 
 namespace {
 
-std::string shortNumber(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v == 0 ? 0.0 : v);
-  return buf;
-}
+std::string shortNumber(double v) { return formatNumber("%.4g", v == 0 ? 0.0 : v); }
 
 // Extent of the drawn model: the larger side of the bounding box of the nodes
 // that carry elements.

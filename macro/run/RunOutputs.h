@@ -17,7 +17,7 @@
 
 #include "core/Model.h"
 #include "core/State.h"
-#include "core/output/VtkWriter.h"
+#include "macro/output/VtkWriter.h"
 #include "macro/run/TimeHistory.h"
 
 namespace c2d {

@@ -39,7 +39,7 @@ struct RunSummary {
   // TIME,REST's ratio of its peak), and the largest such ratio.
   int movingRuns = 0;
   double kineticRatio = 0;
-  // Runs whose building did not go as SITE's dir intends (core/FallVerdict.h),
+  // Runs whose building did not go as SITE's dir intends (macro/output/FallVerdict.h),
   // and the verdict of the last of them.
   int unintendedRuns = 0;
   std::string verdict = {};

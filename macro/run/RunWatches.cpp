@@ -6,7 +6,7 @@
 #include "core/contact/MemberCrossing.h"
 #include "elements/EndHinges.h"
 #include "elements/MemberFold.h"
-#include "macro/run/LogNumber.h"
+#include "macro/output/NumberText.h"
 #include "macro/run/RemovalLog.h"
 #include "solvers/Analysis.h"
 
@@ -19,10 +19,10 @@ void RunWatches::attach(Analysis& analysis) {
 
 void RunWatches::hingeActivated(int e, const HingeInfo& h) {
   log_ << "  " << (h.shear ? "shear  element " : h.fracture ? "bars   element " : "hinge  element ")
-       << e + 1 << " activated at t = " << logNumber("%.6e", analysis_->state().t)
+       << e + 1 << " activated at t = " << formatNumber("%.6e", analysis_->state().t)
        << (h.shear      ? ": shear at its capacity Vu(N)"
            : h.fracture ? ": fracture strain"
-                        : ", M = " + logNumber("%.6e", h.moment))
+                        : ", M = " + formatNumber("%.6e", h.moment))
        << "\n";
 }
 
@@ -51,7 +51,7 @@ void RunWatches::observeHinges() {
     hingeStep_[e] = s.step;
     ++hingeCount_;
     log_ << "  hinge  formed in element " << e + 1 << " at step " << s.step
-         << " (t = " << logNumber("%.6e", s.t) << ", M = " << logNumber("%.6e", info.moment)
+         << " (t = " << formatNumber("%.6e", s.t) << ", M = " << formatNumber("%.6e", info.moment)
          << ")\n";
   }
   for (const auto& [e, h] : analysis_->hingeCarriers()) {
@@ -96,10 +96,10 @@ bool RunWatches::atRestNow(const Rest& rest) {
   if (!(peakKinetic_ > 0 && kinetic <= restRatio_ * peakKinetic_ && s.t - lastMoving_ >= rest.hold))
     return false;
   if (!restLogged_)
-    log_ << "  TIME   at rest at t = " << logNumber("%.6e", s.t) << ": the kinetic energy "
-         << logNumber("%.4e", kinetic) << " has stayed at most " << logNumber("%.1e", restRatio_)
-         << " of its peak " << logNumber("%.4e", peakKinetic_)
-         << " since t = " << logNumber("%.6e", lastMoving_) << "\n";
+    log_ << "  TIME   at rest at t = " << formatNumber("%.6e", s.t) << ": the kinetic energy "
+         << formatNumber("%.4e", kinetic) << " has stayed at most " << formatNumber("%.1e", restRatio_)
+         << " of its peak " << formatNumber("%.4e", peakKinetic_)
+         << " since t = " << formatNumber("%.6e", lastMoving_) << "\n";
   restLogged_ = true;
   restTime_ = s.t;
   return true;
@@ -130,8 +130,8 @@ void RunWatches::reportEnd() {
   for (const Blast& b : model_.blasts())
     if (!b.done) {
       ++blastsNotMade_;
-      log_ << "  warning: the blast at t = " << logNumber("%.6e", b.time)
-           << " did not happen: the run ended at t = " << logNumber("%.6e", analysis_->state().t)
+      log_ << "  warning: the blast at t = " << formatNumber("%.6e", b.time)
+           << " did not happen: the run ended at t = " << formatNumber("%.6e", analysis_->state().t)
            << "\n";
     }
 }
@@ -144,10 +144,10 @@ void RunWatches::reportCrossings() {
   for (std::size_t i = 0; i < shown; ++i) {
     const MemberCrossing& c = crossings[i];
     log_ << (i == 0 ? "\n" : "") << "  warning: members " << c.first + 1 << " and " << c.second + 1
-         << " cross at t = " << logNumber("%.6e", analysis_->state().t) << ", at ("
-         << logNumber("%.3f", c.point.x()) << ", " << logNumber("%.3f", c.point.y())
-         << ") m: " << logNumber("%.3f", c.fromNode[0]) << " m from node " << c.nearNode[0] + 1 << " and "
-         << logNumber("%.3f", c.fromNode[1]) << " m from node " << c.nearNode[1] + 1 << "\n";
+         << " cross at t = " << formatNumber("%.6e", analysis_->state().t) << ", at ("
+         << formatNumber("%.3f", c.point.x()) << ", " << formatNumber("%.3f", c.point.y())
+         << ") m: " << formatNumber("%.3f", c.fromNode[0]) << " m from node " << c.nearNode[0] + 1 << " and "
+         << formatNumber("%.3f", c.fromNode[1]) << " m from node " << c.nearNode[1] + 1 << "\n";
   }
   if (crossings.size() > shown)
     log_ << "  warning: " << crossings.size() - shown << " more pairs of members cross\n";
@@ -155,7 +155,7 @@ void RunWatches::reportCrossings() {
   if (const Assembler& a = analysis_->assembler(); a.pushedThrough() > 0)
     log_ << "  warning: " << a.pushedThrough()
          << " times a node in contact with a member was pushed past its centre line ("
-         << logNumber("%.3e", a.pushedThroughEnergy())
+         << formatNumber("%.3e", a.pushedThroughEnergy())
          << " kJ of contact energy released): the member contact is too soft for the impact, or "
             "the pieces of a ruptured joint slid through each other\n";
 }
@@ -166,9 +166,9 @@ void RunWatches::reportFolds() {
   folded_ = static_cast<int>(folds.size());
   for (std::size_t i = 0; i < std::min<std::size_t>(folds.size(), 20); ++i)
     log_ << (i == 0 && crossings_ == 0 ? "\n" : "") << "  warning: member " << folds[i].element + 1
-         << " is bent through " << logNumber("%.3f", folds[i].fold) << " rad between its ends (nodes "
+         << " is bent through " << formatNumber("%.3f", folds[i].fold) << " rad between its ends (nodes "
          << folds[i].nodes[0] + 1 << " and " << folds[i].nodes[1] + 1
-         << ") at t = " << logNumber("%.6e", analysis_->state().t)
+         << ") at t = " << formatNumber("%.6e", analysis_->state().t)
          << ": more than a quarter turn, which no RC member bends whole"
          << (folds[i].failedHinge ? " (about its failed hinge, which made no joint: the member "
                                     "had a joint at an end, or the hinge lies within the "

@@ -11,7 +11,7 @@
 #include <ostream>
 #include <vector>
 
-#include "core/Debris.h"
+#include "macro/output/Debris.h"
 #include "core/Hinge.h"
 #include "macro/run/CapacityWatch.h"
 #include "macro/run/EnergyWatch.h"

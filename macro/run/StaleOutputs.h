@@ -2,7 +2,7 @@
 // The files an earlier run of the same stem left in the output directory that
 // a new run would otherwise leave beside its own: what a failed or interrupted
 // run kept under tagged names (<stem>.failed.out, <stem>_tplot.interrupted.csv,
-// <stem>.interrupted.pvd, ...: core/output/AtomicFile.h tagged), its ParaView frames
+// <stem>.interrupted.pvd, ...: core/io/AtomicFile.h tagged), its ParaView frames
 // (<stem>_0000.vtu, ...) and its deformed shapes (<stem>_deformed_0042.svg).
 // Frames and pictures are named by their number, so a rerun that writes fewer
 // of them, or at other steps, would leave the old ones looking like its own.

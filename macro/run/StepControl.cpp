@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "macro/deck/Macro.h"
-#include "macro/run/LogNumber.h"
+#include "macro/output/NumberText.h"
 #include "macro/run/NewtonReport.h"
 #include "solvers/Analysis.h"
 
@@ -26,7 +26,7 @@ void StepControl::set(bool on, double dtMin, bool cutDivergingPrediction) {
   cutPrediction_ = on && cutDivergingPrediction;
   dtNominal_ = analysis_->state().dt;
   dtMin_ = dtMin > 0 ? dtMin : dtNominal_ / 1024;
-  log_ << "  AUTO   step cutting " << (on ? "on, dtmin = " + logNumber("%.4e", dtMin_) : "off")
+  log_ << "  AUTO   step cutting " << (on ? "on, dtmin = " + formatNumber("%.4e", dtMin_) : "off")
        << (cutPrediction_ ? ", a diverging predicted start cuts the step" : "") << "\n";
 }
 
@@ -60,7 +60,7 @@ Status StepControl::cut(double dt) {
   analysis_->setDt(dt);
   analysis_->impactSteps().cut(dt);
   scalePathIncrement();
-  log_ << "  cut    step to dt = " << logNumber("%.4e", dt) << "\n";
+  log_ << "  cut    step to dt = " << formatNumber("%.4e", dt) << "\n";
   return analysis_->advance();
 }
 
@@ -71,7 +71,7 @@ Status StepControl::cutUntilCommitted(Status st) {
     log_ << "  *** step " << s.step + 1 << " not committed: " << st.why << "\n";
     if (dt < dtMin_)
       return Status::failure(st.why + "; step cutting gave up at the minimum step " +
-                             logNumber("%.4e", dtMin_));
+                             formatNumber("%.4e", dtMin_));
     st = cut(dt);
   }
   return st;
@@ -128,7 +128,7 @@ Flow StepControl::retry(const Macro& loop, const std::string& why, int iteration
   const State& s = analysis_->state();
   std::ostringstream msg;
   msg << "Newton iteration " << why << " in step " << s.step + 1
-      << " (t = " << logNumber("%.6e", s.t) << ", dt = " << logNumber("%.4e", s.dt) << ")";
+      << " (t = " << formatNumber("%.6e", s.t) << ", dt = " << formatNumber("%.4e", s.dt) << ")";
   log_ << "  *** " << msg.str() << "\n" << newtonHistoryText(*analysis_);
   if (!cutting_) throw AnalysisError(failure(loop, msg.str(), why, iterations));
   for (;;) {
@@ -136,7 +136,7 @@ Flow StepControl::retry(const Macro& loop, const std::string& why, int iteration
     if (dt < dtMin_)
       throw AnalysisError(failure(loop,
                                   msg.str() + "; step cutting gave up at the minimum step " +
-                                      logNumber("%.4e", dtMin_),
+                                      formatNumber("%.4e", dtMin_),
                                   why, iterations));
     const Status st = cut(dt);
     if (!st) throw AnalysisError(loop.record.fieldLoc(0).str() + ": error: " + st.why);

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "core/Error.h"
-#include "macro/commands/SolutionCommand.h"
+#include "macro/deck/SolutionCommand.h"
 #include "solvers/NewtonVerdict.h"
 
 namespace c2d {

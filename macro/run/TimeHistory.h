@@ -6,7 +6,7 @@
 // (disp_n_d, velo_n_d, acce_n_d, reac_n_d, stre_e_c; ener gives kinetic,
 // strain, contact, external, total, dissipated, balance; mome gives momentum_x,
 // momentum_y, angular_momentum; arcl gives the arc-length load factor).
-// The file is written through "<name>.XXXXXX.part" (core/output/AtomicFile)
+// The file is written through "<name>.XXXXXX.part" (core/io/AtomicFile)
 // and renamed when the run completes,
 // so an interrupted run leaves nothing that looks complete; a run that fails or
 // is interrupted keeps its rows as <stem>_tplot.failed.csv (keep()).
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "core/output/AtomicFile.h"
+#include "core/io/AtomicFile.h"
 #include "macro/deck/Parameters.h"
 #include "macro/deck/Record.h"
 #include "solvers/Analysis.h"

@@ -4,16 +4,13 @@
 #include <string>
 
 #include "elements/JointedElement.h"
+#include "macro/output/NumberText.h"
 
 namespace c2d {
 
 namespace {
 
-std::string num(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6e", v);
-  return buf;
-}
+std::string num(double v) { return formatNumber("%.6e", v); }
 
 }  // namespace
 

@@ -4,10 +4,11 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/output/AtomicFile.h"
+#include "core/io/AtomicFile.h"
 #include "macro/deck/Limits.h"
 #include "macro/studies/Csv.h"
 #include "macro/studies/EnsembleTable.h"
+#include "macro/output/NumberText.h"
 
 namespace c2d {
 

@@ -6,8 +6,8 @@
 #include <limits>
 #include <map>
 
-#include "core/output/SvgChart.h"
-#include "core/output/SvgNumber.h"
+#include "macro/output/SvgChart.h"
+#include "macro/output/SvgNumber.h"
 
 namespace c2d {
 

@@ -3,7 +3,7 @@
 #include <map>
 #include <set>
 
-#include "core/output/AtomicFile.h"
+#include "core/io/AtomicFile.h"
 #include "macro/studies/EnsemblePicture.h"
 #include "macro/studies/PlanStatistics.h"
 #include "macro/studies/Sensitivity.h"

@@ -1,7 +1,6 @@
 #include "macro/studies/EnsembleTable.h"
 
 #include <algorithm>
-#include <charconv>
 #include <climits>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +9,7 @@
 
 #include "macro/deck/Limits.h"
 #include "macro/studies/Csv.h"
+#include "macro/output/NumberText.h"
 
 namespace c2d {
 
@@ -42,12 +42,6 @@ std::string numericsCells(const RunNumerics& n) {
 }
 
 }  // namespace
-
-std::string exactNumber(double v) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
 
 int EnsembleTable::failed() const {
   return static_cast<int>(

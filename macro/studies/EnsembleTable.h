@@ -2,7 +2,7 @@
 // [ext] The table of an ensemble's runs, <stem>_ensemble.csv, one row per run:
 //   run,plan,sample,stem,[name,]<swept names...>,<drawn names...>,status,reason,
 //   steps,iterations,cuts,energy_error,
-//   <debris columns (core/Debris.h)>,<zone columns, per protected zone>,cover
+//   <debris columns (macro/output/Debris.h)>,<zone columns, per protected zone>,cover
 // (name: the plan's name, when the SWEEp names its plans: Sweep.h isPlanNames)
 // `run` counts every run of the deck from 1 (shards join on it), `plan` the
 // value sets of the sweep (1 without one), `sample` 1..n. The drawn values are
@@ -25,8 +25,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/Debris.h"
-#include "macro/studies/Sweep.h"
+#include "macro/output/Debris.h"
+#include "macro/draws/Sweep.h"
 
 namespace c2d {
 
@@ -72,10 +72,6 @@ class EnsembleTable {
   bool named_ = false;
   std::vector<EnsembleRow> rows_;
 };
-
-// A value as the table writes a drawn value: the shortest text that reads back
-// to the same double.
-std::string exactNumber(double v);
 
 // One run of the table as read back.
 struct EnsembleRun {

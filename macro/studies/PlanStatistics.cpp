@@ -8,6 +8,7 @@
 
 #include "macro/studies/Csv.h"
 #include "macro/studies/Statistics.h"
+#include "macro/output/NumberText.h"
 
 namespace c2d {
 
@@ -16,18 +17,9 @@ const std::vector<std::string> kPlanFigures = {"left",     "right",  "left95",  
 
 namespace {
 
-std::string num(double v) {
-  if (std::isnan(v)) return {};
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6e", v);
-  return buf;
-}
+std::string num(double v) { return std::isnan(v) ? std::string() : formatNumber("%.6e", v); }
 
-std::string share(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+std::string share(double v) { return formatNumber("%.6g", v); }
 
 double reach95(const EnsembleRun& r) { return std::max(r.figure("left95"), r.figure("right95")); }
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/output/AtomicFile.h"
+#include "core/io/AtomicFile.h"
 
 namespace c2d {
 

@@ -1,20 +1,20 @@
 #pragma once
 // [ext] The table of a study of plans: a SWEEp over blast times, element
 // numbers or any other parameter, one row per plan (run) in <stem>_plans.csv:
-//   run,stem,[name,]<swept names...>,status,reason,<debris columns (core/Debris.h)>
+//   run,stem,[name,]<swept names...>,status,reason,<debris columns (macro/output/Debris.h)>
 // (name: the plans' names, when the SWEEp names them: Sweep.h isPlanNames)
 // status is "ok" or "failed" (reason: the first line of the failure), the
 // debris columns are empty for a run without them. `run` counts every run of
 // the deck from 1, so that the parts of a study split with --shard join again
-// (macro/studies/Shard.h) by sorting on it.
+// (macro/batch/Shard.h) by sorting on it.
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "core/Debris.h"
+#include "macro/output/Debris.h"
 #include "macro/studies/Csv.h"
-#include "macro/studies/Sweep.h"
+#include "macro/draws/Sweep.h"
 
 namespace c2d {
 
@@ -31,7 +31,7 @@ struct PlanRow {
 class PlanTable {
  public:
   // names: every swept name of the deck (columns), in order of first appearance.
-  // zones: the site's protected zones (core/Debris.h zoneCsvHeader), if any;
+  // zones: the site's protected zones (macro/output/Debris.h zoneCsvHeader), if any;
   // named: the plans have names (a `name` column).
   explicit PlanTable(std::vector<std::string> names, std::vector<std::string> zones = {},
                      bool named = false)

@@ -9,6 +9,7 @@
 #include "macro/studies/MultipleTests.h"
 #include "macro/studies/PlanStatistics.h"
 #include "macro/studies/Statistics.h"
+#include "macro/output/NumberText.h"
 
 namespace c2d {
 
@@ -82,19 +83,9 @@ std::vector<PlanCorrelations> correlations(const EnsembleData& data) {
   return out;
 }
 
-std::string rhoCell(double v) {
-  if (std::isnan(v)) return {};
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4f", v);
-  return buf;
-}
+std::string rhoCell(double v) { return std::isnan(v) ? std::string() : formatNumber("%.4f", v); }
 
-std::string pCell(double v) {
-  if (std::isnan(v)) return {};
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
+std::string pCell(double v) { return std::isnan(v) ? std::string() : formatNumber("%.3g", v); }
 
 bool standsOut(double holm) { return holm < kSensitivityLevel; }
 

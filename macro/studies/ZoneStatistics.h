@@ -1,6 +1,6 @@
 #pragma once
 // [ext] The protected zones of a plan judged over its runs (SITE's zones,
-// core/DebrisZones.h): per zone the share of runs whose debris bed hit it with
+// macro/output/DebrisZones.h): per zone the share of runs whose debris bed hit it with
 // its 95 % Wilson interval, the mass there, the exact upper bound on the
 // probability of a hit at the site's confidence and the runs without a hit that
 // would show it below the site's risk level (BinomialBound.h), and the share of

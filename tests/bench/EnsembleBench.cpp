@@ -18,7 +18,8 @@
 #include <filesystem>
 #include <sstream>
 
-#include "macro/studies/ParallelRuns.h"
+#include "macro/batch/ParallelRuns.h"
+#include "macro/DeckRunner.h"
 #include "tests/bench/DeckBench.h"
 #include "tests/unit/StudyBytes.h"
 
@@ -39,7 +40,7 @@ void BM_FellingEnsembleTwoProcesses(benchmark::State& st) {
   for (auto _ : st) {
     std::ostringstream out, err;
     const auto start = std::chrono::steady_clock::now();
-    const int status = c2d::runDeckInParallel(deck.string(), options, commands, out, err);
+    const int status = c2d::runDeckInParallel(deck.string(), options, c2d::deckCalls(commands), out, err);
     seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (status != 0) {
       st.SkipWithError(("the ensemble failed: " + err.str()).c_str());

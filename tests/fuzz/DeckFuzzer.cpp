@@ -15,10 +15,11 @@
 
 #include "core/Error.h"
 #include "macro/deck/DeckParser.h"
+#include "macro/mesh/ParseDeck.h"
 #include "macro/run/ProblemRun.h"
-#include "macro/commands/SolutionCommand.h"
-#include "macro/studies/Sweep.h"
-#include "macro/studies/Ensemble.h"
+#include "macro/deck/SolutionCommand.h"
+#include "macro/draws/Sweep.h"
+#include "macro/draws/Ensemble.h"
 
 namespace {
 

@@ -17,7 +17,7 @@
 #include <sstream>
 #include <string>
 
-#include "macro/studies/Merge.h"
+#include "macro/batch/Merge.h"
 
 namespace {
 

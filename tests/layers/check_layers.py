@@ -4,11 +4,12 @@ sources points down or sideways, never up.
 
 Floors, top to bottom: macro > solvers > elements > materials > core (a floor
 includes its own and the ones below it). Inside macro/ the wings stack the
-same way: python > the deck runner and main (macro/*.{h,cpp}) > studies > run >
-commands > deck. The includes listed in KNOWN_UPWARD are the upward arrows the
-tree still has; the list may only shrink: an upward include that is not on it
-fails the check, and an entry that no longer exists fails it too (so that a
-mended arrow is taken off the list).
+same way: python > the deck runner and main (macro/*.{h,cpp}) > batch >
+studies > solution > run > mesh > draws > deck > output. The includes listed in
+KNOWN_UPWARD would be upward arrows the tree still has (none now); the list may
+only shrink: an upward include that is not on it fails the check, and an entry
+that no longer exists fails it too (so that a mended arrow is taken off the
+list).
 
     python3 tests/layers/check_layers.py [ROOT]      # check the tree (default: the repository)
     python3 tests/layers/check_layers.py --self-test # shows that a planted upward include fails
@@ -19,24 +20,11 @@ import sys
 import tempfile
 
 FLOORS = ["core", "materials", "elements", "solvers", "macro"]
-MACRO_WINGS = ["macro/deck", "macro/commands", "macro/run", "macro/studies", "macro", "macro/python"]
+MACRO_WINGS = ["macro/output", "macro/deck", "macro/draws", "macro/mesh", "macro/run",
+               "macro/solution", "macro/studies", "macro/batch", "macro", "macro/python"]
 
 # (including file, included file): upward includes inside macro/ the tree still has.
-KNOWN_UPWARD = {
-    ("macro/commands/ControlCommands.cpp", "macro/run/ProblemRun.h"),
-    ("macro/commands/ModelCommands.cpp", "macro/run/ProblemRun.h"),
-    ("macro/commands/NewtonCommands.cpp", "macro/run/ProblemRun.h"),
-    ("macro/commands/OutputCommands.cpp", "macro/run/ProblemRun.h"),
-    ("macro/commands/RestartCommands.cpp", "macro/run/ProblemRun.h"),
-    ("macro/commands/TimeCommands.cpp", "macro/run/ProblemRun.h"),
-    ("macro/deck/DeckParser.cpp", "macro/commands/MeshCommands.h"),
-    ("macro/deck/DeckParser.cpp", "macro/studies/Ensemble.h"),
-    ("macro/deck/DeckParser.cpp", "macro/studies/Sweep.h"),
-    ("macro/deck/MeshBinder.h", "macro/commands/MeshCommands.h"),
-    ("macro/run/ProblemRun.h", "macro/studies/Ensemble.h"),
-    ("macro/studies/BatchRunner.h", "macro/DeckRunner.h"),
-    ("macro/studies/Merge.cpp", "macro/DeckRunner.h"),
-}
+KNOWN_UPWARD = set()
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 

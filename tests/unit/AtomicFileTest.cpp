@@ -1,5 +1,5 @@
 // AtomicFile / AtomicAppendFile: the final path never holds an incomplete file.
-#include "core/output/AtomicFile.h"
+#include "core/io/AtomicFile.h"
 
 #include <gtest/gtest.h>
 

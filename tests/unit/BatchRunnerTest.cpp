@@ -13,7 +13,8 @@
 #include <sstream>
 #include <thread>
 
-#include "macro/studies/BatchRunner.h"
+#include "macro/batch/BatchRunner.h"
+#include "macro/DeckRunner.h"
 #include "macro/run/Interrupt.h"
 #include "tests/unit/OutputTestSupport.h"
 #include "tests/unit/RunDeckSupport.h"
@@ -36,7 +37,7 @@ TEST(Batch, FailingDeckDoesNotStopTheOthers) {
   o.jobs = 2;
   const SolutionCommands commands;
   std::ostringstream out;
-  const auto results = runBatch({a, bad, c}, o, commands, out);
+  const auto results = runBatch({a, bad, c}, o, deckCalls(commands), out);
   ASSERT_EQ(results.size(), 3u);
   EXPECT_EQ(results[0].deck, a);
   EXPECT_TRUE(results[0].ok()) << results[0].output;
@@ -82,8 +83,8 @@ TEST(Batch, AllGoodIsExitZeroAndAnalysisFailureIsTwo) {
   o.deck.quiet = true;
   const SolutionCommands commands;
   std::ostringstream out;
-  EXPECT_EQ(batchExitCode(runBatch({good}, o, commands, out)), 0);
-  const auto r = runBatch({good, failing}, o, commands, out);
+  EXPECT_EQ(batchExitCode(runBatch({good}, o, deckCalls(commands), out)), 0);
+  const auto r = runBatch({good, failing}, o, deckCalls(commands), out);
   EXPECT_TRUE(r[0].ok());
   EXPECT_EQ(r[1].exitCode, kExitAnalysisFailed) << r[1].output;
   EXPECT_EQ(batchExitCode(r), kExitAnalysisFailed);
@@ -106,7 +107,7 @@ TEST(Batch, TimeoutStopsAHangingDeckAndTheTableSaysSo) {
   o.timeout = 1.0;
   const SolutionCommands commands;
   std::ostringstream out;
-  const auto r = runBatch({endless, good}, o, commands, out);
+  const auto r = runBatch({endless, good}, o, deckCalls(commands), out);
   EXPECT_TRUE(r[0].timedOut);
   EXPECT_EQ(r[0].status(), "timed out");
   EXPECT_EQ(r[0].exitCode, kExitTimedOut);
@@ -146,7 +147,7 @@ TEST(Batch, SignalToTheBatchStopsEveryRunningDeck) {
     o.jobs = 2;
     const SolutionCommands commands;
     std::ostringstream out;
-    const auto r = runBatch({e1, e2, g}, o, commands, out);
+    const auto r = runBatch({e1, e2, g}, o, deckCalls(commands), out);
     std::ostringstream table;
     printBatchTable(table, r);
     std::ofstream(tableFile) << table.str() << out.str();

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "macro/deck/CommandSpec.h"
-#include "macro/commands/MeshCommands.h"
+#include "macro/mesh/MeshCommands.h"
 
 namespace c2d {
 namespace {

@@ -1,5 +1,5 @@
-// Debris figures against the site (core/Debris), the debris picture
-// (core/output/SvgDebris) and the peak ground force of a bar dropped on the ground.
+// Debris figures against the site (macro/output/Debris), the debris picture
+// (macro/output/SvgDebris) and the peak ground force of a bar dropped on the ground.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,10 +7,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/Debris.h"
-#include "core/output/SvgDebris.h"
+#include "macro/output/Debris.h"
+#include "macro/output/SvgDebris.h"
 #include "elements/ElementFactory.h"
-#include "macro/studies/BatchRunner.h"
+#include "macro/batch/BatchRunner.h"
 #include "macro/DeckRunner.h"
 #include "tests/unit/DeckTestSupport.h"
 #include "tests/unit/ElementTestSupport.h"
@@ -245,7 +245,7 @@ TEST(Debris, OutsideTheSiteInSummaryAndBatchTable) {
   std::ostringstream out;
   const std::string decks = std::string(C2D_SOURCE_DIR) + "/decks/";
   const auto results = runBatch(
-      {decks + "output/debris_site.inp", decks + "loads/floor_load_beam.inp"}, o, commands, out);
+      {decks + "output/debris_site.inp", decks + "loads/floor_load_beam.inp"}, o, deckCalls(commands), out);
   ASSERT_EQ(results.size(), 2u);
   EXPECT_TRUE(results[0].ok()) << results[0].output;
   EXPECT_EQ(results[0].debrisRuns, 1);

@@ -1,7 +1,7 @@
 // The share of a segment in a protected zone (core/DebrisZones), by hand.
 #include <gtest/gtest.h>
 
-#include "core/DebrisZones.h"
+#include "macro/output/DebrisZones.h"
 
 namespace c2d {
 namespace {

@@ -7,11 +7,12 @@
 #include <cmath>
 
 #include "macro/deck/DeckParser.h"
+#include "macro/mesh/ParseDeck.h"
 #include "macro/deck/DeckReader.h"
 #include "macro/deck/Limits.h"
-#include "macro/deck/MeshBinder.h"
-#include "macro/commands/SolutionCommand.h"
-#include "macro/studies/Sweep.h"
+#include "macro/mesh/MeshBinder.h"
+#include "macro/deck/SolutionCommand.h"
+#include "macro/draws/Sweep.h"
 #include "macro/deck/Warnings.h"
 #include "tests/unit/DeckTestSupport.h"
 

@@ -7,8 +7,9 @@
 
 #include "macro/deck/CommandSpec.h"
 #include "macro/deck/DeckParser.h"
+#include "macro/mesh/ParseDeck.h"
 #include "macro/deck/DeckReader.h"
-#include "macro/commands/MeshCommands.h"
+#include "macro/mesh/MeshCommands.h"
 #include "tests/unit/DeckTestSupport.h"
 
 namespace c2d {

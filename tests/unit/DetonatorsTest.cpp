@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "core/Model.h"
-#include "macro/studies/Detonators.h"
-#include "macro/studies/Distribution.h"
+#include "macro/draws/Detonators.h"
+#include "macro/draws/Distribution.h"
 #include "tests/unit/EnsembleTestSupport.h"
 
 namespace c2d {

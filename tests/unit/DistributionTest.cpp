@@ -6,8 +6,8 @@
 #include <cmath>
 #include <vector>
 
-#include "macro/studies/CounterRandom.h"
-#include "macro/studies/Distribution.h"
+#include "macro/draws/CounterRandom.h"
+#include "macro/draws/Distribution.h"
 #include "tests/unit/EnsembleTestSupport.h"
 
 namespace c2d {

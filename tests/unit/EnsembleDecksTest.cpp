@@ -11,12 +11,13 @@
 #include <sstream>
 
 #include "macro/deck/DeckParser.h"
+#include "macro/mesh/ParseDeck.h"
 #include "macro/DeckRunner.h"
-#include "macro/studies/Ensemble.h"
+#include "macro/draws/Ensemble.h"
 #include "macro/studies/EnsembleTable.h"
-#include "macro/studies/Jitter.h"
-#include "macro/studies/Merge.h"
-#include "macro/studies/ParallelRuns.h"
+#include "macro/draws/Jitter.h"
+#include "macro/batch/Merge.h"
+#include "macro/batch/ParallelRuns.h"
 #include "macro/studies/Statistics.h"
 #include "tests/unit/DeckTestSupport.h"
 #include "tests/unit/EnsembleTestSupport.h"
@@ -343,7 +344,7 @@ TEST(EnsembleDecks, RunInTwoProcessesEqualsTheWholeRun) {
   b.jobs = 2;
   const SolutionCommands commands;
   std::ostringstream out, err;
-  ASSERT_EQ(runDeckInParallel(deckPath("sliding_plans"), b, commands, out, err), 0) << err.str();
+  ASSERT_EQ(runDeckInParallel(deckPath("sliding_plans"), b, deckCalls(commands), out, err), 0) << err.str();
   for (const std::string& f : kStudyFiles)
     EXPECT_EQ(readText(dir.path() / "j2" / f), readText(dir.path() / "whole" / f)) << f;
   // The parts are merged and gone; the log holds every run in order.

@@ -9,9 +9,10 @@
 
 #include "core/Error.h"
 #include "macro/deck/DeckParser.h"
-#include "macro/studies/CounterRandom.h"
-#include "macro/studies/Distribution.h"
-#include "macro/studies/Ensemble.h"
+#include "macro/mesh/ParseDeck.h"
+#include "macro/draws/CounterRandom.h"
+#include "macro/draws/Distribution.h"
+#include "macro/draws/Ensemble.h"
 
 namespace c2d {
 namespace {
@@ -72,7 +73,7 @@ TEST(EnsembleDraws, AParameterNamedLikeTheProgramsOwnDrawsHasAStreamOfItsOwn) {
   const EnsembleSpec s = specOf("ENSEmble,,20,7\n  detonator = NORMal 0 1\n");
   for (int k = 1; k <= 20; ++k) {
     const double drawn = drawSample(s, k).values.at(0).second;
-    // The detonators' first draw of sample k (macro/studies/Detonators.cpp).
+    // The detonators' first draw of sample k (macro/draws/Detonators.cpp).
     const double scatter = normalQuantile(counterUniform(7, k, streamOf("detonator"), 0));
     EXPECT_NE(drawn, scatter) << "sample " << k;
   }

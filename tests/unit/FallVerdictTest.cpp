@@ -1,11 +1,11 @@
-// The verdict of a run against SITE's intended fall (core/FallVerdict), by
+// The verdict of a run against SITE's intended fall (macro/output/FallVerdict), by
 // hand for constructed end states.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/Debris.h"
-#include "core/FallVerdict.h"
+#include "macro/output/Debris.h"
+#include "macro/output/FallVerdict.h"
 #include "elements/ElementFactory.h"
 #include "tests/unit/ElementTestSupport.h"
 

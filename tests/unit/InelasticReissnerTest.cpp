@@ -23,7 +23,7 @@
 #include "elements/Joints.h"
 #include "elements/ReissnerFrame.h"
 #include "macro/DeckRunner.h"
-#include "macro/commands/SolutionCommand.h"
+#include "macro/deck/SolutionCommand.h"
 #include "solvers/Analysis.h"
 #include "solvers/ProportionalLoad.h"
 #include "solvers/TimeIntegrator.h"

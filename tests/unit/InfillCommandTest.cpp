@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "core/Brace.h"
-#include "core/Debris.h"
+#include "macro/output/Debris.h"
 #include "elements/InfillStrut.h"
 #include "elements/ModelCheckpoint.h"
 #include "materials/InfillPanel.h"

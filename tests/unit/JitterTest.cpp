@@ -7,7 +7,7 @@
 
 #include "core/Model.h"
 #include "elements/ElementFactory.h"
-#include "macro/studies/Jitter.h"
+#include "macro/draws/Jitter.h"
 #include "tests/unit/EnsembleTestSupport.h"
 
 namespace c2d {

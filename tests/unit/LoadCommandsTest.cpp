@@ -1,4 +1,4 @@
-// QLOAd, MASS and SITE (macro/commands/LoadCommands): what they put in the model, and
+// QLOAd, MASS and SITE (macro/mesh/LoadCommands): what they put in the model, and
 // their deck errors at file:line:col.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,8 @@
 
 #include "elements/ModelCheckpoint.h"
 #include "macro/deck/DeckParser.h"
-#include "macro/deck/MeshBinder.h"
+#include "macro/mesh/ParseDeck.h"
+#include "macro/mesh/MeshBinder.h"
 #include "solvers/ModelFingerprint.h"
 #include "tests/unit/DeckTestSupport.h"
 

@@ -9,10 +9,10 @@
 #include <functional>
 #include <sstream>
 
-#include "core/output/AtomicFile.h"
+#include "core/io/AtomicFile.h"
 #include "macro/DeckRunner.h"
-#include "macro/studies/Shard.h"
-#include "macro/studies/Merge.h"
+#include "macro/batch/Shard.h"
+#include "macro/batch/Merge.h"
 #include "tests/unit/DeckTestSupport.h"
 
 namespace c2d {

@@ -6,8 +6,9 @@
 #include <sstream>
 
 #include "macro/deck/DeckParser.h"
+#include "macro/mesh/ParseDeck.h"
 #include "macro/deck/DeckReader.h"
-#include "macro/deck/MeshBinder.h"
+#include "macro/mesh/MeshBinder.h"
 #include "materials/RcSection.h"
 #include "tests/unit/DeckTestSupport.h"
 

@@ -6,7 +6,8 @@
 #include <string>
 
 #include "macro/deck/DeckParser.h"
-#include "macro/deck/MeshBinder.h"
+#include "macro/mesh/ParseDeck.h"
+#include "macro/mesh/MeshBinder.h"
 #include "tests/unit/DeckTestSupport.h"
 
 namespace c2d::testing {

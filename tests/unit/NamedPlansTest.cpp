@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/output/SvgChart.h"
+#include "macro/output/SvgChart.h"
 #include "macro/DeckRunner.h"
 #include "macro/studies/EnsembleTable.h"
 #include "tests/unit/DeckTestSupport.h"

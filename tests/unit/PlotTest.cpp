@@ -8,8 +8,9 @@
 #include <cmath>
 #include <regex>
 
-#include "core/output/SvgChart.h"
+#include "macro/output/SvgChart.h"
 #include "macro/deck/DeckParser.h"
+#include "macro/mesh/ParseDeck.h"
 #include "macro/Help.h"
 #include "macro/run/ProblemRun.h"
 #include "macro/run/RunOutputs.h"

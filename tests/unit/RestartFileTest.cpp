@@ -12,7 +12,7 @@
 #include <fstream>
 #include <string>
 
-#include "core/output/Checkpoint.h"
+#include "core/io/Checkpoint.h"
 #include "core/Model.h"
 #include "solvers/Analysis.h"
 #include "solvers/RestartFile.h"

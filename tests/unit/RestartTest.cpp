@@ -16,7 +16,7 @@
 #include <sstream>
 #include <thread>
 
-#include "core/output/Checkpoint.h"
+#include "core/io/Checkpoint.h"
 #include "core/Hinge.h"
 #include "elements/JointedElement.h"
 #include "elements/Joints.h"

@@ -1,4 +1,4 @@
-// RIGId (macro/commands/RigidCommand): the zones reach the elements, the log
+// RIGId (macro/mesh/RigidCommand): the zones reach the elements, the log
 // echoes them, the restart fingerprint sees them, and the deck errors at
 // file:line:col.
 #include <gtest/gtest.h>
@@ -8,7 +8,8 @@
 #include "elements/ElementFactory.h"
 #include "elements/LinearFrame.h"
 #include "macro/deck/DeckParser.h"
-#include "macro/deck/MeshBinder.h"
+#include "macro/mesh/ParseDeck.h"
+#include "macro/mesh/MeshBinder.h"
 #include "solvers/ModelFingerprint.h"
 #include "tests/unit/DeckTestSupport.h"
 

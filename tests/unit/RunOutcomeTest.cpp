@@ -18,7 +18,7 @@
 #include <fstream>
 #include <thread>
 
-#include "core/output/AtomicFile.h"
+#include "core/io/AtomicFile.h"
 #include "macro/DeckRunner.h"
 #include "macro/run/Interrupt.h"
 #include "tests/unit/OutputTestSupport.h"

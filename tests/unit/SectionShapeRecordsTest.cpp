@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "macro/deck/DeckParser.h"
-#include "macro/deck/MeshBinder.h"
+#include "macro/mesh/MeshBinder.h"
 #include "materials/RcSection.h"
 #include "solvers/Analysis.h"
 #include "solvers/RestartFile.h"

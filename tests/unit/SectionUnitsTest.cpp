@@ -1,13 +1,14 @@
 // Values of an RC section or a shortest piece that look like another unit are
-// located warnings naming the likely unit (macro/commands/SectionUnits), one
+// located warnings naming the likely unit (macro/mesh/SectionUnits), one
 // per rule, and plausible values give none.
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "macro/commands/SectionUnits.h"
+#include "macro/mesh/SectionUnits.h"
 #include "macro/deck/DeckParser.h"
-#include "macro/deck/MeshBinder.h"
+#include "macro/mesh/ParseDeck.h"
+#include "macro/mesh/MeshBinder.h"
 #include "macro/deck/Warnings.h"
 #include "tests/unit/RunDeckSupport.h"
 

@@ -1,4 +1,4 @@
-// Studies split over machines (macro/studies/Shard): the --shard argument, which decks
+// Studies split over machines (macro/batch/Shard): the --shard argument, which decks
 // or runs a part takes, the batch table as CSV, and merge joining the parts of
 // a study back into one plans table (and refusing an incomplete set).
 #include <gtest/gtest.h>
@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "macro/DeckRunner.h"
-#include "macro/studies/Shard.h"
-#include "macro/studies/Merge.h"
+#include "macro/batch/Shard.h"
+#include "macro/batch/Merge.h"
 #include "tests/unit/DeckTestSupport.h"
 
 namespace c2d {

@@ -10,8 +10,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/Debris.h"
-#include "core/DebrisZones.h"
+#include "macro/output/Debris.h"
+#include "macro/output/DebrisZones.h"
 #include "elements/ElementFactory.h"
 #include "macro/DeckRunner.h"
 #include "macro/studies/BinomialBound.h"

@@ -10,7 +10,7 @@
 
 #include "macro/studies/Csv.h"
 #include "macro/studies/EnsembleTable.h"
-#include "macro/studies/Sweep.h"
+#include "macro/draws/Sweep.h"
 #include "tests/unit/DeckTestSupport.h"
 #include "tests/unit/RunDeckSupport.h"
 

@@ -1,7 +1,7 @@
 // SvgChart: tick arithmetic, a well-formed standalone SVG, one path per series,
 // the data-to-pixel mapping, automatic ranges, styles that differ in grayscale,
 // and a legend that keeps off the curves.
-#include "core/output/SvgChart.h"
+#include "macro/output/SvgChart.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // deformed positions from the state, hinge and joint symbols where they belong,
 // supports from the restraint codes, ground, and curves leaving nodes at the
 // nodal rotation.
-#include "core/output/SvgFrame.h"
+#include "macro/output/SvgFrame.h"
 
 #include <gtest/gtest.h>
 

@@ -9,7 +9,8 @@
 #include <fstream>
 
 #include "macro/deck/DeckParser.h"
-#include "macro/studies/Sweep.h"
+#include "macro/mesh/ParseDeck.h"
+#include "macro/draws/Sweep.h"
 #include "tests/unit/OutputTestSupport.h"
 #include "tests/unit/RunDeckSupport.h"
 

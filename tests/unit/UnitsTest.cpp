@@ -1,14 +1,14 @@
 // --help gives the unit of every field of every command in the decks' system
-// (macro/commands/Units): a command or field added without its unit fails here.
+// (macro/mesh/Units): a command or field added without its unit fails here.
 #include <gtest/gtest.h>
 
 #include <sstream>
 
 #include "macro/Help.h"
-#include "macro/commands/MeshCommands.h"
-#include "macro/commands/SolutionCommand.h"
-#include "macro/studies/Sweep.h"
-#include "macro/commands/Units.h"
+#include "macro/mesh/MeshCommands.h"
+#include "macro/deck/SolutionCommand.h"
+#include "macro/deck/StudyBlocks.h"
+#include "macro/mesh/Units.h"
 
 namespace c2d {
 namespace {

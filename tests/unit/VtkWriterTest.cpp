@@ -3,7 +3,7 @@
 // round-trip printing: equal to the last bit), section forces and hinge states
 // per cell, joint flags; the .pvd lists every written step with its time and is
 // complete after each write.
-#include "core/output/VtkWriter.h"
+#include "macro/output/VtkWriter.h"
 
 #include <gtest/gtest.h>
 
