@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "elements/Joints.h"
 #include "macro/mesh/MeshCommands.h"
 #include "macro/deck/DeckParser.h"
 #include "macro/mesh/ParseDeck.h"
@@ -142,6 +143,16 @@ void checkMeshReentries(const Problem& problem, const Model& model, const Parame
   bool collapse = false;
   for (const auto& batch : batches) checkMaterialChanges(batch, sets, used, bound, collapse);
   applyAllReentries(problem, start, bound, batches);
+}
+
+void applyMeshReentry(const std::vector<MeshItem>& items, Parameters& params, Model& model,
+                      Analysis& analysis, std::ostream& log) {
+  applyMesh(items, params, model, &log, nullptr, &analysis.state());
+  installJoints(model);
+  model.bumpTopology();
+  analysis.topologyChanged();
+  log << "  MESH   re-entered: " << model.numNodes() << " nodes, " << model.numElements()
+      << " elements, " << analysis.assembler().dofs().numEquations() << " equations\n";
 }
 
 }  // namespace c2d

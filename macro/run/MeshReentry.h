@@ -2,12 +2,14 @@
 // MESH inside a BATCh block: a re-entry of mesh records (its data lines or a
 // file) applied to the model between two solution commands. Its records, and
 // the bind pass's checks of every re-entry of a problem before any computing.
+#include <ostream>
 #include <vector>
 
 #include "core/Model.h"
 #include "macro/deck/Deck.h"
 #include "macro/deck/Macro.h"
 #include "macro/mesh/MeshBinder.h"
+#include "solvers/Analysis.h"
 
 namespace c2d {
 
@@ -27,5 +29,12 @@ std::vector<MeshItem> meshReentryItems(const Macro& m);
 // the re-entry itself. Throws DeckError.
 void checkMeshReentries(const Problem& problem, const Model& model, const Parameters& start,
                         const Parameters& bound, const std::vector<std::vector<Macro>>& batches);
+
+// A re-entry's items applied to the model at the analysis's committed state
+// (after the commit that ends the step before it): material sets given again
+// take their data with their state, new joints are installed, the analysis
+// takes the new topology; logged.
+void applyMeshReentry(const std::vector<MeshItem>& items, Parameters& params, Model& model,
+                      Analysis& analysis, std::ostream& log);
 
 }  // namespace c2d

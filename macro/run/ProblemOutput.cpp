@@ -2,34 +2,16 @@
 // forces and the hinge table (STRE).
 #include <algorithm>
 
-#include "macro/deck/NumberRanges.h"
+#include "macro/run/CommandRange.h"
 #include "macro/run/ProblemRun.h"
 #include "macro/run/Report.h"
 
 namespace c2d {
 
-// ------------------------------------------------------------------ output
-
-std::vector<int> ProblemRun::selection(const Macro& m, int count) const {
-  std::vector<int> out;
-  const bool all = m.option == "all" || m.numbers.empty() || m.record.text(2).empty();
-  if (all) {
-    for (int i = 0; i < count; ++i) out.push_back(i);
-    return out;
-  }
-  const int n1 = m.numbers[0].evalInt(params_, "first number");
-  int n2 =
-      m.has(1) && !m.record.text(3).empty() ? m.numbers[1].evalInt(params_, "last number") : n1;
-  int inc = m.has(2) && !m.record.text(4).empty() ? m.numbers[2].evalInt(params_, "increment") : 1;
-  if (inc <= 0) inc = 1;
-  for (int i : steppedRange(std::max(n1, 1), std::min(n2, count), inc)) out.push_back(i - 1);
-  return out;
-}
-
 void ProblemRun::printNodal(const Macro& m) {
   const State& s = analysis_->state();
   std::vector<int> nodes;
-  for (int n : selection(m, model_.numNodes()))
+  for (int n : commandRange(m, params_, model_.numNodes()))
     if (analysis_->assembler().dofs().used(n) || model_.hasCoord(n)) nodes.push_back(n);
   if (m.is("reac")) {
     Eigen::VectorXd r;
@@ -54,7 +36,7 @@ void ProblemRun::printStresses(const Macro& m) {
   const Status st = analysis_->reactions(r);  // evaluates every element at the current state
   if (!st) fail(m, st.why);
   printStressTable(log_, model_, analysis_->state(), analysis_->loadFactor(),
-                   selection(m, model_.numElements()));
+                   commandRange(m, params_, model_.numElements()));
 }
 
 void ProblemRun::printHinges() {

@@ -10,8 +10,10 @@
 #include "macro/run/PlotColumns.h"
 #include "macro/deck/DeckParser.h"
 #include "macro/mesh/MeshBinder.h"
+#include "macro/run/HingesToJoints.h"
 #include "macro/run/Interrupt.h"
 #include "macro/run/MeshReentry.h"
+#include "macro/run/RemoveOrder.h"
 #include "macro/run/StaleOutputs.h"
 #include "solvers/FiniteResults.h"
 
@@ -213,37 +215,21 @@ void ProblemRun::reenterMesh(const Macro& m) {
   const std::vector<MeshItem> items = meshReentryItems(m);
   const Status st = analysis_->commit();
   if (!st) fail(m, st.why);
-  applyMesh(items, params_, model_, &log_, nullptr, &analysis_->state());
-  installJoints(model_);
-  model_.bumpTopology();
-  analysis_->topologyChanged();
+  applyMeshReentry(items, params_, model_, *analysis_, log_);
   watches_.elementsChanged();
-  log_ << "  MESH   re-entered: " << model_.numNodes() << " nodes, " << model_.numElements()
-       << " elements, " << analysis_->assembler().dofs().numEquations() << " equations\n";
 }
 
 void ProblemRun::hingesToJoints(const Macro& m, MemberLaws laws) {
   const Status st = analysis_->commit();
   if (!st) fail(m, st.why);
-  const std::vector<CreatedJoint> joints = hingeToJoint(model_, analysis_->state(), laws);
-  analysis_->topologyChanged();
+  turnHingesToJoints(model_, *analysis_, laws, log_);
   watches_.elementsChanged();
-  log_ << "  HINGE2JOINT  " << joints.size() << " hinges became joints, members "
-       << (laws == MemberLaws::Elastic ? "elastic" : "keep their laws") << "; " << model_.numNodes()
-       << " nodes, " << analysis_->assembler().dofs().numEquations() << " equations\n";
-  for (const CreatedJoint& j : joints)
-    log_ << "    element " << j.element + 1 << ": joint master " << j.master + 1 << " slave "
-         << j.slave + 1 << " (element end " << j.slaveEnd + 1 << "), relative rotation "
-         << fmt("%.6e", j.relativeRotation) << "\n";
 }
 
 void ProblemRun::removeMembers(const Macro& m) {
-  std::vector<int> elements;
-  for (int e : selection(m, model_.numElements())) elements.push_back(e);
-  if (elements.empty()) fail(m, "no element in the range");
-  const double td = m.has(3) && !m.record.text(5).empty() ? m.numbers[3].eval(params_) : 0.0;
-  if (!(td >= 0)) fail(m, "the release time td must be zero or positive");
-  const Status st = analysis_->removeElements(elements, td);
+  const RemoveOrder order = readRemoveOrder(m, params_, model_.numElements());
+  if (!order.error.empty()) fail(m, order.error);
+  const Status st = analysis_->removeElements(order.elements, order.release);
   if (!st) fail(m, st.why);
   watches_.elementsChanged();
 }

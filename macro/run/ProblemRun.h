@@ -127,7 +127,6 @@ class ProblemRun {
   // its columns held statically, whose Newton loop then fails without a word
   // of the blast), so the run fails there, naming the blast and both times.
   void refuseScatteredIntoStatics(const RemovalEvent& ev) const;
-  std::vector<int> selection(const Macro& m, int count) const;
   void onCommit();
   // The debris report (macro/run/DebrisReport.cpp).
   void reportDebris();

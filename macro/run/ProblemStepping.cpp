@@ -1,9 +1,10 @@
 // ProblemRun's time and load stepping (TIME, DT, AUTO, DYNAmic, ARCL,
 // TPLOt's set-up): a step begun, its length and its cutting, the integrator,
-// the proportional loads, the path following.
+// the proportional loads, the path following (its records: ArclSetup).
 #include <algorithm>
 #include <cmath>
 
+#include "macro/run/ArclSetup.h"
 #include "macro/run/PrescribedReach.h"
 #include "macro/run/ProblemRun.h"
 
@@ -75,44 +76,7 @@ void ProblemRun::setPathFollowing(const Macro& m) {
   // The converged step belongs to the control it was computed under: committed
   // (and written to TPLOt) before the switch, as TIME would have done.
   if (const Status st = analysis_->commit(); !st) fail(m, st.why);
-  arcLengthFromDt_ = false;
-  if (m.option == "off") {
-    analysis_->setPathFollowing(std::nullopt);
-    log_ << "  ARCL   off\n";
-    return;
-  }
-  const int kfl =
-      m.has(0) && !m.record.text(2).empty() ? m.numbers[0].evalInt(params_, "ARCL kfl") : 0;
-  if (kfl < 4 && m.data.empty()) {
-    // FEAPpv's arc length: the first step's load increment is its time step,
-    // known when that step starts (advanceTime).
-    arcLengthFromDt_ = true;
-    log_ << "  ARCL   arc length (first load increment: the first step's dt)\n";
-    return;
-  }
-  const Record& rec = m.data.front();
-  auto value = [&](std::size_t i) { return Expression::parse(rec[i]).eval(params_); };
-  if (kfl >= 4) {
-    const int node = Expression::parse(rec[0]).evalInt(params_, "node number");
-    const int dof = Expression::parse(rec[1]).evalInt(params_, "dof");
-    if (node < 1 || node > model_.numNodes() || dof < 1 || dof > 3)
-      throw DeckError(rec.loc,
-                      "ARCL: no node " + std::to_string(node) + " dof " + std::to_string(dof),
-                      rec.lineText());
-    analysis_->assembler().refresh();
-    const int eq = analysis_->assembler().dofs().eq(node - 1, dof - 1);
-    if (eq < 0)
-      throw DeckError(rec.loc,
-                      "ARCL: node " + std::to_string(node) + " dof " + std::to_string(dof) +
-                          " is restrained (displacement control needs a free dof)",
-                      rec.lineText());
-    analysis_->setPathFollowing(PathFollowing::displacementControl(eq, value(2)));
-    log_ << "  ARCL   displacement control of node " << node << " dof " << dof << "\n";
-  } else {
-    // 'dlambda0' alone or 'ndamp dlambda0': the last value.
-    analysis_->setPathFollowing(PathFollowing::arcLength(value(rec.size() - 1)));
-    log_ << "  ARCL   arc length\n";
-  }
+  arcLengthFromDt_ = setUpArcl(m, *analysis_, model_, params_, log_);
 }
 
 void ProblemRun::setTimeHistory(const Macro& m) {
