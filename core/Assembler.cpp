@@ -334,24 +334,36 @@ double Assembler::contactEnergy(const State& s) {
   return w;
 }
 
-double Assembler::commitContact(State& s) {
+double Assembler::commitContact(State& s, const StepRule& rule) {
   const double released =
       members_ ? members_->commit(model_, s, pushedThrough_, pushedThroughEnergy_) : 0.0;
   const auto& ground = model_.ground();
   if (!ground) return released;
   // A node whose turn fell inside the step gets the peak it came back from
-  // (core/contact/CrushingLaw.h): the energy that takes from its contact is dissipated.
+  // (core/contact/CrushingLaw.h): the energy that takes from its contact is
+  // dissipated. What the scheme's decay took from an impact is given back
+  // (groundImpactOwed): negative dissipation.
   double crushed = 0;
   const bool rates = s.v.size() == s.u.size() && s.vn.size() == s.u.size();
   for (int n = 0; n < model_.numNodes(); ++n) {
     const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs;
     const double y = model_.coord(n).y() + s.u[i + 1];
     const bool moves = rates && dofs_.used(n) && !dofs_.aliased(n);
-    const double q = moves
-                         ? loadingPoint(*ground, s.crush[n], masses_[n], y, s.vn[i + 1], s.v[i + 1])
-                         : loadingPoint(*ground, s.crush[n], 0.0, y, 0.0, 0.0);
+    double q = moves ? loadingPoint(*ground, s.crush[n], masses_[n], y, s.vn[i + 1], s.v[i + 1])
+                     : loadingPoint(*ground, s.crush[n], 0.0, y, 0.0, 0.0);
     if (q > s.crush[n] && penetration(*ground, y) < q)
       crushed += c2d::contactEnergy(*ground, s.crush[n], y) - c2d::contactEnergy(*ground, q, y);
+    if (moves) {
+      const double p0 = penetration(*ground, model_.coord(n).y() + s.un[i + 1]);
+      const ImpactOwed o = groundImpactOwed(*ground, s.crush[n], q, s.owed[n], p0,
+                                            penetration(*ground, y), masses_[n], s.vn[i + 1],
+                                            s.v[i + 1], rule);
+      q = o.q;
+      s.owed[n] = o.owed;
+      crushed -= o.given;
+    } else {
+      s.owed[n] = 0;
+    }
     s.crush[n] = q;
   }
   const Eigen::VectorXd& stretches = stretchesOf(s);

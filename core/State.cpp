@@ -11,12 +11,11 @@ void State::resize(int numNodes) {
     x->conservativeResize(n);
     if (n > old) x->tail(n - old).setZero();
   }
-  const Eigen::Index old = crush.size();
-  crush.conservativeResize(numNodes);
-  if (numNodes > old) crush.tail(numNodes - old).setZero();
-  const Eigen::Index oldStretches = stretch.size();
-  stretch.conservativeResize(numNodes);
-  if (numNodes > oldStretches) stretch.tail(numNodes - oldStretches).setZero();
+  for (Eigen::VectorXd* x : {&crush, &owed, &stretch}) {
+    const Eigen::Index old = x->size();
+    x->conservativeResize(numNodes);
+    if (numNodes > old) x->tail(numNodes - old).setZero();
+  }
 }
 
 ElementKinematics State::kinematics(const std::array<int, 2>& nodes) const {

@@ -43,6 +43,11 @@ struct State {
   // since the node last touched down (0 off the ground; core/contact/GroundContact.h).
   // Committed only: it changes when a step is committed.
   Eigen::VectorXd crush;
+  // Per node: what the mid-point scheme's velocity decay took from the node's
+  // ground impact under way and its contact has still to give back, or
+  // kImpactSettled once the contact reloaded before letting go (0 off the
+  // ground; core/contact/GroundContact.h groundImpactOwed). Committed only.
+  Eigen::VectorXd owed;
   // Per node: the stretch x - a of its ground friction spring, a where it is
   // anchored (core/contact/GroundContact.h; 0 off the ground). Committed only.
   Eigen::VectorXd stretch;

@@ -60,6 +60,9 @@ struct StepRule {
   Scheme scheme = Scheme::Static;
   // Mid-point strain weight: stress resultants from (1/2+alpha) E_{n+1} + (1/2-alpha) E_n.
   double alpha = 0;
+  // Mid-point velocity weight: (d_n+1 - d_n)/h = (v_n+1 + v_n)/2 + beta (v_n+1 - v_n),
+  // which takes beta m |v_n+1 - v_n|^2 from a mass m in a step.
+  double beta = 0;
   // The step's length t_n+1 - t_n (dynamic rules; 0 in statics): rates over
   // the step, a dashpot's.
   double h = 0;

@@ -302,7 +302,7 @@ Status Analysis::commitEvaluated() {
     if (el) el->commit();
   infill_.afterCommit(model_, state_.t);
   hinges_.committed();
-  account_.released(assembler_.commitContact(state_));
+  account_.released(assembler_.commitContact(state_, stepRule()));
   if (path_) {
     path_->endStep(stepInc_, stepDlambda_);
     path_->setStepScale(1.0);

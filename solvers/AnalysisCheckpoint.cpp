@@ -24,7 +24,7 @@ void Analysis::writeState(std::ostream& out) const {
   if (path_) path_->write(out);
   putTag(out, "STAT");
   for (const Eigen::VectorXd* x : {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn,
-                                   &state_.an, &state_.crush, &state_.stretch})
+                                   &state_.an, &state_.crush, &state_.owed, &state_.stretch})
     putVector(out, *x);
   putCount(out, state_.pairs.size());
   for (const PairMemory& m : state_.pairs) {
@@ -80,7 +80,7 @@ void Analysis::readState(std::istream& in) {
   if (getBool(in)) path_ = PathFollowing::read(in);
   expectTag(in, "STAT");
   for (Eigen::VectorXd* x : {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an,
-                             &state_.crush, &state_.stretch})
+                             &state_.crush, &state_.owed, &state_.stretch})
     *x = getVector(in);
   state_.pairs.resize(getCount(in));
   for (PairMemory& m : state_.pairs) {
@@ -99,7 +99,8 @@ void Analysis::readState(std::istream& in) {
   for (const Eigen::VectorXd* x :
        {&state_.u, &state_.v, &state_.a, &state_.un, &state_.vn, &state_.an})
     if (x->size() != nd) throw CheckpointError("state vectors do not match the model's node count");
-  if (state_.crush.size() != model_.numNodes() || state_.stretch.size() != model_.numNodes())
+  if (state_.crush.size() != model_.numNodes() || state_.owed.size() != model_.numNodes() ||
+      state_.stretch.size() != model_.numNodes())
     throw CheckpointError("state vectors do not match the model's node count");
   topologyChanged();
   expectTag(in, "BOOK");

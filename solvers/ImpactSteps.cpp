@@ -46,6 +46,12 @@ double ImpactSteps::need(const ContactMotion& c, const StepRule& rule, double ne
     const double peak = crushingPeak(c.k, c.e, c.m, c.p1, c.r1);
     if (c.p1 <= (1 - c.e * c.e) * peak) return kEvent;
     eta = (peak / std::max({c.q, c.p0, c.p1}) - 1) / (newmark ? kPeakNewmark : kPeak);
+    // The mid-point scheme's decay over the turn, beta m (r1 - r0)^2, which the
+    // contact gives back as the loading's and the unloading's in shares that
+    // only a short step makes exact (core/contact/GroundContact.h).
+    if (rule.beta > 0 && c.m > 0 && std::isfinite(c.m))
+      eta = std::max(eta, rule.beta * c.m * (c.r1 - c.r0) * (c.r1 - c.r0) /
+                              (kTolerance * c.e * c.e * energy));
   }
   const double dp = c.p1 - c.p0;
   double error = 0;

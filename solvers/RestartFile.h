@@ -25,7 +25,7 @@
 
 namespace c2d {
 
-inline constexpr unsigned kRestartVersion = 23;  // 17: infill struts; 18: section shapes; 19: rigid end zones; 20: the site's zones and fall; 21: shear failures counted; 22: weakened sections' kept share; 23: joints at rigid zones' faces
+inline constexpr unsigned kRestartVersion = 24;  // 17: infill struts; 18: section shapes; 19: rigid end zones; 20: the site's zones and fall; 21: shear failures counted; 22: weakened sections' kept share; 23: joints at rigid zones' faces; 24: ground impacts' owed energy
 
 // Writes the committed state: call Analysis::commit() first. `extra` is the
 // caller's own section (opaque here); `input` the fingerprint of the model as

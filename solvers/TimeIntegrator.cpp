@@ -39,6 +39,7 @@ StepRule TimeIntegrator::rule(double dt) const {
     case Kind::MidPoint: {
       r.scheme = Scheme::MidPoint;
       r.alpha = alpha;
+      r.beta = betaV;
       r.h = dt;
       const double w = 0.5 + betaV;
       r.cv = 1.0 / (w * dt);

@@ -82,6 +82,15 @@ double crushingLoadingPoint(double k, double e, double q, double m, double p1, d
   return std::max(after, crushingPeak(k, e, m, p1, r1));
 }
 
+double crushingRaised(double k, double e, double q, double p, double extra) {
+  if (!(e < 1) || p <= 0 || q <= p || !(extra > 0)) return q;
+  const double a = 1 - e * e, ku = k / (e * e);
+  const double u = crushingEnergy(k, e, q, p) + extra;
+  if (u >= 0.5 * e * e * k * p * p) return p;
+  // (k / e^2)(p - a q')^2 / 2 = u on the unloading branch.
+  return std::clamp((p - std::sqrt(2 * u / ku)) / a, p, q);
+}
+
 double crushingEnergy(double k, double e, double q, double p) {
   if (p <= 0) return 0.0;
   if (e >= 1) return 0.5 * k * p * p;

@@ -41,6 +41,13 @@ double crushingEnergy(double k, double e, double q, double p);
 // The loading point after a step that ends at penetration p (0 out of contact).
 inline double crushingLoadingPoint(double q, double p) { return p > 0 ? (p > q ? p : q) : 0.0; }
 
+// The loading point, in [p, q], at which a contact at penetration p stores
+// `extra` more than at q (q > p: on the unloading branch or in the set): a
+// lower loading point, a smaller set and a stiffer push back. At most what
+// the law can store at p (the loading point p, U = e^2 k p^2 / 2). q itself
+// for e = 1 (the elastic law stores k p^2 / 2 whatever q) or p <= 0.
+double crushingRaised(double k, double e, double q, double p, double extra);
+
 // The peak of an impact whose turn fell inside a step: the loading point from
 // which a mass m, unloading along the law (stiffness k, restitution e < 1),
 // comes back to the penetration p > 0 at the rate r = dp/dt < 0. On the

@@ -26,6 +26,32 @@ double loadingPoint(const Ground& g, double q, double m, double y, double vn, do
   return crushingLoadingPoint(g.k, g.restitution, q, m, penetration(g, y), -vn, -v);
 }
 
+ImpactOwed groundImpactOwed(const Ground& g, double q, double loading, double owed, double p0,
+                            double p1, double m, double vn, double v, const StepRule& rule) {
+  if (p1 <= 0 || !crushes(g) || rule.scheme != Scheme::MidPoint || !(rule.beta > 0) ||
+      !(m > 0 && std::isfinite(m)))
+    return {loading, 0.0, 0.0};
+  const double e2 = g.restitution * g.restitution;
+  // A node inside its dent at both ends (below the set) is not pushed: its
+  // loss is not the contact's.
+  const double set = std::max(q, p0) * (1 - e2);
+  const double loss = p0 <= set && p1 <= set ? 0.0 : rule.beta * m * (v - vn) * (v - vn);
+  if (p1 >= loading) return {loading, std::max(owed, 0.0) + e2 * loss, 0.0};  // loading
+  // A turn inside the step (the node's velocity changed sign): the loss is
+  // shared between the loading and the unloading as the step's time is, at
+  // a constant force |vn| to |v|.
+  const bool turned = vn < 0 && v > 0;
+  // Below the loading point: a settled contact, or one that reloads, owes nothing.
+  if (!turned && (owed == kImpactSettled || p1 > p0)) return {loading, kImpactSettled, 0.0};
+  const double share = turned ? (e2 * -vn + v) / (v - vn) : 1.0;
+  const double due = std::max(owed, 0.0) + share * loss;
+  if (!(due > 0)) return {loading, 0.0, 0.0};
+  const double raised = crushingRaised(g.k, g.restitution, loading, p1, due);
+  const double given = crushingEnergy(g.k, g.restitution, raised, p1) -
+                       crushingEnergy(g.k, g.restitution, loading, p1);
+  return {raised, std::max(0.0, due - given), given};
+}
+
 ContactForce groundContact(const Ground& g, double q, double yn, double y, const StepRule& rule,
                            const GroundDamper& d) {
   ContactForce out;

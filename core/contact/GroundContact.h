@@ -76,6 +76,31 @@ double contactEnergy(const Ground& g, double q, double y);
 // vertical velocity went from vn to v (core/contact/CrushingLaw.h crushingLoadingPoint).
 double loadingPoint(const Ground& g, double q, double m, double y, double vn, double v);
 
+// What a node's contact owes it at a commit: the mid-point scheme's velocity
+// weight beta takes beta m (v_n+1 - v_n)^2 from a node of mass m in every
+// step (solvers/TimeIntegrator.h), about (pi/2) beta omega h of an impact's
+// energy per contact phase (omega the phase's frequency), which would come
+// out of the restitution. The contact gives it back: while it loads, e^2 of
+// each step's share is owed (what the crushing would have stored of it);
+// while it unloads, the whole share, and what is owed is given back at once
+// by lowering the loading point (crushingRaised: the set shrinks and the law
+// pushes back harder). Once the contact reloads below its loading point
+// before letting go it has settled (a resting node: its ringing is damped as
+// the scheme damps it) and owes nothing until it loads past its loading
+// point again or leaves the ground. With it a node leaves at e v under
+// DYNAmic,ENERgy's decay too (ImpactRestitutionTest).
+inline constexpr double kImpactSettled = -1;
+struct ImpactOwed {
+  double q = 0;      // the loading point after the commit
+  double owed = 0;   // what stays owed (kImpactSettled once settled)
+  double given = 0;  // the energy given back at the commit (>= 0)
+};
+// The node's loading point was q at t_n and is `loading` after the step
+// (loadingPoint), its penetration p0 at t_n and p1 at t_n+1, its mass m and
+// its vertical velocity from vn to v; owed: what it owed at t_n.
+ImpactOwed groundImpactOwed(const Ground& g, double q, double loading, double owed, double p0,
+                            double p1, double m, double vn, double v, const StepRule& rule);
+
 // Force and its stiffness for the node's vertical position yn (t_n) and y (t_n+1)
 // and its loading point q at t_n, under the step rule, with the node's dashpot
 // d. Mid-point: the work of the crushing law on the straight path from yn to y

@@ -2,7 +2,7 @@
 # Renews every figure the documents quote from a study: runs each study deck
 # below whole (its jittered runs, -j 2), writes docs/figures.md from their
 # tables (docs/figures/tables.py), then draws the gallery again
-# (docs/gallery/make.sh). About an hour of CPU (-j 2: half that).
+# (docs/gallery/make.sh). About an hour and a half of CPU (-j 2: half that).
 # usage: sh docs/figures/renew.sh [path/to/collapse2d]   (default: build/collapse2d)
 # A study joins with one line below (the deck, then options for its run); the
 # documents then quote its section of docs/figures.md.
@@ -26,6 +26,7 @@ while read -r deck args; do
   [ "$status" -eq 0 ] || [ "$status" -eq 2 ] || exit "$status"
   stems="$stems $stem"
 done <<'LIST'
+decks/collapse/six_story_demolition_ensemble.inp
 decks/collapse/six_story_fall_ensemble.inp
 decks/demolition/gsa_weak_ensemble.inp
 decks/demolition/felling_ensemble.inp
