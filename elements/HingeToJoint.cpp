@@ -79,31 +79,36 @@ std::array<bool, 2> jointedEnds(const Element& e) {
   throw AnalysisError("HINGE2JOINT: element " + std::to_string(element + 1) + ": " + why);
 }
 
-// The joint-making shared by HINGE2JOINT and the joints of failed hinges:
-// elements for which wantsJoint() holds get a joint, elements for which
-// rebuild() holds (and those) are rebuilt as Reissner beams.
-std::vector<CreatedJoint> convert(
-    Model& model, State& state, MemberLaws laws,
-    const std::function<bool(const Element&, const HingeInfo&)>& wantsJoint,
-    const std::function<bool(const Element&)>& rebuildAlways) {
-  state.resize(model.numNodes());
+// What the joint-making knows of every element before it rebuilds any.
+struct Survey {
+  std::vector<char> rebuild, joint;  // rebuild: 2 always, 1 for its joint
+  std::vector<SectionForces> forces;
+  std::vector<std::optional<HingedBendingState>> sections;
+  std::vector<ElemVec> endForces;
+  std::map<int, Relative> slaves;  // slave node -> its joint's master and relative state
+  std::map<int, int> hingeEnd;     // element -> end that gets the slave
+};
+
+// 1. Section forces (and end moments) of every element to be rebuilt, at the
+//    current displacements.
+Survey surveyElements(Model& model, const State& state,
+                      const std::function<bool(const Element&, const HingeInfo&)>& wantsJoint,
+                      const std::function<bool(const Element&)>& rebuildAlways) {
   const StepRule statics{};
   const int ne = model.numElements();
-
-  // 1. Section forces (and end moments) of every element to be rebuilt, at the
-  //    current displacements.
-  std::vector<char> rebuild(ne, 0), joint(ne, 0);  // rebuild: 2 always, 1 for its joint
-  std::vector<SectionForces> forces(ne);
-  std::vector<std::optional<HingedBendingState>> sections(ne);
-  std::vector<ElemVec> endForces(ne, ElemVec::Zero());
-  std::map<int, Relative> slaves;  // slave node -> its joint's master and relative state
+  Survey s;
+  s.rebuild.assign(ne, 0);
+  s.joint.assign(ne, 0);
+  s.forces.resize(ne);
+  s.sections.resize(ne);
+  s.endForces.assign(ne, ElemVec::Zero());
   for (int e = 0; e < ne; ++e) {
     if (!model.hasElement(e) || isBrace(model.element(e))) continue;  // struts stay as they are
     Element& el = model.element(e);
     const auto* carrier = dynamic_cast<const HingeCarrier*>(&innermost(el));
-    joint[e] = carrier && wantsJoint(el, carrier->hinge());
-    rebuild[e] = rebuildAlways(el) ? 2 : joint[e];
-    if (!rebuild[e]) continue;
+    s.joint[e] = carrier && wantsJoint(el, carrier->hinge());
+    s.rebuild[e] = rebuildAlways(el) ? 2 : s.joint[e];
+    if (!s.rebuild[e]) continue;
     // The innermost element at the joints' relative rotations and rates as
     // committed (the call comes after a commit: trial and committed agree):
     // they belong to the motion so far (a static solve of the joints would
@@ -115,29 +120,38 @@ std::vector<CreatedJoint> convert(
     if (Status st = in.evaluate(innermostKinematics(el, state), statics, false, r, k); !st)
       fail(e, st.why);
     for (auto* je = asJointed(&el); je; je = asJointed(&je->inner()))
-      slaves[je->slaveNode()] =
+      s.slaves[je->slaveNode()] =
           Relative{je->masterNode(), je->committedRelativeRotation(),
                    je->committedRelativeVelocity(), je->committedRelativeAcceleration(),
                    je->committedShiftVelocity(), je->committedShiftAcceleration()};
-    forces[e] = in.sectionForces();
-    sections[e] = sectionOf(el);
-    endForces[e] = r;
+    s.forces[e] = in.sectionForces();
+    s.sections[e] = sectionOf(el);
+    s.endForces[e] = r;
   }
+  return s;
+}
 
-  // 2. A joint for every hinge that asks for one.
+// The end of element e whose section the hinge lies nearer (a tie: the end
+// with the larger moment).
+int hingeSide(const HingeInfo& h, const ElemVec& endForces) {
+  int end = 0;
+  if (h.position > 0.5 + kTieTolerance) {
+    end = 1;
+  } else if (std::abs(h.position - 0.5) <= kTieTolerance) {
+    const double m1 = std::abs(endForces(2)), m2 = std::abs(endForces(5));
+    end = m2 > m1 + kTieTolerance * (m1 + m2) ? 1 : 0;
+  }
+  return end;
+}
+
+// 2. A joint for every hinge that asks for one.
+std::vector<CreatedJoint> placeJoints(Model& model, Survey& s) {
   std::vector<CreatedJoint> created;
-  std::map<int, int> hingeEnd;  // element -> end that gets the slave
   const std::vector<int> attached = nodeAttachments(model);
-  for (int e = 0; e < ne; ++e) {
-    if (!joint[e]) continue;
+  for (int e = 0; e < static_cast<int>(s.joint.size()); ++e) {
+    if (!s.joint[e]) continue;
     const HingeInfo h = dynamic_cast<const HingeCarrier&>(innermost(model.element(e))).hinge();
-    int end = 0;
-    if (h.position > 0.5 + kTieTolerance) {
-      end = 1;
-    } else if (std::abs(h.position - 0.5) <= kTieTolerance) {
-      const double m1 = std::abs(endForces[e](2)), m2 = std::abs(endForces[e](5));
-      end = m2 > m1 + kTieTolerance * (m1 + m2) ? 1 : 0;
-    }
+    int end = hingeSide(h, s.endForces[e]);
     const std::array<bool, 2> taken = jointedEnds(model.element(e));
     const std::array<int, 2> ends = model.element(e).nodes();
     // A member breaks where it carries a moment to the rest, never at a free
@@ -150,8 +164,8 @@ std::vector<CreatedJoint> convert(
     };
     if (!breaks(end)) end = 1 - end;
     if (!breaks(end)) {
-      joint[e] = 0;
-      if (rebuild[e] == 1) rebuild[e] = 0;  // nothing to rebuild it for
+      s.joint[e] = 0;
+      if (s.rebuild[e] == 1) s.rebuild[e] = 0;  // nothing to rebuild it for
       continue;
     }
     CreatedJoint cj;
@@ -163,75 +177,88 @@ std::vector<CreatedJoint> convert(
     cj.position = h.position;
     cj.jump = h.jump;
     cj.relativeRotation = end == 0 ? h.jump : -h.jump;
-    slaves[cj.slave] = Relative{cj.master, cj.relativeRotation, 0, 0, Vec2::Zero(), Vec2::Zero()};
-    hingeEnd[e] = end;
+    s.slaves[cj.slave] = Relative{cj.master, cj.relativeRotation, 0, 0, Vec2::Zero(), Vec2::Zero()};
+    s.hingeEnd[e] = end;
     created.push_back(cj);
   }
-  state.resize(model.numNodes());
+  return created;
+}
 
-  // 3. Every element rebuilt as a Reissner beam with the old section forces.
-  for (int e = 0; e < ne; ++e) {
-    if (!rebuild[e]) continue;
-    std::unique_ptr<Element> old = std::move(model.elements()[e]);
-    while (auto* je = asJointed(old.get())) old = je->release();
-    std::array<int, 2> nodes = old->nodes();
-    if (auto it = hingeEnd.find(e); it != hingeEnd.end()) {
-      for (const CreatedJoint& cj : created)
-        if (cj.element == e) nodes[it->second] = cj.slave;
-    }
-    const MaterialSet* source = model.material(old->materialNumber());
-    if (!source) fail(e, "material set " + std::to_string(old->materialNumber()) + " is missing");
-    MaterialSet mat = *source;
-    mat.kinematics = Kinematics::Finite;
-    if (laws == MemberLaws::Elastic) {
-      mat.hardening.reset();
-      mat.softening.reset();
-      mat.section.reset();
-      mat.rc.reset();
-      mat.capacity.reset();
-    }
-    auto frame = std::make_unique<ReissnerFrame>(mat, nodes, model.coord(nodes[0]),
-                                                 model.coord(nodes[1]), rigidOffsets(*old));
-
-    // Displacements the new element sees: a slave end moves with its master and
-    // rotates by psi_m + psi_r; with a rigid end zone its face moves with the
-    // master's arm (the slave node shifted, elements/JointedElement.h).
-    ElemVec d;
-    for (int a = 0; a < 2; ++a) {
-      int node = nodes[a];
-      double extra = 0;
-      if (auto it = slaves.find(node); it != slaves.end()) {
-        node = it->second.master;
-        extra = it->second.psi;
-      }
-      d.segment<kNodeDofs>(a * kNodeDofs) =
-          state.u.segment<kNodeDofs>(static_cast<Eigen::Index>(node) * kNodeDofs);
-      const double psiM = d(a * kNodeDofs + 2);
-      d(a * kNodeDofs + 2) += extra;
-      const RigidEnds& rigid = frame->rigidEnds();
-      d.segment<2>(a * kNodeDofs) += rigid.armMotion(a, psiM) - rigid.armMotion(a, psiM + extra);
-    }
-    const SectionForces& f = forces[e];
-    const Vec3 c = frame->sectionStiffness();
-    double kp = 0;
-    if (!frame->bendingLaw().isElastic()) {
-      HingedBendingState section = sections[e].value_or(HingedBendingState{});
-      if (joint[e]) {  // the jump went into the joint: the section closes, capacity fresh
-        section.jump = SofteningState{};
-        section.hingeActive = section.hingeFailed = false;
-      }
-      section.M = f.M;
-      // A hinge kept (no end to break at) keeps its jump in the bulk curvature.
-      kp = section.bulk.kp + section.jump.alpha / frame->length();
-      frame->setSection(section);
-    }
-    frame->setInitialStrain(frame->strains(d) - Vec3(f.N / c(0), f.V / c(1), kp + f.M / c(2)));
-    model.elements()[e] = std::move(frame);
+// The material of the rebuilt element: finite kinematics, and with elastic
+// member laws none of the inelastic ones.
+MaterialSet rebuiltMaterial(const Model& model, const Element& old, int e, MemberLaws laws) {
+  const MaterialSet* source = model.material(old.materialNumber());
+  if (!source) fail(e, "material set " + std::to_string(old.materialNumber()) + " is missing");
+  MaterialSet mat = *source;
+  mat.kinematics = Kinematics::Finite;
+  if (laws == MemberLaws::Elastic) {
+    mat.hardening.reset();
+    mat.softening.reset();
+    mat.section.reset();
+    mat.rc.reset();
+    mat.capacity.reset();
   }
-  for (const CreatedJoint& cj : created)
-    model.joints().push_back(Joint{cj.master, cj.slave, JointForm::Condensed});
+  return mat;
+}
 
-  // 4. Wrap the slave ends, restore the relative states, write the slave nodes.
+// Displacements the new element sees: a slave end moves with its master and
+// rotates by psi_m + psi_r; with a rigid end zone its face moves with the
+// master's arm (the slave node shifted, elements/JointedElement.h).
+ElemVec rebuiltDisplacements(const State& state, const ReissnerFrame& frame,
+                             const std::array<int, 2>& nodes,
+                             const std::map<int, Relative>& slaves) {
+  ElemVec d;
+  for (int a = 0; a < 2; ++a) {
+    int node = nodes[a];
+    double extra = 0;
+    if (auto it = slaves.find(node); it != slaves.end()) {
+      node = it->second.master;
+      extra = it->second.psi;
+    }
+    d.segment<kNodeDofs>(a * kNodeDofs) =
+        state.u.segment<kNodeDofs>(static_cast<Eigen::Index>(node) * kNodeDofs);
+    const double psiM = d(a * kNodeDofs + 2);
+    d(a * kNodeDofs + 2) += extra;
+    const RigidEnds& rigid = frame.rigidEnds();
+    d.segment<2>(a * kNodeDofs) += rigid.armMotion(a, psiM) - rigid.armMotion(a, psiM + extra);
+  }
+  return d;
+}
+
+// 3. Element e rebuilt as a Reissner beam with the old section forces.
+void rebuildElement(Model& model, const State& state, int e, MemberLaws laws, const Survey& s,
+                    const std::vector<CreatedJoint>& created) {
+  std::unique_ptr<Element> old = std::move(model.elements()[e]);
+  while (auto* je = asJointed(old.get())) old = je->release();
+  std::array<int, 2> nodes = old->nodes();
+  if (auto it = s.hingeEnd.find(e); it != s.hingeEnd.end()) {
+    for (const CreatedJoint& cj : created)
+      if (cj.element == e) nodes[it->second] = cj.slave;
+  }
+  const MaterialSet mat = rebuiltMaterial(model, *old, e, laws);
+  auto frame = std::make_unique<ReissnerFrame>(mat, nodes, model.coord(nodes[0]),
+                                               model.coord(nodes[1]), rigidOffsets(*old));
+  const ElemVec d = rebuiltDisplacements(state, *frame, nodes, s.slaves);
+  const SectionForces& f = s.forces[e];
+  const Vec3 c = frame->sectionStiffness();
+  double kp = 0;
+  if (!frame->bendingLaw().isElastic()) {
+    HingedBendingState section = s.sections[e].value_or(HingedBendingState{});
+    if (s.joint[e]) {  // the jump went into the joint: the section closes, capacity fresh
+      section.jump = SofteningState{};
+      section.hingeActive = section.hingeFailed = false;
+    }
+    section.M = f.M;
+    // A hinge kept (no end to break at) keeps its jump in the bulk curvature.
+    kp = section.bulk.kp + section.jump.alpha / frame->length();
+    frame->setSection(section);
+  }
+  frame->setInitialStrain(frame->strains(d) - Vec3(f.N / c(0), f.V / c(1), kp + f.M / c(2)));
+  model.elements()[e] = std::move(frame);
+}
+
+// 4. Wrap the slave ends, restore the relative states, write the slave nodes.
+void restoreJoints(Model& model, State& state, const std::map<int, Relative>& slaves) {
   installJoints(model);
   for (JointedElement* je : jointedElements(model)) {
     auto it = slaves.find(je->slaveNode());
@@ -246,9 +273,12 @@ std::vector<CreatedJoint> convert(
   state.tn = state.t;
   state.propn = state.prop;
   state.arcLambdan = state.arcLambda;
+}
 
-  // 5. Report and history of the new elements at that state.
-  for (int e = 0; e < ne; ++e) {
+// 5. Report and history of the new elements at that state.
+void commitRebuilt(Model& model, const State& state, const std::vector<char>& rebuild) {
+  const StepRule statics{};
+  for (int e = 0; e < static_cast<int>(rebuild.size()); ++e) {
     if (!rebuild[e]) continue;
     Element& el = model.element(e);
     ElemVec r;
@@ -258,7 +288,26 @@ std::vector<CreatedJoint> convert(
       fail(e, st.why);
     in.commit();
   }
-  if (std::any_of(rebuild.begin(), rebuild.end(), [](char r) { return r != 0; }))
+}
+
+// The joint-making shared by HINGE2JOINT and the joints of failed hinges:
+// elements for which wantsJoint() holds get a joint, elements for which
+// rebuild() holds (and those) are rebuilt as Reissner beams.
+std::vector<CreatedJoint> convert(
+    Model& model, State& state, MemberLaws laws,
+    const std::function<bool(const Element&, const HingeInfo&)>& wantsJoint,
+    const std::function<bool(const Element&)>& rebuildAlways) {
+  state.resize(model.numNodes());
+  Survey s = surveyElements(model, state, wantsJoint, rebuildAlways);
+  std::vector<CreatedJoint> created = placeJoints(model, s);
+  state.resize(model.numNodes());
+  for (int e = 0; e < static_cast<int>(s.rebuild.size()); ++e)
+    if (s.rebuild[e]) rebuildElement(model, state, e, laws, s, created);
+  for (const CreatedJoint& cj : created)
+    model.joints().push_back(Joint{cj.master, cj.slave, JointForm::Condensed});
+  restoreJoints(model, state, s.slaves);
+  commitRebuilt(model, state, s.rebuild);
+  if (std::any_of(s.rebuild.begin(), s.rebuild.end(), [](char r) { return r != 0; }))
     model.bumpTopology();
   return created;
 }
