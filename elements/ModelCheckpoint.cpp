@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "core/io/Checkpoint.h"
@@ -110,7 +111,9 @@ std::unique_ptr<Element> readElement(std::istream& in, const Model& model) {
   return el;
 }
 
-void writeModel(std::ostream& out, const Model& model) {
+namespace {
+
+void writeNodes(std::ostream& out, const Model& model) {
   putTag(out, "MODL");
   putCount(out, static_cast<std::size_t>(model.numNodes()));
   for (int n = 0; n < model.numNodes(); ++n) {
@@ -123,6 +126,52 @@ void writeModel(std::ostream& out, const Model& model) {
       put(out, model.loadTable(n)[d]);
     }
   }
+}
+
+// The hinge laws of a material set: hardening, softening, the hinge site and
+// the N-M interaction.
+void writeHingeLaws(std::ostream& out, const MaterialSet& m) {
+  putBool(out, m.hardening.has_value());
+  if (m.hardening) {
+    for (double x : {m.hardening->Mc, m.hardening->My, m.hardening->Kh1, m.hardening->Kh2})
+      put(out, x);
+    putBool(out, m.hardening->negative.has_value());
+    if (const auto& n = m.hardening->negative)
+      for (double x : {n->Mc, n->My, n->Kh1, n->Kh2}) put(out, x);
+  }
+  putBool(out, m.softening.has_value());
+  if (m.softening) {
+    for (double x : {m.softening->Mu, m.softening->Ks}) put(out, x);
+    putOptional(out, m.softening->thetaR);
+    put(out, m.softening->Mr);
+    put(out, m.softening->pieceLength);
+    putBool(out, m.softening->negative.has_value());
+    if (const auto& n = m.softening->negative)
+      for (double x : {n->first, n->second}) put(out, x);
+  }
+  put(out, m.hingeSite);
+  putCount(out, m.interaction.size());
+  for (const auto& [n, mu] : m.interaction)
+    for (double x : {n, mu}) put(out, x);
+}
+
+void writeSection(std::ostream& out, const std::optional<RcSectionData>& section) {
+  putBool(out, section.has_value());
+  if (const auto& sec = section) {
+    put(out, sec->shape);
+    for (double x : {sec->b, sec->h, sec->fc, sec->fy, sec->Es, sec->fu, sec->eu,
+                     sec->flangeWidth, sec->flangeDepth, sec->wall, sec->kept})
+      put(out, x);
+    putCount(out, sec->bars.size());
+    for (const RebarLayer& r : sec->bars)
+      for (double x : {r.depth, r.area}) put(out, x);
+    putBool(out, sec->stirrups.has_value());
+    if (const auto& st = sec->stirrups)
+      for (double x : {st->area, st->spacing, st->fy}) put(out, x);
+  }
+}
+
+void writeMaterials(std::ostream& out, const Model& model) {
   putTag(out, "MATS");
   putCount(out, model.materials().size());
   for (const auto& [number, m] : model.materials()) {
@@ -137,42 +186,12 @@ void writeModel(std::ostream& out, const Model& model) {
     putBool(out, m.shear);
     put(out, m.kinematics);
     put(out, m.mass);
-    putBool(out, m.hardening.has_value());
-    if (m.hardening) {
-      for (double x : {m.hardening->Mc, m.hardening->My, m.hardening->Kh1, m.hardening->Kh2})
-        put(out, x);
-      putBool(out, m.hardening->negative.has_value());
-      if (const auto& n = m.hardening->negative)
-        for (double x : {n->Mc, n->My, n->Kh1, n->Kh2}) put(out, x);
-    }
-    putBool(out, m.softening.has_value());
-    if (m.softening) {
-      for (double x : {m.softening->Mu, m.softening->Ks}) put(out, x);
-      putOptional(out, m.softening->thetaR);
-      put(out, m.softening->Mr);
-      put(out, m.softening->pieceLength);
-      putBool(out, m.softening->negative.has_value());
-      if (const auto& n = m.softening->negative)
-        for (double x : {n->first, n->second}) put(out, x);
-    }
-    put(out, m.hingeSite);
-    putCount(out, m.interaction.size());
-    for (const auto& [n, mu] : m.interaction)
-      for (double x : {n, mu}) put(out, x);
-    putBool(out, m.section.has_value());
-    if (const auto& sec = m.section) {
-      put(out, sec->shape);
-      for (double x : {sec->b, sec->h, sec->fc, sec->fy, sec->Es, sec->fu, sec->eu,
-                       sec->flangeWidth, sec->flangeDepth, sec->wall, sec->kept})
-        put(out, x);
-      putCount(out, sec->bars.size());
-      for (const RebarLayer& r : sec->bars)
-        for (double x : {r.depth, r.area}) put(out, x);
-      putBool(out, sec->stirrups.has_value());
-      if (const auto& st = sec->stirrups)
-        for (double x : {st->area, st->spacing, st->fy}) put(out, x);
-    }
+    writeHingeLaws(out, m);
+    writeSection(out, m.section);
   }
+}
+
+void writeElementsAndJoints(std::ostream& out, const Model& model) {
   putTag(out, "ELEM");
   putCount(out, static_cast<std::size_t>(model.numElements()));
   for (const auto& el : model.elements()) {
@@ -186,6 +205,10 @@ void writeModel(std::ostream& out, const Model& model) {
     put(out, j.slave);
     put(out, j.form);
   }
+}
+
+// Ground and member contact, and gravity.
+void writeContact(std::ostream& out, const Model& model) {
   putTag(out, "GRND");
   putBool(out, model.ground().has_value());
   if (model.ground())
@@ -199,7 +222,10 @@ void writeModel(std::ostream& out, const Model& model) {
           model.memberContact()->restitution, model.memberContact()->mu})
       put(out, x);
   putFixed(out, model.gravity());
-  // Floor loads, nodal masses, the site.
+}
+
+// Floor loads, nodal masses, the site.
+void writeLoads(std::ostream& out, const Model& model) {
   putTag(out, "LOAD");
   putCount(out, model.elementLoads().size());
   for (const ElementLoad& l : model.elementLoads()) {
@@ -220,6 +246,10 @@ void writeModel(std::ostream& out, const Model& model) {
     }
     for (double x : {site->flyrockMass, site->riskLevel, site->riskConfidence}) put(out, x);
   }
+}
+
+// Blasts and the forces their released elements left.
+void writeBlasts(std::ostream& out, const Model& model) {
   putTag(out, "BLST");
   putCount(out, model.blasts().size());
   for (const Blast& b : model.blasts()) {
@@ -236,11 +266,10 @@ void writeModel(std::ostream& out, const Model& model) {
     put(out, f.start);
     put(out, f.duration);
   }
-  put(out, model.topologyVersion());
 }
 
-Model readModel(std::istream& in, int minTopologyVersion) {
-  Model model;
+// The node records; returns the node count.
+int readNodes(std::istream& in, Model& model) {
   expectTag(in, "MODL");
   // A node's record: its coordinates, a flag, and per dof a code, a force, a
   // displacement and a load table (89 bytes).
@@ -261,6 +290,65 @@ Model readModel(std::istream& in, int minTopologyVersion) {
       model.loadTable(n)[d] = get<int>(in);
     }
   }
+  return nodes;
+}
+
+void readHingeLaws(std::istream& in, MaterialSet& m) {
+  if (getBool(in)) {
+    HardeningData h;
+    for (double* x : {&h.Mc, &h.My, &h.Kh1, &h.Kh2}) *x = get<double>(in);
+    if (getBool(in)) {
+      HardeningValues n;
+      for (double* x : {&n.Mc, &n.My, &n.Kh1, &n.Kh2}) *x = get<double>(in);
+      h.negative = n;
+    }
+    m.hardening = h;
+  }
+  if (getBool(in)) {
+    SofteningData s;
+    for (double* x : {&s.Mu, &s.Ks}) *x = get<double>(in);
+    s.thetaR = getOptional(in);
+    s.Mr = get<double>(in);
+    s.pieceLength = get<double>(in);
+    if (getBool(in)) {
+      const double mu = get<double>(in), ks = get<double>(in);
+      s.negative = std::make_pair(mu, ks);
+    }
+    m.softening = s;
+  }
+  m.hingeSite = get<HingeSite>(in);
+  const std::size_t pairs = getCount(in);
+  for (std::size_t i = 0; i < pairs; ++i) {
+    const double n = get<double>(in), mu = get<double>(in);
+    m.interaction.emplace_back(n, mu);
+  }
+}
+
+void readSection(std::istream& in, MaterialSet& m) {
+  if (!getBool(in)) return;
+  RcSectionData sec;
+  sec.shape = get<SectionShapeKind>(in);
+  if (static_cast<int>(sec.shape) < 0 || static_cast<int>(sec.shape) > 3)
+    throw CheckpointError("material " + std::to_string(m.number) + ": unknown section shape");
+  for (double* x : {&sec.b, &sec.h, &sec.fc, &sec.fy, &sec.Es, &sec.fu, &sec.eu,
+                    &sec.flangeWidth, &sec.flangeDepth, &sec.wall, &sec.kept})
+    *x = get<double>(in);
+  const std::size_t layers = getCount(in);
+  for (std::size_t i = 0; i < layers; ++i) {
+    RebarLayer r;
+    r.depth = get<double>(in);
+    r.area = get<double>(in);
+    sec.bars.push_back(r);
+  }
+  if (getBool(in)) {
+    Stirrups st;
+    for (double* x : {&st.area, &st.spacing, &st.fy}) *x = get<double>(in);
+    sec.stirrups = st;
+  }
+  m.section = sec;
+}
+
+void readMaterials(std::istream& in, Model& model) {
   expectTag(in, "MATS");
   const std::size_t mats = getCount(in);
   for (std::size_t k = 0; k < mats; ++k) {
@@ -276,56 +364,8 @@ Model readModel(std::istream& in, int minTopologyVersion) {
     m.shear = getBool(in);
     m.kinematics = get<Kinematics>(in);
     m.mass = get<MassType>(in);
-    if (getBool(in)) {
-      HardeningData h;
-      for (double* x : {&h.Mc, &h.My, &h.Kh1, &h.Kh2}) *x = get<double>(in);
-      if (getBool(in)) {
-        HardeningValues n;
-        for (double* x : {&n.Mc, &n.My, &n.Kh1, &n.Kh2}) *x = get<double>(in);
-        h.negative = n;
-      }
-      m.hardening = h;
-    }
-    if (getBool(in)) {
-      SofteningData s;
-      for (double* x : {&s.Mu, &s.Ks}) *x = get<double>(in);
-      s.thetaR = getOptional(in);
-      s.Mr = get<double>(in);
-      s.pieceLength = get<double>(in);
-      if (getBool(in)) {
-        const double mu = get<double>(in), ks = get<double>(in);
-        s.negative = std::make_pair(mu, ks);
-      }
-      m.softening = s;
-    }
-    m.hingeSite = get<HingeSite>(in);
-    const std::size_t pairs = getCount(in);
-    for (std::size_t i = 0; i < pairs; ++i) {
-      const double n = get<double>(in), mu = get<double>(in);
-      m.interaction.emplace_back(n, mu);
-    }
-    if (getBool(in)) {
-      RcSectionData sec;
-      sec.shape = get<SectionShapeKind>(in);
-      if (static_cast<int>(sec.shape) < 0 || static_cast<int>(sec.shape) > 3)
-        throw CheckpointError("material " + std::to_string(m.number) + ": unknown section shape");
-      for (double* x : {&sec.b, &sec.h, &sec.fc, &sec.fy, &sec.Es, &sec.fu, &sec.eu,
-                        &sec.flangeWidth, &sec.flangeDepth, &sec.wall, &sec.kept})
-        *x = get<double>(in);
-      const std::size_t layers = getCount(in);
-      for (std::size_t i = 0; i < layers; ++i) {
-        RebarLayer r;
-        r.depth = get<double>(in);
-        r.area = get<double>(in);
-        sec.bars.push_back(r);
-      }
-      if (getBool(in)) {
-        Stirrups st;
-        for (double* x : {&st.area, &st.spacing, &st.fy}) *x = get<double>(in);
-        sec.stirrups = st;
-      }
-      m.section = sec;
-    }
+    readHingeLaws(in, m);
+    readSection(in, m);
     try {
       deriveSectionLaws(m);
     } catch (const std::invalid_argument& e) {
@@ -333,6 +373,9 @@ Model readModel(std::istream& in, int minTopologyVersion) {
     }
     model.materials()[key] = std::move(m);
   }
+}
+
+void readElementsAndJoints(std::istream& in, Model& model, int nodes) {
   expectTag(in, "ELEM");
   const std::size_t elements = getCount(in);
   for (std::size_t e = 0; e < elements; ++e) {
@@ -351,6 +394,9 @@ Model readModel(std::istream& in, int minTopologyVersion) {
       throw CheckpointError("joint node out of range");
     model.joints().push_back(j);
   }
+}
+
+void readContact(std::istream& in, Model& model) {
   expectTag(in, "GRND");
   if (getBool(in)) {
     Ground g;
@@ -363,6 +409,29 @@ Model readModel(std::istream& in, int minTopologyVersion) {
     model.memberContact() = c;
   }
   getFixed(in, model.gravity());
+}
+
+void readSite(std::istream& in, Model& model) {
+  if (!getBool(in)) return;
+  Site site;
+  for (double* x : {&site.xmin, &site.xmax}) *x = get<double>(in);
+  const int dir = get<int>(in);
+  if (dir < 0 || dir > static_cast<int>(FallDirection::Down))
+    throw CheckpointError("site with an unknown fall direction");
+  site.dir = static_cast<FallDirection>(dir);
+  const std::size_t zones = getCount(in);
+  for (std::size_t k = 0; k < zones; ++k) {
+    ProtectedZone z;
+    z.name = getString(in);
+    for (double* x : {&z.x1, &z.x2, &z.height, &z.mass}) *x = get<double>(in);
+    site.objects.push_back(std::move(z));
+  }
+  for (double* x : {&site.flyrockMass, &site.riskLevel, &site.riskConfidence})
+    *x = get<double>(in);
+  model.site() = site;
+}
+
+void readLoads(std::istream& in, Model& model, int nodes) {
   expectTag(in, "LOAD");
   const std::size_t loads = getCount(in);
   for (std::size_t k = 0; k < loads; ++k) {
@@ -376,24 +445,10 @@ Model readModel(std::istream& in, int minTopologyVersion) {
   }
   for (int n = 0; n < nodes; ++n)
     for (double& m : model.nodalMass(n)) m = get<double>(in);
-  if (getBool(in)) {
-    Site site;
-    for (double* x : {&site.xmin, &site.xmax}) *x = get<double>(in);
-    const int dir = get<int>(in);
-    if (dir < 0 || dir > static_cast<int>(FallDirection::Down))
-      throw CheckpointError("site with an unknown fall direction");
-    site.dir = static_cast<FallDirection>(dir);
-    const std::size_t zones = getCount(in);
-    for (std::size_t k = 0; k < zones; ++k) {
-      ProtectedZone z;
-      z.name = getString(in);
-      for (double* x : {&z.x1, &z.x2, &z.height, &z.mass}) *x = get<double>(in);
-      site.objects.push_back(std::move(z));
-    }
-    for (double* x : {&site.flyrockMass, &site.riskLevel, &site.riskConfidence})
-      *x = get<double>(in);
-    model.site() = site;
-  }
+  readSite(in, model);
+}
+
+void readBlasts(std::istream& in, Model& model, int nodes) {
   expectTag(in, "BLST");
   const std::size_t blasts = getCount(in);
   for (std::size_t k = 0; k < blasts; ++k) {
@@ -421,6 +476,28 @@ Model readModel(std::istream& in, int minTopologyVersion) {
     f.duration = get<double>(in);
     model.releasedForces().push_back(f);
   }
+}
+
+}  // namespace
+
+void writeModel(std::ostream& out, const Model& model) {
+  writeNodes(out, model);
+  writeMaterials(out, model);
+  writeElementsAndJoints(out, model);
+  writeContact(out, model);
+  writeLoads(out, model);
+  writeBlasts(out, model);
+  put(out, model.topologyVersion());
+}
+
+Model readModel(std::istream& in, int minTopologyVersion) {
+  Model model;
+  const int nodes = readNodes(in, model);
+  readMaterials(in, model);
+  readElementsAndJoints(in, model, nodes);
+  readContact(in, model);
+  readLoads(in, model, nodes);
+  readBlasts(in, model, nodes);
   const int version = get<int>(in);
   while (model.topologyVersion() < std::max(version, minTopologyVersion)) model.bumpTopology();
   return model;
