@@ -157,6 +157,17 @@ class Analysis {
   void applyPrescribed();
   // One Newton iteration (iterate() without the restart of a predicted step).
   Status newtonIteration(bool lineSearch, bool symmetric, IterationInfo& info);
+  // Its steps: the correction du_ for the residual (assembled, factored or the
+  // earlier factors reused, solved); with path following, the load factor's
+  // part of it and the energy; the line search's scale of du_; a converged
+  // dynamic step shortened through an impact (true), or committed at a
+  // removal's landing time; plain Newton cycling handed to the line search.
+  Status newtonCorrection(bool symmetric, IterationInfo& info);
+  Status followPath(IterationInfo& info);
+  double lineSearchScale(bool lineSearch, const IterationInfo& info);
+  bool shortenedForImpact(IterationInfo& info);
+  Status commitAtRemoval(IterationInfo& info);
+  void globalize(IterationInfo& info);
   // Start a step (or part of one) at `time` from the committed state: load
   // factors, prescribed values, rates, a fresh iteration history; the path
   // following takes pathScale of its nominal increment. With `predict`, a

@@ -110,6 +110,55 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
 Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo& info) {
   info = IterationInfo{};
   info.iteration = static_cast<int>(history_.size()) + 1;
+  Status st = newtonCorrection(symmetric, info);
+  if (!st) return st;
+  if (path_) {
+    st = followPath(info);
+    if (!st) return st;
+  } else {
+    info.energy = std::abs(du_.dot(R_));
+  }
+  if (!std::isfinite(info.energy)) return Status::failure("non-finite solution increment");
+  if (info.iteration == 1) energy0_ = info.energy;
+
+  const double s = lineSearchScale(lineSearch, info);
+  applyIncrement(du_, rotationStepLimit(du_, s));
+  dirty_ = true;
+  ++totalIterations_;
+
+  info.converged = convergedAt(info.energy, info.iteration);
+  // Through an impact the step may be too long for a contact: taken again
+  // shorter from the committed state (solvers/ImpactSteps.h).
+  if (info.converged && integrator_.dynamic() && !path_ && !hinges_.locating() &&
+      shortenedForImpact(info))
+    return Status::success();
+  if (info.converged) {
+    syncRates();
+    // A hinge past its ultimate moment: the event is located, and the rest of
+    // the step starts a new iteration history.
+    bool handled = false;
+    st = hinges_.afterConvergence(info, lineSearch || globalized_, handled);
+    if (!st) return st;
+    if (handled) {
+      converged_ = false;
+      return Status::success();
+    }
+  }
+  // A landing time of the member removal inside the step (a blast, the end
+  // of a release): the step is committed there, the removal made, and the
+  // rest of the step starts a new iteration history.
+  if (info.converged && !hinges_.locating() && !path_ &&
+      state_.t < stepEnd_ - MemberRemoval::tolerance(state_.dt))
+    return commitAtRemoval(info);
+  converged_ = info.converged;
+  history_.push_back(info);
+  // Plain Newton cycling (on the kinks of a hardening law, of the contact
+  // laws): the line search of TANG,LINE takes over.
+  if (!info.converged && !lineSearch && !globalized_ && !path_ && cycling()) globalize(info);
+  return Status::success();
+}
+
+Status Analysis::newtonCorrection(bool symmetric, IterationInfo& info) {
   // The first iteration of a static step takes the prescribed displacement
   // increments through the tangent of the converged state (FEAP's treatment of
   // specified boundary values). Evaluated with the increments already in place,
@@ -143,27 +192,28 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
     st = checkSolve();
     if (!st) return st;
   }
-  if (path_) {
-    const StepRule rule = stepRule();
-    dofFactors(state_.t, rule.loadWeight(), lamn_);
-    lamn_ = lamn_.cwiseProduct(assembler_.referenceLoad());
-    assembler_.toEquations(lamn_, F_);
-    st = solver_->solve(F_, duF_);
-    if (!st) return Status::failure("linear solve failed: " + st.why);
-    double dlambda = 0;
-    st = path_->correction(stepInc_, du_, duF_, dlambda);
-    if (!st) return Status::failure("path following: " + st.why);
-    du_ += dlambda * duF_;
-    state_.arcLambda += dlambda;
-    stepDlambda_ += dlambda;
-    // K du = R + dlambda F: the energy of the whole increment.
-    info.energy = std::abs(du_.dot(R_) + dlambda * du_.dot(F_));
-  } else {
-    info.energy = std::abs(du_.dot(R_));
-  }
-  if (!std::isfinite(info.energy)) return Status::failure("non-finite solution increment");
-  if (info.iteration == 1) energy0_ = info.energy;
+  return Status::success();
+}
 
+Status Analysis::followPath(IterationInfo& info) {
+  const StepRule rule = stepRule();
+  dofFactors(state_.t, rule.loadWeight(), lamn_);
+  lamn_ = lamn_.cwiseProduct(assembler_.referenceLoad());
+  assembler_.toEquations(lamn_, F_);
+  Status st = solver_->solve(F_, duF_);
+  if (!st) return Status::failure("linear solve failed: " + st.why);
+  double dlambda = 0;
+  st = path_->correction(stepInc_, du_, duF_, dlambda);
+  if (!st) return Status::failure("path following: " + st.why);
+  du_ += dlambda * duF_;
+  state_.arcLambda += dlambda;
+  stepDlambda_ += dlambda;
+  // K du = R + dlambda F: the energy of the whole increment.
+  info.energy = std::abs(du_.dot(R_) + dlambda * du_.dot(F_));
+  return Status::success();
+}
+
+double Analysis::lineSearchScale(bool lineSearch, const IterationInfo& info) {
   double s = 1.0;
   if ((lineSearch || globalized_) && !path_ && info.iteration > 1 && info.energy > 0) {
     const StepRule rule = stepRule();
@@ -176,77 +226,52 @@ Status Analysis::newtonIteration(bool lineSearch, bool symmetric, IterationInfo&
       return s2.ok;
     });
   }
-  applyIncrement(du_, rotationStepLimit(du_, s));
-  dirty_ = true;
-  ++totalIterations_;
+  return s;
+}
 
-  info.converged = convergedAt(info.energy, info.iteration);
-  // Through an impact the step may be too long for a contact: taken again
-  // shorter from the committed state (solvers/ImpactSteps.h).
-  if (info.converged && integrator_.dynamic() && !path_ && !hinges_.locating()) {
-    syncRates();
-    const double h = impacts_.check(assembler_, state_, stepRule(), state_.dt);
-    if (h > 0) {
-      for (auto& el : model_.elements())
-        if (el) el->revert();
-      state_.u = state_.un;
-      beginStep(state_.tn + h, state_.dt > 0 ? h / state_.dt : 1.0, true);
-      info.converged = false;
-      info.subStep = true;
-      info.shortened = h;
-      converged_ = false;
-      return Status::success();
-    }
-  }
-  if (info.converged) {
-    syncRates();
-    // A hinge past its ultimate moment: the event is located, and the rest of
-    // the step starts a new iteration history.
-    bool handled = false;
-    st = hinges_.afterConvergence(info, lineSearch || globalized_, handled);
-    if (!st) return st;
-    if (handled) {
-      converged_ = false;
-      return Status::success();
-    }
-  }
-  // A landing time of the member removal inside the step (a blast, the end
-  // of a release): the step is committed there, the removal made, and the
-  // rest of the step starts a new iteration history.
-  if (info.converged && !hinges_.locating() && !path_ &&
-      state_.t < stepEnd_ - MemberRemoval::tolerance(state_.dt)) {
-    st = commit();
-    if (!st) return st;
-    const double t = nextStepTime();
-    beginStep(t, state_.dt > 0 ? (t - state_.tn) / state_.dt : 1.0, true);
-    info.converged = false;
-    info.subStep = true;
-    converged_ = false;
-    return Status::success();
-  }
-  converged_ = info.converged;
-  history_.push_back(info);
-  // Plain Newton cycling (on the kinks of a hardening law, of the contact
-  // laws): the line search of TANG,LINE takes over. A static step starts
-  // again from the committed state, so that a step TANG,LINE converges
-  // converges here too, through the same iterates; a dynamic one goes on from
-  // the iterate it reached (from u_n the inertia residual is that of the
-  // whole velocity: the line search took 9-10 iterations more from there on
-  // the main example with member contact).
-  if (!info.converged && !lineSearch && !globalized_ && !path_ && cycling()) {
-    // The iterations from here on are the line search's (a static step's
-    // history starts again with them).
-    history_.back().globalized = true;
-    if (!integrator_.dynamic()) {
-      for (auto& el : model_.elements())
-        if (el) el->revert();
-      state_.u = state_.un;
-      beginStep(state_.t, 1.0, false);
-    }
-    globalized_ = true;
-    info.globalized = true;
-  }
+bool Analysis::shortenedForImpact(IterationInfo& info) {
+  syncRates();
+  const double h = impacts_.check(assembler_, state_, stepRule(), state_.dt);
+  if (!(h > 0)) return false;
+  for (auto& el : model_.elements())
+    if (el) el->revert();
+  state_.u = state_.un;
+  beginStep(state_.tn + h, state_.dt > 0 ? h / state_.dt : 1.0, true);
+  info.converged = false;
+  info.subStep = true;
+  info.shortened = h;
+  converged_ = false;
+  return true;
+}
+
+Status Analysis::commitAtRemoval(IterationInfo& info) {
+  const Status st = commit();
+  if (!st) return st;
+  const double t = nextStepTime();
+  beginStep(t, state_.dt > 0 ? (t - state_.tn) / state_.dt : 1.0, true);
+  info.converged = false;
+  info.subStep = true;
+  converged_ = false;
   return Status::success();
+}
+
+void Analysis::globalize(IterationInfo& info) {
+  // A static step starts again from the committed state, so that a step
+  // TANG,LINE converges converges here too, through the same iterates; a
+  // dynamic one goes on from the iterate it reached (from u_n the inertia
+  // residual is that of the whole velocity: the line search took 9-10
+  // iterations more from there on the main example with member contact).
+  // The iterations from here on are the line search's (a static step's
+  // history starts again with them).
+  history_.back().globalized = true;
+  if (!integrator_.dynamic()) {
+    for (auto& el : model_.elements())
+      if (el) el->revert();
+    state_.u = state_.un;
+    beginStep(state_.t, 1.0, false);
+  }
+  globalized_ = true;
+  info.globalized = true;
 }
 
 bool Analysis::cycling() const {
