@@ -193,6 +193,176 @@ Status HingeEvents::commitSolved() {
   return an_.commit();
 }
 
+// The step fractions around an event, their demands, and the event's point
+// once found (locate()).
+struct HingeEvents::Bracket {
+  double sLo = 0, dLo = 0, sHi = 1, dHi = 0;
+  // The points each side had before its last update, and the true demands.
+  double sLoOld = -1, dLoOld = 0, sHiOld = -1, dHiOld = 0, dLoTrue = 0, dHiTrue = 0;
+  int side = 0;  // the side the last trial moved: -1 the upper end, 1 the lower
+  double band = 1e-12, target = 0;
+  int element = -1;  // the element of the largest demand at the last solve
+  // The hinge past its capacity at the bracket's upper end, and its end when
+  // it may open below its capacity (HingeCarrier::earlyEnd).
+  int elementHi = -1, endHi = -1;
+  // The closest approach to the target before each trial.
+  double best[3] = {0, 0, 0};
+  double closest = 0;
+  double f = 0;        // the step fraction of the last trial, then the event's
+  bool found = false;  // located within the band
+  // The event's point: an early opening at the lower end, or at the
+  // committed state (at the end startEnd when >= 0).
+  bool early = false, atStart = false;
+  int startEnd = -1;
+
+  // The step fraction of trial k: the secant through one side's last two
+  // points, else regula falsi; the bisection when the last trials did not
+  // close in on the target.
+  double trial(int k) {
+    double t = -1;
+    if (side == -1 && sHiOld >= 0 && dHiTrue != dHiOld)
+      t = sHi - (dHiTrue - target) * (sHi - sHiOld) / (dHiTrue - dHiOld);
+    else if (side == 1 && sLoOld >= 0 && dLoTrue != dLoOld)
+      t = sLo - (dLoTrue - target) * (sLo - sLoOld) / (dLoTrue - dLoOld);
+    if (!(t > sLo && t < sHi)) t = sLo + (target - dLo) * (sHi - sLo) / (dHi - dLo);
+    if (k >= 2 && closest > 0.25 * best[(k - 2) % 3]) t = 0.5 * (sLo + sHi);
+    best[k % 3] = closest;
+    return std::clamp(t, sLo + 1e-9 * (sHi - sLo), sHi - 1e-9 * (sHi - sLo));
+  }
+};
+
+HingeEvents::Bracket HingeEvents::startBracket() {
+  const State& s = an_.state_;
+  Bracket b;
+  b.dLo = committedDemand_;
+  b.dHi = maxDemand(b.element);
+  b.found = b.dLo >= 1.0;  // the committed state is already at Mu: open there
+  uLo_ = s.un;
+  uHi_ = s.u;
+  b.dLoTrue = b.dLo;
+  b.dHiTrue = b.dHi;
+  b.elementHi = b.element;
+  for (const auto& [e, h] : carriers())
+    if (e == b.element) {
+      b.band = h->demandBand();
+      b.endHi = h->earlyEnd();
+    }
+  b.target = 1.0 + 0.5 * b.band;
+  b.closest = std::min(std::abs(b.dLo - b.target), std::abs(b.dHi - b.target));
+  return b;
+}
+
+Status HingeEvents::bracketEvent(Bracket& b, double tEnd, bool lineSearch) {
+  Status st;
+  for (int k = 0; k < 60 && !b.found && b.sHi - b.sLo > 4e-16; ++k) {
+    b.f = b.trial(k);
+    st = solveBetween(b.f, b.sLo, b.sHi, tEnd, lineSearch);
+    if (!st) break;
+    const double d = maxDemand(b.element);
+    b.found = d >= 1.0 && d <= 1.0 + b.band;
+    if (b.found) break;
+    b.closest = std::min(b.closest, std::abs(d - b.target));
+    narrow(b, d);
+  }
+  return st;
+}
+
+void HingeEvents::narrow(Bracket& b, double d) {
+  const State& s = an_.state_;
+  if (d > 1.0) {
+    b.elementHi = b.element;
+    b.endHi = -1;
+    for (const auto& [e, h] : carriers_)
+      if (e == b.element) b.endHi = h->earlyEnd();
+    b.sHiOld = b.sHi;
+    b.dHiOld = b.dHiTrue;
+    b.sHi = b.f;
+    b.dHi = b.dHiTrue = d;
+    uHi_ = s.u;
+    if (b.side == -1) b.dLo = 1.0 - 0.5 * (1.0 - b.dLo);
+    b.side = -1;
+  } else {
+    b.sLoOld = b.sLo;
+    b.dLoOld = b.dLoTrue;
+    b.sLo = b.f;
+    b.dLo = b.dLoTrue = d;
+    uLo_ = s.u;
+    if (b.side == 1) b.dHi = 1.0 + 0.5 * (b.dHi - 1.0);
+    b.side = 1;
+  }
+}
+
+Status HingeEvents::reachEvent(Bracket& b, double tEnd, bool lineSearch) {
+  // Not located within the band: the demand jumps past it between the
+  // bracket's ends (a discontinuity in the step fraction: the axial force
+  // driving Mu(N) to its floor at the diagram's ends within a sub-step, or
+  // the step's own solution on another branch than the sub-steps' from the
+  // committed state), or the 60 trials ran out. A hinge that may open below
+  // its capacity (at a member's end: a joint rigid until its moment reaches
+  // C(xi, N)) opens at the lower end, below Mu, so that no commit carries a
+  // moment past its capacity: the rest of the step returns it to C(xi, N).
+  // Others (a midpoint hinge takes its softening branch from Mu, a fracture
+  // happens at eu) open at the closest point found past it.
+  b.early = !b.found && b.endHi >= 0;
+  if (!b.found) b.f = b.early ? b.sLo : b.sHi;
+  // An event within the shortest sub-step of the step's start opens at the
+  // committed state (see kShortestFraction): the element that reached its
+  // capacity there, at the end of its larger demand when it may open early.
+  // (Dynamic steps only: a static sub-step has no velocities, and opens at its
+  // located point.)
+  b.atStart = b.f > 0 && b.f < kShortestFraction && an_.integrator_.dynamic();
+  b.startEnd = -1;
+  if (b.atStart) {
+    if (!b.found) {
+      b.element = b.elementHi;
+      b.startEnd = b.endHi;
+    } else {
+      for (const auto& [e, h] : carriers_)
+        if (e == b.element) b.startEnd = h->earlyEnd();
+    }
+    b.f = 0;
+  }
+  Status st;
+  if (b.f == 0) {
+    restoreCommitted();
+  } else if (!b.found) {
+    st = solveBetween(b.f, b.sLo, b.sHi, tEnd, lineSearch);
+  }
+  if (st) st = commitSolved();  // the sub-step up to the hinge's ultimate moment
+  return st;
+}
+
+Status HingeEvents::openEvent(const Bracket& b, IterationInfo& info) {
+  int element = b.element;
+  if (b.atStart && b.startEnd >= 0) {
+    openAt(element, b.startEnd);
+  } else if (b.atStart) {
+    open(element);
+  } else if (b.early) {
+    element = b.elementHi;
+    openAt(element, b.endHi);
+  } else {
+    maxDemand(element);
+    open(element);
+  }
+  info.hingeActivated = element;
+  // At the ultimate moment the open hinge has no jump yet (to 1e-12): the
+  // committed state is already the equilibrium. A step of length zero: only
+  // the opened section is evaluated, and the elements commit in place. (An
+  // evaluation of the whole model would take the rule of dt at t = t_n: a
+  // dynamic step of dt for the internal unknowns, a joint's relative
+  // rotation, with the nodes held, and Newmark's inertia forces in the
+  // energy account.)
+  // The account books what the opening changed at the committed positions,
+  // as a step's commit books its stored energy: the balance closes at this
+  // commit too (an opening below Mu lowered the moment there: 4e-6 of the
+  // peak energy until the next step booked it).
+  const double stored = an_.model().element(element).strainEnergy();
+  const Status st = evaluateOpened(element);
+  if (st) an_.account_.released(stored - an_.model().element(element).strainEnergy());
+  return st;
+}
+
 Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   // The demand is piecewise smooth in the step fraction: regula falsi
   // (Illinois) for max demand in [1, 1 + band], from above (see the header).
@@ -206,133 +376,12 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   // side does not. (A rule on the bracket's width instead threw away the
   // secant's approach from one side, where the other end stays put, at every
   // third trial, and the event then took three trials more.)
-  State& s = an_.state_;
   locating_ = true;
-  const double tEnd = s.t;
-  int element = -1;
-  double sLo = 0, dLo = committedDemand_, sHi = 1, dHi = maxDemand(element);
-  double f = 0;
-  bool found = dLo >= 1.0;  // the committed state is already at Mu: open there
-  Status st;
-  int side = 0;
-  uLo_ = s.un;
-  uHi_ = s.u;
-  // The points each side had before its last update, and the true demands.
-  double sLoOld = -1, dLoOld = 0, sHiOld = -1, dHiOld = 0, dLoTrue = dLo, dHiTrue = dHi;
-  double band = 1e-12;
-  // The hinge past its capacity at the bracket's upper end, and its end when
-  // it may open below its capacity (HingeCarrier::earlyEnd).
-  int elementHi = element, endHi = -1;
-  for (const auto& [e, h] : carriers())
-    if (e == element) {
-      band = h->demandBand();
-      endHi = h->earlyEnd();
-    }
-  const double target = 1.0 + 0.5 * band;
-  // The closest approach to the target before each trial.
-  double best[3] = {0, 0, 0};
-  double closest = std::min(std::abs(dLo - target), std::abs(dHi - target));
-  for (int k = 0; k < 60 && !found && sHi - sLo > 4e-16; ++k) {
-    f = -1;
-    if (side == -1 && sHiOld >= 0 && dHiTrue != dHiOld)
-      f = sHi - (dHiTrue - target) * (sHi - sHiOld) / (dHiTrue - dHiOld);
-    else if (side == 1 && sLoOld >= 0 && dLoTrue != dLoOld)
-      f = sLo - (dLoTrue - target) * (sLo - sLoOld) / (dLoTrue - dLoOld);
-    if (!(f > sLo && f < sHi)) f = sLo + (target - dLo) * (sHi - sLo) / (dHi - dLo);
-    if (k >= 2 && closest > 0.25 * best[(k - 2) % 3]) f = 0.5 * (sLo + sHi);
-    best[k % 3] = closest;
-    f = std::clamp(f, sLo + 1e-9 * (sHi - sLo), sHi - 1e-9 * (sHi - sLo));
-    st = solveBetween(f, sLo, sHi, tEnd, lineSearch);
-    if (!st) break;
-    const double d = maxDemand(element);
-    found = d >= 1.0 && d <= 1.0 + band;
-    if (found) break;
-    closest = std::min(closest, std::abs(d - target));
-    if (d > 1.0) {
-      elementHi = element;
-      endHi = -1;
-      for (const auto& [e, h] : carriers_)
-        if (e == element) endHi = h->earlyEnd();
-      sHiOld = sHi;
-      dHiOld = dHiTrue;
-      sHi = f;
-      dHi = dHiTrue = d;
-      uHi_ = s.u;
-      if (side == -1) dLo = 1.0 - 0.5 * (1.0 - dLo);
-      side = -1;
-    } else {
-      sLoOld = sLo;
-      dLoOld = dLoTrue;
-      sLo = f;
-      dLo = dLoTrue = d;
-      uLo_ = s.u;
-      if (side == 1) dHi = 1.0 + 0.5 * (dHi - 1.0);
-      side = 1;
-    }
-  }
-  // Not located within the band: the demand jumps past it between the
-  // bracket's ends (a discontinuity in the step fraction: the axial force
-  // driving Mu(N) to its floor at the diagram's ends within a sub-step, or
-  // the step's own solution on another branch than the sub-steps' from the
-  // committed state), or the 60 trials ran out. A hinge that may open below
-  // its capacity (at a member's end: a joint rigid until its moment reaches
-  // C(xi, N)) opens at the lower end, below Mu, so that no commit carries a
-  // moment past its capacity: the rest of the step returns it to C(xi, N).
-  // Others (a midpoint hinge takes its softening branch from Mu, a fracture
-  // happens at eu) open at the closest point found past it.
-  const bool early = st && !found && endHi >= 0;
-  if (st && !found) f = early ? sLo : sHi;
-  // An event within the shortest sub-step of the step's start opens at the
-  // committed state (see kShortestFraction): the element that reached its
-  // capacity there, at the end of its larger demand when it may open early.
-  // (Dynamic steps only: a static sub-step has no velocities, and opens at its
-  // located point.)
-  const bool atStart = st && f > 0 && f < kShortestFraction && an_.integrator_.dynamic();
-  int startEnd = -1;
-  if (atStart) {
-    if (!found) {
-      element = elementHi;
-      startEnd = endHi;
-    } else {
-      for (const auto& [e, h] : carriers_)
-        if (e == element) startEnd = h->earlyEnd();
-    }
-    f = 0;
-  }
-  if (st && f == 0) {
-    restoreCommitted();
-  } else if (st && !found) {
-    st = solveBetween(f, sLo, sHi, tEnd, lineSearch);
-  }
-  if (st) st = commitSolved();  // the sub-step up to the hinge's ultimate moment
-  if (st) {
-    if (atStart && startEnd >= 0) {
-      openAt(element, startEnd);
-    } else if (atStart) {
-      open(element);
-    } else if (early) {
-      element = elementHi;
-      openAt(element, endHi);
-    } else {
-      maxDemand(element);
-      open(element);
-    }
-    info.hingeActivated = element;
-    // At the ultimate moment the open hinge has no jump yet (to 1e-12): the
-    // committed state is already the equilibrium. A step of length zero: only
-    // the opened section is evaluated, and the elements commit in place. (An
-    // evaluation of the whole model would take the rule of dt at t = t_n: a
-    // dynamic step of dt for the internal unknowns, a joint's relative
-    // rotation, with the nodes held, and Newmark's inertia forces in the
-    // energy account.)
-    // The account books what the opening changed at the committed positions,
-    // as a step's commit books its stored energy: the balance closes at this
-    // commit too (an opening below Mu lowered the moment there: 4e-6 of the
-    // peak energy until the next step booked it).
-    const double stored = an_.model().element(element).strainEnergy();
-    st = evaluateOpened(element);
-    if (st) an_.account_.released(stored - an_.model().element(element).strainEnergy());
-  }
+  const double tEnd = an_.state_.t;
+  Bracket b = startBracket();
+  Status st = bracketEvent(b, tEnd, lineSearch);
+  if (st) st = reachEvent(b, tEnd, lineSearch);
+  if (st) st = openEvent(b, info);
   if (st)
     st = solved_ ? an_.commitEvaluated()
                  : Status::failure("internal: committing an unconverged state");
@@ -341,11 +390,11 @@ Status HingeEvents::locate(IterationInfo& info, bool lineSearch) {
   if (!st) return st;
   // The rest of the step; none when the hinge opened at the step's end (a
   // sub-step of length zero would take the rule of the whole step).
-  if (1.0 - f <= 1e-12) {
+  if (1.0 - b.f <= 1e-12) {
     info.converged = true;
     return Status::success();
   }
-  an_.beginStep(tEnd, 1.0 - f, false);
+  an_.beginStep(tEnd, 1.0 - b.f, false);
   info.converged = false;
   return Status::success();
 }

@@ -56,6 +56,17 @@ class HingeEvents {
 
  private:
   Status locate(IterationInfo& info, bool lineSearch);
+  // Its steps: the bracket [0, 1] of the step with the demands at its ends;
+  // trials that narrow it until one lands in the band (or the trials run
+  // out); the event's point solved (or the committed state kept) and
+  // committed; the hinge opened there.
+  struct Bracket;
+  Bracket startBracket();
+  Status bracketEvent(Bracket& b, double tEnd, bool lineSearch);
+  // The bracket's side that the trial's demand d falls on moves to it.
+  void narrow(Bracket& b, double d);
+  Status reachEvent(Bracket& b, double tEnd, bool lineSearch);
+  Status openEvent(const Bracket& b, IterationInfo& info);
   // Newton to the fraction `fraction` of the step ending at tEnd, from `start`
   // (the free dofs; null: the committed state), in at most maxIterations.
   Status solveFraction(double fraction, double tEnd, bool lineSearch,
