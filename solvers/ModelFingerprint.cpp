@@ -34,10 +34,8 @@ class Hash {
   std::uint64_t h_ = 14695981039346656037ull;
 };
 
-}  // namespace
-
-ModelFingerprint ModelFingerprint::of(const Model& model) {
-  Hash coords, elements, materials, boundary, loads, masses, site;
+// Per node: coordinates, the restrained dofs, nodal loads and masses.
+void hashNodes(const Model& model, Hash& coords, Hash& boundary, Hash& loads, Hash& masses) {
   coords.add(model.numNodes());
   for (int n = 0; n < model.numNodes(); ++n) {
     coords.add(model.hasCoord(n));
@@ -48,6 +46,9 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
       masses.add(model.nodalMass(n)[d]);
     }
   }
+}
+
+void hashConnectivity(const Model& model, Hash& elements) {
   elements.add(model.numElements());
   for (int e = 0; e < model.numElements(); ++e) {
     if (!model.hasElement(e)) {
@@ -59,41 +60,44 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
     // Rigid end zones (RIGId), only where given: other decks' fingerprints stay.
     if (const auto o = rigidOffsets(el); o[0] > 0 || o[1] > 0) elements.add(o[0]).add(o[1]);
   }
-  for (const auto& [number, m] : model.materials()) {
-    materials.add(number).add(m.elementType);
-    for (double x : {m.E, m.nu, m.A, m.I, m.kappa, m.EA(), m.GA(), m.EI(), m.density, m.dampingA1})
+}
+
+void hashMaterial(Hash& materials, int number, const MaterialSet& m) {
+  materials.add(number).add(m.elementType);
+  for (double x : {m.E, m.nu, m.A, m.I, m.kappa, m.EA(), m.GA(), m.EI(), m.density, m.dampingA1})
+    materials.add(x);
+  materials.add(m.shear).add(m.kinematics).add(m.mass);
+  materials.add(m.hardening.has_value());
+  if (m.hardening)
+    for (double x : {m.hardening->Mc, m.hardening->My, m.hardening->Kh1, m.hardening->Kh2})
       materials.add(x);
-    materials.add(m.shear).add(m.kinematics).add(m.mass);
-    materials.add(m.hardening.has_value());
-    if (m.hardening)
-      for (double x : {m.hardening->Mc, m.hardening->My, m.hardening->Kh1, m.hardening->Kh2})
-        materials.add(x);
-    materials.add(m.softening.has_value());
-    if (m.softening)
-      materials.add(m.softening->Mu)
-          .add(m.softening->Ks)
-          .add(m.softening->thetaR.value_or(-1))
-          .add(m.softening->Mr)
-          .add(m.softening->pieceLength);
-    // Negative moments' laws, hinge site, interaction curve, RC section data.
-    if (m.hardening && m.hardening->negative)
-      for (double x : {m.hardening->negative->Mc, m.hardening->negative->My,
-                       m.hardening->negative->Kh1, m.hardening->negative->Kh2})
-        materials.add(x);
-    if (m.softening && m.softening->negative)
-      materials.add(m.softening->negative->first).add(m.softening->negative->second);
-    materials.add(m.hingeSite == HingeSite::Ends);
-    for (const auto& [n, mu] : m.interaction) materials.add(n).add(mu);
-    if (const auto& sec = m.section) {
-      materials.add(static_cast<int>(sec->shape));
-      for (double x : {sec->b, sec->h, sec->fc, sec->fy, sec->Es, sec->fu, sec->eu,
-                       sec->flangeWidth, sec->flangeDepth, sec->wall})
-        materials.add(x);
-      for (const RebarLayer& r : sec->bars) materials.add(r.depth).add(r.area);
-    }
+  materials.add(m.softening.has_value());
+  if (m.softening)
+    materials.add(m.softening->Mu)
+        .add(m.softening->Ks)
+        .add(m.softening->thetaR.value_or(-1))
+        .add(m.softening->Mr)
+        .add(m.softening->pieceLength);
+  // Negative moments' laws, hinge site, interaction curve, RC section data.
+  if (m.hardening && m.hardening->negative)
+    for (double x : {m.hardening->negative->Mc, m.hardening->negative->My,
+                     m.hardening->negative->Kh1, m.hardening->negative->Kh2})
+      materials.add(x);
+  if (m.softening && m.softening->negative)
+    materials.add(m.softening->negative->first).add(m.softening->negative->second);
+  materials.add(m.hingeSite == HingeSite::Ends);
+  for (const auto& [n, mu] : m.interaction) materials.add(n).add(mu);
+  if (const auto& sec = m.section) {
+    materials.add(static_cast<int>(sec->shape));
+    for (double x : {sec->b, sec->h, sec->fc, sec->fy, sec->Es, sec->fu, sec->eu,
+                     sec->flangeWidth, sec->flangeDepth, sec->wall})
+      materials.add(x);
+    for (const RebarLayer& r : sec->bars) materials.add(r.depth).add(r.area);
   }
-  boundary.add(model.joints().size());
-  for (const Joint& j : model.joints()) boundary.add(j.master).add(j.slave);
+}
+
+// Gravity, ground and member contact, floor loads.
+void hashLoads(const Model& model, Hash& loads, Hash& masses) {
   loads.add(model.gravity().x()).add(model.gravity().y()).add(model.ground().has_value());
   if (model.ground())
     loads.add(model.ground()->y0)
@@ -111,6 +115,9 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
     masses.add(q.asMass);
     if (q.asMass) masses.add(q.element).add(q.q.x()).add(q.q.y());
   }
+}
+
+void hashSite(const Model& model, Hash& site) {
   site.add(model.site().has_value());
   if (const auto& st = model.site()) {
     site.add(st->xmin).add(st->xmax).add(static_cast<int>(st->dir)).add(st->objects.size());
@@ -118,6 +125,19 @@ ModelFingerprint ModelFingerprint::of(const Model& model) {
       site.add(z.name).add(z.x1).add(z.x2).add(z.height).add(z.mass);
     site.add(st->flyrockMass).add(st->riskLevel).add(st->riskConfidence);
   }
+}
+
+}  // namespace
+
+ModelFingerprint ModelFingerprint::of(const Model& model) {
+  Hash coords, elements, materials, boundary, loads, masses, site;
+  hashNodes(model, coords, boundary, loads, masses);
+  hashConnectivity(model, elements);
+  for (const auto& [number, m] : model.materials()) hashMaterial(materials, number, m);
+  boundary.add(model.joints().size());
+  for (const Joint& j : model.joints()) boundary.add(j.master).add(j.slave);
+  hashLoads(model, loads, masses);
+  hashSite(model, site);
   // The blast plan: element sets, times, release times.
   elements.add(model.blasts().size());
   for (const Blast& b : model.blasts()) {
