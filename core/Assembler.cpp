@@ -194,6 +194,14 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
   forceScale_ = r_.size() ? r_.cwiseAbs().maxCoeff() : 0.0;
   if (wantTangent) std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
 
+  if (Status st = assembleElements(s, rule, wantTangent); !st) return st;
+  if (Status st = addNodalInertia(s, rule, wantTangent); !st) return st;
+  addGroundContact(s, rule, wantTangent);
+  addPairContact(wantTangent);
+  return Status::success();
+}
+
+Status Assembler::assembleElements(const State& s, const StepRule& rule, bool wantTangent) {
   ElementKinematics kin;
   ElemVec re;
   ElemMat ke;
@@ -219,7 +227,10 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
           if (pos[a * kElemDofs + b] >= 0) values[pos[a * kElemDofs + b]] += ke(a, b);
     }
   }
+  return Status::success();
+}
 
+Status Assembler::addNodalInertia(const State& s, const StepRule& rule, bool wantTangent) {
   // Lumped nodal masses (MASS, QLOAd carried as mass): inertia m a_eff per dof.
   if (rule.dynamic()) {
     for (Eigen::Index i = 0; i < mNodal_.size(); ++i) {
@@ -234,7 +245,10 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
         K_.valuePtr()[diagPos_[eq]] += mNodal_[i] * rule.ca * rule.rateSlope(i, du);
     }
   }
+  return Status::success();
+}
 
+void Assembler::addGroundContact(const State& s, const StepRule& rule, bool wantTangent) {
   if (const auto& ground = model_.ground()) {
     fContact_.setZero();
     // The friction springs' stretches at the end of the step: none off the
@@ -270,7 +284,9 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
       }
     }
   }
+}
 
+void Assembler::addPairContact(bool wantTangent) {
   for (const PairForce& pf : contactForces_) {
     const int nodes[3] = {pf.pair.node, pf.pair.a, pf.pair.b};
     for (int a = 0; a < 3; ++a)
@@ -283,7 +299,6 @@ Status Assembler::assemble(const State& s, const StepRule& rule,
       for (int b = 0; b < 6; ++b)
         if (pos[a * 6 + b] >= 0) values[pos[a * 6 + b]] += pf.tangent(a, b);
   }
-  return Status::success();
 }
 
 void Assembler::releasedLoadAt(const State& s, const StepRule& rule) {

@@ -130,6 +130,13 @@ class Assembler {
   void evaluateMemberContact(const State& s, const StepRule& rule, bool wantTangent);
   // The released forces at the step rule's load point into fRel_.
   void releasedLoadAt(const State& s, const StepRule& rule);
+  // assemble()'s steps: the elements' residuals and tangents, the lumped
+  // nodal masses' inertia, the ground's contact and friction, the member
+  // contact forces found by evaluateMemberContact.
+  Status assembleElements(const State& s, const StepRule& rule, bool wantTangent);
+  Status addNodalInertia(const State& s, const StepRule& rule, bool wantTangent);
+  void addGroundContact(const State& s, const StepRule& rule, bool wantTangent);
+  void addPairContact(bool wantTangent);
 
   Model& model_;
   DofMap dofs_;
