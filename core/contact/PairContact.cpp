@@ -306,6 +306,94 @@ bool pairContact(const PairPositions& q0, const PairPositions& q1, int side, dou
   return true;
 }
 
+namespace {
+
+// Newmark's dashpot c r dp/dt at t_n+1: r its ramp (cr = c r), r1 = dp/dt,
+// and d(c r dp/dt)/dz1.
+struct NewmarkDashpot {
+  bool on = false;
+  double cr = 0, r1 = 0;
+  Vec4 dDamper = Vec4::Zero();
+};
+
+// Newmark's dashpot c r dp/dt ramps in over the step's motion beyond the set
+// as the ground's does (ContactDamper: r from 0 where the pair begins or
+// ends touching, so that the force is continuous there).
+NewmarkDashpot newmarkDashpot(const PairStep& step, const Penetration& e1, const PairLaw& law,
+                              const StepRule& rule, double ps, bool damped) {
+  const bool midPoint = rule.scheme == Scheme::MidPoint;
+  NewmarkDashpot d;
+  d.on = damped && !midPoint && step.p1 > ps;
+  const DamperRamp ramp = d.on ? damperRamp(ps, step.p0, step.p1) : DamperRamp{};
+  d.cr = law.c * ramp.w;
+  const Vec4 rate1 =
+      d.on ? Vec4(rule.velocity(Vec4(step.z1 - step.z0), law.zv, law.za)) : Vec4(Vec4::Zero());
+  d.r1 = e1.g.dot(rate1);  // dp/dt at t_n+1
+  d.dDamper = d.on ? Vec4(d.cr * (rule.cv * e1.g + e1.H * rate1) + law.c * ramp.slope * d.r1 * e1.g)
+                   : Vec4(Vec4::Zero());
+  return d;
+}
+
+// The normal force fz on z and its derivative kz w.r.t. z1: w along grad p
+// at t_n+1 (with Newmark's dashpot), or along the discrete gradient D
+// (mid-point).
+void normalForce(const PairStep& step, const Penetration& e1, int side, double h, double face,
+                 double scale, double w, double dw, const NewmarkDashpot& dashpot,
+                 bool midPoint, bool wantTangent, Vec4& fz, Mat4& kz) {
+  if (!midPoint) {
+    fz = w * e1.g;
+    if (wantTangent) kz = dw * e1.g * e1.g.transpose() + w * e1.H;
+    if (dashpot.on) {
+      fz += dashpot.cr * dashpot.r1 * e1.g;
+      if (wantTangent) kz += e1.g * dashpot.dDamper.transpose() + dashpot.cr * dashpot.r1 * e1.H;
+    }
+  } else {
+    Mat4 wdD;
+    Penetration em;
+    penetration(0.5 * (step.z0 + step.z1), side, h, wantTangent, em, face);
+    const Vec4 D = discreteGradient(step.z0, step.z1, step.p0, step.p1, em, e1.g, scale, w,
+                                    wantTangent ? &wdD : nullptr);
+    fz = w * D;
+    if (wantTangent) kz = D * (dw * e1.g).transpose() + wdD;
+  }
+}
+
+// Friction along the segment: the spring law on the slip coordinate c, its
+// force F = -f on c (an internal force, as the penalty's) through the
+// coordinate's gradient (discrete gradient under the mid-point scheme).
+void addFriction(const PairStep& step, const PairLaw& law, const StepRule& rule, double N,
+                 const Vec4& dNdz, double scale, bool wantTangent, Vec4& fz, Mat4& kz,
+                 PairOutcome* outcome) {
+  const Vec4& z0 = step.z0;
+  const Vec4& z1 = step.z1;
+  const bool midPoint = rule.scheme == Scheme::MidPoint;
+  Penetration c0, c1;
+  slipCoordinate(z0, false, c0);
+  slipCoordinate(z1, wantTangent && !midPoint, c1);
+  const SpringFrictionForce fr = springFriction(law.k, law.stick, law.mu, N, c0.p - law.stretch,
+                                                c0.p, c1.p, rule.dynamic() ? rule.h : 0.0, midPoint);
+  const double F = -fr.force;
+  if (outcome) {
+    outcome->stretch = c1.p - fr.anchor;
+    outcome->slipped = fr.slipped;
+  }
+  const Vec4 dF = -fr.dx * c1.g - fr.dN * dNdz;  // dF/dz1
+  if (!midPoint) {
+    fz += F * c1.g;
+    if (wantTangent) kz += c1.g * dF.transpose() + F * c1.H;
+  } else {
+    Mat4 wdD;
+    Penetration cm;
+    slipCoordinate(0.5 * (z0 + z1), wantTangent, cm);
+    const Vec4 Dc =
+        discreteGradient(z0, z1, c0.p, c1.p, cm, c1.g, scale, F, wantTangent ? &wdD : nullptr);
+    fz += F * Dc;
+    if (wantTangent) kz += Dc * dF.transpose() + wdD;
+  }
+}
+
+}  // namespace
+
 void pairContact(const PairStep& step, int side, double h, const PairLaw& law, const StepRule& rule,
                  bool wantTangent, PairVec& force, PairMat& tangent, PairOutcome* outcome,
                  double face) {
@@ -340,68 +428,16 @@ void pairContact(const PairStep& step, int side, double h, const PairLaw& law, c
   }
   // Friction's N: the whole normal force while it pushes (the dashpot's too),
   // and dN/dz1.
-  // Newmark's dashpot c r dp/dt ramps in over the step's motion beyond the set
-  // as the ground's does (ContactDamper: r from 0 where the pair begins or
-  // ends touching, so that the force is continuous there).
-  const bool newmarkDamped = damped && !midPoint && p1 > normal.ps;
-  const DamperRamp ramp = newmarkDamped ? damperRamp(normal.ps, p0, p1) : DamperRamp{};
-  const double cr = law.c * ramp.w;
-  const Vec4 rate1 =
-      newmarkDamped ? Vec4(rule.velocity(Vec4(z1 - z0), law.zv, law.za)) : Vec4(Vec4::Zero());
-  const double r1 = e1.g.dot(rate1);  // dp/dt at t_n+1
-  // d(c r dp/dt)/dz1
-  const Vec4 dDamper =
-      newmarkDamped ? Vec4(cr * (rule.cv * e1.g + e1.H * rate1) + law.c * ramp.slope * r1 * e1.g)
-                    : Vec4(Vec4::Zero());
-  const double w1 = w + cr * r1;
+  const NewmarkDashpot dashpot = newmarkDashpot(step, e1, law, rule, normal.ps, damped);
+  const double w1 = w + dashpot.cr * dashpot.r1;
   const double N = std::max(w1, 0.0);
   Vec4 dNdz = Vec4::Zero();
-  if (rubs && w1 > 0 && wantTangent) dNdz = dw * e1.g + dDamper;
+  if (rubs && w1 > 0 && wantTangent) dNdz = dw * e1.g + dashpot.dDamper;
   const double scale = z0.norm() + z1.norm() + h;
   Vec4 fz;
-  Mat4 kz, wdD;
-  if (!midPoint) {
-    fz = w * e1.g;
-    if (wantTangent) kz = dw * e1.g * e1.g.transpose() + w * e1.H;
-    if (newmarkDamped) {
-      fz += cr * r1 * e1.g;
-      if (wantTangent) kz += e1.g * dDamper.transpose() + cr * r1 * e1.H;
-    }
-  } else {
-    Penetration em;
-    penetration(0.5 * (z0 + z1), side, h, wantTangent, em, face);
-    const Vec4 D =
-        discreteGradient(z0, z1, p0, p1, em, e1.g, scale, w, wantTangent ? &wdD : nullptr);
-    fz = w * D;
-    if (wantTangent) kz = D * (dw * e1.g).transpose() + wdD;
-  }
-  // Friction along the segment: the spring law on the slip coordinate c, its
-  // force F = -f on c (an internal force, as the penalty's) through the
-  // coordinate's gradient (discrete gradient under the mid-point scheme).
-  if (rubs) {
-    Penetration c0, c1;
-    slipCoordinate(z0, false, c0);
-    slipCoordinate(z1, wantTangent && !midPoint, c1);
-    const SpringFrictionForce fr = springFriction(k, law.stick, law.mu, N, c0.p - law.stretch, c0.p,
-                                                  c1.p, rule.dynamic() ? rule.h : 0.0, midPoint);
-    const double F = -fr.force;
-    if (outcome) {
-      outcome->stretch = c1.p - fr.anchor;
-      outcome->slipped = fr.slipped;
-    }
-    const Vec4 dF = -fr.dx * c1.g - fr.dN * dNdz;  // dF/dz1
-    if (!midPoint) {
-      fz += F * c1.g;
-      if (wantTangent) kz += c1.g * dF.transpose() + F * c1.H;
-    } else {
-      Penetration cm;
-      slipCoordinate(0.5 * (z0 + z1), wantTangent, cm);
-      const Vec4 Dc =
-          discreteGradient(z0, z1, c0.p, c1.p, cm, c1.g, scale, F, wantTangent ? &wdD : nullptr);
-      fz += F * Dc;
-      if (wantTangent) kz += Dc * dF.transpose() + wdD;
-    }
-  }
+  Mat4 kz;
+  normalForce(step, e1, side, h, face, scale, w, dw, dashpot, midPoint, wantTangent, fz, kz);
+  if (rubs) addFriction(step, law, rule, N, dNdz, scale, wantTangent, fz, kz, outcome);
   toPair(fz, wantTangent ? &kz : nullptr, force, wantTangent ? &tangent : nullptr);
 }
 
