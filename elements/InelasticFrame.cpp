@@ -74,9 +74,15 @@ InelasticFrame::InelasticFrame(const MaterialSet& mat, const std::array<int, 2>&
   }
 }
 
-Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& rule,
-                                bool wantTangent, ElemVec& residual, ElemMat& tangent) {
-  const ElemVec dl = toLocal_ * kin.d - dl0_;
+// The stress resultants of the step's scheme and the section dashpot.
+struct InelasticFrame::Resultants {
+  double w = 1, f = 0;   // the scheme's weight of t_n+1, the dashpot's factor
+  double N = 0, kN = 0;  // the axial resultant of the scheme and dN/deps
+  double V = 0, M = 0;
+  SectionDamping::Bending md;  // the dashpot's bending part
+};
+
+Status InelasticFrame::trialSection(const ElemVec& dl, HingedBendingResponse& bend) {
   const double l = length_;
   const Rows b = midpointRows(l);
   const HingedBendingState& from = committed_.section;
@@ -93,7 +99,6 @@ Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& ru
     trial_.axial = a.state;
   }
   const std::array<double, 2> ends = trial_.section.endHinge;  // opened in this trial
-  HingedBendingResponse bend;
   if (Status st = law_.respond(b.kappa.dot(dl), l, from, openSign, bend, N1); !st) return st;
   trial_.section = bend.state;
   for (int a = 0; a < 2; ++a)
@@ -102,38 +107,40 @@ Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& ru
   // End moments from the element's equilibrium (section sign convention).
   trial_.section.endMoment = {trial_.forces.M + 0.5 * l * trial_.forces.V,
                               trial_.forces.M - 0.5 * l * trial_.forces.V};
-  const double kt = bend.tangent;
   if (!std::isfinite(trial_.forces.N) || !std::isfinite(trial_.forces.V))
     return Status::failure("inelastic frame: non-finite section forces");
+  return Status::success();
+}
 
-  // The mid-point scheme takes the stress resultants between t_n and t_n+1: for
-  // the elastic axial and shear parts the weighted strains, for the bending
-  // moment the weighted moments of the committed and the trial state.
-  const double w = rule.scheme == Scheme::MidPoint ? 0.5 + rule.alpha : 1.0;
-  const ElemVec dln = toLocal_ * kin.dn - dl0_;
+InelasticFrame::Resultants InelasticFrame::schemeResultants(
+    const ElemVec& dl, const ElemVec& dln, const StepRule& rule,
+    const HingedBendingResponse& bend) const {
+  const Rows b = midpointRows(length_);
+  const double eps = b.eps.dot(dl);
+  const double kt = bend.tangent;
+  Resultants s;
+  const double w = s.w = rule.scheme == Scheme::MidPoint ? 0.5 + rule.alpha : 1.0;
   const SectionForces& f1 = trial_.forces;
-  const bool coupled = axial_ || bend.dN != 0;
-  double N = 0, kN = 0;  // the axial resultant of the scheme and dN/deps
   if (!axial_) {
-    N = w * f1.N + (1 - w) * EA_ * b.eps.dot(dln);
-    kN = w * EA_;
+    s.N = w * f1.N + (1 - w) * EA_ * b.eps.dot(dln);
+    s.kN = w * EA_;
   } else if (rule.scheme != Scheme::MidPoint) {
-    N = f1.N;
-    kN = axialTangent_;
+    s.N = f1.N;
+    s.kN = axialTangent_;
   } else {
     const AxialCapacity::MidPoint mp =
         axial_->midPoint(committed_.forces.N, f1.N, b.eps.dot(dln), eps, axialTangent_,
                          trial_.axial.ep - committed_.axial.ep, w, HingedBending::kMidPointRatio);
-    N = mp.n;
-    kN = mp.tangent;
+    s.N = mp.n;
+    s.kN = mp.tangent;
   }
-  double V = w * f1.V + (1 - w) * GA_ * b.gamma.dot(dln);
-  double M = w * f1.M + (1 - w) * committed_.forces.M;
+  s.V = w * f1.V + (1 - w) * GA_ * b.gamma.dot(dln);
+  s.M = w * f1.M + (1 - w) * committed_.forces.M;
   // The section's dashpot (materials/SectionDamping.h): f = a1/h times the
   // elastic part of the strains' change: in bending the elastic curvature's,
   // axially (a bounded axial force) the elastic strain's.
-  const double f = damping_.factor(rule);
-  SectionDamping::Bending md, nd;
+  const double f = s.f = damping_.factor(rule);
+  SectionDamping::Bending nd;
   if (f > 0) {
     const ElemVec ddl = dl - dln;
     const double dE = b.eps.dot(ddl);
@@ -143,31 +150,50 @@ Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& ru
     } else {
       nd = SectionDamping::elasticBending(f, EA_, dE);
     }
-    N += nd.m;
-    kN += nd.tangent;
-    V += f * GA_ * b.gamma.dot(ddl);
+    s.N += nd.m;
+    s.kN += nd.tangent;
+    s.V += f * GA_ * b.gamma.dot(ddl);
     const double dK = b.kappa.dot(ddl);
-    md = law_.isElastic()
-             ? SectionDamping::elasticBending(f, law_.EI(), dK)
-             : SectionDamping::bending(f, law_.EI(), f1.M - committed_.forces.M, dK, kt);
-    M += md.m;
+    s.md = law_.isElastic()
+               ? SectionDamping::elasticBending(f, law_.EI(), dK)
+               : SectionDamping::bending(f, law_.EI(), f1.M - committed_.forces.M, dK, kt);
+    s.M += s.md.m;
   }
-  const ElemVec fLocal = l * (N * b.eps + V * b.gamma + M * b.kappa);
+  return s;
+}
+
+ElemMat InelasticFrame::localTangent(const Resultants& s, const HingedBendingResponse& bend,
+                                     bool coupled) const {
+  const double l = length_;
+  const Rows b = midpointRows(l);
+  const double kt = bend.tangent, w = s.w, f = s.f;
+  const SectionDamping::Bending& md = s.md;
+  if (!coupled)
+    return l * ((w + f) * (EA_ * b.eps * b.eps.transpose() + GA_ * b.gamma * b.gamma.transpose()) +
+                (w * kt + md.tangent) * b.kappa * b.kappa.transpose());
+  // The moment follows N: dM/ddl = kt b_kappa + dM/dN dN/deps b_eps.
+  return l * (s.kN * b.eps * b.eps.transpose() + (w + f) * GA_ * b.gamma * b.gamma.transpose() +
+              (w * kt + md.tangent) * b.kappa * b.kappa.transpose() +
+              (w + md.dM1) * bend.dN * axialTangent_ * b.kappa * b.eps.transpose());
+}
+
+Status InelasticFrame::evaluate(const ElementKinematics& kin, const StepRule& rule,
+                                bool wantTangent, ElemVec& residual, ElemMat& tangent) {
+  const ElemVec dl = toLocal_ * kin.d - dl0_;
+  HingedBendingResponse bend;
+  if (Status st = trialSection(dl, bend); !st) return st;
+  // The mid-point scheme takes the stress resultants between t_n and t_n+1: for
+  // the elastic axial and shear parts the weighted strains, for the bending
+  // moment the weighted moments of the committed and the trial state.
+  const ElemVec dln = toLocal_ * kin.dn - dl0_;
+  const Resultants s = schemeResultants(dl, dln, rule, bend);
+  const bool coupled = axial_ || bend.dN != 0;
+  const Rows b = midpointRows(length_);
+  const ElemVec fLocal = length_ * (s.N * b.eps + s.V * b.gamma + s.M * b.kappa);
   residual = toLocal_.transpose() * fLocal;
   if (wantTangent) {
-    if (!coupled) {
-      const ElemMat kLocal =
-          l * ((w + f) * (EA_ * b.eps * b.eps.transpose() + GA_ * b.gamma * b.gamma.transpose()) +
-               (w * kt + md.tangent) * b.kappa * b.kappa.transpose());
-      tangent = toLocal_.transpose() * kLocal * toLocal_;
-    } else {
-      // The moment follows N: dM/ddl = kt b_kappa + dM/dN dN/deps b_eps.
-      const ElemMat kLocal =
-          l * (kN * b.eps * b.eps.transpose() + (w + f) * GA_ * b.gamma * b.gamma.transpose() +
-               (w * kt + md.tangent) * b.kappa * b.kappa.transpose() +
-               (w + md.dM1) * bend.dN * axialTangent_ * b.kappa * b.eps.transpose());
-      tangent = toLocal_.transpose() * kLocal * toLocal_;
-    }
+    const ElemMat kLocal = localTangent(s, bend, coupled);
+    tangent = toLocal_.transpose() * kLocal * toLocal_;
   }
   if (rule.dynamic()) {
     const ElemVec dd = kin.d - kin.dn;

@@ -137,6 +137,16 @@ class InelasticFrame final : public Element,
   double fractureDemand() const;
   // |V| / Vu(N) at the trial state (RC sections; 0 once parted).
   double shearDemand() const;
+  // evaluate()'s steps: the trial section at the flexible part's
+  // displacements dl (axial force, then the bending law: trial_ and
+  // axialTangent_ set); the resultants of the step's scheme with the section
+  // dashpot's; their tangent in the element frame (coupled: the moment
+  // follows N).
+  struct Resultants;
+  Status trialSection(const ElemVec& dl, HingedBendingResponse& bend);
+  Resultants schemeResultants(const ElemVec& dl, const ElemVec& dln, const StepRule& rule,
+                              const HingedBendingResponse& bend) const;
+  ElemMat localTangent(const Resultants& s, const HingedBendingResponse& bend, bool coupled) const;
 
   std::array<int, 2> nodes_;
   int material_;

@@ -286,6 +286,130 @@ ElemVec ReissnerFrame::axialStrainGradient(const ElemVec& d) const {  // d: the 
   return g;
 }
 
+// What one evaluation's section laws give: the axial force N_{n+1} (laws that
+// follow it), the bending response at the curvatures of d and d_n, and the
+// section dashpot's factor f with its bending and axial parts.
+struct ReissnerFrame::StepResponse {
+  bool coupled = false;
+  double N1 = 0;
+  HingedBendingResponse bend;
+  double m1 = 0, kappa1 = 0, kappaN = 0;
+  double f = 0;
+  SectionDamping::Bending md, nd;
+};
+
+double ReissnerFrame::axialResponse(const ElementKinematics& fk) {
+  const double sigma = faceStrains(fk.d)(0) - e0_(0);
+  double N1 = ea_ * sigma;
+  axialTangent_ = ea_;
+  if (axial_) {
+    const AxialResponse a = axial_->returnMap(committed_.axial, sigma);
+    N1 = a.N;
+    axialTangent_ = a.tangent;
+    trial_.axial = a.state;
+  }
+  axialGradient_ = axialTangent_ * axialStrainGradient(fk.d);
+  return N1;
+}
+
+Status ReissnerFrame::bendingResponse(const ElementKinematics& fk, const StepRule& rule,
+                                      double openSign, StepResponse& sr) const {
+  const HingedBendingState& from = committed_.section;
+  // Bending: the curvature K = (theta2 - theta1)/l is linear in d.
+  sr.kappa1 = (fk.d(5) - fk.d(2)) / length_ - e0_(2);
+  if (Status st = law_.respond(sr.kappa1, length_, from, openSign, sr.bend, sr.N1, held_); !st)
+    return st;
+  sr.m1 = sr.bend.state.M;
+  sr.kappaN = (fk.dn(5) - fk.dn(2)) / length_ - e0_(2);
+  // The section's dashpot (materials/SectionDamping.h): f = a1/h times the
+  // strains' change over the step, in bending the elastic curvature's, axially
+  // (a bounded axial force) the elastic strain's.
+  sr.f = damping_.factor(rule);
+  if (sr.f > 0) {
+    sr.md = law_.isElastic() ? SectionDamping::elasticBending(sr.f, law_.EI(), sr.kappa1 - sr.kappaN)
+                             : SectionDamping::bending(sr.f, law_.EI(), sr.m1 - from.M,
+                                                       sr.kappa1 - sr.kappaN, sr.bend.tangent);
+    if (axial_)
+      sr.nd = axial_->damping(sr.f, committed_.forces.N, sr.N1,
+                              faceStrains(fk.d)(0) - faceStrains(fk.dn)(0),
+                              trial_.axial.ep - committed_.axial.ep, axialTangent_);
+  }
+  return Status::success();
+}
+
+Vec3 ReissnerFrame::midPointResultants(const ElementKinematics& fk, const StepRule& rule,
+                                       const StepResponse& sr, bool wantTangent,
+                                       ElemVec& residual, ElemMat& tangent,
+                                       std::array<double, 2>& halfTan) const {
+  // Resultants at the alpha-weighted point: for bending the weighted moments
+  // of the committed and the trial state; an elastic section's moment at t_n
+  // is that of the curvature at d_n. The dashpot weighs the strains' change
+  // by f more (alpha + f); its moment is added to the weighted one.
+  const double f = sr.f;
+  const double w = 0.5 + rule.alpha, wd = w + f;
+  if (law_.isElastic())
+    return midPointForce(
+        fk.d, fk.dn, rule.alpha + f, w * sr.m1 + (1 - w) * law_.EI() * sr.kappaN + sr.md.m,
+        f > 0 ? (w * sr.bend.tangent + sr.md.tangent) / wd : sr.bend.tangent, wantTangent,
+        residual, tangent, halfTan);
+  // Inelastic: a moment whose work never exceeds the stored energy's change.
+  const HingedBendingState& from = committed_.section;
+  const auto mm =
+      law_.midPointMoment(from, sr.kappaN, sr.bend.state, sr.kappa1, sr.bend.tangent, length_, w);
+  Coupling cp;
+  if (sr.coupled) {
+    cp.moment = sr.bend.dN != 0;
+    cp.dm = ((mm.dM1 + sr.md.dM1) * sr.bend.dN) * axialGradient_;
+    if (axial_) {
+      const AxialCapacity::MidPoint mp = axial_->midPoint(
+          committed_.forces.N, sr.N1, faceStrains(fk.dn)(0) - e0_(0), faceStrains(fk.d)(0) - e0_(0),
+          axialTangent_, trial_.axial.ep - committed_.axial.ep, w, HingedBending::kMidPointRatio);
+      cp.axial = true;
+      cp.n = mp.n + sr.nd.m;
+      cp.ea = (mp.tangent + sr.nd.tangent) / wd;
+    }
+  }
+  return midPointForce(fk.d, fk.dn, rule.alpha + f, mm.m + sr.md.m,
+                       (mm.tangent + sr.md.tangent) / wd, wantTangent, residual, tangent, halfTan,
+                       sr.coupled ? &cp : nullptr);
+}
+
+Vec3 ReissnerFrame::staticResultants(const ElementKinematics& fk, const StepResponse& sr,
+                                     bool wantTangent, ElemVec& residual,
+                                     ElemMat& tangent) const {
+  Coupling cp;
+  if (sr.coupled) {
+    cp.axial = axial_.has_value();
+    cp.n = sr.N1 + sr.nd.m;
+    cp.ea = axialTangent_ + sr.nd.tangent;
+    cp.moment = sr.bend.dN != 0;
+    cp.dm = ((1 + sr.md.dM1) * sr.bend.dN) * axialGradient_;
+  }
+  Damper damper;
+  if (sr.f > 0) damper = {sr.f, faceStrains(fk.dn)};
+  return staticForce(fk.d, sr.m1 + sr.md.m, sr.bend.tangent + sr.md.tangent, damper, wantTangent,
+                     residual, tangent, sr.coupled ? &cp : nullptr);
+}
+
+void ReissnerFrame::storeTrial(const Vec3& strain, const StepResponse& sr,
+                               const std::array<double, 2>& ends) {
+  const HingedBendingState& from = committed_.section;
+  const double N1 = sr.N1, m1 = sr.m1;
+  const Vec3 e = strain - e0_;
+  trial_.section = sr.bend.state;
+  for (int a = 0; a < 2; ++a)
+    if (from.endHinge[a] == 0) trial_.section.endHinge[a] = ends[a];
+  trial_.forces = {axial_ ? N1 : ea_ * e(0), ga_ * e(1), m1};
+  if (law_.site() == HingeSite::Ends) {
+    // End moments M -+ S/2 from the element's equilibrium (material resultants at n+1).
+    const double S = length_ * (trial_.forces.N * strain(1) - trial_.forces.V * (1 + strain(0)));
+    trial_.section.endMoment = {m1 - 0.5 * S, m1 + 0.5 * S};
+  }
+  const double axialEnergy = axial_ ? 2 * axial_->energyDensity(N1) : ea_ * e(0) * e(0);
+  trial_.energy =
+      0.5 * length_ * (axialEnergy + ga_ * e(1) * e(1)) + length_ * law_.energyDensity(sr.bend.state);
+}
+
 Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rule, bool wantTangent,
                                ElemVec& residual, ElemMat& tangent) {
   if (!rule.rotationsInRange(kin.d - kin.dn)) return Status::failure(StepRule::kRotationRangeMessage);
@@ -300,112 +424,31 @@ Status ReissnerFrame::evaluate(const ElementKinematics& kin, const StepRule& rul
   const double openSign =
       !from.hingeActive && trial_.section.hingeActive ? trial_.section.hingeSign : 0.0;
   // Laws that follow the axial force: N_{n+1} first (the material one).
-  const bool coupled = axial_.has_value() || law_.capacity() != nullptr;
-  double N1 = 0;
-  if (coupled) {
-    const double sigma = faceStrains(fk.d)(0) - e0_(0);
-    N1 = ea_ * sigma;
-    axialTangent_ = ea_;
-    if (axial_) {
-      const AxialResponse a = axial_->returnMap(committed_.axial, sigma);
-      N1 = a.N;
-      axialTangent_ = a.tangent;
-      trial_.axial = a.state;
-    }
-    axialGradient_ = axialTangent_ * axialStrainGradient(fk.d);
-  }
-  // Bending: the curvature K = (theta2 - theta1)/l is linear in d.
+  StepResponse sr;
+  sr.coupled = axial_.has_value() || law_.capacity() != nullptr;
+  if (sr.coupled) sr.N1 = axialResponse(fk);
   const std::array<double, 2> ends = trial_.section.endHinge;  // opened in this trial
-  HingedBendingResponse bend;
-  const double kappa1 = (fk.d(5) - fk.d(2)) / length_ - e0_(2);
-  if (Status st = law_.respond(kappa1, length_, from, openSign, bend, N1, held_); !st) return st;
-  const double m1 = bend.state.M;
-  const double kappaN = (fk.dn(5) - fk.dn(2)) / length_ - e0_(2);
-  // The section's dashpot (materials/SectionDamping.h): f = a1/h times the
-  // strains' change over the step, in bending the elastic curvature's, axially
-  // (a bounded axial force) the elastic strain's.
-  const double f = damping_.factor(rule);
-  SectionDamping::Bending md, nd;
-  if (f > 0) {
-    md = law_.isElastic()
-             ? SectionDamping::elasticBending(f, law_.EI(), kappa1 - kappaN)
-             : SectionDamping::bending(f, law_.EI(), m1 - from.M, kappa1 - kappaN, bend.tangent);
-    if (axial_)
-      nd = axial_->damping(f, committed_.forces.N, N1, faceStrains(fk.d)(0) - faceStrains(fk.dn)(0),
-                           trial_.axial.ep - committed_.axial.ep, axialTangent_);
-  }
+  if (Status st = bendingResponse(fk, rule, openSign, sr); !st) return st;
   Vec3 strain;
   std::array<double, 2> halfTan{};
   const std::array<double, 2>* halfTanAt = nullptr;
-  Coupling cp;
   if (rule.scheme == Scheme::MidPoint) {
-    // Resultants at the alpha-weighted point: for bending the weighted moments
-    // of the committed and the trial state; an elastic section's moment at t_n
-    // is that of the curvature at d_n. The dashpot weighs the strains' change
-    // by f more (alpha + f); its moment is added to the weighted one.
-    const double w = 0.5 + rule.alpha, wd = w + f;
     halfTanAt = &halfTan;
-    if (law_.isElastic()) {
-      strain =
-          midPointForce(fk.d, fk.dn, rule.alpha + f, w * m1 + (1 - w) * law_.EI() * kappaN + md.m,
-                        f > 0 ? (w * bend.tangent + md.tangent) / wd : bend.tangent, wantTangent,
-                        residual, tangent, halfTan);
-    } else {  // inelastic: a moment whose work never exceeds the stored energy's change
-      const auto mm =
-          law_.midPointMoment(from, kappaN, bend.state, kappa1, bend.tangent, length_, w);
-      if (coupled) {
-        cp.moment = bend.dN != 0;
-        cp.dm = ((mm.dM1 + md.dM1) * bend.dN) * axialGradient_;
-        if (axial_) {
-          const AxialCapacity::MidPoint mp = axial_->midPoint(
-              committed_.forces.N, N1, faceStrains(fk.dn)(0) - e0_(0), faceStrains(fk.d)(0) - e0_(0),
-              axialTangent_, trial_.axial.ep - committed_.axial.ep, w, HingedBending::kMidPointRatio);
-          cp.axial = true;
-          cp.n = mp.n + nd.m;
-          cp.ea = (mp.tangent + nd.tangent) / wd;
-        }
-      }
-      strain =
-          midPointForce(fk.d, fk.dn, rule.alpha + f, mm.m + md.m, (mm.tangent + md.tangent) / wd,
-                        wantTangent, residual, tangent, halfTan, coupled ? &cp : nullptr);
-    }
+    strain = midPointResultants(fk, rule, sr, wantTangent, residual, tangent, halfTan);
   } else {
-    if (coupled) {
-      cp.axial = axial_.has_value();
-      cp.n = N1 + nd.m;
-      cp.ea = axialTangent_ + nd.tangent;
-      cp.moment = bend.dN != 0;
-      cp.dm = ((1 + md.dM1) * bend.dN) * axialGradient_;
-    }
-    Damper damper;
-    if (f > 0) damper = {f, faceStrains(fk.dn)};
-    strain = staticForce(fk.d, m1 + md.m, bend.tangent + md.tangent, damper, wantTangent, residual,
-                         tangent, coupled ? &cp : nullptr);
+    strain = staticResultants(fk, sr, wantTangent, residual, tangent);
   }
   if (rigid_.any()) {
     rigid_.toNodes(kin.d, rule.scheme == Scheme::MidPoint ? &kin.dn : nullptr, residual,
                    wantTangent ? &tangent : nullptr);
-    if (coupled) axialGradient_ = rigid_.jacobian(kin.d).transpose() * axialGradient_;
+    if (sr.coupled) axialGradient_ = rigid_.jacobian(kin.d).transpose() * axialGradient_;
   }
   if (rule.dynamic())
     rule.addInertia(mass_, kin.d - kin.dn, kin.vn, kin.an, residual, wantTangent ? &tangent : nullptr,
                     halfTanAt);
   if (!residual.allFinite() || (wantTangent && !tangent.allFinite()))
     return Status::failure("frame-reissner element: non-finite residual or tangent");
-
-  const Vec3 e = strain - e0_;
-  trial_.section = bend.state;
-  for (int a = 0; a < 2; ++a)
-    if (from.endHinge[a] == 0) trial_.section.endHinge[a] = ends[a];
-  trial_.forces = {axial_ ? N1 : ea_ * e(0), ga_ * e(1), m1};
-  if (law_.site() == HingeSite::Ends) {
-    // End moments M -+ S/2 from the element's equilibrium (material resultants at n+1).
-    const double S = length_ * (trial_.forces.N * strain(1) - trial_.forces.V * (1 + strain(0)));
-    trial_.section.endMoment = {m1 - 0.5 * S, m1 + 0.5 * S};
-  }
-  const double axialEnergy = axial_ ? 2 * axial_->energyDensity(N1) : ea_ * e(0) * e(0);
-  trial_.energy =
-      0.5 * length_ * (axialEnergy + ga_ * e(1) * e(1)) + length_ * law_.energyDensity(bend.state);
+  storeTrial(strain, sr, ends);
   return Status::success();
 }
 

@@ -195,6 +195,20 @@ class ReissnerFrame final : public Element,
                      const Coupling* cp = nullptr) const;
   // dSigma/dd at d.
   ElemVec axialStrainGradient(const ElemVec& d) const;
+  // evaluate()'s steps: N_{n+1} for the laws that follow it (axialTangent_,
+  // axialGradient_ and the axial state set), the bending law's response and
+  // the section dashpot's parts, the resultants under the mid-point rule or
+  // a static/Newmark step (both return the strains E(d)), the trial report.
+  struct StepResponse;
+  double axialResponse(const ElementKinematics& fk);
+  Status bendingResponse(const ElementKinematics& fk, const StepRule& rule, double openSign,
+                         StepResponse& sr) const;
+  Vec3 midPointResultants(const ElementKinematics& fk, const StepRule& rule,
+                          const StepResponse& sr, bool wantTangent, ElemVec& residual,
+                          ElemMat& tangent, std::array<double, 2>& halfTan) const;
+  Vec3 staticResultants(const ElementKinematics& fk, const StepResponse& sr, bool wantTangent,
+                        ElemVec& residual, ElemMat& tangent) const;
+  void storeTrial(const Vec3& strain, const StepResponse& sr, const std::array<double, 2>& ends);
   double fractureDemand() const;
   double shearDemand() const;  // |V| / Vu(N) (RC sections; 0 once parted)
   double bendingDemand() const;  // the hinge's |M|/Mu; 0 when held
