@@ -14,14 +14,6 @@ namespace c2d {
 
 namespace {
 
-// Local Newton iteration: once the update is below kSmallStep relative to
-// 1 + |psi_r| (radians, unbounded: many turns are fine), it is applied and the
-// element evaluated once more, which leaves an error of the order of the
-// squared update, far below round-off. Stopping without that last evaluation
-// would leave a moment K_rr*step at the joint, always of the same sign, and the
-// energy of a long run would drift.
-constexpr int kMaxLocalIterations = 60;
-constexpr double kSmallStep = 1e-9;
 // The largest first-order change of psi_r taken as the local iteration's
 // start (radians).
 constexpr double kGuessRange = 0.05;
@@ -199,26 +191,21 @@ Status JointedElement::evaluate(const ElementKinematics& kin, const StepRule& ru
   return Status::success();
 }
 
-Status JointedElement::evaluateAtFace(const ElementKinematics& kin, const StepRule& rule,
-                                      bool wantTangent, ElemVec& residual, ElemMat& tangent) {
-  if (JointedElement* j = asJointed(inner_.get());
-      j && freeJoint() && j->freeJoint() &&
-      evaluateLink(*j, kin, rule, wantTangent, residual, tangent))
-    return Status::success();
-  if (hinge_ && !hinge_->failed(committed_.slip))
-    return evaluateHinge(kin, rule, wantTangent, residual, tangent);
+double JointedElement::frictionAt(const ElementKinematics& kin, const ElementKinematics& in,
+                                  const StepRule& rule, double p, double& slope) const {
+  if (friction_ <= 0) return slope = 0.0;
   const int k = dof();
-  double psi = trial_.psi;
-  // A first-order start only for a small change: the local equation's roots
-  // recur with the turns of the slave section, and a start far off may find
-  // another one.
-  if (guessValid_) {
-    const double change = guessSlope_.dot(kin.d - guessD_);
-    if (std::abs(change) <= kGuessRange) psi += change;
-  }
-  ElementKinematics in = fromFace(kin, psi);
-  ElemMat kin6;
-  double krr = 0;
+  const double masterRate = rule.rotationRate(kin.d(k) - kin.dn(k));
+  const double w = rule.rotationRate(kin.d(k) + p - in.dn(k)) - masterRate;
+  const double s2 = w * w + frictionEps_ * frictionEps_, s = std::sqrt(s2);
+  slope = friction_ * frictionEps_ * frictionEps_ / (s2 * s);
+  return friction_ * w / s;
+}
+
+Status JointedElement::solveRelative(const ElementKinematics& kin, const StepRule& rule,
+                                     double& psi, ElementKinematics& in, ElemVec& residual,
+                                     ElemMat& kin6, double& krr) {
+  const int k = dof();
   bool lastPass = false, converged = false;
   // Under the Cayley rule (core/StepRule.h) the slave section's rotation
   // increment lies in (-pi, pi), where the rate of its inertia, 2 tan(inc/2),
@@ -227,22 +214,12 @@ Status JointedElement::evaluateAtFace(const ElementKinematics& kin, const StepRu
   const bool bounded = rule.rotationsByCayley() && inner_->mass()(k, k) > 0;
   double lo = -std::numbers::pi, hi = std::numbers::pi;
   auto increment = [&](double p) { return kin.d(k) + p - in.dn(k); };
-  // The joint's friction on the slave section: m(w), w the relative rate
-  // measure over the step, and dm/dpsi.
-  const double masterRate = rule.rotationRate(kin.d(k) - kin.dn(k));
-  auto friction = [&](double p, double& slope) {
-    if (friction_ <= 0) return slope = 0.0;
-    const double w = rule.rotationRate(increment(p)) - masterRate;
-    const double s2 = w * w + frictionEps_ * frictionEps_, s = std::sqrt(s2);
-    slope = friction_ * frictionEps_ * frictionEps_ / (s2 * s);
-    return friction_ * w / s;
-  };
   if (bounded && !(std::abs(increment(psi)) < hi)) psi = in.dn(k) - kin.d(k);
   for (int it = 0; it < kMaxLocalIterations; ++it) {
     turnSlave(in, kin, psi);
     if (Status st = evaluateInner(in, rule, residual, kin6); !st) return st;
     double dm = 0;
-    const double m = friction(psi, dm);
+    const double m = frictionAt(kin, in, rule, psi, dm);
     const double slaveSlope = friction_ > 0 ? rule.rotationRateSlope(increment(psi)) : 0.0;
     // Condensation needs a nonzero pivot only: a compressed member in large
     // motion can make the relative rotation's stiffness negative.
@@ -280,6 +257,52 @@ Status JointedElement::evaluateAtFace(const ElementKinematics& kin, const StepRu
         << kMaxLocalIterations << " iterations (moment " << residual(k) << ")";
     return Status::failure(msg.str());
   }
+  return Status::success();
+}
+
+ElemMat JointedElement::frictionTangent(const ElementKinematics& kin, const ElementKinematics& in,
+                                        const StepRule& rule, double psi,
+                                        const ElemMat& kin6) const {
+  // psi_r(d) from G = r_k(d + psi_r e_k) + m(w) = 0, w = c(slave inc) -
+  // c(master inc): dG/dpsi = K_kk + a, dG/dd_k = K_kk + b, with a = m' c'_s and
+  // b = m' (c'_s - c'_m); the outer row k is -m(w).
+  const int k = dof();
+  double dm = 0;
+  frictionAt(kin, in, rule, psi, dm);
+  const double a = dm * rule.rotationRateSlope(in.d(k) - in.dn(k));
+  const double b = a - dm * rule.rotationRateSlope(kin.d(k) - kin.dn(k));
+  ElemVec gd = kin6.row(k).transpose();
+  gd(k) += b;  // dG/dd
+  ElemVec rpsi = kin6.col(k);
+  rpsi(k) = -a;  // dR/dpsi
+  ElemMat tangent = kin6;
+  tangent.row(k).setZero();
+  tangent(k, k) = -b;
+  tangent -= rpsi * gd.transpose() / (kin6(k, k) + a);
+  return tangent;
+}
+
+Status JointedElement::evaluateAtFace(const ElementKinematics& kin, const StepRule& rule,
+                                      bool wantTangent, ElemVec& residual, ElemMat& tangent) {
+  if (JointedElement* j = asJointed(inner_.get());
+      j && freeJoint() && j->freeJoint() &&
+      evaluateLink(*j, kin, rule, wantTangent, residual, tangent))
+    return Status::success();
+  if (hinge_ && !hinge_->failed(committed_.slip))
+    return evaluateHinge(kin, rule, wantTangent, residual, tangent);
+  const int k = dof();
+  double psi = trial_.psi;
+  // A first-order start only for a small change: the local equation's roots
+  // recur with the turns of the slave section, and a start far off may find
+  // another one.
+  if (guessValid_) {
+    const double change = guessSlope_.dot(kin.d - guessD_);
+    if (std::abs(change) <= kGuessRange) psi += change;
+  }
+  ElementKinematics in = fromFace(kin, psi);
+  ElemMat kin6;
+  double krr = 0;
+  if (Status st = solveRelative(kin, rule, psi, in, residual, kin6, krr); !st) return st;
 
   trial_.psi = psi;
   trial_.slip = committed_.slip;
@@ -300,7 +323,7 @@ Status JointedElement::evaluateAtFace(const ElementKinematics& kin, const StepRu
     double gpsi = kin6(k, k);
     if (friction_ > 0) {
       double dm = 0;
-      friction(psi, dm);
+      frictionAt(kin, in, rule, psi, dm);
       const double a = dm * rule.rotationRateSlope(in.d(k) - in.dn(k));
       gd(k) += a - dm * rule.rotationRateSlope(kin.d(k) - kin.dn(k));
       gpsi += a;
@@ -313,145 +336,7 @@ Status JointedElement::evaluateAtFace(const ElementKinematics& kin, const StepRu
     // psi_r(d) from r_k(d + psi_r e_k) = 0: dpsi_r/dd = -K_k./K_kk.
     tangent = kin6 - kin6.col(k) * kin6.row(k) / kin6(k, k);
   } else if (wantTangent) {
-    // psi_r(d) from G = r_k(d + psi_r e_k) + m(w) = 0, w = c(slave inc) -
-    // c(master inc): dG/dpsi = K_kk + a, dG/dd_k = K_kk + b, with a = m' c'_s and
-    // b = m' (c'_s - c'_m); the outer row k is -m(w).
-    double dm = 0;
-    friction(psi, dm);
-    const double a = dm * rule.rotationRateSlope(in.d(k) - in.dn(k));
-    const double b = a - dm * rule.rotationRateSlope(kin.d(k) - kin.dn(k));
-    ElemVec gd = kin6.row(k).transpose();
-    gd(k) += b;  // dG/dd
-    ElemVec rpsi = kin6.col(k);
-    rpsi(k) = -a;  // dR/dpsi
-    tangent = kin6;
-    tangent.row(k).setZero();
-    tangent(k, k) = -b;
-    tangent -= rpsi * gd.transpose() / (kin6(k, k) + a);
-  }
-  return Status::success();
-}
-
-Status JointedElement::evaluateHinge(const ElementKinematics& kin, const StepRule& rule,
-                                     bool wantTangent, ElemVec& residual, ElemMat& tangent) {
-  const int k = dof();
-  const EndHinge& law = *hinge_;
-  const double masterRate = rule.rotationRate(kin.d(k) - kin.dn(k));
-  ElementKinematics in = fromFace(kin, committed_.psi);
-  ElemMat kin6;
-  auto axial = [&]() { return member_ ? member_->axialForce() : 0.0; };
-  auto rates = [&](double psi) {
-    const double rate = rule.rotationRate(kin.d(k) + psi - in.dn(k)) - masterRate;
-    trial_.vel = rule.velocity(rate, committed_.vel, committed_.acc);
-    trial_.acc = rule.acceleration(rate, committed_.vel, committed_.acc);
-    slaveRotation_ = kin.d(k) + psi;
-  };
-  // Stick: the relative rotation as committed; the joint carries -r_k. A
-  // moment at the capacity to round-off (relative 1e-8) slips with a zero
-  // increment, as LinearSoftening's hinge: a hinge at its capacity is taken to
-  // go on softening (its tangent at the state it opened in is the softening one).
-  turnSlave(in, kin, committed_.psi);
-  if (Status st = evaluateInner(in, rule, residual, kin6); !st) return st;
-  const double stick = -residual(k);
-  const EndHinge::Value c0 = law.capacity(committed_.slip, axial());
-  if (std::abs(stick) < c0.C * (1 - 1e-8)) {
-    trial_.psi = committed_.psi;
-    trial_.slip = committed_.slip;
-    trial_.moment = stick;
-    rates(committed_.psi);
-    if (member_) axialGradient_ = innerAxialGradient(in.d);
-    if (wantTangent) tangent = kin6;
-    return Status::success();
-  }
-  // Slip in the direction of the moment the joint cannot carry: G(psi) =
-  // r_k + sigma C(xi_n + sigma w, N) = 0 on sigma w >= 0 (a spent capacity
-  // leaves r_k = 0), solved by Newton's method kept in a bracket of the root.
-  const double sigma = stick > 0 ? 1.0 : -1.0;
-  const double psiN = committed_.psi;
-  // Under the Cayley rule the slave's increment stays inside (-pi, pi).
-  const bool bounded = rule.rotationsByCayley() && inner_->mass()(k, k) > 0;
-  const double incN = kin.d(k) + psiN - in.dn(k);
-  double lo = psiN, hi = psiN;
-  const double far = bounded ? std::numbers::pi - 1e-9 : 1e300;
-  (sigma > 0 ? hi : lo) = sigma > 0 ? psiN + (far - incN) : psiN - (far + incN);
-  double psi = psiN, G = 0, Gpsi = 0, m = 0, mPsi = 0, slip = 0;
-  EndHinge::Value cv;
-  bool lastPass = false, converged = false;
-  double lastStep = std::numeric_limits<double>::infinity(), stepBeforeLast = lastStep;
-  for (int it = 0; it < kMaxLocalIterations; ++it) {
-    turnSlave(in, kin, psi);
-    if (it > 0)
-      if (Status st = evaluateInner(in, rule, residual, kin6); !st) return st;
-    const double inc = kin.d(k) + psi - in.dn(k);
-    const double w = rule.rotationRate(inc) - masterRate;
-    slip = committed_.slip + std::max(0.0, sigma * w);
-    cv = law.capacity(slip, axial());
-    m = sigma * cv.C;
-    const double nk = member_ ? innerAxialGradient(in.d)(k) : 0.0;
-    mPsi = cv.dXi * rule.rotationRateSlope(inc) + sigma * cv.dN * nk;
-    G = residual(k) + m;
-    Gpsi = kin6(k, k) + mPsi;
-    if (lastPass) {
-      converged = true;
-      break;
-    }
-    // Newton's step; a step at round-off is taken and the element evaluated
-    // once more (its error is the step's square), else the step stays inside
-    // the bracket (bisecting it when Newton's would leave it).
-    const double small = kSmallStep * (1.0 + std::abs(psi));
-    double step = Gpsi != 0 ? -G / Gpsi : 0.0;
-    if (std::isfinite(step) && std::abs(step) <= small) {
-      lastPass = true;
-      psi += step;
-      continue;
-    }
-    (G < 0 ? lo : hi) = psi;
-    // Newton's steps that do not halve from one to the next but one bounce
-    // between the sides of a kink (the wrapped element's own joint turning
-    // from stick to slip): the bracket then shrinks by little each time, and
-    // bisection takes over (a safeguarded Newton, as rtsafe's).
-    const bool finite = std::abs(hi) < 1e299 && std::abs(lo) < 1e299;
-    if (!(Gpsi > 0) || !(psi + step > lo && psi + step < hi) ||
-        (finite && std::abs(step) > 0.5 * stepBeforeLast))
-      step = (finite ? 0.5 * (lo + hi) : psi + sigma * 0.1) - psi;
-    if (!std::isfinite(step)) break;
-    stepBeforeLast = lastStep;
-    lastStep = std::abs(step);
-    psi += step;
-  }
-  if (!converged) {
-    std::ostringstream msg;
-    msg << "hinge at node " << slave_ + 1 << ": its rotation jump did not converge in "
-        << kMaxLocalIterations << " iterations (moment " << residual(k) << ")";
-    return Status::failure(msg.str());
-  }
-  trial_.psi = psi;
-  trial_.slip = slip;
-  trial_.moment = m;
-  rates(psi);
-  guessValid_ = false;
-  // dG/dd: the inner row, the slip rate's dependence on the master's increment,
-  // the capacity's on the member's axial force.
-  ElemVec gd = kin6.row(k).transpose();
-  gd(k) -= cv.dXi * rule.rotationRateSlope(kin.d(k) - kin.dn(k));
-  ElemVec md = ElemVec::Zero();  // dm/dd at fixed psi
-  md(k) = cv.dXi * (rule.rotationRateSlope(kin.d(k) + psi - in.dn(k)) -
-                    rule.rotationRateSlope(kin.d(k) - kin.dn(k)));
-  if (member_) {
-    const ElemVec g = innerAxialGradient(in.d);
-    md += sigma * cv.dN * g;
-    gd = kin6.row(k).transpose() + md;
-    axialGradient_ = g - (g(k) / Gpsi) * gd;
-  } else {
-    gd = kin6.row(k).transpose() + md;
-  }
-  if (wantTangent) {
-    // R_k = -m(psi(d), d): dR_k/dd = -m_d - m_psi dpsi/dd, dpsi/dd = -G_d/G_psi.
-    ElemVec rpsi = kin6.col(k);
-    rpsi(k) = -mPsi;
-    tangent = kin6;
-    tangent.row(k) = -md.transpose();
-    tangent -= rpsi * gd.transpose() / Gpsi;
+    tangent = frictionTangent(kin, in, rule, psi, kin6);
   }
   return Status::success();
 }

@@ -195,6 +195,15 @@ class JointedElement final : public Element, public Checkpoint, public MaterialC
     Vec2 shiftVel = Vec2::Zero(), shiftAcc = Vec2::Zero();  // the shift's rates (rigid end zone)
   };
 
+  // Local Newton iteration: once the update is below kSmallStep relative to
+  // 1 + |psi_r| (radians, unbounded: many turns are fine), it is applied and
+  // the element evaluated once more, which leaves an error of the order of
+  // the squared update, far below round-off. Stopping without that last
+  // evaluation would leave a moment K_rr*step at the joint, always of the
+  // same sign, and the energy of a long run would drift.
+  static constexpr int kMaxLocalIterations = 60;
+  static constexpr double kSmallStep = 1e-9;
+
   int dof() const { return kNodeDofs * slaveEnd_ + 2; }
   // The whole evaluation in face coordinates (no arm: the outer ones).
   Status evaluateAtFace(const ElementKinematics& face, const StepRule& rule, bool wantTangent,
@@ -213,9 +222,33 @@ class JointedElement final : public Element, public Checkpoint, public MaterialC
   bool freeJoint() const {
     return friction_ <= 0 && (!hinge_ || hinge_->failed(committed_.slip));
   }
-  // The local problem with the hinge law (stick or slip).
+  // evaluateAtFace's parts with friction or none: the joint's friction
+  // moment m(w) on the slave section at relative rotation p (w the relative
+  // rate measure over the step) and dm/dpsi; the local Newton solve of
+  // r_k + m = 0 for psi (from psi, with `in` at it: the wrapped element's
+  // residual, tangent kin6 and pivot krr at the root); the condensed tangent
+  // with friction.
+  double frictionAt(const ElementKinematics& kin, const ElementKinematics& in,
+                    const StepRule& rule, double p, double& slope) const;
+  Status solveRelative(const ElementKinematics& kin, const StepRule& rule, double& psi,
+                       ElementKinematics& in, ElemVec& residual, ElemMat& kin6, double& krr);
+  ElemMat frictionTangent(const ElementKinematics& kin, const ElementKinematics& in,
+                          const StepRule& rule, double psi, const ElemMat& kin6) const;
+  // The local problem with the hinge law (stick or slip; elements/JointHinge.cpp).
   Status evaluateHinge(const ElementKinematics& kin, const StepRule& rule, bool wantTangent,
                        ElemVec& residual, ElemMat& tangent);
+  // Its parts: the relative rotation's rates and the slave's rotation at psi;
+  // the slip solve from the stick moment (`in`, residual and kin6 left at the
+  // root); the slipping joint's trial state, axial gradient and tangent.
+  struct Slip;
+  void setRates(const ElementKinematics& kin, const ElementKinematics& in, const StepRule& rule,
+                double psi);
+  Status solveSlip(const ElementKinematics& kin, const StepRule& rule, double stick,
+                   ElementKinematics& in, ElemVec& residual, ElemMat& kin6, Slip& s);
+  void storeSlip(const ElementKinematics& kin, const StepRule& rule, const ElementKinematics& in,
+                 const ElemMat& kin6, const Slip& s, bool wantTangent, ElemMat& tangent);
+  // The member's axial force (0: none).
+  double memberAxialForce() const;
   // The wrapped element's axial force gradient (through an inner wrapper's),
   // in face coordinates at its kinematics d.
   ElemVec innerAxialGradient(const ElemVec& d) const;
