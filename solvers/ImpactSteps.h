@@ -27,7 +27,11 @@
 //     r1^2) / 3), against kTolerance e^2 of the contact's energy
 //     m max(r0^2, r1^2) / 2 + U (the share an impact gives back): the ratio eta
 //     grows as h^2, and a step with eta > 1 is taken again with
-//     h 0.9 / sqrt(eta).
+//     h 0.9 / sqrt(eta);
+//   - a turn inside the step under the decaying mid-point scheme: its loss
+//     beta m (r1 - r0)^2, which the ground contact gives back in shares of
+//     loading and unloading (core/contact/GroundContact.h groundImpactOwed),
+//     against the same kTolerance e^2 of the contact's energy.
 // An accepted step proposes the next one, h min(2, 0.9 / sqrt(eta)), while a
 // contact is in such a step; the next step of the deck's DT (TIME) is then
 // taken in parts (Analysis::nextStepTime), which AUTO,CUT's cutting and

