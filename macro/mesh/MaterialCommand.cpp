@@ -58,16 +58,22 @@ void echoMaterial(std::ostream& os, const MaterialSet& m) {
   echoLaws(os, m);
 }
 
-void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
-  const Record& h = cmd.head;
-  const int m = ctx.materialNumber(h, 1);
+// What one MATErial set has read so far: the set, its laws, and the records
+// the checks across records point at.
+struct MaterialReading {
   MaterialSet mat;
-  mat.number = m;
-  mat.label = h.restOfLine(2);
+  LawRecords laws;
+  const Record* elastic = nullptr;
+  const Record* section = nullptr;
+  const Record* resultant = nullptr;
+  const Record* density = nullptr;
+  const Record* kinematics = nullptr;
+};
 
-  CommandRegistry subs;
-  registerMaterialSubRecords(subs);
-
+// The element type record, first in the data: FRAMe.
+void readElementType(MeshContext& ctx, const MeshCommand& cmd, const CommandRegistry& subs,
+                     int m) {
+  const Record& h = cmd.head;
   if (cmd.data.empty())
     failAt(h, 0, "MATErial," + std::to_string(m) + " has no element type record",
            "the record after MATErial is the element type, FRAMe");
@@ -80,129 +86,182 @@ void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
            hint.empty() ? "the element type is FRAMe" : hint);
   }
   ctx.maxFields(type, 1, "FRAMe");
-  mat.elementType = "FRAMe";
+}
 
-  const Record *elasticRec = nullptr, *sectionRec = nullptr, *resultantRec = nullptr;
-  LawRecords laws;
-  const Record* densityRec = nullptr;
-  const Record* kinematicsRec = nullptr;
-  for (std::size_t k = 1; k < cmd.data.size(); ++k) {
-    const Record& r = cmd.data[k];
-    const CommandSpec* s = subs.find(r[0].text);
-    if (!s || s->key() == "fram") {
-      if (s) failAt(r, 0, "element type given twice in one MATErial set");
-      std::string hint = subs.suggest(r[0].text);
-      failAt(r, 0, "unknown material record '" + r[0].text + "'",
-             hint.empty() ? "see collapse2d --help for the material records" : hint);
-    }
-    const std::string key = s->key();
-    const std::string text2 = r.text(1);
-    auto numericText = [&](const std::string& syntax) { subrecord::requireText(r, s->name, syntax); };
-    auto values = [&](std::size_t maxCount, std::size_t required, const std::string& syntax) {
-      return subrecord::values(ctx, r, s->name, maxCount, required, syntax);
-    };
-    auto option = [&](const std::string& syntax, std::initializer_list<const char*> allowed) {
-      ctx.maxFields(r, 2, syntax);
-      for (const char* a : allowed)
-        if (keywordMatches(text2, a)) return std::string(a);
-      failAt(r, 1, "unknown option '" + text2 + "' of " + s->name, "write " + syntax);
-    };
-
-    if (key == "elas") {
-      const std::string syntax = "ELAStic ISOTropic E nu";
-      numericText(syntax);
-      if (!text2.empty() && !keywordMatches(text2, "ISOTropic"))
-        failAt(r, 1, "only isotropic elasticity is available for frames", "write " + syntax);
-      const auto v = values(2, 1, syntax);
-      if (v[0] <= 0) failAt(r, 2, "modulus E must be positive");
-      if (v[1] <= -1 || v[1] >= 0.5) failAt(r, 3, "Poisson ratio must lie in (-1, 0.5)");
-      mat.E = v[0];
-      mat.nu = v[1];
-      elasticRec = &r;
-    } else if (key == "cros") {
-      // FEAPpv's frame record: A Ixx Iyy Ixy J kappa_1 kappa_2. A plane frame bends
-      // about one axis: it uses A, I = Ixx and the shear factor kappa_1 (0: 5/6).
-      const std::string syntax = "CROSs SECTion A I [Iyy Ixy J kappa kappa2]";
-      numericText("CROSs SECTion A I (or CROSs,,A,I)");
-      const auto v = values(7, 2, syntax);
-      if (v[0] <= 0) failAt(r, 2, "section area A must be positive");
-      if (v[1] <= 0) failAt(r, 3, "section inertia I must be positive");
-      if (v[5] < 0) failAt(r, 7, "shear factor must be positive");
-      mat.A = v[0];
-      mat.I = v[1];
-      mat.kappa = v[5] != 0 ? v[5] : 5.0 / 6.0;
-      sectionRec = &r;
-    } else if (key == "shea") {
-      if (text2.empty()) {
-        mat.shear = true;
-      } else {
-        mat.shear = option("SHEAr ON / SHEAr OFF", {"ON", "OFF"}) == "ON";
-      }
-    } else if (key == "smal" || key == "fini") {
-      ctx.maxFields(r, 1, s->name);
-      mat.kinematics = key == "smal" ? Kinematics::Small : Kinematics::Finite;
-      kinematicsRec = &r;
-    } else if (key == "dens") {
-      const std::string syntax = "DENSity,,rho";
-      numericText(syntax);
-      if (!text2.empty()) failAt(r, 1, "DENSity takes no option", "write " + syntax);
-      const auto v = values(2, 1, syntax);
-      if (v[0] < 0) failAt(r, 2, "density must not be negative");
-      if (v[1] != 0 && v[1] != 1)
-        failAt(r, 3, "a rotary inertia factor other than 1 is not available");
-      mat.density = v[0];
-      densityRec = &r;
-    } else if (key == "damp") {
-      mat.dampingA1 = readDamping(ctx, r);
-    } else if (key == "mass") {
-      mat.mass = option("MASS LUMPed / MASS CONSistent", {"LUMPed", "CONSistent"}) == "LUMPed"
-                     ? MassType::Lumped
-                     : MassType::Consistent;
-    } else if (key == "resu") {
-      const std::string syntax = "RESUltant STIFfness EA GA EI";
-      numericText(syntax);
-      if (!keywordMatches(text2, "STIFfness"))
-        failAt(r, 1, "expected STIFfness", "write " + syntax);
-      const auto v = values(3, 3, syntax);
-      if (v[0] <= 0) failAt(r, 2, "EA must be positive");
-      if (v[1] < 0) failAt(r, 3, "GA must not be negative");
-      if (v[2] <= 0) failAt(r, 4, "EI must be positive");
-      mat.resEA = v[0];
-      mat.resGA = v[1];
-      mat.resEI = v[2];
-      resultantRec = &r;
-    } else {
-      bindLawRecord(ctx, r, *s, mat, laws);
-    }
+// The spec of a material record after the element type; a second FRAMe or an
+// unknown name is an error.
+const CommandSpec& materialRecordSpec(const CommandRegistry& subs, const Record& r) {
+  const CommandSpec* s = subs.find(r[0].text);
+  if (!s || s->key() == "fram") {
+    if (s) failAt(r, 0, "element type given twice in one MATErial set");
+    std::string hint = subs.suggest(r[0].text);
+    failAt(r, 0, "unknown material record '" + r[0].text + "'",
+           hint.empty() ? "see collapse2d --help for the material records" : hint);
   }
+  return *s;
+}
 
-  finishLawRecords(h, laws, mat, elasticRec, sectionRec, resultantRec);
-  warnSectionUnits(ctx, laws, mat);
+// The second field of r as one of the allowed options.
+std::string recordOption(const MeshContext& ctx, const Record& r, const CommandSpec& s,
+                         const std::string& syntax, std::initializer_list<const char*> allowed) {
+  const std::string text2 = r.text(1);
+  ctx.maxFields(r, 2, syntax);
+  for (const char* a : allowed)
+    if (keywordMatches(text2, a)) return std::string(a);
+  failAt(r, 1, "unknown option '" + text2 + "' of " + s.name, "write " + syntax);
+}
+
+// ELAStic ISOTropic E nu.
+void readElastic(const MeshContext& ctx, const Record& r, const CommandSpec& s,
+                 MaterialReading& got) {
+  const std::string syntax = "ELAStic ISOTropic E nu";
+  const std::string text2 = r.text(1);
+  subrecord::requireText(r, s.name, syntax);
+  if (!text2.empty() && !keywordMatches(text2, "ISOTropic"))
+    failAt(r, 1, "only isotropic elasticity is available for frames", "write " + syntax);
+  const auto v = subrecord::values(ctx, r, s.name, 2, 1, syntax);
+  if (v[0] <= 0) failAt(r, 2, "modulus E must be positive");
+  if (v[1] <= -1 || v[1] >= 0.5) failAt(r, 3, "Poisson ratio must lie in (-1, 0.5)");
+  got.mat.E = v[0];
+  got.mat.nu = v[1];
+  got.elastic = &r;
+}
+
+// CROSs SECTion: FEAPpv's frame record, A Ixx Iyy Ixy J kappa_1 kappa_2. A plane
+// frame bends about one axis: it uses A, I = Ixx and the shear factor kappa_1
+// (0: 5/6).
+void readCrossSection(const MeshContext& ctx, const Record& r, const CommandSpec& s,
+                      MaterialReading& got) {
+  const std::string syntax = "CROSs SECTion A I [Iyy Ixy J kappa kappa2]";
+  subrecord::requireText(r, s.name, "CROSs SECTion A I (or CROSs,,A,I)");
+  const auto v = subrecord::values(ctx, r, s.name, 7, 2, syntax);
+  if (v[0] <= 0) failAt(r, 2, "section area A must be positive");
+  if (v[1] <= 0) failAt(r, 3, "section inertia I must be positive");
+  if (v[5] < 0) failAt(r, 7, "shear factor must be positive");
+  got.mat.A = v[0];
+  got.mat.I = v[1];
+  got.mat.kappa = v[5] != 0 ? v[5] : 5.0 / 6.0;
+  got.section = &r;
+}
+
+// DENSity,,rho [rotary inertia factor 1].
+void readDensity(const MeshContext& ctx, const Record& r, const CommandSpec& s,
+                 MaterialReading& got) {
+  const std::string syntax = "DENSity,,rho";
+  subrecord::requireText(r, s.name, syntax);
+  if (!r.text(1).empty()) failAt(r, 1, "DENSity takes no option", "write " + syntax);
+  const auto v = subrecord::values(ctx, r, s.name, 2, 1, syntax);
+  if (v[0] < 0) failAt(r, 2, "density must not be negative");
+  if (v[1] != 0 && v[1] != 1) failAt(r, 3, "a rotary inertia factor other than 1 is not available");
+  got.mat.density = v[0];
+  got.density = &r;
+}
+
+// RESUltant STIFfness EA GA EI.
+void readResultant(const MeshContext& ctx, const Record& r, const CommandSpec& s,
+                   MaterialReading& got) {
+  const std::string syntax = "RESUltant STIFfness EA GA EI";
+  subrecord::requireText(r, s.name, syntax);
+  if (!keywordMatches(r.text(1), "STIFfness")) failAt(r, 1, "expected STIFfness", "write " + syntax);
+  const auto v = subrecord::values(ctx, r, s.name, 3, 3, syntax);
+  if (v[0] <= 0) failAt(r, 2, "EA must be positive");
+  if (v[1] < 0) failAt(r, 3, "GA must not be negative");
+  if (v[2] <= 0) failAt(r, 4, "EI must be positive");
+  got.mat.resEA = v[0];
+  got.mat.resGA = v[1];
+  got.mat.resEI = v[2];
+  got.resultant = &r;
+}
+
+// One material record after the element type, by its key.
+void readMaterialRecord(MeshContext& ctx, const Record& r, const CommandSpec& s,
+                        MaterialReading& got) {
+  const std::string key = s.key();
+  if (key == "elas") {
+    readElastic(ctx, r, s, got);
+  } else if (key == "cros") {
+    readCrossSection(ctx, r, s, got);
+  } else if (key == "shea") {
+    if (r.text(1).empty()) {
+      got.mat.shear = true;
+    } else {
+      got.mat.shear = recordOption(ctx, r, s, "SHEAr ON / SHEAr OFF", {"ON", "OFF"}) == "ON";
+    }
+  } else if (key == "smal" || key == "fini") {
+    ctx.maxFields(r, 1, s.name);
+    got.mat.kinematics = key == "smal" ? Kinematics::Small : Kinematics::Finite;
+    got.kinematics = &r;
+  } else if (key == "dens") {
+    readDensity(ctx, r, s, got);
+  } else if (key == "damp") {
+    got.mat.dampingA1 = readDamping(ctx, r);
+  } else if (key == "mass") {
+    got.mat.mass = recordOption(ctx, r, s, "MASS LUMPed / MASS CONSistent",
+                                {"LUMPed", "CONSistent"}) == "LUMPed"
+                       ? MassType::Lumped
+                       : MassType::Consistent;
+  } else if (key == "resu") {
+    readResultant(ctx, r, s, got);
+  } else {
+    bindLawRecord(ctx, r, s, got.mat, got.laws);
+  }
+}
+
+// The checks across records: a stiffness (ELAStic and CROSs, or RESUltant),
+// GA with shear on, the area DENSity needs.
+void checkMaterialComplete(const Record& h, int m, const MaterialReading& got) {
+  const MaterialSet& mat = got.mat;
   if (!mat.resEI) {
-    if (!elasticRec)
+    if (!got.elastic)
       failAt(h, 0, "material " + std::to_string(m) + " has no ELAStic record",
              "give ELAStic ISOTropic E nu and CROSs SECTion A I, or RESUltant STIFfness EA GA EI");
-    if (!sectionRec)
+    if (!got.section)
       failAt(h, 0, "material " + std::to_string(m) + " has no CROSs record",
              "give CROSs SECTion A I");
   } else if (mat.shear && *mat.resGA <= 0) {
     failAt(h, 0, "material " + std::to_string(m) + " has GA = 0 with shear deformation on",
            "give GA, or SHEAr OFF for Euler-Bernoulli");
   }
-  if (densityRec && mat.density > 0 && mat.A <= 0)
-    failAt(*densityRec, 2, "DENSity needs the section area: give CROSs SECTion A I too");
+  if (got.density && mat.density > 0 && mat.A <= 0)
+    failAt(*got.density, 2, "DENSity needs the section area: give CROSs SECTion A I too");
+}
 
-  if (auto* os = ctx.out()) echoMaterial(*os, mat);
+// The set into the model; a set given again (MESH re-entry) is noted as changed,
+// unless it has or gets a SECTion.
+void storeMaterial(MeshContext& ctx, const Record& h, int m, const MaterialReading& got) {
   if (const MaterialSet* before = ctx.model.material(m)) {
-    if (before->section || mat.section)
+    if (before->section || got.mat.section)
       failAt(h, 0, "material " + std::to_string(m) + " has or gets a SECTion: it cannot be given again",
              "an RC member's history belongs to its section");
     auto [it, added] = ctx.changedMaterials.try_emplace(m);
     if (added) it->second.before = before->kinematics;  // as the existing elements have it
     it->second.head = h;
-    it->second.kinematics = kinematicsRec ? *kinematicsRec : Record{};
+    it->second.kinematics = got.kinematics ? *got.kinematics : Record{};
   }
-  ctx.model.materials()[m] = mat;
+  ctx.model.materials()[m] = got.mat;
+}
+
+void applyMaterial(MeshContext& ctx, const MeshCommand& cmd) {
+  const Record& h = cmd.head;
+  const int m = ctx.materialNumber(h, 1);
+  MaterialReading got;
+  got.mat.number = m;
+  got.mat.label = h.restOfLine(2);
+
+  CommandRegistry subs;
+  registerMaterialSubRecords(subs);
+  readElementType(ctx, cmd, subs, m);
+  got.mat.elementType = "FRAMe";
+  for (std::size_t k = 1; k < cmd.data.size(); ++k) {
+    const Record& r = cmd.data[k];
+    readMaterialRecord(ctx, r, materialRecordSpec(subs, r), got);
+  }
+
+  finishLawRecords(h, got.laws, got.mat, got.elastic, got.section, got.resultant);
+  warnSectionUnits(ctx, got.laws, got.mat);
+  checkMaterialComplete(h, m, got);
+  if (auto* os = ctx.out()) echoMaterial(*os, got.mat);
+  storeMaterial(ctx, h, m, got);
 }
 
 }  // namespace
