@@ -67,10 +67,11 @@ void refuseKinematicsChange(const Record& r, int m, Kinematics before) {
              "state");
 }
 
-void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whereText) {
-  Model& model = ctx.model;
-  if (ctx.beforeElements) ctx.beforeElements(model);
+namespace {
 
+// The elements the input defined, checked (material, nodes, length) and built.
+void buildElements(MeshContext& ctx) {
+  Model& model = ctx.model;
   for (const auto& [num, pe] : ctx.elements) {
     const Record& r = *pe.origin;
     const std::string what =
@@ -94,70 +95,73 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
     if ((x2 - x1).norm() == 0) failAt(r, 3, what + " has zero length");
     model.setElement(num - 1, makeElement(*mat, {pe.nodes[0] - 1, pe.nodes[1] - 1}, x1, x2));
   }
-  applyRigidEnds(ctx);
+}
 
-  for (auto& f : ctx.afterElements) f(ctx);
-
-  // MATErial given again: its existing elements (not rebuilt above) take the
-  // new data with their state. A change of kinematics is refused at the record;
-  // an element that cannot take the data ends the analysis at the record.
-  if (!ctx.changedMaterials.empty()) {
-    std::vector<int> rebuilt;
-    for (const auto& [num, pe] : ctx.elements) rebuilt.push_back(num - 1);
-    const State none;
-    for (const auto& [m, src] : ctx.changedMaterials) {
-      const MaterialSet& mat = *model.material(m);
-      bool used = false;
-      for (int e = 0; e < model.numElements() && !used; ++e)
-        used = model.elements()[e] && model.element(e).materialNumber() == m &&
-               std::find(rebuilt.begin(), rebuilt.end(), e) == rebuilt.end();
-      if (!used) continue;
-      if (mat.kinematics != src.before)
-        refuseKinematicsChange(src.kinematics.blank() ? src.head : src.kinematics, m, src.before);
-      const Status st = changeMaterial(model, ctx.state ? *ctx.state : none, mat, rebuilt);
-      if (!st)
-        throw AnalysisError(src.head.fieldLoc(0).str() + ": error: MATErial," + std::to_string(m) +
-                            " given again: " + st.why);
-      if (auto* os = ctx.out())
-        *os << "      Material set " << m << " given again: its elements take the new data\n";
-    }
+// MATErial given again: its existing elements (not rebuilt by this input) take
+// the new data with their state. A change of kinematics is refused at the
+// record; an element that cannot take the data ends the analysis at the record.
+void applyChangedMaterials(MeshContext& ctx) {
+  Model& model = ctx.model;
+  std::vector<int> rebuilt;
+  for (const auto& [num, pe] : ctx.elements) rebuilt.push_back(num - 1);
+  const State none;
+  for (const auto& [m, src] : ctx.changedMaterials) {
+    const MaterialSet& mat = *model.material(m);
+    bool used = false;
+    for (int e = 0; e < model.numElements() && !used; ++e)
+      used = model.elements()[e] && model.element(e).materialNumber() == m &&
+             std::find(rebuilt.begin(), rebuilt.end(), e) == rebuilt.end();
+    if (!used) continue;
+    if (mat.kinematics != src.before)
+      refuseKinematicsChange(src.kinematics.blank() ? src.head : src.kinematics, m, src.before);
+    const Status st = changeMaterial(model, ctx.state ? *ctx.state : none, mat, rebuilt);
+    if (!st)
+      throw AnalysisError(src.head.fieldLoc(0).str() + ": error: MATErial," + std::to_string(m) +
+                          " given again: " + st.why);
+    if (auto* os = ctx.out())
+      *os << "      Material set " << m << " given again: its elements take the new data\n";
   }
+}
 
+// The edge and point data, applied now that every coordinate is known.
+void applyDeferred(MeshContext& ctx) {
   if (auto* os = ctx.out(); os && !ctx.deferred.empty()) {
     title(*os, "E d g e   a n d   C o o r d i n a t e   V a l u e s");
     *os << "      Command           Node   (codes, forces or displacements: u, v, theta)\n";
   }
   for (auto& f : ctx.deferred) f(ctx);
+}
 
-  for (const auto& [node, r] : ctx.referencedNodes)
-    if (!model.hasCoord(node - 1))
-      failAt(r, 0, "node " + std::to_string(node) + " has no coordinates");
-
-  if (!ctx.joints.empty()) {
-    const double tol = 1e-3 * model.characteristicLength();
-    for (const auto& j : ctx.joints) {
-      for (int a = 0; a < 2; ++a) {
-        const int n = a == 0 ? j.master : j.slave;
-        if (!model.hasCoord(n - 1))
-          failAt(j.origin, a, "joint node " + std::to_string(n) + " has no coordinates");
-      }
-      const double gap = (model.coord(j.master - 1) - model.coord(j.slave - 1)).norm();
-      if (gap > tol) {
-        std::ostringstream s;
-        s << "joint nodes " << j.master << " and " << j.slave << " are not coincident (distance "
-          << gap << ")";
-        failAt(j.origin, 1, s.str());
-      }
-      for (const auto& existing : model.joints())
-        if (existing.slave == j.slave - 1)
-          failAt(j.origin, 1,
-                 "node " + std::to_string(j.slave) + " is already the slave of a joint");
-      model.joints().push_back(Joint{j.master - 1, j.slave - 1, JointForm::Condensed});
-      if (auto* os = ctx.out())
-        *os << "      Joint: master node " << j.master << ", slave node " << j.slave << "\n";
+// The JOINt records: nodes with coordinates, coincident, each slave once.
+void addJoints(MeshContext& ctx) {
+  Model& model = ctx.model;
+  const double tol = 1e-3 * model.characteristicLength();
+  for (const auto& j : ctx.joints) {
+    for (int a = 0; a < 2; ++a) {
+      const int n = a == 0 ? j.master : j.slave;
+      if (!model.hasCoord(n - 1))
+        failAt(j.origin, a, "joint node " + std::to_string(n) + " has no coordinates");
     }
+    const double gap = (model.coord(j.master - 1) - model.coord(j.slave - 1)).norm();
+    if (gap > tol) {
+      std::ostringstream s;
+      s << "joint nodes " << j.master << " and " << j.slave << " are not coincident (distance "
+        << gap << ")";
+      failAt(j.origin, 1, s.str());
+    }
+    for (const auto& existing : model.joints())
+      if (existing.slave == j.slave - 1)
+        failAt(j.origin, 1, "node " + std::to_string(j.slave) + " is already the slave of a joint");
+    model.joints().push_back(Joint{j.master - 1, j.slave - 1, JointForm::Condensed});
+    if (auto* os = ctx.out())
+      *os << "      Joint: master node " << j.master << ", slave node " << j.slave << "\n";
   }
+}
 
+// Every element number from 1 to numel (or to the last one) defined.
+void checkElementsDefined(const MeshContext& ctx, const SourceLoc& where,
+                          const std::string& whereText) {
+  const Model& model = ctx.model;
   const int expected = ctx.maxElements > 0 ? ctx.maxElements : model.numElements();
   for (int e = 0; e < expected; ++e)
     if (e >= model.numElements() || (!model.elements()[e] && e >= ctx.elementsBefore))
@@ -168,19 +172,24 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
           whereText,
           ctx.maxElements > 0 ? "define it, or set numel to 0 to have elements counted"
                               : "element numbers must run from 1 without gaps");
+}
 
-  // A joint friction moment (SOFTening's Mr) acts on a joint condensed into
-  // its one slave element; on a joint shared by more it would be ignored.
+// A joint friction moment (SOFTening's Mr) acts on a joint condensed into its
+// one slave element; on a joint shared by more it would be ignored.
+void checkJointFriction(const MeshContext& ctx) {
   for (const auto& j : ctx.joints)
     if (const Joint joint{j.master - 1, j.slave - 1, JointForm::Condensed};
-        jointFriction(model, joint.slave) > 0 && !condensable(model, joint))
+        jointFriction(ctx.model, joint.slave) > 0 && !condensable(ctx.model, joint))
       failAt(j.origin, 1,
              "the joint friction Mr of the materials at node " + std::to_string(j.slave) +
                  " needs a joint condensed into one element: the slave node has more than one "
                  "element, nodal data, or is the master of another joint",
              "give the slave node one element only, or leave Mr out");
+}
 
-  if (ctx.topologyChanged) model.bumpTopology();
+// The input's gathered data, spent: a new topology version if it changed one.
+void closeMeshInput(MeshContext& ctx) {
+  if (ctx.topologyChanged) ctx.model.bumpTopology();
   ctx.elements.clear();
   ctx.changedMaterials.clear();
   ctx.afterElements.clear();
@@ -190,6 +199,25 @@ void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whe
   ctx.rigidEnds.clear();
   ctx.referencedNodes.clear();
   ctx.topologyChanged = false;
+}
+
+}  // namespace
+
+void finishMesh(MeshContext& ctx, const SourceLoc& where, const std::string& whereText) {
+  Model& model = ctx.model;
+  if (ctx.beforeElements) ctx.beforeElements(model);
+  buildElements(ctx);
+  applyRigidEnds(ctx);
+  for (auto& f : ctx.afterElements) f(ctx);
+  if (!ctx.changedMaterials.empty()) applyChangedMaterials(ctx);
+  applyDeferred(ctx);
+  for (const auto& [node, r] : ctx.referencedNodes)
+    if (!model.hasCoord(node - 1))
+      failAt(r, 0, "node " + std::to_string(node) + " has no coordinates");
+  if (!ctx.joints.empty()) addJoints(ctx);
+  checkElementsDefined(ctx, where, whereText);
+  checkJointFriction(ctx);
+  closeMeshInput(ctx);
 }
 
 }  // namespace c2d
