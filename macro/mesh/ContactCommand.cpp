@@ -17,107 +17,119 @@ using namespace meshspec;
 
 namespace {
 
+// An optional non-negative number at field i (absent or empty: dflt).
+double optionalNumber(MeshContext& ctx, const Record& r, std::size_t i, double dflt,
+                      const char* what, const char* hint) {
+  if (r.size() <= i || r[i].text.empty()) return dflt;
+  const double v = ctx.number(r, i);
+  if (v < 0) failAt(r, i, std::string(what) + " must not be negative", hint);
+  return v;
+}
+
+// The restitution e at field i: in (0, 1], absent or empty 1.
+double restitutionAt(MeshContext& ctx, const Record& r, std::size_t i) {
+  const double e = r.size() > i && !r[i].text.empty() ? ctx.number(r, i) : 1.0;
+  if (!(e > 0 && e <= 1))
+    failAt(r, i, "the restitution e must lie in (0, 1]", "1 or absent: an elastic impact");
+  return e;
+}
+
+void echoMemberContact(std::ostream& os, const MemberContactData& c) {
+  title(os, "M e m b e r   C o n t a c t");
+  os << "      k ";
+  num(os, c.k);
+  if (c.zeta > 0) num(os << "   zeta ", c.zeta);
+  os << "   r ";
+  if (c.radius < 0)
+    os << "(sections; 1e-3 of the shortest element without)";
+  else
+    num(os, c.radius);
+  if (c.mu > 0) num(os << "   mu ", c.mu);
+  if (c.restitution < 1) num(os << "   e ", c.restitution);
+  os << "\n";
+}
+
+// MEMBers,,k[,zeta[,r[,mu[,e]]]]: contact between members; k = 0 switches it off.
+void readMemberContact(MeshContext& ctx, const Record& r) {
+  ctx.maxFields(r, 7, "MEMBers,,k[,zeta[,r[,mu[,e]]]]");
+  if (!r.text(1).empty())
+    failAt(r, 1, "MEMBers takes no option word (its second field is empty)",
+           "write MEMBers,,k[,zeta[,r[,mu[,e]]]]");
+  MemberContactData c;
+  c.k = ctx.number(r, 2);
+  if (c.k < 0) failAt(r, 2, "penalty stiffness k must not be negative", "0: no member contact");
+  c.zeta = optionalNumber(ctx, r, 3, 0.0, "the damping ratio zeta", "0 or absent: no dashpot");
+  c.radius = optionalNumber(ctx, r, 4, -1.0, "the contact radius r", "leave it out for the default");
+  c.mu = optionalNumber(ctx, r, 5, 0.0, "the friction coefficient mu", "0 or absent: frictionless");
+  c.restitution = restitutionAt(ctx, r, 6);
+  ctx.membersOrigin = r;
+  ctx.topologyChanged = true;  // contact pairs enter or leave the sparsity pattern
+  if (c.k == 0) {  // a study's switch: no member contact
+    ctx.model.memberContact().reset();
+    if (auto* os = ctx.out()) {
+      title(*os, "M e m b e r   C o n t a c t");
+      *os << "      off (k = 0"
+          << (r.size() > 3 ? ": the record's other values are not used" : "") << ")\n";
+    }
+    return;
+  }
+  ctx.model.memberContact() = c;
+  if (auto* os = ctx.out()) echoMemberContact(*os, c);
+}
+
+// GROUnd,,y0,k[,zeta[,mu[,e]]]: one ground per mesh input, in one CONTact
+// command or several (a MESH re-entry may give a new one).
+void readGround(MeshContext& ctx, const Record& r) {
+  if (!ctx.groundOrigin.blank())
+    failAt(r, 0,
+           "a second GROUnd record (the first is on line " +
+               std::to_string(ctx.groundOrigin.loc.line) + ")");
+  ctx.maxFields(r, 7, "GROUnd,,y0,k[,zeta[,mu[,e]]]");
+  if (!r.text(1).empty())
+    failAt(r, 1, "GROUnd takes no option word (its second field is empty)",
+           "write GROUnd,,y0,k[,zeta[,mu[,e]]]");
+  Ground g;
+  g.y0 = ctx.number(r, 2);
+  g.k = ctx.number(r, 3);
+  if (g.k <= 0) failAt(r, 3, "penalty stiffness k must be positive");
+  g.zeta = optionalNumber(ctx, r, 4, 0.0, "the damping ratio zeta", "0 or absent: no dashpot");
+  g.mu = optionalNumber(ctx, r, 5, 0.0, "the friction coefficient mu", "0 or absent: frictionless");
+  g.restitution = restitutionAt(ctx, r, 6);
+  ctx.model.ground() = g;
+  ctx.groundOrigin = r;
+  if (auto* os = ctx.out()) {
+    title(*os, "G r o u n d   C o n t a c t");
+    *os << "      y0 ";
+    num(*os, g.y0) << "   k ";
+    num(*os, g.k);
+    if (g.zeta > 0) num(*os << "   zeta ", g.zeta);
+    if (g.mu > 0) num(*os << "   mu ", g.mu);
+    if (g.restitution < 1) num(*os << "   e ", g.restitution);
+    *os << "\n";
+  }
+}
+
 void applyContact(MeshContext& ctx, const MeshCommand& cmd) {
-  const Record* previous = nullptr;
-  const Record* previousMembers = nullptr;
-  // An optional non-negative number at field i (absent or empty: dflt).
-  auto optional = [&](const Record& r, std::size_t i, double dflt, const char* what,
-                      const char* hint) {
-    if (r.size() <= i || r[i].text.empty()) return dflt;
-    const double v = ctx.number(r, i);
-    if (v < 0) failAt(r, i, std::string(what) + " must not be negative", hint);
-    return v;
-  };
-  // The restitution e at field i: in (0, 1], absent or empty 1.
-  auto restitution = [&](const Record& r, std::size_t i) {
-    const double e = r.size() > i && !r[i].text.empty() ? ctx.number(r, i) : 1.0;
-    if (!(e > 0 && e <= 1))
-      failAt(r, i, "the restitution e must lie in (0, 1]", "1 or absent: an elastic impact");
-    return e;
-  };
+  const Record* ground = nullptr;
+  const Record* members = nullptr;
   for (const Record& r : cmd.data) {
     if (r.is("MEMBers")) {
-      if (previousMembers)
+      if (members)
         failAt(r, 0,
                "a second MEMBers record (the first is on line " +
-                   std::to_string(previousMembers->loc.line) + ")");
-      ctx.maxFields(r, 7, "MEMBers,,k[,zeta[,r[,mu[,e]]]]");
-      if (!r.text(1).empty())
-        failAt(r, 1, "MEMBers takes no option word (its second field is empty)",
-               "write MEMBers,,k[,zeta[,r[,mu[,e]]]]");
-      MemberContactData c;
-      c.k = ctx.number(r, 2);
-      if (c.k < 0) failAt(r, 2, "penalty stiffness k must not be negative", "0: no member contact");
-      c.zeta = optional(r, 3, 0.0, "the damping ratio zeta", "0 or absent: no dashpot");
-      c.radius = optional(r, 4, -1.0, "the contact radius r", "leave it out for the default");
-      c.mu = optional(r, 5, 0.0, "the friction coefficient mu", "0 or absent: frictionless");
-      c.restitution = restitution(r, 6);
-      previousMembers = &r;
-      ctx.membersOrigin = r;
-      ctx.topologyChanged = true;  // contact pairs enter or leave the sparsity pattern
-      if (c.k == 0) {  // a study's switch: no member contact
-        ctx.model.memberContact().reset();
-        if (auto* os = ctx.out()) {
-          title(*os, "M e m b e r   C o n t a c t");
-          *os << "      off (k = 0"
-              << (r.size() > 3 ? ": the record's other values are not used" : "") << ")\n";
-        }
-        continue;
-      }
-      ctx.model.memberContact() = c;
-      if (auto* os = ctx.out()) {
-        title(*os, "M e m b e r   C o n t a c t");
-        *os << "      k ";
-        num(*os, c.k);
-        if (c.zeta > 0) num(*os << "   zeta ", c.zeta);
-        *os << "   r ";
-        if (c.radius < 0)
-          *os << "(sections; 1e-3 of the shortest element without)";
-        else
-          num(*os, c.radius);
-        if (c.mu > 0) num(*os << "   mu ", c.mu);
-        if (c.restitution < 1) num(*os << "   e ", c.restitution);
-        *os << "\n";
-      }
-      continue;
-    }
-    if (!r.is("GROUnd")) {
+                   std::to_string(members->loc.line) + ")");
+      readMemberContact(ctx, r);
+      members = &r;
+    } else if (r.is("GROUnd")) {
+      readGround(ctx, r);
+      ground = &r;
+    } else {
       std::string hint =
           "the records are 'GROUnd,,y0,k[,zeta[,mu[,e]]]' and 'MEMBers,,k[,zeta[,r[,mu[,e]]]]'";
       failAt(r, 0, "unknown contact type '" + r.text(0) + "'", hint);
     }
-    // One ground per mesh input, in one CONTact command or several (a MESH
-    // re-entry may give a new one).
-    if (!ctx.groundOrigin.blank())
-      failAt(r, 0,
-             "a second GROUnd record (the first is on line " +
-                 std::to_string(ctx.groundOrigin.loc.line) + ")");
-    ctx.maxFields(r, 7, "GROUnd,,y0,k[,zeta[,mu[,e]]]");
-    if (!r.text(1).empty())
-      failAt(r, 1, "GROUnd takes no option word (its second field is empty)",
-             "write GROUnd,,y0,k[,zeta[,mu[,e]]]");
-    Ground g;
-    g.y0 = ctx.number(r, 2);
-    g.k = ctx.number(r, 3);
-    if (g.k <= 0) failAt(r, 3, "penalty stiffness k must be positive");
-    g.zeta = optional(r, 4, 0.0, "the damping ratio zeta", "0 or absent: no dashpot");
-    g.mu = optional(r, 5, 0.0, "the friction coefficient mu", "0 or absent: frictionless");
-    g.restitution = restitution(r, 6);
-    ctx.model.ground() = g;
-    ctx.groundOrigin = r;
-    previous = &r;
-    if (auto* os = ctx.out()) {
-      title(*os, "G r o u n d   C o n t a c t");
-      *os << "      y0 ";
-      num(*os, g.y0) << "   k ";
-      num(*os, g.k);
-      if (g.zeta > 0) num(*os << "   zeta ", g.zeta);
-      if (g.mu > 0) num(*os << "   mu ", g.mu);
-      if (g.restitution < 1) num(*os << "   e ", g.restitution);
-      *os << "\n";
-    }
   }
-  if (!previous && !previousMembers)
+  if (!ground && !members)
     failAt(cmd.head, 0, "CONTact has no GROUnd or MEMBers record", "write GROUnd,,y0,k");
 }
 
