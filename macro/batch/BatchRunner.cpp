@@ -135,6 +135,93 @@ std::vector<BatchResult> runBatch(const std::vector<std::string>& decks, const B
   return runBatch(jobs, options, calls, out);
 }
 
+namespace {
+
+// A signal to the batch: passed on to every running deck once.
+void forwardInterrupt(int sig, std::map<pid_t, Child>& running) {
+  for (auto& [pid, c] : running)
+    if (!c.forwarded) {
+      ::kill(pid, sig);
+      c.forwarded = sig;
+    }
+}
+
+// A forked child running job, its output, errors and figures in temporary files.
+Child startChild(const BatchJob& job, std::size_t index, const DeckCalls& calls,
+                 std::ostream& out) {
+  Child c;
+  c.index = index;
+  c.output = std::tmpfile();
+  c.errors = std::tmpfile();
+  c.result = std::tmpfile();
+  if (!c.output || !c.errors || !c.result) throw std::runtime_error("cannot create a temporary file for a batch run");
+  // Nothing buffered may be written twice, once by each process.
+  out.flush();
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);
+  c.start = std::chrono::steady_clock::now();
+  c.pid = ::fork();
+  if (c.pid < 0) throw std::runtime_error("fork failed for " + job.deck);
+  if (c.pid == 0) runChild(job, calls, c);
+  return c;
+}
+
+// Nothing ended: the timeouts (SIGTERM, SIGKILL after the grace), then a short
+// sleep (a signal cuts it short).
+void watchTimeouts(std::map<pid_t, Child>& running, const BatchOptions& options) {
+  for (auto& [p, c] : running) {
+    if (options.timeout > 0 && !c.termSent && secondsSince(c.start) > options.timeout) {
+      ::kill(p, SIGTERM);
+      c.termSent = Clock::now();
+    } else if (c.termSent && secondsSince(*c.termSent) > kGraceSeconds) {
+      ::kill(p, SIGKILL);
+    }
+  }
+  const timespec pause{0, 20'000'000};
+  ::nanosleep(&pause, nullptr);
+}
+
+// An ended child's result: its time, output, errors, figures and exit.
+void collectChild(const Child& c, int status, BatchResult& r) {
+  r.seconds = secondsSince(c.start);
+  r.timedOut = c.termSent.has_value();
+  r.interruptedBy = r.timedOut ? 0 : c.forwarded;
+  r.output = slurp(c.output);
+  r.errors = slurp(c.errors);
+  std::istringstream figures(slurp(c.result));
+  std::fclose(c.output);
+  std::fclose(c.errors);
+  std::fclose(c.result);
+  if (WIFSIGNALED(status)) {
+    r.signal = WTERMSIG(status);
+    r.exitCode = kExitInternal;
+  } else {
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : kExitInternal;
+    int code = 0;
+    // A child that exited without its figures (an abort in a library) crashed too.
+    if (!(figures >> code >> r.runs >> r.steps >> r.iterations >> r.debrisRuns >> r.outsideRuns) &&
+        r.exitCode == 0)
+      r.exitCode = kExitInternal;
+  }
+  if (r.timedOut) r.exitCode = kExitTimedOut;
+}
+
+// A deck's output and errors where a run puts them, and a timeout's or crash's line.
+void reportChild(const BatchResult& r, const BatchOptions& options, std::ostream& out) {
+  out << r.output;
+  out.flush();
+  std::cerr << r.errors << std::flush;
+  if (r.timedOut)
+    out << r.deck << ": timed out after " << options.timeout << " s"
+        << (r.signal ? " (killed: it did not stop at " + signalName(SIGTERM) + ")" : std::string()) << "\n";
+  else if (r.signal)
+    out << r.deck << ": crashed (" << signalName(r.signal) << ")\n";
+  out.flush();
+}
+
+}  // namespace
+
 std::vector<BatchResult> runBatch(const std::vector<BatchJob>& batchJobs, const BatchOptions& options,
                                   const DeckCalls& calls, std::ostream& out) {
   std::vector<std::string> decks;
@@ -145,31 +232,12 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& batchJobs, const 
   std::size_t next = 0, done = 0, failed = 0;
   for (std::size_t i = 0; i < decks.size(); ++i) results[i].deck = decks[i];
   while (next < decks.size() || !running.empty()) {
-    // A signal to the batch: passed on to every running deck once; no new deck starts.
+    // A signal to the batch: no new deck starts.
     const int sig = pendingInterrupt();
-    if (sig != 0)
-      for (auto& [pid, c] : running)
-        if (!c.forwarded) {
-          ::kill(pid, sig);
-          c.forwarded = sig;
-        }
+    if (sig != 0) forwardInterrupt(sig, running);
     while (sig == 0 && next < decks.size() && running.size() < jobs) {
-      Child c;
-      c.index = next;
       results[next].started = true;
-      c.output = std::tmpfile();
-      c.errors = std::tmpfile();
-      c.result = std::tmpfile();
-      if (!c.output || !c.errors || !c.result) throw std::runtime_error("cannot create a temporary file for a batch run");
-      // Nothing buffered may be written twice, once by each process.
-      out.flush();
-      std::cout.flush();
-      std::cerr.flush();
-      std::fflush(nullptr);
-      c.start = std::chrono::steady_clock::now();
-      c.pid = ::fork();
-      if (c.pid < 0) throw std::runtime_error("fork failed for " + decks[next]);
-      if (c.pid == 0) runChild(batchJobs[next], calls, c);
+      const Child c = startChild(batchJobs[next], next, calls, out);
       running.emplace(c.pid, c);
       ++next;
     }
@@ -182,57 +250,19 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& batchJobs, const 
       throw std::runtime_error(std::string("waitpid failed in a batch run: ") + std::strerror(errno));
     }
     if (pid == 0) {
-      // Nothing ended: the timeouts, then a short sleep (a signal cuts it short).
-      for (auto& [p, c] : running) {
-        if (options.timeout > 0 && !c.termSent && secondsSince(c.start) > options.timeout) {
-          ::kill(p, SIGTERM);
-          c.termSent = Clock::now();
-        } else if (c.termSent && secondsSince(*c.termSent) > kGraceSeconds) {
-          ::kill(p, SIGKILL);
-        }
-      }
-      const timespec pause{0, 20'000'000};
-      ::nanosleep(&pause, nullptr);
+      watchTimeouts(running, options);
       continue;
     }
     const auto it = running.find(pid);
     if (it == running.end()) continue;  // not one of ours
-    Child c = it->second;
+    const Child c = it->second;
     running.erase(it);
     BatchResult& r = results[c.index];
-    r.seconds = secondsSince(c.start);
-    r.timedOut = c.termSent.has_value();
-    r.interruptedBy = r.timedOut ? 0 : c.forwarded;
-    r.output = slurp(c.output);
-    r.errors = slurp(c.errors);
-    std::istringstream figures(slurp(c.result));
-    std::fclose(c.output);
-    std::fclose(c.errors);
-    std::fclose(c.result);
-    if (WIFSIGNALED(status)) {
-      r.signal = WTERMSIG(status);
-      r.exitCode = kExitInternal;
-    } else {
-      r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : kExitInternal;
-      int code = 0;
-      // A child that exited without its figures (an abort in a library) crashed too.
-      if (!(figures >> code >> r.runs >> r.steps >> r.iterations >> r.debrisRuns >> r.outsideRuns) &&
-          r.exitCode == 0)
-        r.exitCode = kExitInternal;
-    }
-    if (r.timedOut) r.exitCode = kExitTimedOut;
+    collectChild(c, status, r);
     ++done;
     if (!r.ok()) ++failed;
     clearLine(options.progress);
-    out << r.output;
-    out.flush();
-    std::cerr << r.errors << std::flush;  // a deck's errors and warnings where a run puts them
-    if (r.timedOut)
-      out << r.deck << ": timed out after " << options.timeout << " s"
-          << (r.signal ? " (killed: it did not stop at " + signalName(SIGTERM) + ")" : std::string()) << "\n";
-    else if (r.signal)
-      out << r.deck << ": crashed (" << signalName(r.signal) << ")\n";
-    out.flush();
+    reportChild(r, options, out);
   }
   clearLine(options.progress);
   return results;
