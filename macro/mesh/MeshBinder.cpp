@@ -175,30 +175,33 @@ std::string nodesInsideGround(const Model& model, double y0, const Eigen::Vector
   return msg.str();
 }
 
-}  // namespace
+// A warning at field i of r, when the context gathers warnings.
+void warnAt(const MeshContext& ctx, const Record& r, std::size_t i, const std::string& msg) {
+  if (ctx.warnings) ctx.warnings->add(r.fieldLoc(i), msg, r.excerpt(r.fieldLoc(i)));
+}
 
-void MeshBinder::checkInitialMesh() {
-  const Model& model = ctx_.model;
-  auto warn = [&](const Record& r, std::size_t i, const std::string& msg) {
-    if (ctx_.warnings) ctx_.warnings->add(r.fieldLoc(i), msg, r.excerpt(r.fieldLoc(i)));
-  };
-
-  if (const auto& g = model.ground(); g && !ctx_.groundOrigin.blank()) {
+// No node inside the ground at the start.
+void checkGroundClear(const MeshContext& ctx) {
+  const Model& model = ctx.model;
+  if (const auto& g = model.ground(); g && !ctx.groundOrigin.blank()) {
     const std::string inside = nodesInsideGround(model, g->y0, nullptr, "at the start");
     if (!inside.empty()) {
-      const Record& r = ctx_.groundOrigin;
+      const Record& r = ctx.groundOrigin;
       throw DeckError(r.fieldLoc(2), inside, r.excerpt(r.fieldLoc(2)),
                       "put the ground at or below the lowest node");
     }
   }
+}
 
-  // A contact penalty no step resolves: beyond 1/eps times the members' largest
-  // axial stiffness EA/L, their stiffness drowns in the round-off of the
-  // contact's in every tangent, static or dynamic (k + m/(beta dt^2) + EA/L:
-  // a step short enough for the contact's period 2 pi sqrt(m/k), which is
-  // then sqrt(eps) of the members', makes the inertia term drown it too). The
-  // penetrations are of round-off size and the contact's forces and energies
-  // overflow.
+// A contact penalty no step resolves: beyond 1/eps times the members' largest
+// axial stiffness EA/L, their stiffness drowns in the round-off of the
+// contact's in every tangent, static or dynamic (k + m/(beta dt^2) + EA/L:
+// a step short enough for the contact's period 2 pi sqrt(m/k), which is
+// then sqrt(eps) of the members', makes the inertia term drown it too). The
+// penetrations are of round-off size and the contact's forces and energies
+// overflow.
+void warnUnresolvedPenalties(const MeshContext& ctx) {
+  const Model& model = ctx.model;
   double stiffest = 0;
   for (const auto& el : model.elements())
     if (el)
@@ -215,43 +218,46 @@ void MeshBinder::checkInitialMesh() {
         << " times the members' largest axial stiffness EA/L = " << stiffest
         << ", more than double precision resolves (" << 1 / std::numeric_limits<double>::epsilon()
         << "): no step resolves the contact and the members together";
-    warn(r, field, msg.str());
+    warnAt(ctx, r, field, msg.str());
   };
-  if (const auto& g = model.ground()) checkPenalty(ctx_.groundOrigin, 3, g->k);
-  if (const auto& c = model.memberContact()) checkPenalty(ctx_.membersOrigin, 2, c->k);
+  if (const auto& g = model.ground()) checkPenalty(ctx.groundOrigin, 3, g->k);
+  if (const auto& c = model.memberContact()) checkPenalty(ctx.membersOrigin, 2, c->k);
+}
 
-  if (model.gravity() != Vec2::Zero() && !ctx_.gravityOrigin.blank()) {
-    std::set<int> without;
-    bool someMass = false;
-    for (const auto& el : model.elements()) {
-      if (!el) continue;
-      const MaterialSet* m = model.material(el->materialNumber());
-      if (!m) continue;
-      if (m->density > 0)
-        someMass = true;
-      else
-        without.insert(m->number);
-    }
-    // Masses given otherwise are weighed too: QLOAd carried as mass, MASS.
-    for (const ElementLoad& q : model.elementLoads()) someMass = someMass || q.asMass;
-    for (int n = 0; n < model.numNodes() && !someMass; ++n)
-      for (double m : model.nodalMass(n)) someMass = someMass || m > 0;
-    const Record& r = ctx_.gravityOrigin;
-    if (!someMass)
-      throw DeckError(r.fieldLoc(0), "GRAVity, but no material set has a density: no self-weight",
-                      r.excerpt(r.fieldLoc(0)), "give DENSity,,rho in the material sets");
-    if (!without.empty()) {
-      std::string sets;
-      for (int m : without) sets += (sets.empty() ? "" : ", ") + std::to_string(m);
-      warn(r, 0,
+// GRAVity needs some mass (DENSity, QLOAd carried as mass, MASS); the material
+// sets without DENSity get a warning.
+void checkGravityMass(const MeshContext& ctx) {
+  const Model& model = ctx.model;
+  std::set<int> without;
+  bool someMass = false;
+  for (const auto& el : model.elements()) {
+    if (!el) continue;
+    const MaterialSet* m = model.material(el->materialNumber());
+    if (!m) continue;
+    if (m->density > 0)
+      someMass = true;
+    else
+      without.insert(m->number);
+  }
+  for (const ElementLoad& q : model.elementLoads()) someMass = someMass || q.asMass;
+  for (int n = 0; n < model.numNodes() && !someMass; ++n)
+    for (double m : model.nodalMass(n)) someMass = someMass || m > 0;
+  const Record& r = ctx.gravityOrigin;
+  if (!someMass)
+    throw DeckError(r.fieldLoc(0), "GRAVity, but no material set has a density: no self-weight",
+                    r.excerpt(r.fieldLoc(0)), "give DENSity,,rho in the material sets");
+  if (!without.empty()) {
+    std::string sets;
+    for (int m : without) sets += (sets.empty() ? "" : ", ") + std::to_string(m);
+    warnAt(ctx, r, 0,
            std::string(without.size() == 1 ? "material set " : "material sets ") + sets +
                " without DENSity: GRAVity gives their elements no self-weight");
-    }
   }
+}
 
-  if (ctx_.meshChecks) ctx_.meshChecks(ctx_);
-
-  // Nodes with coordinates that no element uses: one warning per record that gave them.
+// Nodes with coordinates that no element uses: one warning per record that gave them.
+void warnUnusedNodes(const MeshContext& ctx) {
+  const Model& model = ctx.model;
   std::vector<char> used(static_cast<std::size_t>(model.numNodes()), 0);
   for (const auto& el : model.elements())
     if (el)
@@ -259,12 +265,22 @@ void MeshBinder::checkInitialMesh() {
   std::map<const Record*, std::vector<int>> unused;
   for (int n = 0; n < model.numNodes(); ++n)
     if (model.hasCoord(n) && !used[static_cast<std::size_t>(n)] &&
-        n < static_cast<int>(ctx_.coordOrigin.size()) && ctx_.coordOrigin[n])
-      unused[ctx_.coordOrigin[n]].push_back(n + 1);
+        n < static_cast<int>(ctx.coordOrigin.size()) && ctx.coordOrigin[n])
+      unused[ctx.coordOrigin[n]].push_back(n + 1);
   for (const auto& [rec, nodes] : unused)
-    warn(*rec, 0,
-         std::string(nodes.size() == 1 ? "node " : "nodes ") + nodeList(nodes) +
-             (nodes.size() == 1 ? " is" : " are") + " used by no element");
+    warnAt(ctx, *rec, 0,
+           std::string(nodes.size() == 1 ? "node " : "nodes ") + nodeList(nodes) +
+               (nodes.size() == 1 ? " is" : " are") + " used by no element");
+}
+
+}  // namespace
+
+void MeshBinder::checkInitialMesh() {
+  checkGroundClear(ctx_);
+  warnUnresolvedPenalties(ctx_);
+  if (ctx_.model.gravity() != Vec2::Zero() && !ctx_.gravityOrigin.blank()) checkGravityMass(ctx_);
+  if (ctx_.meshChecks) ctx_.meshChecks(ctx_);
+  warnUnusedNodes(ctx_);
 }
 
 Model buildModel(const Problem& problem, Parameters& params, std::ostream* echo, MeshFacts* facts) {
