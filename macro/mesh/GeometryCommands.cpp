@@ -119,7 +119,13 @@ void applyElements(MeshContext& ctx, const MeshCommand& cmd) {
 // after the highest node given so far, ne = 0 after the highest element, ma = 0
 // repeats the previous block's material.
 
-void applyBlock(MeshContext& ctx, const MeshCommand& cmd) {
+// The block's line: nr elements from node ni and element ne, of material ma.
+struct BlockLine {
+  int nr = 0, ni = 0, ne = 0, ma = 0;
+};
+
+// The CARTesian record, its zeros resolved and its numbers checked.
+BlockLine readBlockLine(MeshContext& ctx, const MeshCommand& cmd) {
   if (cmd.data.empty())
     failAt(cmd.head, 0, "BLOCk has no data",
            "the records are 'CARTesian n 0 node1 elem1 mat', then '1 x y', '2 x y'");
@@ -130,31 +136,36 @@ void applyBlock(MeshContext& ctx, const MeshCommand& cmd) {
     failAt(t, 0, "only CARTesian blocks are available, not '" + t.text(0) + "'");
   }
   ctx.maxFields(t, 8, "CARTesian nr ns ni ne ma nodinc ntyp");
-  const int nr = ctx.integer(t, 1, "number of elements");
-  if (nr < 1) failAt(t, 1, "a block needs at least one element, got " + std::to_string(nr));
+  BlockLine b;
+  b.nr = ctx.integer(t, 1, "number of elements");
+  if (b.nr < 1) failAt(t, 1, "a block needs at least one element, got " + std::to_string(b.nr));
   const int ns = ctx.integer(t, 2, "second direction count");
-  int ni = ctx.integer(t, 3, "first node number");
-  int ne = ctx.integer(t, 4, "first element number");
-  int ma = ctx.integer(t, 5, "material number");
+  b.ni = ctx.integer(t, 3, "first node number");
+  b.ne = ctx.integer(t, 4, "first element number");
+  b.ma = ctx.integer(t, 5, "material number");
   const int ntyp = ctx.integer(t, 7, "block type");
   if (ns > 1) failAt(t, 2, "only a line of two-node elements is available (ns = 0)");
   if (ntyp != 0) failAt(t, 7, "only block type 0 is available");
-  if (ni < 0 || ne < 0 || ma < 0)
-    failAt(t, ni < 0 ? 3 : ne < 0 ? 4 : 5, "numbers must not be negative");
-  if (ni == 0) ni = ctx.highestNode + 1;
-  if (ne == 0) ne = ctx.highestElement + 1;
+  if (b.ni < 0 || b.ne < 0 || b.ma < 0)
+    failAt(t, b.ni < 0 ? 3 : b.ne < 0 ? 4 : 5, "numbers must not be negative");
+  if (b.ni == 0) b.ni = ctx.highestNode + 1;
+  if (b.ne == 0) b.ne = ctx.highestElement + 1;
   // In 64 bits: the block's last node and element must be numbers this program takes.
-  checkNumber(t, 1, static_cast<long long>(ni) + nr, DeckLimits::maxNodes(),
+  checkNumber(t, 1, static_cast<long long>(b.ni) + b.nr, DeckLimits::maxNodes(),
               "the block's last node", "first node + number of elements");
-  checkNumber(t, 1, static_cast<long long>(ne) + nr - 1, DeckLimits::maxElements(),
+  checkNumber(t, 1, static_cast<long long>(b.ne) + b.nr - 1, DeckLimits::maxElements(),
               "the block's last element", "first element + number of elements - 1");
-  checkNumber(t, 5, std::max(ma, 1), DeckLimits::kMaxMaterials, "material set");
-  if (ma == 0) ma = std::max(1, ctx.lastBlockMaterial);
-  if (ctx.maxMaterials > 0 && ma > ctx.maxMaterials)
+  checkNumber(t, 5, std::max(b.ma, 1), DeckLimits::kMaxMaterials, "material set");
+  if (b.ma == 0) b.ma = std::max(1, ctx.lastBlockMaterial);
+  if (ctx.maxMaterials > 0 && b.ma > ctx.maxMaterials)
     failAt(t, 5,
-           "material " + std::to_string(ma) +
+           "material " + std::to_string(b.ma) +
                " is beyond nummat = " + std::to_string(ctx.maxMaterials));
+  return b;
+}
 
+// The master nodes "1 x1 y1" and "2 x2 y2", each once.
+std::array<Vec2, 2> readMasterNodes(MeshContext& ctx, const MeshCommand& cmd) {
   std::array<Vec2, 2> master;
   std::array<bool, 2> given{false, false};
   for (std::size_t k = 1; k < cmd.data.size(); ++k) {
@@ -167,6 +178,14 @@ void applyBlock(MeshContext& ctx, const MeshCommand& cmd) {
     given[i - 1] = true;
   }
   if (!given[0] || !given[1]) failAt(cmd.data.back(), 0, "BLOCk needs master nodes 1 and 2");
+  return master;
+}
+
+void applyBlock(MeshContext& ctx, const MeshCommand& cmd) {
+  const BlockLine b = readBlockLine(ctx, cmd);
+  const Record& t = cmd.data[0];
+  const std::array<Vec2, 2> master = readMasterNodes(ctx, cmd);
+  const int nr = b.nr, ni = b.ni, ne = b.ne, ma = b.ma;
 
   const int lastNode = ni + nr, lastElem = ne + nr - 1;
   if (ctx.maxNodes > 0 && lastNode > ctx.maxNodes)
