@@ -21,34 +21,6 @@ bool isStructural(const Record& r) {
 
 bool isParamHead(const Record& r) { return r.is("PARAmeter") || r.is("CONStant"); }
 
-// Variables whose numbers of values are known (no ranges) are zipped: the last
-// one has as many as the first such.
-void checkSweepCounts(const std::vector<SweepVariable>& vars) {
-  const SweepVariable& v = vars.back();
-  const auto n = v.fixedCount();
-  if (!n) return;
-  for (const SweepVariable& w : vars) {
-    const auto m = w.fixedCount();
-    if (&w == &v || !m || *m == *n) continue;
-    throw DeckError(v.record[0].loc,
-                    "'" + v.name + "' has " + std::to_string(*n) + " values and '" + w.name +
-                        "' (line " + std::to_string(w.record.loc.line) + ") " + std::to_string(*m) +
-                        ": the variables of a sweep are zipped, one value of each per run",
-                    v.record.excerpt(v.record[0].loc));
-  }
-}
-
-// A name both swept and drawn would give its runs two values.
-void checkDrawsNotSwept(const TopEnsemble& e, const TopSweep& sw) {
-  for (const DrawRecord& d : e.draws)
-    for (const SweepVariable& v : sw.variables)
-      if (toLower(d.name) == toLower(v.name))
-        throw DeckError(d.record[0].loc,
-                        "'" + d.name + "' is both drawn and swept (line " +
-                            std::to_string(v.record.loc.line) + ")",
-                        d.record.excerpt(d.record[0].loc), "draw or sweep it, not both");
-}
-
 }  // namespace
 
 // FEAP's control keywords (pnewprob): four characters of the name, or the
@@ -267,40 +239,9 @@ TopSweep DeckParser::parseSweep() {
     if (!hasEquals(r) && (isStructural(r) || isParamHead(r) || mesh_.find(r[0].text)))
       throw DeckError(r[0].loc, "SWEEp block (" + where(sw.head) + ") is not ended by a blank record",
                       r.excerpt(r[0].loc), "insert a blank record before this one");
-    const Record& rec = next();
-    // A record without 'name =' continues the values of the variable before it
-    // (a record holds at most 256 characters).
-    if (!hasEquals(rec)) {
-      if (sw.variables.empty())
-        throw DeckError(rec[0].loc, "expected 'name = v1 v2 ...'", rec.excerpt(rec[0].loc),
-                        "a record without 'name =' continues the values of the record before "
-                        "it");
-      SweepVariable& v = sw.variables.back();
-      for (SweepItem& item : parseSweepItems(rec, 0)) v.items.push_back(std::move(item));
-      continue;
-    }
-    if (!sw.variables.empty()) checkSweepCounts(sw.variables);
-    if (!Parameters::validName(rec[0].text))
-      throw DeckError(rec[0].loc, "expected 'name = v1 v2 ...', and '" + rec[0].text +
-                                      "' is not a parameter name",
-                      rec.excerpt(rec[0].loc));
-    SweepVariable v;
-    v.name = rec[0].text;
-    v.record = rec;
-    v.items = parseSweepItems(rec, 1);
-    if (v.items.empty())
-      throw DeckError(rec.fieldLoc(1), "sweep variable '" + v.name + "' has no values",
-                      rec.excerpt(rec.fieldLoc(1)), "write " + v.name + " = v1 v2 ...");
-    for (const SweepVariable& w : sw.variables)
-      if (toLower(w.name) == toLower(v.name))
-        throw DeckError(rec[0].loc, "'" + v.name + "' is swept twice (" + where(w.record) + ")",
-                        rec.excerpt(rec[0].loc));
-    sw.variables.push_back(std::move(v));
+    addSweepRecord(sw, next(), hasEquals(r));
   }
-  if (sw.variables.empty())
-    throw DeckError(at.loc, "SWEEp block without variables", sw.head.excerpt(at.loc),
-                    "write records 'name = v1 v2 ...' ended by a blank record");
-  checkSweepCounts(sw.variables);
+  checkSweepVariables(sw);
   // The sweep applies to the next problem; PARAmeter blocks before it go with
   // it, and an ENSEmble between them runs each of its plans n times.
   parseStudyBody(sw.body, sw.head, "SWEEp");
@@ -342,15 +283,7 @@ TopItem DeckParser::parseEnsemble(bool inSweep) {
   TopEnsemble e;
   e.head = next();
   const Record& h = e.head;
-  if (h.size() > 4)
-    throw DeckError(h[4].loc, "too many fields: ENSEmble,,n,seed", h.excerpt(h[4].loc));
-  if (h.size() < 3 || h[2].text.empty())
-    throw DeckError(h.fieldLoc(2), "ENSEmble needs the number of samples: ENSEmble,,n,seed",
-                    h.excerpt(h.fieldLoc(2)), "e.g. ENSEmble,,20,1");
-  if (!h[1].text.empty())
-    throw DeckError(h[1].loc, "ENSEmble takes numbers only: ENSEmble,,n,seed", h.excerpt(h[1].loc));
-  e.samples = Expression::parse(h[2]);
-  if (h.size() > 3 && !h[3].text.empty()) e.seed = Expression::parse(h[3]);
+  readEnsembleHead(e);
   while (true) {
     if (atEnd())
       throw DeckError(h[0].loc, "ENSEmble block is not ended by a blank record (end of file)",

@@ -20,6 +20,24 @@ bool written(const Record& r, std::size_t i) { return i < r.size() && !r[i].text
 
 const char* const kDrawSyntax = "name = NORMal mean sd | LOGNormal median cov | UNIForm lo hi";
 
+
+// Variables whose numbers of values are known (no ranges) are zipped: the last
+// one has as many as the first such.
+void checkSweepCounts(const std::vector<SweepVariable>& vars) {
+  const SweepVariable& v = vars.back();
+  const auto n = v.fixedCount();
+  if (!n) return;
+  for (const SweepVariable& w : vars) {
+    const auto m = w.fixedCount();
+    if (&w == &v || !m || *m == *n) continue;
+    throw DeckError(v.record[0].loc,
+                    "'" + v.name + "' has " + std::to_string(*n) + " values and '" + w.name +
+                        "' (line " + std::to_string(w.record.loc.line) + ") " + std::to_string(*m) +
+                        ": the variables of a sweep are zipped, one value of each per run",
+                    v.record.excerpt(v.record[0].loc));
+  }
+}
+
 }  // namespace
 
 std::vector<SweepItem> parseSweepItems(const Record& rec, std::size_t first) {
@@ -56,6 +74,60 @@ std::vector<SweepItem> parseSweepItems(const Record& rec, std::size_t first) {
     items.push_back({e[0], e[1], e[2]});
   }
   return items;
+}
+
+void addSweepRecord(TopSweep& sw, const Record& rec, bool assignment) {
+  // A record without 'name =' continues the values of the variable before it
+  // (a record holds at most 256 characters).
+  if (!assignment) {
+    if (sw.variables.empty())
+      throw DeckError(rec[0].loc, "expected 'name = v1 v2 ...'", rec.excerpt(rec[0].loc),
+                      "a record without 'name =' continues the values of the record before "
+                      "it");
+    SweepVariable& v = sw.variables.back();
+    for (SweepItem& item : parseSweepItems(rec, 0)) v.items.push_back(std::move(item));
+    return;
+  }
+  if (!sw.variables.empty()) checkSweepCounts(sw.variables);
+  if (!Parameters::validName(rec[0].text))
+    throw DeckError(rec[0].loc, "expected 'name = v1 v2 ...', and '" + rec[0].text +
+                                    "' is not a parameter name",
+                    rec.excerpt(rec[0].loc));
+  SweepVariable v;
+  v.name = rec[0].text;
+  v.record = rec;
+  v.items = parseSweepItems(rec, 1);
+  if (v.items.empty())
+    throw DeckError(rec.fieldLoc(1), "sweep variable '" + v.name + "' has no values",
+                    rec.excerpt(rec.fieldLoc(1)), "write " + v.name + " = v1 v2 ...");
+  for (const SweepVariable& w : sw.variables)
+    if (toLower(w.name) == toLower(v.name))
+      throw DeckError(rec[0].loc,
+                      "'" + v.name + "' is swept twice (line " + std::to_string(w.record.loc.line) +
+                          ")",
+                      rec.excerpt(rec[0].loc));
+  sw.variables.push_back(std::move(v));
+}
+
+void checkSweepVariables(const TopSweep& sw) {
+  const Field& at = sw.head[0];
+  if (sw.variables.empty())
+    throw DeckError(at.loc, "SWEEp block without variables", sw.head.excerpt(at.loc),
+                    "write records 'name = v1 v2 ...' ended by a blank record");
+  checkSweepCounts(sw.variables);
+}
+
+void readEnsembleHead(TopEnsemble& e) {
+  const Record& h = e.head;
+  if (h.size() > 4)
+    throw DeckError(h[4].loc, "too many fields: ENSEmble,,n,seed", h.excerpt(h[4].loc));
+  if (h.size() < 3 || h[2].text.empty())
+    throw DeckError(h.fieldLoc(2), "ENSEmble needs the number of samples: ENSEmble,,n,seed",
+                    h.excerpt(h.fieldLoc(2)), "e.g. ENSEmble,,20,1");
+  if (!h[1].text.empty())
+    throw DeckError(h[1].loc, "ENSEmble takes numbers only: ENSEmble,,n,seed", h.excerpt(h[1].loc));
+  e.samples = Expression::parse(h[2]);
+  if (h.size() > 3 && !h[3].text.empty()) e.seed = Expression::parse(h[3]);
 }
 
 void addEnsembleRecord(TopEnsemble& e, const Record& r, bool assignment) {
@@ -104,6 +176,17 @@ void addEnsembleRecord(TopEnsemble& e, const Record& r, bool assignment) {
       failAt(r, 0,
              "'" + name + "' is drawn twice (line " + std::to_string(o.record.loc.line) + ")");
   e.draws.push_back(std::move(d));
+}
+
+// A name both swept and drawn would give its runs two values.
+void checkDrawsNotSwept(const TopEnsemble& e, const TopSweep& sw) {
+  for (const DrawRecord& d : e.draws)
+    for (const SweepVariable& v : sw.variables)
+      if (toLower(d.name) == toLower(v.name))
+        throw DeckError(d.record[0].loc,
+                        "'" + d.name + "' is both drawn and swept (line " +
+                            std::to_string(v.record.loc.line) + ")",
+                        d.record.excerpt(d.record[0].loc), "draw or sweep it, not both");
 }
 
 void registerDeckBlocks(CommandRegistry& registry) {
