@@ -234,6 +234,28 @@ void ProblemRun::removeMembers(const Macro& m) {
   watches_.elementsChanged();
 }
 
+void ProblemRun::printNodal(const Macro& m) {
+  if (const Status st = tables_.nodal(m, params_, model_, *analysis_); !st) fail(m, st.why);
+}
+
+void ProblemRun::printStresses(const Macro& m) {
+  if (const Status st = tables_.stresses(m, params_, model_, *analysis_); !st) fail(m, st.why);
+}
+
+void ProblemRun::printHinges() { tables_.hinges(model_, *analysis_, watches_.hingeSteps()); }
+
+void ProblemRun::reportDebris() {
+  const DebrisFigures d = watches_.debrisNow(analysis_->state());
+  if (d.leftNode < 0) return;
+  watches_.setDebris(d);
+  if (debrisReport_.write(log_, d)) plotDebris();
+}
+
+void ProblemRun::plotDebris() {
+  const State& s = outputState();
+  debrisReport_.plot(log_, model_, s, watches_.debrisNow(s));
+}
+
 void ProblemRun::onCommit() {
   if (!model_.joints().empty()) syncSlaveNodes(model_, analysis_->state());
   const State& s = analysis_->state();

@@ -14,6 +14,8 @@
 #include "macro/output/Debris.h"
 #include "core/Model.h"
 #include "macro/deck/Deck.h"
+#include "macro/run/DebrisReport.h"
+#include "macro/run/PrintedTables.h"
 #include "macro/run/ProgressLine.h"
 #include "macro/run/RunOptions.h"
 #include "macro/run/RunCursor.h"
@@ -96,7 +98,7 @@ class ProblemRun {
   void restoreRestart(const Macro& m);
   void printNodal(const Macro& m);
   // FORM,LONG / FORM,SHORt: the digits of the nodal tables (FEAP's fmt_long).
-  void setLongFormat(bool on) { longFormat_ = on; }
+  void setLongFormat(bool on) { tables_.setLongFormat(on); }
   void printStresses(const Macro& m);
   void printHinges();
   // PLOT,DEBRis: <stem>_debris.svg of the current state, drawn again with the
@@ -128,7 +130,7 @@ class ProblemRun {
   // of the blast), so the run fails there, naming the blast and both times.
   void refuseScatteredIntoStatics(const RemovalEvent& ev) const;
   void onCommit();
-  // The debris report (macro/run/DebrisReport.cpp).
+  // The debris figures at the end of a run with ground contact, reported.
   void reportDebris();
   std::filesystem::path restartPath(const Macro& m) const;
 
@@ -149,14 +151,14 @@ class ProblemRun {
   ModelFingerprint input_;  // the model as the deck's mesh input built it (SAVE / REST)
 
   bool arcLengthFromDt_ = false;  // ARCL without dlambda0: set up when the first step starts
-  bool longFormat_ = false;       // FORM,LONG
   int extraHistories_ = 0;        // TPLOt commands of the run after the first
 
   RunWatches watches_{log_, model_};  // the run's watches and counters: its summary
   StepControl steps_{log_, watches_.energy()};  // step cutting (AUTO,CUT), the loops' verdicts
   RunCursor cursor_;    // where the run is in its commands (TIME,,tmax: land on it or not)
   DenseOutput sample_;  // outputs at the tmax a picture loop's last step passed
-  bool debrisPlot_ = false;
+  DebrisReport debrisReport_{options_, problem_.title};
+  PrintedTables tables_{log_};  // DISP, VELO, ACCE, REAC, STRE
   std::vector<double> drawnBlastTimes_;
   std::vector<double> nominalBlastTimes_;  // the deck's, before DETOnators scattered them
   std::chrono::steady_clock::time_point start_;
