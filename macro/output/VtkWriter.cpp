@@ -70,13 +70,18 @@ std::filesystem::path VtkWriter::write(const Model& model, const State& state, d
 
 std::string VtkWriter::timeText(double t) { return formatNumber("%.12g", t == 0 ? 0.0 : t); }
 
-std::string VtkWriter::unstructuredGrid(const Model& model, const State& state) {
+namespace {
+
+// A line cell: its two nodes and its element.
+struct GridCell {
+  std::array<int, 2> nodes;
+  const Element* element;
+};
+
+// The elements whose nodes exist, in element order.
+std::vector<GridCell> gridCells(const Model& model) {
   const int numNodes = model.numNodes();
-  struct Cell {
-    std::array<int, 2> nodes;
-    const Element* element;
-  };
-  std::vector<Cell> cells;
+  std::vector<GridCell> cells;
   for (int e = 0; e < model.numElements(); ++e) {
     const Element* el = elementOrNull(model, e);
     if (!el) continue;
@@ -84,46 +89,50 @@ std::string VtkWriter::unstructuredGrid(const Model& model, const State& state) 
     if (nd[0] < 0 || nd[0] >= numNodes || nd[1] < 0 || nd[1] >= numNodes) continue;
     cells.push_back({nd, el});
   }
+  return cells;
+}
+
+void openArray(std::ostringstream& o, const char* type, const char* name, int components) {
+  o << "        <DataArray type=\"" << type << "\" Name=\"" << name << "\"";
+  if (components > 1) o << " NumberOfComponents=\"" << components << "\"";
+  o << " format=\"ascii\">\n";
+}
+
+const char* const kCloseArray = "        </DataArray>\n";
+
+// The nodes' displacement, rotation, velocity and joint flag.
+void writePointData(std::ostringstream& o, const Model& model, const State& state) {
+  const int numNodes = model.numNodes();
   std::vector<char> inJoint(numNodes, 0);
   for (const Joint& j : model.joints())
     for (int n : {j.master, j.slave})
       if (n >= 0 && n < numNodes) inJoint[n] = 1;
-
-  std::ostringstream o;
-  auto open = [&](const char* type, const char* name, int components) {
-    o << "        <DataArray type=\"" << type << "\" Name=\"" << name << "\"";
-    if (components > 1) o << " NumberOfComponents=\"" << components << "\"";
-    o << " format=\"ascii\">\n";
-  };
-  const char* close = "        </DataArray>\n";
-
-  o << "<?xml version=\"1.0\"?>\n"
-    << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-    << "  <UnstructuredGrid>\n"
-    << "    <Piece NumberOfPoints=\"" << numNodes << "\" NumberOfCells=\"" << cells.size() << "\">\n";
-
   o << "      <PointData Vectors=\"displacement\" Scalars=\"rotation\">\n";
-  open("Float64", "displacement", 3);
+  openArray(o, "Float64", "displacement", 3);
   for (int n = 0; n < numNodes; ++n)
     o << num(stateValue(state.u, n, 0)) << ' ' << num(stateValue(state.u, n, 1)) << " 0\n";
-  o << close;
-  open("Float64", "rotation", 1);
+  o << kCloseArray;
+  openArray(o, "Float64", "rotation", 1);
   for (int n = 0; n < numNodes; ++n) o << num(stateValue(state.u, n, 2)) << '\n';
-  o << close;
-  open("Float64", "velocity", 3);
+  o << kCloseArray;
+  openArray(o, "Float64", "velocity", 3);
   for (int n = 0; n < numNodes; ++n)
     o << num(stateValue(state.v, n, 0)) << ' ' << num(stateValue(state.v, n, 1)) << " 0\n";
-  o << close;
-  open("UInt8", "joint", 1);
+  o << kCloseArray;
+  openArray(o, "UInt8", "joint", 1);
   for (int n = 0; n < numNodes; ++n) o << int(inJoint[n]) << '\n';
-  o << close;
+  o << kCloseArray;
   o << "      </PointData>\n";
+}
 
+// The cells' section forces, material and hinge (state 0 none, 1 active, 2
+// failed; its jump and position).
+void writeCellData(std::ostringstream& o, const std::vector<GridCell>& cells) {
   o << "      <CellData Scalars=\"M\">\n";
   std::vector<SectionForces> forces;
   std::vector<HingeInfo> hinges;
   std::vector<int> hingeState;
-  for (const Cell& c : cells) {
+  for (const GridCell& c : cells) {
     forces.push_back(c.element->sectionForces());
     const auto* h = dynamic_cast<const HingeCarrier*>(c.element);
     hinges.push_back(h ? h->hinge() : HingeInfo{});
@@ -131,9 +140,9 @@ std::string VtkWriter::unstructuredGrid(const Model& model, const State& state) 
     hingeState.push_back(hi.failed ? 2 : hi.active ? 1 : 0);
   }
   auto cellColumn = [&](const char* type, const char* name, auto value) {
-    open(type, name, 1);
+    openArray(o, type, name, 1);
     for (std::size_t k = 0; k < cells.size(); ++k) o << value(k) << '\n';
-    o << close;
+    o << kCloseArray;
   };
   cellColumn("Float64", "N", [&](std::size_t k) { return num(forces[k].N); });
   cellColumn("Float64", "V", [&](std::size_t k) { return num(forces[k].V); });
@@ -144,28 +153,50 @@ std::string VtkWriter::unstructuredGrid(const Model& model, const State& state) 
   cellColumn("Float64", "hinge_position",
              [&](std::size_t k) { return num(hingeState[k] ? hinges[k].position : 0.0); });
   o << "      </CellData>\n";
+}
 
+// The deformed positions.
+void writePoints(std::ostringstream& o, const Model& model, const State& state) {
   o << "      <Points>\n";
   o << "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (int n = 0; n < numNodes; ++n) {
+  for (int n = 0; n < model.numNodes(); ++n) {
     const Vec2& x = model.coord(n);
     o << num(x.x() + stateValue(state.u, n, 0)) << ' ' << num(x.y() + stateValue(state.u, n, 1))
       << " 0\n";
   }
-  o << close << "      </Points>\n";
+  o << kCloseArray << "      </Points>\n";
+}
 
+// The line cells: connectivity, offsets, types.
+void writeCells(std::ostringstream& o, const std::vector<GridCell>& cells) {
   o << "      <Cells>\n";
-  open("Int64", "connectivity", 1);
-  for (const Cell& c : cells) o << c.nodes[0] << ' ' << c.nodes[1] << '\n';
-  o << close;
-  open("Int64", "offsets", 1);
+  openArray(o, "Int64", "connectivity", 1);
+  for (const GridCell& c : cells) o << c.nodes[0] << ' ' << c.nodes[1] << '\n';
+  o << kCloseArray;
+  openArray(o, "Int64", "offsets", 1);
   for (std::size_t k = 0; k < cells.size(); ++k) o << 2 * (k + 1) << '\n';
-  o << close;
-  open("UInt8", "types", 1);
+  o << kCloseArray;
+  openArray(o, "UInt8", "types", 1);
   for (std::size_t k = 0; k < cells.size(); ++k) o << "3\n";  // VTK_LINE
-  o << close;
-  o << "      </Cells>\n"
-    << "    </Piece>\n"
+  o << kCloseArray;
+  o << "      </Cells>\n";
+}
+
+}  // namespace
+
+std::string VtkWriter::unstructuredGrid(const Model& model, const State& state) {
+  const std::vector<GridCell> cells = gridCells(model);
+  std::ostringstream o;
+  o << "<?xml version=\"1.0\"?>\n"
+    << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+    << "  <UnstructuredGrid>\n"
+    << "    <Piece NumberOfPoints=\"" << model.numNodes() << "\" NumberOfCells=\"" << cells.size()
+    << "\">\n";
+  writePointData(o, model, state);
+  writeCellData(o, cells);
+  writePoints(o, model, state);
+  writeCells(o, cells);
+  o << "    </Piece>\n"
     << "  </UnstructuredGrid>\n"
     << "</VTKFile>\n";
   return o.str();
