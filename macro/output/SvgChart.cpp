@@ -248,162 +248,208 @@ std::pair<double, double> SvgChart::autoRange(bool xAxis) const {
 std::pair<double, double> SvgChart::xRange() const { return xFixed_ ? *xFixed_ : autoRange(true); }
 std::pair<double, double> SvgChart::yRange() const { return yFixed_ ? *yFixed_ : autoRange(false); }
 
-std::string SvgChart::svg() const {
-  // Plain variables, not structured bindings: lambdas below capture them.
-  const std::pair<double, double> xr = xRange(), yr = yRange();
-  const double xlo = xr.first, xhi = xr.second, ylo = yr.first, yhi = yr.second;
-  const int n = numSeries();
+namespace {
 
-  struct Layout {
-    double L = 0, T = 0, R = 0, B = 0;
-    std::vector<double> xTicks, yTicks;
-    TickLabels xLab, yLab;
-  };
-  // rightExtra: room kept right of the plot for a legend outside it.
-  auto layout = [&](double rightExtra) {
-    Layout f;
-    // Vertical layout first: the y tick labels it yields set the left margin.
-    f.T = title_.empty() ? 20 : 44;
-    f.B = height_ - (5 + 6 + kFontTick + (xLabel_.empty() ? 12 : 12 + kFontLabel + 10));
-    const int maxYTicks = std::max(3, static_cast<int>((f.B - f.T) / 45));
-    f.yTicks = niceTicks(ylo, yhi, maxYTicks);
-    f.yLab = formatTicks(f.yTicks, tickStep(ylo, yhi, maxYTicks));
-    double yLabW = 0;
-    for (const auto& s : f.yLab.text) yLabW = std::max(yLabW, textWidth(s, kFontTick));
-    f.L = 10 + (yLabel_.empty() ? 0 : kFontLabel + 10) + yLabW + 8;
-    f.R = width_ - 22 - rightExtra;
-    // Fewer x ticks until their labels leave room between them.
-    for (int maxXTicks = std::max(3, static_cast<int>((f.R - f.L) / 70));; --maxXTicks) {
-      f.xTicks = niceTicks(xlo, xhi, maxXTicks);
-      f.xLab = formatTicks(f.xTicks, tickStep(xlo, xhi, maxXTicks));
-      double w = 0;
-      for (const auto& s : f.xLab.text) w = std::max(w, textWidth(s, kFontTick));
-      if (maxXTicks <= 3 || (w + 14) * static_cast<double>(f.xTicks.size()) <= f.R - f.L) break;
-    }
-    return f;
-  };
-  auto mapX = [&](const Layout& f, double x) { return f.L + (x - xlo) / (xhi - xlo) * (f.R - f.L); };
-  auto mapY = [&](const Layout& f, double y) { return f.T + (yhi - y) / (yhi - ylo) * (f.B - f.T); };
+// What the page shows besides the curves: its size, title and axis labels.
+struct ChartPage {
+  double width, height;
+  const std::string& title;
+  const std::string& xLabel;
+  const std::string& yLabel;
+};
 
-  // Pixel polylines of the series (a non-finite point starts a new piece).
-  using Polyline = std::vector<std::pair<double, double>>;
-  auto polylines = [&](const Layout& f, const Series& s) {
-    std::vector<Polyline> pieces(1);
-    for (const auto& [x, y] : s.points) {
-      if (!std::isfinite(x) || !std::isfinite(y)) {
-        if (!pieces.back().empty()) pieces.emplace_back();
-        continue;
-      }
-      pieces.back().emplace_back(mapX(f, x), mapY(f, y));
+// One series as the drawing reads it.
+struct Curve {
+  const std::string& name;
+  const SvgChart::Points& points;
+  const SeriesStyle& style;
+};
+
+// A curve's color, dash and width: its style's, else the palette's, the dash
+// cycle's and the default width by its index.
+struct CurveLook {
+  std::string color, dash;
+  double width;
+};
+
+CurveLook lookOf(const Curve& c, int i) {
+  return {c.style.color.empty() ? kPalette[i % kPalette.size()] : c.style.color,
+          c.style.dash.empty() ? kDashes[i % kDashes.size()] : c.style.dash,
+          c.style.width > 0 ? c.style.width : kLineWidth};
+}
+
+// The plot's place on the page (left, top, right, bottom), its ticks and their
+// labels, and the ranges it maps.
+struct Frame {
+  double xlo = 0, xhi = 1, ylo = 0, yhi = 1;
+  double L = 0, T = 0, R = 0, B = 0;
+  std::vector<double> xTicks, yTicks;
+  TickLabels xLab, yLab;
+  double X(double x) const { return L + (x - xlo) / (xhi - xlo) * (R - L); }
+  double Y(double y) const { return T + (yhi - y) / (yhi - ylo) * (B - T); }
+};
+
+// rightExtra: room kept right of the plot for a legend outside it.
+Frame layoutFrame(const ChartPage& page, std::pair<double, double> xr,
+                  std::pair<double, double> yr, double rightExtra) {
+  Frame f;
+  f.xlo = xr.first;
+  f.xhi = xr.second;
+  f.ylo = yr.first;
+  f.yhi = yr.second;
+  // Vertical layout first: the y tick labels it yields set the left margin.
+  f.T = page.title.empty() ? 20 : 44;
+  f.B = page.height - (5 + 6 + kFontTick + (page.xLabel.empty() ? 12 : 12 + kFontLabel + 10));
+  const int maxYTicks = std::max(3, static_cast<int>((f.B - f.T) / 45));
+  f.yTicks = SvgChart::niceTicks(f.ylo, f.yhi, maxYTicks);
+  f.yLab = formatTicks(f.yTicks, SvgChart::tickStep(f.ylo, f.yhi, maxYTicks));
+  double yLabW = 0;
+  for (const auto& s : f.yLab.text) yLabW = std::max(yLabW, textWidth(s, kFontTick));
+  f.L = 10 + (page.yLabel.empty() ? 0 : kFontLabel + 10) + yLabW + 8;
+  f.R = page.width - 22 - rightExtra;
+  // Fewer x ticks until their labels leave room between them.
+  for (int maxXTicks = std::max(3, static_cast<int>((f.R - f.L) / 70));; --maxXTicks) {
+    f.xTicks = SvgChart::niceTicks(f.xlo, f.xhi, maxXTicks);
+    f.xLab = formatTicks(f.xTicks, SvgChart::tickStep(f.xlo, f.xhi, maxXTicks));
+    double w = 0;
+    for (const auto& s : f.xLab.text) w = std::max(w, textWidth(s, kFontTick));
+    if (maxXTicks <= 3 || (w + 14) * static_cast<double>(f.xTicks.size()) <= f.R - f.L) break;
+  }
+  return f;
+}
+
+// Pixel polylines of a series (a non-finite point starts a new piece).
+using Polyline = std::vector<std::pair<double, double>>;
+std::vector<Polyline> polylines(const Frame& f, const SvgChart::Points& points) {
+  std::vector<Polyline> pieces(1);
+  for (const auto& [x, y] : points) {
+    if (!std::isfinite(x) || !std::isfinite(y)) {
+      if (!pieces.back().empty()) pieces.emplace_back();
+      continue;
     }
-    if (pieces.back().empty()) pieces.pop_back();
-    return pieces;
-  };
-  // Curve samples about every 3 px inside the plot: what a legend box would hide.
-  auto curveSamples = [&](const Layout& f) {
-    std::vector<std::pair<double, double>> samples;
-    const Rect plot{f.L, f.T, f.R, f.B};
-    for (const Series& s : series_)
-      for (const Polyline& p : polylines(f, s))
-        for (std::size_t k = 0; k < p.size(); ++k) {
-          if (k == 0) {
-            samples.push_back(p[0]);
-            continue;
-          }
-          const auto [ax, ay] = p[k - 1];
-          const auto [bx, by] = p[k];
-          const int pieces = std::clamp(static_cast<int>(std::hypot(bx - ax, by - ay) / 3), 1, 2000);
-          for (int j = 1; j <= pieces; ++j) {
-            const double sx = ax + (bx - ax) * j / pieces, sy = ay + (by - ay) * j / pieces;
-            if (plot.contains(sx, sy)) samples.emplace_back(sx, sy);
-          }
+    pieces.back().emplace_back(f.X(x), f.Y(y));
+  }
+  if (pieces.back().empty()) pieces.pop_back();
+  return pieces;
+}
+
+// Curve samples about every 3 px inside the plot: what a legend box would hide.
+std::vector<std::pair<double, double>> curveSamples(const Frame& f,
+                                                    const std::vector<Curve>& curves) {
+  std::vector<std::pair<double, double>> samples;
+  const Rect plot{f.L, f.T, f.R, f.B};
+  for (const Curve& c : curves)
+    for (const Polyline& p : polylines(f, c.points))
+      for (std::size_t k = 0; k < p.size(); ++k) {
+        if (k == 0) {
+          samples.push_back(p[0]);
+          continue;
         }
-    return samples;
-  };
-
-  // Legend: inside, where it hides no curve (corners first), else outside on the right.
-  bool anyName = false;
-  for (const Series& s : series_) anyName = anyName || !s.name.empty();
-  const bool showLegend = legend_.value_or(anyName) && n > 0;
-  const double legPad = 8, legRowH = 18, legSample = 32;
-  Layout f = layout(0);
-  // A legend entry is never wider than the plot leaves it: a longer one is set
-  // smaller, then squeezed (as a title is).
-  const double legTextMax = std::max(40.0, f.R - f.L - 16 - 2 * legPad - legSample - 7);
-  double legTextW = 0;
-  for (const Series& s : series_) legTextW = std::max(legTextW, textWidth(s.name, kFontLegend));
-  legTextW = std::min(legTextW, legTextMax);
-  const double boxW = legPad + legSample + 7 + legTextW + legPad, boxH = 2 * 5 + n * legRowH;
-
-  Rect box{};
-  if (showLegend) {
-    const double inset = 8;
-    const double xl = f.L + inset, xr = f.R - inset - boxW, xc = 0.5 * (f.L + f.R - boxW);
-    const double yt = f.T + inset, yb = f.B - inset - boxH, ym = 0.5 * (f.T + f.B - boxH);
-    const std::array<std::pair<double, double>, 8> spots = {
-        {{xr, yt}, {xl, yt}, {xr, yb}, {xl, yb}, {xc, yt}, {xc, yb}, {xr, ym}, {xl, ym}}};
-    const auto samples = curveSamples(f);
-    std::size_t bestCount = std::numeric_limits<std::size_t>::max();
-    for (const auto& [x0, y0] : spots) {
-      const Rect grown{x0 - 4, y0 - 4, x0 + boxW + 4, y0 + boxH + 4};
-      const auto count = static_cast<std::size_t>(std::count_if(
-          samples.begin(), samples.end(), [&](const auto& p) { return grown.contains(p.first, p.second); }));
-      if (count < bestCount) {
-        bestCount = count;
-        box = {x0, y0, x0 + boxW, y0 + boxH};
+        const auto [ax, ay] = p[k - 1];
+        const auto [bx, by] = p[k];
+        const int pieces = std::clamp(static_cast<int>(std::hypot(bx - ax, by - ay) / 3), 1, 2000);
+        for (int j = 1; j <= pieces; ++j) {
+          const double sx = ax + (bx - ax) * j / pieces, sy = ay + (by - ay) * j / pieces;
+          if (plot.contains(sx, sy)) samples.emplace_back(sx, sy);
+        }
       }
-    }
-    // Outside only while the plot keeps most of the width.
-    if (bestCount > 0 && boxW + 12 < 0.35 * (f.R - f.L)) {
-      f = layout(boxW + 12);
-      box = {f.R + 12, f.T, f.R + 12 + boxW, f.T + boxH};
+  return samples;
+}
+
+// The legend's box: its size, its text's width and its place.
+struct Legend {
+  static constexpr double kPad = 8, kRowH = 18, kSample = 32;
+  bool show = false;
+  double textW = 0, boxW = 0, boxH = 0;
+  Rect box{};
+};
+
+// A legend entry is never wider than the plot leaves it: a longer one is set
+// smaller, then squeezed (as a title is).
+Legend legendSize(const Frame& f, const std::vector<Curve>& curves, bool show) {
+  Legend g;
+  g.show = show;
+  const double legTextMax = std::max(40.0, f.R - f.L - 16 - 2 * Legend::kPad - Legend::kSample - 7);
+  for (const Curve& c : curves) g.textW = std::max(g.textW, textWidth(c.name, kFontLegend));
+  g.textW = std::min(g.textW, legTextMax);
+  g.boxW = Legend::kPad + Legend::kSample + 7 + g.textW + Legend::kPad;
+  g.boxH = 2 * 5 + static_cast<int>(curves.size()) * Legend::kRowH;
+  return g;
+}
+
+// The legend inside, where it hides no curve (corners first), else outside on
+// the right while the plot keeps most of the width (f laid out again for it).
+void placeLegend(Legend& g, Frame& f, const ChartPage& page, const std::vector<Curve>& curves) {
+  const double boxW = g.boxW, boxH = g.boxH;
+  const double inset = 8;
+  const double xl = f.L + inset, xr = f.R - inset - boxW, xc = 0.5 * (f.L + f.R - boxW);
+  const double yt = f.T + inset, yb = f.B - inset - boxH, ym = 0.5 * (f.T + f.B - boxH);
+  const std::array<std::pair<double, double>, 8> spots = {
+      {{xr, yt}, {xl, yt}, {xr, yb}, {xl, yb}, {xc, yt}, {xc, yb}, {xr, ym}, {xl, ym}}};
+  const auto samples = curveSamples(f, curves);
+  std::size_t bestCount = std::numeric_limits<std::size_t>::max();
+  for (const auto& [x0, y0] : spots) {
+    const Rect grown{x0 - 4, y0 - 4, x0 + boxW + 4, y0 + boxH + 4};
+    const auto count = static_cast<std::size_t>(std::count_if(
+        samples.begin(), samples.end(), [&](const auto& p) { return grown.contains(p.first, p.second); }));
+    if (count < bestCount) {
+      bestCount = count;
+      g.box = {x0, y0, x0 + boxW, y0 + boxH};
     }
   }
-  const double L = f.L, T = f.T, R = f.R, B = f.B, plotW = R - L, plotH = B - T;
-  auto X = [&](double x) { return mapX(f, x); };
-  auto Y = [&](double y) { return mapY(f, y); };
+  if (bestCount > 0 && boxW + 12 < 0.35 * (f.R - f.L)) {
+    f = layoutFrame(page, {f.xlo, f.xhi}, {f.ylo, f.yhi}, boxW + 12);
+    g.box = {f.R + 12, f.T, f.R + 12 + boxW, f.T + boxH};
+  }
+}
 
-  std::ostringstream o;
+// The document's head: size, title, the plot's clip path, the white page.
+void writeHead(std::ostringstream& o, const ChartPage& page, const Frame& f) {
   o << "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
-    << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << px(width_) << "\" height=\""
-    << px(height_) << "\" viewBox=\"0 0 " << px(width_) << ' ' << px(height_)
+    << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << px(page.width) << "\" height=\""
+    << px(page.height) << "\" viewBox=\"0 0 " << px(page.width) << ' ' << px(page.height)
     << "\" font-family=\"sans-serif\" font-size=\"" << px(kFontTick) << "\">\n";
-  if (!title_.empty()) o << "<title>" << xmlEscape(title_) << "</title>\n";
-  o << "<defs><clipPath id=\"plot-area\"><rect x=\"" << px(L) << "\" y=\"" << px(T) << "\" width=\""
-    << px(plotW) << "\" height=\"" << px(plotH) << "\"/></clipPath></defs>\n";
-  o << "<rect width=\"" << px(width_) << "\" height=\"" << px(height_) << "\" fill=\"white\"/>\n";
+  if (!page.title.empty()) o << "<title>" << xmlEscape(page.title) << "</title>\n";
+  o << "<defs><clipPath id=\"plot-area\"><rect x=\"" << px(f.L) << "\" y=\"" << px(f.T) << "\" width=\""
+    << px(f.R - f.L) << "\" height=\"" << px(f.B - f.T) << "\"/></clipPath></defs>\n";
+  o << "<rect width=\"" << px(page.width) << "\" height=\"" << px(page.height) << "\" fill=\"white\"/>\n";
+}
 
-  // Grid at the ticks, light enough to stay behind the curves.
+// Grid at the ticks, light enough to stay behind the curves; zero lines: a
+// force-time curve crossing zero reads better against them.
+void writeGrid(std::ostringstream& o, const Frame& f) {
+  const double L = f.L, T = f.T, R = f.R, B = f.B;
   o << "<g class=\"grid\" stroke=\"#dcdcdc\" stroke-width=\"0.7\">\n";
   for (double t : f.xTicks)
-    if (std::abs(X(t) - L) > 0.5 && std::abs(X(t) - R) > 0.5)
-      o << "<line x1=\"" << px(X(t)) << "\" y1=\"" << px(T) << "\" x2=\"" << px(X(t)) << "\" y2=\"" << px(B)
+    if (std::abs(f.X(t) - L) > 0.5 && std::abs(f.X(t) - R) > 0.5)
+      o << "<line x1=\"" << px(f.X(t)) << "\" y1=\"" << px(T) << "\" x2=\"" << px(f.X(t)) << "\" y2=\"" << px(B)
         << "\"/>\n";
   for (double t : f.yTicks)
-    if (std::abs(Y(t) - T) > 0.5 && std::abs(Y(t) - B) > 0.5)
-      o << "<line x1=\"" << px(L) << "\" y1=\"" << px(Y(t)) << "\" x2=\"" << px(R) << "\" y2=\"" << px(Y(t))
+    if (std::abs(f.Y(t) - T) > 0.5 && std::abs(f.Y(t) - B) > 0.5)
+      o << "<line x1=\"" << px(L) << "\" y1=\"" << px(f.Y(t)) << "\" x2=\"" << px(R) << "\" y2=\"" << px(f.Y(t))
         << "\"/>\n";
   o << "</g>\n";
-  // Zero lines: a force-time curve crossing zero reads better against them.
-  if (ylo < 0 && yhi > 0)
-    o << "<line class=\"zero\" x1=\"" << px(L) << "\" y1=\"" << px(Y(0)) << "\" x2=\"" << px(R) << "\" y2=\""
-      << px(Y(0)) << "\" stroke=\"#808080\" stroke-width=\"0.8\"/>\n";
-  if (xlo < 0 && xhi > 0)
-    o << "<line class=\"zero\" x1=\"" << px(X(0)) << "\" y1=\"" << px(T) << "\" x2=\"" << px(X(0)) << "\" y2=\""
+  if (f.ylo < 0 && f.yhi > 0)
+    o << "<line class=\"zero\" x1=\"" << px(L) << "\" y1=\"" << px(f.Y(0)) << "\" x2=\"" << px(R) << "\" y2=\""
+      << px(f.Y(0)) << "\" stroke=\"#808080\" stroke-width=\"0.8\"/>\n";
+  if (f.xlo < 0 && f.xhi > 0)
+    o << "<line class=\"zero\" x1=\"" << px(f.X(0)) << "\" y1=\"" << px(T) << "\" x2=\"" << px(f.X(0)) << "\" y2=\""
       << px(B) << "\" stroke=\"#808080\" stroke-width=\"0.8\"/>\n";
+}
 
-  const Rect plot{L - 1, T - 1, R + 1, B + 1};
+// The curves, clipped to the plot, with their markers evenly spaced along the
+// drawn curve, staggered between series so that coincident curves still show
+// every marker shape.
+void writeCurves(std::ostringstream& o, const Frame& f, const std::vector<Curve>& curves) {
+  const int n = static_cast<int>(curves.size());
+  const Rect plot{f.L - 1, f.T - 1, f.R + 1, f.B + 1};
   o << "<g clip-path=\"url(#plot-area)\" fill=\"none\" stroke-linejoin=\"round\">\n";
   for (int i = 0; i < n; ++i) {
-    const Series& s = series_[i];
-    const std::string color = s.style.color.empty() ? kPalette[i % kPalette.size()] : s.style.color;
-    const std::string dash = s.style.dash.empty() ? kDashes[i % kDashes.size()] : s.style.dash;
-    const double width = s.style.width > 0 ? s.style.width : kLineWidth;
+    const Curve& s = curves[i];
+    const CurveLook look = lookOf(s, i);
     std::ostringstream d, marks;
-    // Markers evenly spaced along the drawn curve, staggered between series so
-    // that coincident curves still show every marker shape.
     double sinceMark = kMarkerSpacing * (1.0 - static_cast<double>(i) / n);
-    for (const Polyline& p : polylines(f, s))
+    for (const Polyline& p : polylines(f, s.points))
       for (std::size_t k = 0; k < p.size(); ++k) {
         const auto [qx, qy] = p[k];
         d << (k == 0 ? "M" : "L") << px(qx) << ' ' << px(qy);
@@ -413,31 +459,35 @@ std::string SvgChart::svg() const {
           sinceMark = 0;
         }
       }
-    o << "<path class=\"series\" data-name=\"" << xmlEscape(s.name) << "\" stroke=\"" << xmlEscape(color)
-      << "\" stroke-width=\"" << px(width) << "\"";
-    if (dash != "none") o << " stroke-dasharray=\"" << xmlEscape(dash) << "\"";
+    o << "<path class=\"series\" data-name=\"" << xmlEscape(s.name) << "\" stroke=\"" << xmlEscape(look.color)
+      << "\" stroke-width=\"" << px(look.width) << "\"";
+    if (look.dash != "none") o << " stroke-dasharray=\"" << xmlEscape(look.dash) << "\"";
     o << " d=\"" << d.str() << "\"/>\n";
     if (s.style.markers)
-      o << "<path class=\"markers\" stroke=\"" << xmlEscape(color) << "\" stroke-width=\"1.2\" fill=\"white\" d=\""
+      o << "<path class=\"markers\" stroke=\"" << xmlEscape(look.color) << "\" stroke-width=\"1.2\" fill=\"white\" d=\""
         << marks.str() << "\"/>\n";
   }
   o << "</g>\n";
+}
 
-  // Frame with inward ticks, mirrored (shorter) on the top and right edges.
-  o << "<rect class=\"frame\" x=\"" << px(L) << "\" y=\"" << px(T) << "\" width=\"" << px(plotW)
-    << "\" height=\"" << px(plotH) << "\" fill=\"none\" stroke=\"black\" stroke-width=\"1\"/>\n";
+// Frame with inward ticks, mirrored (shorter) on the top and right edges, and
+// the tick labels (with the axes' powers of ten).
+void writeAxes(std::ostringstream& o, const Frame& f) {
+  const double L = f.L, T = f.T, R = f.R, B = f.B;
+  o << "<rect class=\"frame\" x=\"" << px(L) << "\" y=\"" << px(T) << "\" width=\"" << px(R - L)
+    << "\" height=\"" << px(B - T) << "\" fill=\"none\" stroke=\"black\" stroke-width=\"1\"/>\n";
   o << "<path class=\"ticks\" stroke=\"black\" stroke-width=\"1\" d=\"";
-  for (double t : f.xTicks) o << "M" << px(X(t)) << ' ' << px(B) << "v-5M" << px(X(t)) << ' ' << px(T) << "v3";
-  for (double t : f.yTicks) o << "M" << px(L) << ' ' << px(Y(t)) << "h5M" << px(R) << ' ' << px(Y(t)) << "h-3";
+  for (double t : f.xTicks) o << "M" << px(f.X(t)) << ' ' << px(B) << "v-5M" << px(f.X(t)) << ' ' << px(T) << "v3";
+  for (double t : f.yTicks) o << "M" << px(L) << ' ' << px(f.Y(t)) << "h5M" << px(R) << ' ' << px(f.Y(t)) << "h-3";
   o << "\"/>\n";
 
   o << "<g class=\"tick-labels\" fill=\"black\">\n";
   const double xLabBase = B + 6 + kFontTick;
   for (std::size_t k = 0; k < f.xTicks.size(); ++k)
-    o << "<text x=\"" << px(X(f.xTicks[k])) << "\" y=\"" << px(xLabBase) << "\" text-anchor=\"middle\">"
+    o << "<text x=\"" << px(f.X(f.xTicks[k])) << "\" y=\"" << px(xLabBase) << "\" text-anchor=\"middle\">"
       << f.xLab.text[k] << "</text>\n";
   for (std::size_t k = 0; k < f.yTicks.size(); ++k)
-    o << "<text x=\"" << px(L - 7) << "\" y=\"" << px(Y(f.yTicks[k]) + 0.36 * kFontTick)
+    o << "<text x=\"" << px(L - 7) << "\" y=\"" << px(f.Y(f.yTicks[k]) + 0.36 * kFontTick)
       << "\" text-anchor=\"end\">" << f.yLab.text[k] << "</text>\n";
   if (f.xLab.exponent != 0)
     o << "<text x=\"" << px(R) << "\" y=\"" << px(xLabBase + kFontLabel + 8) << "\" text-anchor=\"end\">×10"
@@ -446,49 +496,77 @@ std::string SvgChart::svg() const {
     o << "<text x=\"" << px(L) << "\" y=\"" << px(T - 6) << "\" text-anchor=\"start\">×10"
       << superscript(f.yLab.exponent) << "</text>\n";
   o << "</g>\n";
+}
 
-  if (!xLabel_.empty())
+// The axis labels and the title, centred over the plot, within the picture
+// less a margin on either side.
+void writeLabels(std::ostringstream& o, const ChartPage& page, const Frame& f) {
+  const double L = f.L, T = f.T, R = f.R, B = f.B;
+  const double xLabBase = B + 6 + kFontTick;
+  if (!page.xLabel.empty())
     o << "<text class=\"xlabel\" x=\"" << px(0.5 * (L + R)) << "\" y=\"" << px(xLabBase + kFontLabel + 8)
-      << "\" font-size=\"" << px(kFontLabel) << "\" text-anchor=\"middle\">" << xmlEscape(xLabel_) << "</text>\n";
-  if (!yLabel_.empty()) {
+      << "\" font-size=\"" << px(kFontLabel) << "\" text-anchor=\"middle\">" << xmlEscape(page.xLabel) << "</text>\n";
+  if (!page.yLabel.empty()) {
     const double x = 10 + kFontLabel * 0.8, y = 0.5 * (T + B);
     o << "<text class=\"ylabel\" x=\"" << px(x) << "\" y=\"" << px(y) << "\" font-size=\"" << px(kFontLabel)
       << "\" text-anchor=\"middle\" transform=\"rotate(-90 " << px(x) << ' ' << px(y) << ")\">"
-      << xmlEscape(yLabel_) << "</text>\n";
+      << xmlEscape(page.yLabel) << "</text>\n";
   }
-  // Centred over the plot, within the picture less a margin on either side.
-  if (!title_.empty())
-    o << svgTitle(title_, 0.5 * (L + R), T - 18, kFontTitle,
-                  2 * std::min(0.5 * (L + R), width_ - 0.5 * (L + R)) - 16);
+  if (!page.title.empty())
+    o << svgTitle(page.title, 0.5 * (L + R), T - 18, kFontTitle,
+                  2 * std::min(0.5 * (L + R), page.width - 0.5 * (L + R)) - 16);
+}
 
-  if (showLegend) {
-    o << "<g class=\"legend\">\n<rect x=\"" << px(box.x0) << "\" y=\"" << px(box.y0) << "\" width=\"" << px(boxW)
-      << "\" height=\"" << px(boxH) << "\" fill=\"white\" fill-opacity=\"0.92\" stroke=\"#9a9a9a\" "
-         "stroke-width=\"0.8\"/>\n";
-    for (int i = 0; i < n; ++i) {
-      const Series& s = series_[i];
-      const std::string color = s.style.color.empty() ? kPalette[i % kPalette.size()] : s.style.color;
-      const std::string dash = s.style.dash.empty() ? kDashes[i % kDashes.size()] : s.style.dash;
-      const double width = s.style.width > 0 ? s.style.width : kLineWidth;
-      const double cy = box.y0 + 5 + (i + 0.5) * legRowH;
-      const double x0 = box.x0 + legPad;
-      o << "<line x1=\"" << px(x0) << "\" y1=\"" << px(cy) << "\" x2=\"" << px(x0 + legSample) << "\" y2=\""
-        << px(cy) << "\" stroke=\"" << xmlEscape(color) << "\" stroke-width=\"" << px(width) << "\"";
-      if (dash != "none") o << " stroke-dasharray=\"" << xmlEscape(dash) << "\"";
-      o << "/>\n";
-      if (s.style.markers) {
-        std::ostringstream m;
-        markerPath(m, i, x0 + 0.5 * legSample, cy);
-        o << "<path stroke=\"" << xmlEscape(color) << "\" stroke-width=\"1.2\" fill=\"white\" d=\"" << m.str()
-          << "\"/>\n";
-      }
-      const auto [font, squeeze] = fittedFont(s.name, kFontLegend, legTextW);
-      o << "<text x=\"" << px(x0 + legSample + 7) << "\" y=\"" << px(cy + 0.36 * kFontLegend) << "\""
-        << (font < kFontLegend ? fitAttributes(font, squeeze) : std::string()) << ">" << xmlEscape(s.name)
-        << "</text>\n";
+// The legend: a line sample (and marker) and the name of each curve.
+void writeLegend(std::ostringstream& o, const Legend& g, const std::vector<Curve>& curves) {
+  const Rect& box = g.box;
+  o << "<g class=\"legend\">\n<rect x=\"" << px(box.x0) << "\" y=\"" << px(box.y0) << "\" width=\"" << px(g.boxW)
+    << "\" height=\"" << px(g.boxH) << "\" fill=\"white\" fill-opacity=\"0.92\" stroke=\"#9a9a9a\" "
+       "stroke-width=\"0.8\"/>\n";
+  for (int i = 0; i < static_cast<int>(curves.size()); ++i) {
+    const Curve& s = curves[i];
+    const CurveLook look = lookOf(s, i);
+    const double cy = box.y0 + 5 + (i + 0.5) * Legend::kRowH;
+    const double x0 = box.x0 + Legend::kPad;
+    o << "<line x1=\"" << px(x0) << "\" y1=\"" << px(cy) << "\" x2=\"" << px(x0 + Legend::kSample) << "\" y2=\""
+      << px(cy) << "\" stroke=\"" << xmlEscape(look.color) << "\" stroke-width=\"" << px(look.width) << "\"";
+    if (look.dash != "none") o << " stroke-dasharray=\"" << xmlEscape(look.dash) << "\"";
+    o << "/>\n";
+    if (s.style.markers) {
+      std::ostringstream m;
+      markerPath(m, i, x0 + 0.5 * Legend::kSample, cy);
+      o << "<path stroke=\"" << xmlEscape(look.color) << "\" stroke-width=\"1.2\" fill=\"white\" d=\"" << m.str()
+        << "\"/>\n";
     }
-    o << "</g>\n";
+    const auto [font, squeeze] = fittedFont(s.name, kFontLegend, g.textW);
+    o << "<text x=\"" << px(x0 + Legend::kSample + 7) << "\" y=\"" << px(cy + 0.36 * kFontLegend) << "\""
+      << (font < kFontLegend ? fitAttributes(font, squeeze) : std::string()) << ">" << xmlEscape(s.name)
+      << "</text>\n";
   }
+  o << "</g>\n";
+}
+
+}  // namespace
+
+std::string SvgChart::svg() const {
+  const ChartPage page{width_, height_, title_, xLabel_, yLabel_};
+  std::vector<Curve> curves;
+  bool anyName = false;
+  for (const Series& s : series_) {
+    curves.push_back({s.name, s.points, s.style});
+    anyName = anyName || !s.name.empty();
+  }
+  Frame f = layoutFrame(page, xRange(), yRange(), 0);
+  Legend legend = legendSize(f, curves, legend_.value_or(anyName) && numSeries() > 0);
+  if (legend.show) placeLegend(legend, f, page, curves);
+
+  std::ostringstream o;
+  writeHead(o, page, f);
+  writeGrid(o, f);
+  writeCurves(o, f, curves);
+  writeAxes(o, f);
+  writeLabels(o, page, f);
+  if (legend.show) writeLegend(o, legend, curves);
   o << "</svg>\n";
   return o.str();
 }
