@@ -101,9 +101,9 @@ class TimeCommand final : public SolutionCommand {
   }
 
  private:
-  static std::optional<ProblemRun::Rest> rest(const Macro& m, const Parameters& p) {
+  static std::optional<RunWatches::Rest> rest(const Macro& m, const Parameters& p) {
     if (m.option.empty()) return std::nullopt;
-    ProblemRun::Rest r;
+    RunWatches::Rest r;
     if (written(m, 1)) r.ratio = m.numbers[1].eval(p);
     if (written(m, 2)) r.hold = m.numbers[2].eval(p);
     if (!(r.ratio > 0 && r.ratio < 1))
