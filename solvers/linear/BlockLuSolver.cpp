@@ -126,7 +126,7 @@ void BlockLuSolver::symbolic(const std::vector<std::vector<int>>& adjacent) {
 
 Status BlockLuSolver::analyze(const SparseMatrix& A, bool /*symmetric*/) {
   factored_ = false;
-  if (Status s = pattern_.record(A); !s) return Status::failure("block-lu: " + s.why);
+  if (Status s = recordPattern(A); !s) return s;
   n_ = pattern_.size();
   makeBlocks(n_);
   symbolic(orderBlocks(A));
@@ -145,7 +145,7 @@ Status BlockLuSolver::factorize(const SparseMatrix& A) {
   factored_ = false;
   notStable_ = false;
   singular_ = -1;
-  if (Status s = pattern_.check(A); !s) return Status::failure("block-lu: " + s.why);
+  if (Status s = checkPattern(A); !s) return s;
   const int* Ap = A.outerIndexPtr();
   const double* Ax = A.valuePtr();
   const double largestA = A.nonZeros() > 0 ? A.coeffs().cwiseAbs().maxCoeff() : 0.0;
@@ -209,14 +209,7 @@ Status BlockLuSolver::factorize(const SparseMatrix& A) {
   return Status::success();
 }
 
-Status BlockLuSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
-  if (!factored_) return Status::failure("block-lu: no valid factorization to solve with");
-  if (b.size() != n_ || x.size() != n_) {
-    return Status::failure("block-lu: vector sizes " + std::to_string(b.size()) + ", " +
-                           std::to_string(x.size()) + " do not match the matrix size " +
-                           std::to_string(n_));
-  }
-  if (!b.allFinite()) return Status::failure("block-lu: non-finite entry in the right-hand side");
+Status BlockLuSolver::solveFactored(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   for (int k = 0; k < nb_; ++k)
     for (int l = 0; l < kB; ++l) {
       const int eq = members_[kB * k + l];
@@ -231,7 +224,6 @@ Status BlockLuSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   for (int k = 0; k < nb_; ++k)
     for (int l = 0; l < kB; ++l)
       if (const int eq = members_[kB * k + l]; eq >= 0) x[eq] = y_[k][l];
-  if (!x.allFinite()) return Status::failure("block-lu: solution is not finite");
   return Status::success();
 }
 

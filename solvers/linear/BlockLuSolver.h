@@ -16,18 +16,16 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "solvers/linear/LinearSolver.h"
-#include "solvers/SparsePattern.h"
+#include "solvers/linear/DirectSolver.h"
 
 namespace c2d {
 
-class BlockLuSolver final : public LinearSolver {
+class BlockLuSolver final : public DirectSolver {
  public:
   std::string name() const override { return "block-lu"; }
   void groupEquations(std::vector<int> group) override { group_ = std::move(group); }
   Status analyze(const SparseMatrix& A, bool symmetric) override;
   Status factorize(const SparseMatrix& A) override;
-  Status solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
   int singularEquation() const override { return singular_; }
 
   // The last factorize() failed for want of pivoting (a near-singular pivot
@@ -36,6 +34,8 @@ class BlockLuSolver final : public LinearSolver {
   int numBlocks() const { return nb_; }
 
  private:
+  Status solveFactored(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
+
   using Block = Eigen::Matrix3d;
   using BlockVec = Eigen::Vector3d;
 
@@ -45,7 +45,6 @@ class BlockLuSolver final : public LinearSolver {
   void symbolic(const std::vector<std::vector<int>>& adjacent);
 
   std::vector<int> group_;         // the caller's grouping of the equations
-  SparsePattern pattern_;
   int n_ = 0, nb_ = 0;
   std::vector<int> members_;       // equations of block b: members_[3b..3b+2], -1 pads
   std::vector<int> blockOf_;       // block (in factor order) of each equation
@@ -58,7 +57,6 @@ class BlockLuSolver final : public LinearSolver {
   std::vector<Block> Lx_, Ux_, Dinv_, work_;
   std::vector<char> zeroL_;        // per block of L: all its entries zero
   std::vector<BlockVec> y_;
-  bool factored_ = false;
   bool notStable_ = false;
   int singular_ = -1;
 };

@@ -5,12 +5,11 @@
 // failure, which AutoSolver turns into an LU fallback.
 #include <cholmod.h>
 
-#include "solvers/linear/LinearSolver.h"
-#include "solvers/SparsePattern.h"
+#include "solvers/linear/DirectSolver.h"
 
 namespace c2d {
 
-class CholmodSolver final : public LinearSolver {
+class CholmodSolver final : public DirectSolver {
  public:
   // Automatic lets CHOLMOD choose from the flop count per nonzero of L (the
   // very sparse frame matrices usually get the simplicial method).
@@ -18,13 +17,10 @@ class CholmodSolver final : public LinearSolver {
 
   explicit CholmodSolver(Method method = Method::Automatic);
   ~CholmodSolver() override;
-  CholmodSolver(const CholmodSolver&) = delete;
-  CholmodSolver& operator=(const CholmodSolver&) = delete;
 
   std::string name() const override { return "cholmod"; }
   Status analyze(const SparseMatrix& A, bool symmetric) override;
   Status factorize(const SparseMatrix& A) override;
-  Status solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
 
   // True when the last factorize() failed because A is not positive definite
   // (indefinite or singular), as opposed to bad input or lack of memory.
@@ -33,6 +29,8 @@ class CholmodSolver final : public LinearSolver {
   bool supernodal() const { return factor_ && factor_->is_super; }
 
  private:
+  Status solveFactored(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
+
   // Points the header view_ at A's arrays (no copy). CHOLMOD only reads them.
   void bindView(const SparseMatrix& A);
   void freeFactor();
@@ -47,8 +45,6 @@ class CholmodSolver final : public LinearSolver {
   cholmod_dense* sol_ = nullptr;
   cholmod_dense* work1_ = nullptr;
   cholmod_dense* work2_ = nullptr;
-  SparsePattern pattern_;
-  bool factored_ = false;
   bool notPosDef_ = false;
 };
 

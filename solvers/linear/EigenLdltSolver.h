@@ -4,27 +4,19 @@
 // pivoting such a factorization may be inaccurate, hence the LU alternatives.
 #include <Eigen/SparseCholesky>
 
-#include "solvers/linear/LinearSolver.h"
-#include "solvers/SparsePattern.h"
+#include "solvers/linear/EigenDirectSolver.h"
 
 namespace c2d {
 
-class EigenLdltSolver final : public LinearSolver {
+// Reads the lower triangle of the full (both triangles) matrix.
+class EigenLdltSolver final
+    : public EigenDirectSolver<Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>> {
  public:
-  EigenLdltSolver() = default;
-  EigenLdltSolver(const EigenLdltSolver&) = delete;
-  EigenLdltSolver& operator=(const EigenLdltSolver&) = delete;
-
   std::string name() const override { return "eigen-ldlt"; }
   Status analyze(const SparseMatrix& A, bool symmetric) override;
-  Status factorize(const SparseMatrix& A) override;
-  Status solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
 
  private:
-  // Reads the lower triangle of the full (both triangles) matrix.
-  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt_;
-  SparsePattern pattern_;
-  bool factored_ = false;
+  std::string singular() const override { return "matrix is singular (zero pivot in D)"; }
 };
 
 }  // namespace c2d

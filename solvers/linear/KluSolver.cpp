@@ -40,7 +40,7 @@ void KluSolver::freeNumeric() {
 Status KluSolver::analyze(const SparseMatrix& A, bool /*symmetric*/) {
   freeNumeric();
   freeSymbolic();
-  if (Status s = pattern_.record(A); !s) return Status::failure("klu: " + s.why);
+  if (Status s = recordPattern(A); !s) return s;
   symbolic_ = klu_analyze(pattern_.size(), pattern_.outer(), pattern_.inner(), &common_);
   if (!symbolic_) {
     pattern_.clear();
@@ -74,7 +74,7 @@ Status KluSolver::factorize(const SparseMatrix& A) {
   factored_ = false;
   singular_ = -1;
   if (!symbolic_) return Status::failure("klu: factorize() before analyze()");
-  if (Status s = pattern_.check(A); !s) return Status::failure("klu: " + s.why);
+  if (Status s = checkPattern(A); !s) return s;
   // KLU reads but does not write its inputs.
   int* p = const_cast<int*>(A.outerIndexPtr());
   int* i = const_cast<int*>(A.innerIndexPtr());
@@ -109,20 +109,12 @@ double KluSolver::conditionEstimate(const SparseMatrix& A) {
   return common_.condest;
 }
 
-Status KluSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
-  if (!factored_) return Status::failure("klu: no valid factorization to solve with");
+Status KluSolver::solveFactored(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   const int n = pattern_.size();
-  if (b.size() != n || x.size() != n) {
-    return Status::failure("klu: vector sizes " + std::to_string(b.size()) + ", " +
-                           std::to_string(x.size()) + " do not match the matrix size " +
-                           std::to_string(n));
-  }
-  if (!b.allFinite()) return Status::failure("klu: non-finite entry in the right-hand side");
   x = b;  // klu_solve works in place
   if (!klu_solve(symbolic_, numeric_, n, 1, x.data(), &common_)) {
     return Status::failure("klu: solve failed (status " + std::to_string(common_.status) + ")");
   }
-  if (!x.allFinite()) return Status::failure("klu: solution is not finite");
   return Status::success();
 }
 

@@ -5,22 +5,18 @@
 // or loses accuracy; then a fresh pivoting factorization is made.
 #include <klu.h>
 
-#include "solvers/linear/LinearSolver.h"
-#include "solvers/SparsePattern.h"
+#include "solvers/linear/DirectSolver.h"
 
 namespace c2d {
 
-class KluSolver final : public LinearSolver {
+class KluSolver final : public DirectSolver {
  public:
   KluSolver();
   ~KluSolver() override;
-  KluSolver(const KluSolver&) = delete;
-  KluSolver& operator=(const KluSolver&) = delete;
 
   std::string name() const override { return "klu"; }
   Status analyze(const SparseMatrix& A, bool symmetric) override;
   Status factorize(const SparseMatrix& A) override;
-  Status solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
   int singularEquation() const override { return singular_; }
   // A fresh pivot search when the factors reused an old pivot order.
   bool refactorWithPivoting(const SparseMatrix& A) override;
@@ -30,6 +26,8 @@ class KluSolver final : public LinearSolver {
   bool lastWasRefactor() const { return lastWasRefactor_; }
 
  private:
+  Status solveFactored(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
+
   void freeSymbolic();
   void freeNumeric();
   Status freshFactor(int* p, int* i, double* x);
@@ -37,8 +35,6 @@ class KluSolver final : public LinearSolver {
   klu_common common_{};
   klu_symbolic* symbolic_ = nullptr;
   klu_numeric* numeric_ = nullptr;
-  SparsePattern pattern_;
-  bool factored_ = false;
   bool lastWasRefactor_ = false;
   int singular_ = -1;
 };

@@ -47,7 +47,7 @@ void UmfpackSolver::freeNumeric() {
 Status UmfpackSolver::analyze(const SparseMatrix& A, bool symmetric) {
   freeNumeric();
   freeSymbolic();
-  if (Status s = pattern_.record(A); !s) return Status::failure("umfpack: " + s.why);
+  if (Status s = recordPattern(A); !s) return s;
   if (!pattern_.sorted()) {
     pattern_.clear();
     return Status::failure("umfpack: row indices must be sorted within each column");
@@ -72,7 +72,7 @@ Status UmfpackSolver::analyze(const SparseMatrix& A, bool symmetric) {
 Status UmfpackSolver::factorize(const SparseMatrix& A) {
   freeNumeric();
   if (!symbolic_) return Status::failure("umfpack: factorize() before analyze()");
-  if (Status s = pattern_.check(A); !s) return Status::failure("umfpack: " + s.why);
+  if (Status s = checkPattern(A); !s) return s;
   std::copy(A.valuePtr(), A.valuePtr() + A.nonZeros(), values_.begin());
   const int status = umfpack_di_numeric(pattern_.outer(), pattern_.inner(), values_.data(),
                                         symbolic_, &numeric_, control_.data(), info_.data());
@@ -89,15 +89,8 @@ Status UmfpackSolver::factorize(const SparseMatrix& A) {
   return Status::success();
 }
 
-Status UmfpackSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
-  if (!factored_) return Status::failure("umfpack: no valid factorization to solve with");
+Status UmfpackSolver::solveFactored(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   const int n = pattern_.size();
-  if (b.size() != n || x.size() != n) {
-    return Status::failure("umfpack: vector sizes " + std::to_string(b.size()) + ", " +
-                           std::to_string(x.size()) + " do not match the matrix size " +
-                           std::to_string(n));
-  }
-  if (!b.allFinite()) return Status::failure("umfpack: non-finite entry in the right-hand side");
   // UMFPACK needs distinct right-hand side and solution arrays.
   const double* rhs = b.data();
   if (rhs == x.data()) {
@@ -108,7 +101,6 @@ Status UmfpackSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
                                        values_.data(), x.data(), rhs, numeric_, control_.data(),
                                        info_.data(), intWork_.data(), work_.data());
   if (status != UMFPACK_OK) return Status::failure(umfpackError("solve", status));
-  if (!x.allFinite()) return Status::failure("umfpack: solution is not finite");
   return Status::success();
 }
 

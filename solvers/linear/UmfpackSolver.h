@@ -4,24 +4,22 @@
 // symmetric strategy (AMD on A + A', diagonal pivots preferred) is used.
 #include <vector>
 
-#include "solvers/linear/LinearSolver.h"
-#include "solvers/SparsePattern.h"
+#include "solvers/linear/DirectSolver.h"
 
 namespace c2d {
 
-class UmfpackSolver final : public LinearSolver {
+class UmfpackSolver final : public DirectSolver {
  public:
   UmfpackSolver();
   ~UmfpackSolver() override;
-  UmfpackSolver(const UmfpackSolver&) = delete;
-  UmfpackSolver& operator=(const UmfpackSolver&) = delete;
 
   std::string name() const override { return "umfpack"; }
   Status analyze(const SparseMatrix& A, bool symmetric) override;
   Status factorize(const SparseMatrix& A) override;
-  Status solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
 
  private:
+  Status solveFactored(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
+
   void freeSymbolic();
   void freeNumeric();
 
@@ -29,15 +27,13 @@ class UmfpackSolver final : public LinearSolver {
   std::vector<double> info_;
   void* symbolic_ = nullptr;
   void* numeric_ = nullptr;
-  // Iterative refinement in solve() needs the factorized matrix: a copy of the
-  // pattern and of the values of the last factorize(), so that the caller may
-  // overwrite its matrix (the next tangent) while these factors are still used.
-  SparsePattern pattern_;
+  // Iterative refinement in solve() needs the factorized matrix: the recorded
+  // pattern and a copy of the values of the last factorize(), so that the caller
+  // may overwrite its matrix (the next tangent) while these factors are still used.
   std::vector<double> values_;
   std::vector<double> rhsCopy_;  // for solve(b, b)
   std::vector<int> intWork_;     // umfpack_di_wsolve workspace, sized in analyze()
   std::vector<double> work_;
-  bool factored_ = false;
 };
 
 }  // namespace c2d
