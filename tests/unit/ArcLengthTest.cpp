@@ -20,16 +20,10 @@ using testing::readCsv;
 
 TEST(ArcLength, ArchPathOnClosedForm) {
   const testing::DeckTempDir scratch;
-  const std::filesystem::path& dir = scratch.path();
-  DeckOptions opt;
-  opt.outDir = dir;
-  opt.quiet = true;
-  SolutionCommands commands;
-  std::ostringstream out;
-  const DeckOutcome o =
-      runDeck(std::string(C2D_SOURCE_DIR) + "/decks/pathfollowing/arch_arclength.inp", opt, commands, out);
-  ASSERT_EQ(o.exitCode, 0) << o.message;
-  const auto rows = readCsv(dir / "arch_arclength_tplot.csv").rows;
+  const testing::DeckResult ran =
+      testing::runSourceDeck(scratch, "pathfollowing/arch_arclength.inp");
+  ASSERT_EQ(ran.outcome.exitCode, 0) << ran.outcome.message;
+  const auto rows = readCsv(ran.out / "arch_arclength_tplot.csv").rows;
   ASSERT_GE(rows.size(), 100u);
   const double a = 1, h = 0.1, EA = 1e6, L0 = std::hypot(a, h);
   double wMax = 0, pMax = -1e30, pMin = 1e30;

@@ -28,9 +28,10 @@ const std::string kParams = "PARAmeter\n  L = 3\n  n = 2\n  P = 10\n\n";
 
 TEST(Batch, FailingDeckDoesNotStopTheOthers) {
   DeckTempDir dir;
-  const std::string good = kParams + testing::cantileverProblem(testing::rampBatch(3, "", ""), testing::rampData());
+  const std::string good = kParams + testing::rampProblem(3, "", "");
   const std::string a = dir.write("a.inp", good);
-  const std::string bad = dir.write("bad.inp", kParams + testing::cantileverProblem("  TANX,,1\n", ""));
+  const std::string bad =
+      dir.write("bad.inp", kParams + testing::cantileverProblem("  TANX,,1\n", ""));
   const std::string c = dir.write("c.inp", good);
   BatchOptions o;
   o.deck.outDir = dir.path() / "out";
@@ -70,8 +71,7 @@ TEST(Batch, FailingDeckDoesNotStopTheOthers) {
 
 TEST(Batch, AllGoodIsExitZeroAndAnalysisFailureIsTwo) {
   DeckTempDir dir;
-  const std::string good =
-      dir.write("g.inp", kParams + testing::cantileverProblem(testing::rampBatch(1, "", ""), testing::rampData()));
+  const std::string good = dir.write("g.inp", kParams + testing::rampProblem(1, "", ""));
   // One Newton iteration of a loop that never converges (tolerance 0 is refused,
   // so ask for an impossible one): the analysis fails with status 2.
   const std::string failing = dir.write(
@@ -91,15 +91,12 @@ TEST(Batch, AllGoodIsExitZeroAndAnalysisFailureIsTwo) {
 }
 
 // A loading in a hundred million steps: it runs until it is stopped.
-std::string endlessDeck() {
-  return kParams + testing::cantileverProblem(testing::rampBatch(100000000, "", ""), testing::rampData());
-}
+std::string endlessDeck() { return kParams + testing::rampProblem(100000000, "", ""); }
 
 TEST(Batch, TimeoutStopsAHangingDeckAndTheTableSaysSo) {
   DeckTempDir dir;
   const std::string endless = dir.write("endless.inp", endlessDeck());
-  const std::string good =
-      dir.write("g.inp", kParams + testing::cantileverProblem(testing::rampBatch(1, "", ""), testing::rampData()));
+  const std::string good = dir.write("g.inp", kParams + testing::rampProblem(1, "", ""));
   BatchOptions o;
   o.deck.outDir = dir.path() / "out";
   o.deck.quiet = true;
@@ -132,8 +129,7 @@ TEST(Batch, SignalToTheBatchStopsEveryRunningDeck) {
   DeckTempDir dir;
   const std::string e1 = dir.write("e1.inp", endlessDeck());
   const std::string e2 = dir.write("e2.inp", endlessDeck());
-  const std::string g = dir.write("g.inp", kParams + testing::cantileverProblem(testing::rampBatch(1, "", ""),
-                                                                              testing::rampData()));
+  const std::string g = dir.write("g.inp", kParams + testing::rampProblem(1, "", ""));
   const std::filesystem::path outDir = dir.path() / "out";
   const std::filesystem::path tableFile = dir.path() / "table.txt";
   std::fflush(nullptr);

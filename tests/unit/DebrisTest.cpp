@@ -7,13 +7,14 @@
 #include <fstream>
 #include <sstream>
 
+#include "elements/ElementFactory.h"
+#include "macro/DeckRunner.h"
+#include "macro/batch/BatchRunner.h"
 #include "macro/output/Debris.h"
 #include "macro/output/SvgDebris.h"
-#include "elements/ElementFactory.h"
-#include "macro/batch/BatchRunner.h"
-#include "macro/DeckRunner.h"
 #include "tests/unit/DeckTestSupport.h"
 #include "tests/unit/ElementTestSupport.h"
+#include "tests/unit/RunDeckSupport.h"
 
 namespace c2d {
 namespace {
@@ -165,17 +166,12 @@ TEST(Debris, PictureShowsFootprintSiteAndHistogram) {
 // sampled at the steps (dt = 5e-4, omega dt = 0.08).
 TEST(Debris, BarDropPeakGroundForce) {
   testing::DeckTempDir dir;
-  DeckOptions opt;
-  opt.outDir = dir.path();
-  opt.quiet = true;
-  const SolutionCommands commands;
-  std::ostringstream out;
-  const DeckOutcome o =
-      runDeck(std::string(C2D_SOURCE_DIR) + "/decks/collapse/bar_drop.inp", opt, commands, out);
+  const testing::DeckResult ran = testing::runSourceDeck(dir, "collapse/bar_drop.inp");
+  const DeckOutcome& o = ran.outcome;
   ASSERT_EQ(o.exitCode, 0) << o.message;
   EXPECT_EQ(o.total.debrisRuns, 1);
   EXPECT_EQ(o.total.outsideRuns, 0);
-  std::ifstream in(dir.path() / "bar_drop_debris.csv");
+  std::ifstream in(ran.out / "bar_drop_debris.csv");
   std::string header, row;
   ASSERT_TRUE(std::getline(in, header));
   ASSERT_TRUE(std::getline(in, row));
@@ -210,17 +206,11 @@ TEST(Debris, ANodeDeeperThanHalfItsSectionIsBuriedAndWarned) {
   std::ofstream(deck) << "PARAmeter\n  L = 2\n  n = 4\n  h0 = 0.05\n  k = 1e2\n  g = 9.81\n"
                          "  e = 1\n\nINCLude,"
                       << C2D_SOURCE_DIR << "/decks/collapse/bar_drop.inc\n\nSTOP\n";
-  DeckOptions opt;
-  opt.outDir = dir.path();
-  opt.quiet = true;
-  const SolutionCommands commands;
-  std::ostringstream out;
-  const DeckOutcome o = runDeck(deck.string(), opt, commands, out);
+  const testing::DeckResult ran = testing::runDeckFile(dir, deck.string());
+  const DeckOutcome& o = ran.outcome;
   ASSERT_EQ(o.exitCode, 0) << o.message;
   EXPECT_EQ(o.total.sunk, 1);
-  std::ifstream log(dir.path() / "soft_ground.out");
-  const std::string text((std::istreambuf_iterator<char>(log)),
-                         std::istreambuf_iterator<char>());
+  const std::string& text = ran.log;
   const double L = 2, n = 4, h0 = 0.05, k = 1e2, g = 9.81, m = L;
   const double K = (n + 1) * k, v0 = std::sqrt(2 * g * h0);
   const double pen = m * g / K + std::sqrt(std::pow(m * g / K, 2) + m * v0 * v0 / K);

@@ -10,17 +10,18 @@
 #include <fstream>
 #include <sstream>
 
-#include "macro/deck/DeckParser.h"
-#include "macro/mesh/ParseDeck.h"
 #include "macro/DeckRunner.h"
-#include "macro/draws/Ensemble.h"
-#include "macro/studies/EnsembleTable.h"
-#include "macro/draws/Jitter.h"
 #include "macro/batch/Merge.h"
 #include "macro/batch/ParallelRuns.h"
+#include "macro/deck/DeckParser.h"
+#include "macro/draws/Ensemble.h"
+#include "macro/draws/Jitter.h"
+#include "macro/mesh/ParseDeck.h"
+#include "macro/studies/EnsembleTable.h"
 #include "macro/studies/Statistics.h"
 #include "tests/unit/DeckTestSupport.h"
 #include "tests/unit/EnsembleTestSupport.h"
+#include "tests/unit/RunDeckSupport.h"
 
 namespace c2d {
 namespace {
@@ -100,12 +101,7 @@ TEST(EnsembleDecks, ADrawThatMakesTheDeckBadIsReportedWithItsSample) {
                 "ELEMents\n  1 0 1 1 2\n\nMATErial,1\n  FRAMe\n"
                 "    RESUltant STIFfness 1 1 1\n\nBOUNdary\n  1 0 1 1 1\n\nEND\n"
                 "BATCh\n  DT,,h\nEND\nSTOP\n");
-  DeckOptions o;
-  o.outDir = dir.path() / "out";
-  o.quiet = true;
-  const SolutionCommands commands;
-  std::ostringstream console;
-  const DeckOutcome r = runDeck(deck, o, commands, console);
+  const DeckOutcome r = testing::runDeckFile(dir, deck).outcome;
   EXPECT_EQ(r.exitCode, kExitDeckError);
   EXPECT_NE(r.message.find("bad.inp:22:7: error: the time step must be positive"),
             std::string::npos)
@@ -122,16 +118,11 @@ TEST(EnsembleDecks, ADrawThatMakesTheDeckBadIsReportedWithItsSample) {
 // whose failure, if any, said nothing of the blast); sample 2 runs.
 TEST(EnsembleDecks, ABlastScatteredIntoAStaticStepFailsItsSampleNamingIt) {
   testing::DeckTempDir dir;
-  DeckOptions o;
-  o.outDir = dir.path();
-  o.quiet = true;
-  const SolutionCommands commands;
-  std::ostringstream console;
-  const std::string deck =
-      std::string(C2D_SOURCE_DIR) + "/decks/errors/detonators_into_statics.inp";
-  const DeckOutcome r = runDeck(deck, o, commands, console);
+  const std::string deck = testing::sourceDeck("errors/detonators_into_statics.inp");
+  const testing::DeckResult ran = testing::runDeckFile(dir, deck);
+  const DeckOutcome& r = ran.outcome;
   EXPECT_EQ(r.exitCode, 2) << r.message;
-  const EnsembleData data = table(dir.path() / "detonators_into_statics_ensemble.csv", 0);
+  const EnsembleData data = table(ran.out / "detonators_into_statics_ensemble.csv", 0);
   ASSERT_EQ(data.runs.size(), 3u);
   for (int k : {0, 2}) {
     const std::string& why = data.runs[k].reason;

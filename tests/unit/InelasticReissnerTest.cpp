@@ -27,8 +27,9 @@
 #include "solvers/Analysis.h"
 #include "solvers/ProportionalLoad.h"
 #include "solvers/TimeIntegrator.h"
-#include "tests/unit/ElementTestSupport.h"
 #include "tests/unit/DeckTestSupport.h"
+#include "tests/unit/ElementTestSupport.h"
+#include "tests/unit/RunDeckSupport.h"
 #include "tests/unit/V2Material.h"
 
 namespace c2d {
@@ -210,14 +211,8 @@ TEST(InelasticReissnerV2, EndMomentThroughFailureToOneRadian) {
 // 1.6e-4 kN m, 6e-7 of the largest energy, the sum of the three jumps).
 TEST(InelasticReissnerPush, TwoStoryFrameClosesItsBalanceThroughTheJointsItForms) {
   const testing::DeckTempDir scratch;
-  const std::filesystem::path& dir = scratch.path();
-  DeckOptions opt;
-  opt.outDir = dir;
-  opt.quiet = true;
-  const SolutionCommands commands;
-  std::ostringstream out;
-  const DeckOutcome o = runDeck(
-      std::string(C2D_SOURCE_DIR) + "/decks/finite/two_story_frame_finite.inp", opt, commands, out);
+  const DeckOutcome o =
+      testing::runSourceDeck(scratch, "finite/two_story_frame_finite.inp").outcome;
   ASSERT_EQ(o.exitCode, 0) << o.message;
   EXPECT_EQ(o.total.jointsFormed, 6);
   EXPECT_LT(o.total.energyError, 1e-8);

@@ -19,16 +19,11 @@ namespace {
 
 TEST(InfillDeck, PushoverFollowsTheFramePlusStrutClosedForm) {
   testing::DeckTempDir dir;
-  DeckOptions o;
-  o.outDir = dir.path();
-  o.quiet = true;
-  const SolutionCommands commands;
-  std::ostringstream console;
-  const DeckOutcome out = runDeck(std::string(C2D_SOURCE_DIR) + "/decks/infill/infilled_frame.inp",
-                                  o, commands, console);
+  const testing::DeckResult ran = testing::runSourceDeck(dir, "infill/infilled_frame.inp");
+  const DeckOutcome& out = ran.outcome;
   ASSERT_EQ(out.exitCode, 0) << out.message;
-  const testing::Csv wall = testing::readCsv(dir.path() / "infilled_frame_op=0_tplot.csv");
-  const testing::Csv bare = testing::readCsv(dir.path() / "infilled_frame_op=1_tplot.csv");
+  const testing::Csv wall = testing::readCsv(ran.out / "infilled_frame_op=0_tplot.csv");
+  const testing::Csv bare = testing::readCsv(ran.out / "infilled_frame_op=1_tplot.csv");
   const std::vector<double> H = wall.column("reac_4_1"), u = wall.column("disp_4_1");
   const std::vector<double> Hb = bare.column("reac_4_1"), ub = bare.column("disp_4_1");
   ASSERT_GT(H.size(), 90u);
@@ -59,7 +54,7 @@ TEST(InfillDeck, PushoverFollowsTheFramePlusStrutClosedForm) {
   // Past 10 u_p the panel is gone: the bare frame's curve.
   ASSERT_GT(u.back(), 10.5 * up);
   EXPECT_NEAR(H.back(), Hb.back(), 1e-9 * Hb.back());
-  const std::string log = testing::readText(dir.path() / "infilled_frame.out");
+  const std::string& log = ran.log;
   EXPECT_NE(log.find("infill panel 1 crushed at t ="), std::string::npos);
 }
 

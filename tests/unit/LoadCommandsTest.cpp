@@ -6,45 +6,24 @@
 #include <sstream>
 
 #include "elements/ModelCheckpoint.h"
-#include "macro/deck/DeckParser.h"
-#include "macro/mesh/ParseDeck.h"
-#include "macro/mesh/MeshBinder.h"
 #include "solvers/ModelFingerprint.h"
-#include "tests/unit/DeckTestSupport.h"
+#include "tests/unit/MeshBuildSupport.h"
 
 namespace c2d {
 namespace {
 
-// Lines 3-14: three elements along x (nodes 1-4), then the tested commands from line 15.
-const std::string kBeam =
-    "COOR\n 1 1 0 0\n 4 0 3 0\n\n"
-    "MATErial,1\n FRAMe\n RESUltant STIFfness 1e7 1e7 1e4\n\n"
-    "ELEM\n 1 1 1 1 2\n 3 0 1 3 4\n\n";
-
-Model build(const std::string& mesh, std::ostream* echo = nullptr) {
-  const Deck d = parseDeckText("FEAP * * test\n0 0 0 2 3 2\n" + mesh + "END\nSTOP\n", "mesh.inp");
-  const Problem& pr = std::get<Problem>(d.items.at(0));
-  Parameters params;
-  Model model;
-  MeshBinder binder(model, params, echo);
-  binder.setControl(pr.control);
-  binder.apply(pr.mesh);
-  binder.finish(pr.meshEnd.loc, pr.meshEnd.lineText());
-  return model;
-}
-
-void expectError(const std::string& mesh, int line, int col, const std::string& msg) {
-  testing::expectDeckError([&] { build(mesh); }, "mesh.inp", line, col, msg);
-}
+using testing::buildMesh;
+using testing::expectMeshError;
+using testing::kBeamMesh;
 
 TEST(LoadCommands, QloadMassAndSiteEnterTheModel) {
   std::ostringstream echo;
-  const Model m = build(kBeam +
-                            "GRAV,,0,-10\n"
-                            "QLOAd\n 1 3 2 0 -5\n 2 0 0 1 -20 mass\n\n"
-                            "MASS\n 1 2 2 2 0.1\n 3 0 4 4 0\n\n"
-                            "SITE,,-2,8\n",
-                        &echo);
+  const Model m = buildMesh(kBeamMesh +
+                                "GRAV,,0,-10\n"
+                                "QLOAd\n 1 3 2 0 -5\n 2 0 0 1 -20 mass\n\n"
+                                "MASS\n 1 2 2 2 0.1\n 3 0 4 4 0\n\n"
+                                "SITE,,-2,8\n",
+                            &echo);
   ASSERT_EQ(m.elementLoads().size(), 3u);
   EXPECT_EQ(m.elementLoads()[0].element, 0);
   EXPECT_EQ(m.elementLoads()[1].element, 2);  // 1..3 step 2
@@ -64,7 +43,7 @@ TEST(LoadCommands, QloadMassAndSiteEnterTheModel) {
   EXPECT_NE(echo.str().find("N o d a l   M a s s e s"), std::string::npos);
   EXPECT_NE(echo.str().find("S i t e"), std::string::npos);
 
-  const Model g = build(kBeam + "MASS\n 1 1 1 1 0\n 4 0 4 4 0\n\n");
+  const Model g = buildMesh(kBeamMesh + "MASS\n 1 1 1 1 0\n 4 0 4 4 0\n\n");
   for (int n = 0; n < 4; ++n) EXPECT_DOUBLE_EQ(g.nodalMass(n)[1], n + 1.0);  // linear generation
 }
 
@@ -72,15 +51,15 @@ TEST(LoadCommands, QloadMassAndSiteEnterTheModel) {
 // crashed): QLOAd loads element 1 only, MASS generates nothing between its records.
 TEST(LoadCommands, IncrementsNearIntMaxEndTheRange) {
   const std::string big = std::to_string(INT_MAX);
-  const Model m = build(kBeam + "QLOAd\n 1 3 " + big + " 0 -5\n\n" +
-                        "MASS\n 1 " + big + " 1 1 0\n 4 0 2 2 0\n\n");
+  const Model m = buildMesh(kBeamMesh + "QLOAd\n 1 3 " + big + " 0 -5\n\n" + "MASS\n 1 " + big +
+                            " 1 1 0\n 4 0 2 2 0\n\n");
   ASSERT_EQ(m.elementLoads().size(), 1u);
   EXPECT_EQ(m.elementLoads()[0].element, 0);
   EXPECT_EQ(m.nodalMass(0)[0], 1);
   EXPECT_EQ(m.nodalMass(1)[0], 0);
   EXPECT_EQ(m.nodalMass(2)[0], 0);
   EXPECT_EQ(m.nodalMass(3)[0], 2);
-  const Model down = build(kBeam + "MASS\n 4 -" + big + " 1 1 0\n 1 0 2 2 0\n\n");
+  const Model down = buildMesh(kBeamMesh + "MASS\n 4 -" + big + " 1 1 0\n 1 0 2 2 0\n\n");
   EXPECT_EQ(down.nodalMass(3)[0], 1);
   EXPECT_EQ(down.nodalMass(2)[0], 0);
   EXPECT_EQ(down.nodalMass(0)[0], 2);
@@ -88,8 +67,8 @@ TEST(LoadCommands, IncrementsNearIntMaxEndTheRange) {
 
 // A restart file keeps the floor loads, the nodal masses and the site.
 TEST(LoadCommands, RestartKeepsThem) {
-  const Model m =
-      build(kBeam + "GRAV,,0,-10\nQLOAd\n 2 0 0 0.5 -5 MASS\n\nMASS\n 4 0 1 2 3\n\nSITE,,-1,4\n");
+  const Model m = buildMesh(
+      kBeamMesh + "GRAV,,0,-10\nQLOAd\n 2 0 0 0.5 -5 MASS\n\nMASS\n 4 0 1 2 3\n\nSITE,,-1,4\n");
   std::stringstream bytes(std::ios::in | std::ios::out | std::ios::binary);
   writeModel(bytes, m);
   const Model r = readModel(bytes, 0);
@@ -107,7 +86,7 @@ TEST(LoadCommands, RestartKeepsThem) {
 TEST(LoadCommands, TheRestartFingerprintSeesThem) {
   const std::string grav = "GRAV,,0,-10\n";
   const auto print = [&](const std::string& mesh) {
-    return ModelFingerprint::of(build(kBeam + grav + mesh));
+    return ModelFingerprint::of(buildMesh(kBeamMesh + grav + mesh));
   };
   const ModelFingerprint base = print("QLOAd\n 1 0 0 0 -5\n\nSITE,,-1,4\n");
   EXPECT_EQ(base.differences(print("QLOAd\n 1 0 0 0 -5\n\nSITE,,-1,4\n")), "");
@@ -121,32 +100,35 @@ TEST(LoadCommands, TheRestartFingerprintSeesThem) {
 }
 
 TEST(LoadCommands, Errors) {
-  expectError(kBeam + "QLOAd\n 1 3 1 0 -5 WEIGHT\n\n", 16, 13, "unknown option 'WEIGHT'");
-  expectError(kBeam + "QLOAd\n 2 5 1 0 -5\n\n", 16, 4, "QLOAd: element 4 is not defined");
-  expectError(kBeam + "QLOAd\n 3 1 1 0 -5\n\n", 16, 4, "the last element 1 comes before the first");
-  expectError(kBeam + "QLOAd\n 1 3 1 0 -5 MASS\n\n", 16, 13, "QLOAd with MASS needs GRAVity");
-  expectError(kBeam + "MASS\n 2 0 1 -1 0\n\n", 16, 8, "a mass must not be negative");
-  expectError(kBeam + "SITE,,5,1\n", 15, 9, "xmax must be greater than xmin");
-  expectError(kBeam + "SITE,,5\n", 15, 8, "SITE needs xmin and xmax");
-  expectError(kBeam + "SITE,1,5\n", 15, 6, "SITE takes no option word");
-  expectError(kBeam + "SITE,X,1,5\n", 15, 6, "SITE takes no option word");
+  expectMeshError(kBeamMesh + "QLOAd\n 1 3 1 0 -5 WEIGHT\n\n", 16, 13, "unknown option 'WEIGHT'");
+  expectMeshError(kBeamMesh + "QLOAd\n 2 5 1 0 -5\n\n", 16, 4, "QLOAd: element 4 is not defined");
+  expectMeshError(kBeamMesh + "QLOAd\n 3 1 1 0 -5\n\n", 16, 4,
+                  "the last element 1 comes before the first");
+  expectMeshError(kBeamMesh + "QLOAd\n 1 3 1 0 -5 MASS\n\n", 16, 13,
+                  "QLOAd with MASS needs GRAVity");
+  expectMeshError(kBeamMesh + "MASS\n 2 0 1 -1 0\n\n", 16, 8, "a mass must not be negative");
+  expectMeshError(kBeamMesh + "SITE,,5,1\n", 15, 9, "xmax must be greater than xmin");
+  expectMeshError(kBeamMesh + "SITE,,5\n", 15, 8, "SITE needs xmin and xmax");
+  expectMeshError(kBeamMesh + "SITE,1,5\n", 15, 6, "SITE takes no option word");
+  expectMeshError(kBeamMesh + "SITE,X,1,5\n", 15, 6, "SITE takes no option word");
   // A second site or ground in one mesh input would silently replace the first.
-  expectError(kBeam + "SITE,,-1,4\nSITE,,0,5\n", 16, 1, "a second SITE (the first is on line 15)");
-  expectError(kBeam + "CONTact\n GROUnd,,0,1e5\n\nCONTact\n GROUnd,,-1,1e5\n\n", 19, 2,
-              "a second GROUnd record (the first is on line 16)");
+  expectMeshError(kBeamMesh + "SITE,,-1,4\nSITE,,0,5\n", 16, 1,
+                  "a second SITE (the first is on line 15)");
+  expectMeshError(kBeamMesh + "CONTact\n GROUnd,,0,1e5\n\nCONTact\n GROUnd,,-1,1e5\n\n", 19, 2,
+                  "a second GROUnd record (the first is on line 16)");
 }
 
 // SITE's direction and optional block: zones, FLYRock, RISK; without records
 // (the command record alone, followed at once by a command) as decks wrote it.
 TEST(LoadCommands, SiteZonesAndDirection) {
-  const Model m = build(kBeam +
-                        "SITE,,-2,8,RIGHt\n"
-                        " wall -6 -4 3 0.5\n"
-                        " road,10,14\n"
-                        " FLYRock,,0.2\n"
-                        " RISK,,0.05,0.9\n"
-                        "\n"
-                        "GRAV,,0,-10\n");
+  const Model m = buildMesh(kBeamMesh +
+                            "SITE,,-2,8,RIGHt\n"
+                            " wall -6 -4 3 0.5\n"
+                            " road,10,14\n"
+                            " FLYRock,,0.2\n"
+                            " RISK,,0.05,0.9\n"
+                            "\n"
+                            "GRAV,,0,-10\n");
   ASSERT_TRUE(m.site().has_value());
   const Site& s = *m.site();
   EXPECT_EQ(s.dir, FallDirection::Right);
@@ -171,15 +153,17 @@ TEST(LoadCommands, SiteZonesAndDirection) {
   EXPECT_EQ(zones[1].name, "wall");
 
   // No records: the next command follows at once (or after a blank record).
-  for (const char* tail : {"SITE,,-2,8,down\nGRAV,,0,-10\n", "SITE,,-2,8,LEFT\n\nGRAV,,0,-10\n",
-                                   "SITE,,-2,8\n"}) {
-    const Model n = build(kBeam + tail);
+  for (const char* tail :
+       {"SITE,,-2,8,down\nGRAV,,0,-10\n", "SITE,,-2,8,LEFT\n\nGRAV,,0,-10\n", "SITE,,-2,8\n"}) {
+    const Model n = buildMesh(kBeamMesh + tail);
     ASSERT_TRUE(n.site().has_value()) << tail;
     EXPECT_TRUE(n.site()->objects.empty()) << tail;
     EXPECT_EQ(n.site()->flyrockMass, -1) << tail;
   }
-  EXPECT_EQ(build(kBeam + "SITE,,-2,8,down\nGRAV,,0,-10\n").site()->dir, FallDirection::Down);
-  EXPECT_EQ(protectedZones(*build(kBeam + "SITE,,-2,8,LEFT\n").site()).front().name, "right");
+  EXPECT_EQ(buildMesh(kBeamMesh + "SITE,,-2,8,down\nGRAV,,0,-10\n").site()->dir,
+            FallDirection::Down);
+  EXPECT_EQ(protectedZones(*buildMesh(kBeamMesh + "SITE,,-2,8,LEFT\n").site()).front().name,
+            "right");
 
   // The restart file and the fingerprint keep them.
   std::stringstream bytes(std::ios::in | std::ios::out | std::ios::binary);
@@ -193,25 +177,30 @@ TEST(LoadCommands, SiteZonesAndDirection) {
   EXPECT_EQ(r.site()->flyrockMass, 0.2);
   EXPECT_EQ(r.site()->riskConfidence, 0.9);
   EXPECT_EQ(ModelFingerprint::of(r).site, ModelFingerprint::of(m).site);
-  EXPECT_NE(ModelFingerprint::of(build(kBeam + "SITE,,-2,8,RIGHt\n wall -6 -4 3 0.4\n\n")).site,
-            ModelFingerprint::of(build(kBeam + "SITE,,-2,8,RIGHt\n wall -6 -4 3 0.5\n\n")).site);
+  EXPECT_NE(
+      ModelFingerprint::of(buildMesh(kBeamMesh + "SITE,,-2,8,RIGHt\n wall -6 -4 3 0.4\n\n")).site,
+      ModelFingerprint::of(buildMesh(kBeamMesh + "SITE,,-2,8,RIGHt\n wall -6 -4 3 0.5\n\n")).site);
 }
 
 TEST(LoadCommands, SiteBlockErrors) {
-  expectError(kBeam + "SITE,,-2,8,UP\n", 15, 12, "unknown direction 'UP'");
-  expectError(kBeam + "SITE,,-2,8\n left -6 -4\n\n", 16, 2, "'left' is the name of a side");
-  expectError(kBeam + "SITE,,-2,8\n w-1 -6 -4\n\n", 16, 2, "'w-1' is not a zone name");
-  expectError(kBeam + "SITE,,-2,8\n wall -4 -6\n\n", 16, 10, "x2 must be greater than x1");
-  expectError(kBeam + "SITE,,-2,8\n wall -6\n\n", 16, 9, "the zone needs x1 and x2");
-  expectError(kBeam + "SITE,,-2,8\n wall -6 -4 -1\n\n", 16, 13, "the height must not be negative");
-  expectError(kBeam + "SITE,,-2,8\n wall -6 -4 0 -1\n\n", 16, 15, "the mass must not be negative");
-  expectError(kBeam + "SITE,,-2,8\n wall -6 -4\n Wall 1 2\n\n", 17, 2,
-              "a second zone named 'Wall'");
-  expectError(kBeam + "SITE,,-2,8\n FLYRock,,-1\n\n", 16, 11, "the flyrock mass must not be negative");
-  expectError(kBeam + "SITE,,-2,8\n RISK,,1.5\n\n", 16, 8, "the risk p must lie in (0, 1)");
-  expectError(kBeam + "SITE,,-2,8\n RISK,,0.01,95\n\n", 16, 13, "the confidence must lie in (0, 1)");
-  expectError(kBeam + "SITE,,-2,8\n wall -6 -4\nGRAV,,0,-10\n", 17, 1,
-              "the data set of 'SITE' (line 15) is not ended by a blank record");
+  expectMeshError(kBeamMesh + "SITE,,-2,8,UP\n", 15, 12, "unknown direction 'UP'");
+  expectMeshError(kBeamMesh + "SITE,,-2,8\n left -6 -4\n\n", 16, 2, "'left' is the name of a side");
+  expectMeshError(kBeamMesh + "SITE,,-2,8\n w-1 -6 -4\n\n", 16, 2, "'w-1' is not a zone name");
+  expectMeshError(kBeamMesh + "SITE,,-2,8\n wall -4 -6\n\n", 16, 10, "x2 must be greater than x1");
+  expectMeshError(kBeamMesh + "SITE,,-2,8\n wall -6\n\n", 16, 9, "the zone needs x1 and x2");
+  expectMeshError(kBeamMesh + "SITE,,-2,8\n wall -6 -4 -1\n\n", 16, 13,
+                  "the height must not be negative");
+  expectMeshError(kBeamMesh + "SITE,,-2,8\n wall -6 -4 0 -1\n\n", 16, 15,
+                  "the mass must not be negative");
+  expectMeshError(kBeamMesh + "SITE,,-2,8\n wall -6 -4\n Wall 1 2\n\n", 17, 2,
+                  "a second zone named 'Wall'");
+  expectMeshError(kBeamMesh + "SITE,,-2,8\n FLYRock,,-1\n\n", 16, 11,
+                  "the flyrock mass must not be negative");
+  expectMeshError(kBeamMesh + "SITE,,-2,8\n RISK,,1.5\n\n", 16, 8, "the risk p must lie in (0, 1)");
+  expectMeshError(kBeamMesh + "SITE,,-2,8\n RISK,,0.01,95\n\n", 16, 13,
+                  "the confidence must lie in (0, 1)");
+  expectMeshError(kBeamMesh + "SITE,,-2,8\n wall -6 -4\nGRAV,,0,-10\n", 17, 1,
+                  "the data set of 'SITE' (line 15) is not ended by a blank record");
 }
 
 }  // namespace

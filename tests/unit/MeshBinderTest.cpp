@@ -6,39 +6,27 @@
 #include <sstream>
 
 #include "macro/deck/DeckParser.h"
-#include "macro/mesh/ParseDeck.h"
 #include "macro/deck/DeckReader.h"
 #include "macro/mesh/MeshBinder.h"
+#include "macro/mesh/ParseDeck.h"
 #include "materials/RcSection.h"
-#include "tests/unit/DeckTestSupport.h"
+#include "tests/unit/MeshBuildSupport.h"
 
 namespace c2d {
 namespace {
 
 using testing::DeckTempDir;
 using testing::expectDeckError;
+using testing::meshDeck;
 
 const char* kMaterial =
     "MATErial,1\n FRAMe\n ELAStic ISOTropic 200e6 0.3\n CROSs SECTion 0.01 1e-4\n\n";
-
-// A deck with one problem whose mesh is 'mesh' (control record 0 0 0 2 3 2 unless given).
-std::string deck(const std::string& mesh, const std::string& control = "0 0 0 2 3 2") {
-  return "FEAP * * test\n" + control + "\n" + mesh + "END\nSTOP\n";
-}
 
 // The mesh of a one-problem deck applied to a new model (the mesh may lack elements;
 // buildModel, which insists on them, is tested on its own).
 Model build(const std::string& mesh, Parameters* params = nullptr, std::ostream* echo = nullptr,
             const std::string& control = "0 0 0 2 3 2") {
-  const Deck d = parseDeckText(deck(mesh, control), "mesh.inp");
-  const Problem& pr = std::get<Problem>(d.items.at(0));
-  Parameters local;
-  Model model;
-  MeshBinder binder(model, params ? *params : local, echo);
-  binder.setControl(pr.control);
-  binder.apply(pr.mesh);
-  binder.finish(pr.meshEnd.loc, pr.meshEnd.lineText());
-  return model;
+  return testing::buildMesh(mesh, echo, control, params);
 }
 
 void expectBuildError(const std::string& mesh, int line, int col, const std::string& msg,
@@ -401,11 +389,11 @@ TEST(MeshBinderControl, LimitsAndChecks) {
 }
 
 TEST(MeshBinderControl, BuildModelNeedsElements) {
-  const Deck empty = parseDeckText(deck("COOR\n 1 0 0 0\n\n"), "empty.inp");
+  const Deck empty = parseDeckText(meshDeck("COOR\n 1 0 0 0\n\n"), "empty.inp");
   Parameters p;
   expectDeckError([&] { buildModel(std::get<Problem>(empty.items[0]), p, nullptr); }, "empty.inp",
                   6, 1, "the mesh has no elements");
-  const Deck ok = parseDeckText(deck(kPortal), "ok.inp");
+  const Deck ok = parseDeckText(meshDeck(kPortal), "ok.inp");
   std::ostringstream echo;
   const Model m = buildModel(std::get<Problem>(ok.items[0]), p, &echo);
   EXPECT_EQ(m.numElements(), 8);
@@ -425,7 +413,7 @@ TEST(MeshBinderReentry, ApplyMeshChangesAnExistingModel) {
   Parameters p;
   Model m = build(kPortal, &p);
   const int version = m.topologyVersion();
-  const Deck more = parseDeckText(deck("PARA\n f = -3\n\nFORC\n 5 0 0 f 0\n\n"), "more.inp");
+  const Deck more = parseDeckText(meshDeck("PARA\n f = -3\n\nFORC\n 5 0 0 f 0\n\n"), "more.inp");
   const auto& items = std::get<Problem>(more.items[0]).mesh;
   applyMesh(items, p, m, nullptr);
   EXPECT_EQ(m.force(4)[1], -3.0);

@@ -30,9 +30,8 @@ const XmlNode* dataArray(const XmlNode& vtu, const std::string& name) {
 
 TEST(PView, CollectionEveryIncSteps) {
   DeckTempDir dir;
-  const auto r = testing::runDeckText(
-      dir, "pv.inp",
-      kParams + testing::cantileverProblem(testing::rampBatch(4, "  PVIEw,,2\n", ""), testing::rampData()));
+  const auto r =
+      testing::runDeckText(dir, "pv.inp", kParams + testing::rampProblem(4, "  PVIEw,,2\n", ""));
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
   const XmlNode pvd = XmlReader::parse(readText(r.out / "pv.pvd"));
   const auto sets = pvd.all("DataSet");
@@ -60,9 +59,8 @@ TEST(PView, FinalStateEndsTheCollection) {
   // Five steps, output every second: the initial state, steps 2 and 4, and the
   // final step 5 although 5 is not a multiple of 2. Times as the deck gives them.
   DeckTempDir dir;
-  const auto r = testing::runDeckText(
-      dir, "fin.inp",
-      kParams + testing::cantileverProblem(testing::rampBatch(5, "  PVIEw,,2\n", ""), testing::rampData()));
+  const auto r =
+      testing::runDeckText(dir, "fin.inp", kParams + testing::rampProblem(5, "  PVIEw,,2\n", ""));
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
   const XmlNode pvd = XmlReader::parse(readText(r.out / "fin.pvd"));
   const auto sets = pvd.all("DataSet");

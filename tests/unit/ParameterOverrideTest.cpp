@@ -61,9 +61,8 @@ double lastTip(const std::filesystem::path& csv) {
   return testing::readCsv(csv).column("disp_3_2").back();
 }
 
-const std::string kCantilever =
-    "PARAmeter\n  L = 3\n  n = 2\n  q = 5\n  P = 2*q\n\n" +
-    testing::cantileverProblem(testing::rampBatch(1, "", ""), testing::rampData()) + "STOP\n";
+const std::string kCantilever = "PARAmeter\n  L = 3\n  n = 2\n  q = 5\n  P = 2*q\n\n" +
+                                testing::rampProblem(1, "", "") + "STOP\n";
 
 TEST(ParameterOverride, ARunTakesTheGivenValueAndWhatDerivesFromIt) {
   DeckTempDir dir;
@@ -88,18 +87,16 @@ TEST(ParameterOverride, ANameTheDeckDoesNotAssignIsAUsageError) {
 
 TEST(ParameterOverride, ASweptOrDrawnNameIsADeckErrorAtItsRecord) {
   DeckTempDir dir;
-  const std::string swept =
-      "PARAmeter\n  L = 3\n  n = 2\n\nSWEEp\n  P = 5 10\n\n" +
-      testing::cantileverProblem(testing::rampBatch(1, "", ""), testing::rampData()) + "STOP\n";
+  const std::string swept = "PARAmeter\n  L = 3\n  n = 2\n\nSWEEp\n  P = 5 10\n\n" +
+                            testing::rampProblem(1, "", "") + "STOP\n";
   const Given g = runGiven(dir, swept, {{"P", 15}});
   EXPECT_EQ(g.outcome.exitCode, kExitDeckError);
   ASSERT_TRUE(g.outcome.errorAt.has_value());
   EXPECT_EQ(g.outcome.errorAt->line, 6);
   EXPECT_NE(g.outcome.message.find("'P' is swept by this study"), std::string::npos)
       << g.outcome.message;
-  const std::string drawn =
-      "PARAmeter\n  L = 3\n  n = 2\n\nENSEmble,,2,1\n  P = UNIForm 5 10\n\n" +
-      testing::cantileverProblem(testing::rampBatch(1, "", ""), testing::rampData()) + "STOP\n";
+  const std::string drawn = "PARAmeter\n  L = 3\n  n = 2\n\nENSEmble,,2,1\n  P = UNIForm 5 10\n\n" +
+                            testing::rampProblem(1, "", "") + "STOP\n";
   const Given h = runGiven(dir, drawn, {{"P", 15}});
   EXPECT_EQ(h.outcome.exitCode, kExitDeckError);
   ASSERT_TRUE(h.outcome.errorAt.has_value());

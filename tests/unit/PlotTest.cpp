@@ -37,9 +37,7 @@ int pathPoints(const std::string& d) {
 TEST(PlotCommand, MeshAndDeformedShapePictures) {
   DeckTempDir dir;
   const auto r = testing::runDeckText(
-      dir, "beam.inp",
-      kParams + testing::cantileverProblem(testing::rampBatch(4, "  PLOT,MESH\n", "  PLOT,DEFOrmed\n"),
-                                           testing::rampData()));
+      dir, "beam.inp", kParams + testing::rampProblem(4, "  PLOT,MESH\n", "  PLOT,DEFOrmed\n"));
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
   const XmlNode mesh = XmlReader::parse(readText(r.out / "beam_mesh.svg"));
   EXPECT_EQ(mesh.name, "svg");

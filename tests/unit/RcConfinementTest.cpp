@@ -68,17 +68,14 @@ double chordRotationAtDrop(const testing::Csv& csv, double H) {
 
 TEST(RcConfinement, CantileversDifferingInTheirLinksBesideEquationA1) {
   const testing::DeckTempDir scratch;
-  const std::filesystem::path& dir = scratch.path();
-  DeckOptions opt;
-  opt.outDir = dir;
-  opt.quiet = true;
-  const SolutionCommands commands;
-  std::ostringstream console;
-  const DeckOutcome o = runDeck(std::string(C2D_SOURCE_DIR) + "/decks/rc/stirrup_rotation.inp",
-                                opt, commands, console);
-  ASSERT_EQ(o.exitCode, kExitOk) << console.str();
-  const double H = 3, dense = chordRotationAtDrop(testing::readCsv(dir / "stirrup_rotation_s=0.1_tplot.csv"), H),
-               sparse = chordRotationAtDrop(testing::readCsv(dir / "stirrup_rotation_s=0.3_tplot.csv"), H);
+  const testing::DeckResult ran = testing::runSourceDeck(scratch, "rc/stirrup_rotation.inp");
+  ASSERT_EQ(ran.outcome.exitCode, kExitOk) << ran.console;
+  const std::filesystem::path& dir = ran.out;
+  const double H = 3,
+               dense = chordRotationAtDrop(
+                   testing::readCsv(dir / "stirrup_rotation_s=0.1_tplot.csv"), H),
+               sparse = chordRotationAtDrop(
+                   testing::readCsv(dir / "stirrup_rotation_s=0.3_tplot.csv"), H);
   // EN 1998-3 (A.1), mean, L_V/h = 6 (hand: see the test above).
   const double lv = std::pow(6.0, 0.35);
   const double a1Dense = 0.016 * std::pow(0.3, 1000 / 7.5e3) * std::pow(30.0, 0.225) *

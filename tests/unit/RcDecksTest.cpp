@@ -24,19 +24,13 @@ namespace {
 
 // A deck's run in a directory of its own, removed with it.
 struct Ran {
-  explicit Ran(const std::string& deck) {
-    DeckOptions opt;
-    opt.outDir = dir;
-    opt.quiet = true;
-    const SolutionCommands commands;
-    std::ostringstream console;
-    const DeckOutcome o =
-        runDeck(std::string(C2D_SOURCE_DIR) + "/decks/rc/" + deck, opt, commands, console);
-    EXPECT_EQ(o.exitCode, 0) << o.message;
-    log = testing::readText(dir / (std::filesystem::path(deck).stem().string() + ".out"));
+  explicit Ran(const std::string& deck)
+      : ran(testing::runSourceDeck(scratch, "rc/" + deck)), dir(ran.out), log(ran.log) {
+    EXPECT_EQ(ran.outcome.exitCode, 0) << ran.outcome.message;
   }
   const testing::DeckTempDir scratch;
-  const std::filesystem::path dir = scratch.path();
+  const testing::DeckResult ran;
+  const std::filesystem::path dir;
   std::string log;
 };
 

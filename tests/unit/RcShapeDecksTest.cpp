@@ -28,8 +28,7 @@ using testing::DeckTempDir;
 const double kPi = std::acos(-1.0);
 
 DeckResult runRcDeck(const DeckTempDir& dir, const std::string& name) {
-  const std::string deck = testing::readText(std::string(C2D_SOURCE_DIR) + "/decks/rc/" + name);
-  DeckResult r = testing::runDeckText(dir, name, deck);
+  DeckResult r = testing::runSourceDeck(dir, "rc/" + name);
   EXPECT_EQ(r.outcome.exitCode, 0) << r.outcome.message << r.console;
   return r;
 }
@@ -43,14 +42,7 @@ double peakMagnitude(const std::filesystem::path& csv, const std::string& column
 TEST(RcShapeDecks, TeeBeamReachesTheLargerMuWithItsFlangeCompressed) {
   DeckTempDir dir;
   const DeckResult r = runRcDeck(dir, "tee_beam.inp");
-  RcSectionData d = c30b500();
-  d.shape = SectionShapeKind::Tee;
-  d.b = 0.3;
-  d.h = 0.6;
-  d.flangeWidth = 1.2;
-  d.flangeDepth = 0.15;
-  d.bars = {{0.04, 10 * kPi * 0.008 * 0.008}, {0.55, 6 * kPi * 0.0125 * 0.0125}};
-  const RcSection s(d);
+  const RcSection s(test::teeBeam());
   const double up = peakMagnitude(r.out / "tee_beam_dir=1_tplot.csv", "reac_1_3");
   const double down = peakMagnitude(r.out / "tee_beam_dir=-1_tplot.csv", "reac_1_3");
   EXPECT_NEAR(up, s.ultimate(0, 1).M, 2e-5 * up);

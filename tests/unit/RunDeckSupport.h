@@ -21,6 +21,11 @@ struct DeckResult {
   std::string log;            // the <stem>.out log
 };
 
+// The path of a deck of the source tree's decks/ folder ("rc/catenary.inp").
+inline std::string sourceDeck(const std::string& name) {
+  return std::string(C2D_SOURCE_DIR) + "/decks/" + name;
+}
+
 // Runs the deck at path (its includes beside it) with its outputs in <dir>/out.
 inline DeckResult runDeckFile(const DeckTempDir& dir, const std::string& path, bool quiet = true) {
   DeckOptions o;
@@ -36,8 +41,14 @@ inline DeckResult runDeckFile(const DeckTempDir& dir, const std::string& path, b
   return r;
 }
 
-inline DeckResult runDeckText(const DeckTempDir& dir, const std::string& name, const std::string& text,
-                              bool quiet = true) {
+// Runs decks/<name> of the source tree ("rc/catenary.inp").
+inline DeckResult runSourceDeck(const DeckTempDir& dir, const std::string& name,
+                                bool quiet = true) {
+  return runDeckFile(dir, sourceDeck(name), quiet);
+}
+
+inline DeckResult runDeckText(const DeckTempDir& dir, const std::string& name,
+                              const std::string& text, bool quiet = true) {
   return runDeckFile(dir, dir.write(name, text), quiet);
 }
 
@@ -103,6 +114,11 @@ inline std::string rampBatch(int steps, const std::string& before, const std::st
 }
 inline std::string rampData(const std::string& more = {}) {
   return "\n" "disp,n+1,2\nreac,1,2\n\n" + more;
+}
+
+// The cantilever problem loaded by rampBatch(steps, before, after), rampData().
+inline std::string rampProblem(int steps, const std::string& before, const std::string& after) {
+  return cantileverProblem(rampBatch(steps, before, after), rampData());
 }
 
 }  // namespace c2d::testing

@@ -36,17 +36,13 @@ const std::string kParams = "PARAmeter\n  L = 3\n  n = 2\n  P = 10\n\n";
 
 // Three converged steps, then a step that cannot converge (tolerance 1e-300).
 std::string failingDeck() {
-  return kParams +
-         testing::cantileverProblem(
-             testing::rampBatch(3, "  PVIEw,,1\n",
-                                "  TOL,,1e-300\n  TIME\n  LOOP,,1\n    TANG,,1\n  NEXT\n"),
-             testing::rampData());
+  return kParams + testing::rampProblem(3, "  PVIEw,,1\n",
+                                        "  TOL,,1e-300\n  TIME\n  LOOP,,1\n    TANG,,1\n  NEXT\n");
 }
 
 // A loading in a hundred million steps: it runs until it is stopped.
 std::string endlessDeck() {
-  return kParams + testing::cantileverProblem(testing::rampBatch(100000000, "  PVIEw,,1000\n", ""),
-                                              testing::rampData());
+  return kParams + testing::rampProblem(100000000, "  PVIEw,,1000\n", "");
 }
 
 std::vector<std::string> partFiles(const fs::path& dir) {
@@ -62,10 +58,8 @@ int lineCount(const std::string& s) {
 
 TEST(RunOutcome, CompletedRunHasItsFilesUnderTheirNamesOnly) {
   DeckTempDir dir;
-  const auto r = testing::runDeckText(
-      dir, "ok.inp",
-      kParams + testing::cantileverProblem(testing::rampBatch(3, "  PVIEw,,1\n", ""),
-                                           testing::rampData()));
+  const auto r =
+      testing::runDeckText(dir, "ok.inp", kParams + testing::rampProblem(3, "  PVIEw,,1\n", ""));
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
   EXPECT_TRUE(contains(r.log, "run complete")) << r.log;
   EXPECT_TRUE(fs::exists(r.out / "ok_tplot.csv"));
@@ -104,9 +98,7 @@ TEST(RunOutcome, FailedRunKeepsWhatItComputedUnderFailedNames) {
 TEST(RunOutcome, FullDiskUnderTheLogIsAnIoError) {
   DeckTempDir dir;
   const SimulatedWriteFailure full("full.out", ENOSPC);
-  const auto r = testing::runDeckText(
-      dir, "full.inp",
-      kParams + testing::cantileverProblem(testing::rampBatch(2, "", ""), testing::rampData()));
+  const auto r = testing::runDeckText(dir, "full.inp", kParams + testing::rampProblem(2, "", ""));
   EXPECT_EQ(r.outcome.exitCode, kExitInternal);
   const std::string& msg = r.outcome.message;
   EXPECT_TRUE(contains(msg, "I/O error")) << msg;
@@ -119,9 +111,7 @@ TEST(RunOutcome, FullDiskUnderTheLogIsAnIoError) {
 TEST(RunOutcome, FullDiskUnderTheTimeHistoryIsAnIoError) {
   DeckTempDir dir;
   const SimulatedWriteFailure full("tp_tplot.csv", ENOSPC);
-  const auto r = testing::runDeckText(
-      dir, "tp.inp",
-      kParams + testing::cantileverProblem(testing::rampBatch(2, "", ""), testing::rampData()));
+  const auto r = testing::runDeckText(dir, "tp.inp", kParams + testing::rampProblem(2, "", ""));
   EXPECT_EQ(r.outcome.exitCode, kExitInternal);
   const std::string& msg = r.outcome.message;
   EXPECT_TRUE(contains(msg, "I/O error: cannot write")) << msg;
@@ -163,9 +153,7 @@ TEST(RunOutcome, SingularTangentNamesTheNodeOfTheMechanism) {
 TEST(RunOutcome, OutputDirectoryThatCannotBeMadeIsAnIoError) {
   DeckTempDir dir;
   dir.write("plain", "a file where the output directory should be");
-  const std::string deck = dir.write(
-      "d.inp",
-      kParams + testing::cantileverProblem(testing::rampBatch(1, "", ""), testing::rampData()));
+  const std::string deck = dir.write("d.inp", kParams + testing::rampProblem(1, "", ""));
   DeckOptions o;
   o.outDir = dir.path() / "plain" / "out";
   o.quiet = true;

@@ -10,10 +10,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "macro/output/Debris.h"
-#include "macro/output/DebrisZones.h"
 #include "elements/ElementFactory.h"
 #include "macro/DeckRunner.h"
+#include "macro/output/Debris.h"
+#include "macro/output/DebrisZones.h"
 #include "macro/studies/BinomialBound.h"
 #include "macro/studies/EnsemblePicture.h"
 #include "macro/studies/PlanStatistics.h"
@@ -21,6 +21,7 @@
 #include "macro/studies/ZoneStatistics.h"
 #include "tests/unit/DeckTestSupport.h"
 #include "tests/unit/ElementTestSupport.h"
+#include "tests/unit/RunDeckSupport.h"
 
 namespace c2d {
 namespace {
@@ -116,14 +117,9 @@ TEST(SiteZones, FlyrockApartFromTheBed) {
 TEST(SiteZones, ProtectedSideRanksTheFellingFirst) {
   namespace fs = std::filesystem;
   const testing::DeckTempDir scratch;
-  const fs::path& out = scratch.path();
-  DeckOptions o;
-  o.outDir = out;
-  o.quiet = true;
-  const SolutionCommands commands;
-  std::ostringstream console;
-  const DeckOutcome r = runDeck(std::string(C2D_SOURCE_DIR) + "/decks/ensemble/protected_side.inp",
-                                o, commands, console);
+  const testing::DeckResult ran = testing::runSourceDeck(scratch, "ensemble/protected_side.inp");
+  const fs::path& out = ran.out;
+  const DeckOutcome& r = ran.outcome;
   ASSERT_EQ(r.exitCode, 0) << r.message;
   const EnsembleData data =
       readEnsembleTable(testing::readText(out / "protected_side_ensemble.csv"), 2);

@@ -34,10 +34,8 @@ TEST(StaleOutputs, ACompleteRerunRemovesWhatAnInterruptedRunOfItsStemLeft) {
                                            "rr_notes.txt", "rr_0001.vtu.bak"};
   for (const auto& f : others) touch(f);
 
-  const auto r = testing::runDeckText(
-      dir, "rr.inp",
-      kParams + testing::cantileverProblem(testing::rampBatch(4, "  PVIEw,,2\n", ""),
-                                           testing::rampData()));
+  const auto r =
+      testing::runDeckText(dir, "rr.inp", kParams + testing::rampProblem(4, "  PVIEw,,2\n", ""));
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
   for (const auto& f : stale) EXPECT_FALSE(std::filesystem::exists(out / f)) << f;
   for (const auto& f : others) EXPECT_TRUE(std::filesystem::exists(out / f)) << f;

@@ -158,8 +158,9 @@ TEST(Sweep, TaggedOutputsAndOverlay) {
 TEST(Sweep, ParametersAfterTheSweepDeriveFromIt) {
   DeckTempDir dir;
   // The load P = 2 q, with q swept.
-  const std::string deck = "PARAmeter\n  L = 3\n  n = 2\n\nSWEEp\n  q = 5 10\n\nPARAmeter\n  P = 2*q\n\n" +
-                           testing::cantileverProblem(testing::rampBatch(1, "", ""), testing::rampData());
+  const std::string deck =
+      "PARAmeter\n  L = 3\n  n = 2\n\nSWEEp\n  q = 5 10\n\nPARAmeter\n  P = 2*q\n\n" +
+      testing::rampProblem(1, "", "");
   const auto r = testing::runDeckText(dir, "d.inp", deck);
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
   EXPECT_NEAR(lastValue(r.out / "d_q=5_tplot.csv", 2), testing::cantileverTip(10, 3, 2), 1e-12);
@@ -190,8 +191,7 @@ TEST(Sweep, TopLevelLoopStudyKeepsNumberedRunsAndGetsAnOverlay) {
 TEST(Sweep, RepeatedTagsInsideALoopGetRunNumbers) {
   DeckTempDir dir;
   const std::string deck = "PARAmeter\n  L = 3\n  n = 1\n\nLOOP,,2\nSWEEp\n  P = 1 2\n\n" +
-                           testing::cantileverProblem(testing::rampBatch(1, "", ""), testing::rampData()) +
-                           "NEXT\nSTOP\n";
+                           testing::rampProblem(1, "", "") + "NEXT\nSTOP\n";
   const auto r = testing::runDeckText(dir, "rep.inp", deck);
   ASSERT_EQ(r.outcome.exitCode, 0) << r.outcome.message;
   for (const char* stem : {"rep_1_P=1", "rep_2_P=2", "rep_3_P=1", "rep_4_P=2"})
