@@ -5,15 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
-#include <memory>
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <new>
 
 #include "core/Model.h"
 #include "elements/ElementFactory.h"
 #include "solvers/Analysis.h"
 #include "solvers/TimeIntegrator.h"
+#include "tests/unit/FrameMaterialSupport.h"
 
 namespace {
 std::atomic<long> gAllocations{0};
@@ -36,16 +37,7 @@ Model rollupModel(int n, Kinematics kin) {
   Model m;
   m.resizeNodes(n + 1);
   for (int i = 0; i <= n; ++i) m.setCoord(i, Vec2(10.0 * i / n, 0.0));
-  MaterialSet mat;
-  mat.number = 1;
-  mat.elementType = "FRAMe";
-  mat.resEA = 1e6;
-  mat.resGA = 1e6;
-  mat.resEI = 100;
-  mat.kinematics = kin;
-  mat.density = 1.0;
-  mat.A = 1.0;
-  mat.I = 0.01;
+  const MaterialSet mat = test::resultantFrame(kin, 1e6, 1e6, 100, 1.0, 1.0, 0.01);
   m.materials()[1] = mat;
   for (int e = 0; e < n; ++e) m.setElement(e, makeElement(mat, {e, e + 1}, m.coord(e), m.coord(e + 1)));
   m.bound(0) = {1, 1, 1};
@@ -101,16 +93,8 @@ TEST(NoAllocation, MemberContactAndGroundFriction) {
   // first step the contact pairs are in the pattern and the search's arrays
   // have their size.
   Model m;
-  MaterialSet mat;
-  mat.number = 1;
-  mat.elementType = "FRAMe";
-  mat.resEA = 1e7;
-  mat.resGA = 1e7;
-  mat.resEI = 1e4;
-  mat.kinematics = Kinematics::Finite;
-  mat.density = 1.0;
-  mat.A = 1.0;
-  mat.I = 1e-3;  // contact radius sqrt(3e-3)
+  // Contact radius sqrt(3 I / A) = sqrt(3e-3).
+  const MaterialSet mat = test::resultantFrame(Kinematics::Finite, 1e7, 1e7, 1e4, 1.0, 1.0, 1e-3);
   m.materials()[1] = mat;
   const double h = 2 * std::sqrt(3e-3);
   auto line = [&](Vec2 a, Vec2 b, int n) {

@@ -15,23 +15,14 @@
 #include "elements/JointedElement.h"
 #include "elements/ReissnerFrame.h"
 #include "solvers/TimeIntegrator.h"
+#include "tests/unit/FrameMaterialSupport.h"
 
 namespace {
 
 using namespace c2d;
 
 MaterialSet frameMaterial() {
-  MaterialSet m;
-  m.number = 1;
-  m.elementType = "FRAMe";
-  m.kinematics = Kinematics::Finite;
-  m.resEA = 3.6e6;
-  m.resGA = 1.2e6;
-  m.resEI = 4.8e4;
-  m.density = 2.5;
-  m.A = 0.12;
-  m.I = 1.6e-3;
-  return m;
+  return test::resultantFrame(Kinematics::Finite, 3.6e6, 1.2e6, 4.8e4, 2.5, 0.12, 1.6e-3);
 }
 
 // A deformed state and a committed one a step earlier (rotations of a falling member).

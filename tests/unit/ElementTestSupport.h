@@ -5,15 +5,15 @@
 // time step of an analysis solved by Newton iterations.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <random>
-
-#include <cmath>
 
 #include "core/Element.h"
 #include "core/MaterialSet.h"
 #include "core/StepRule.h"
 #include "solvers/Analysis.h"
+#include "tests/unit/FrameMaterialSupport.h"
 
 namespace c2d::test {
 
@@ -56,6 +56,16 @@ inline ElementKinematics kinAt(const ElemVec& d, const ElemVec& dn) {
   return kin;
 }
 
+// Kinematics d from rest: no displacement, velocity or acceleration at t_n.
+inline ElementKinematics staticKinematics(const ElemVec& d) {
+  ElementKinematics k;
+  k.d = d;
+  k.dn.setZero();
+  k.vn.setZero();
+  k.an.setZero();
+  return k;
+}
+
 // A step rule of the scheme: Newmark's trapezoidal coefficients for dt = 0.05.
 inline StepRule stepRule(Scheme scheme, double alpha = 0) {
   StepRule r;
@@ -70,6 +80,28 @@ inline StepRule stepRule(Scheme scheme, double alpha = 0) {
     r.aa = -1.0;
   }
   return r;
+}
+
+// A finite element from x1 to x2 under rigid motions (rotations up to 10 rad
+// about c, a translation t): no force and no strain energy at rest (static),
+// and no mid-point force between two different rigid positions either.
+inline void expectRigidMotionsGiveZeroResidual(Element& e, const Vec2& x1, const Vec2& x2) {
+  const Vec2 c(-0.7, 0.4), t(1.5, -2.5);
+  for (double w : {0.0, 0.7, 3.5, 10.0, -7.3}) {
+    const ElemVec d = rigidMotion(x1, x2, w, c, t);
+    ElemVec r;
+    ElemMat k;
+    ASSERT_TRUE(
+        e.evaluate({d, d, ElemVec::Zero(), ElemVec::Zero()}, stepRule(Scheme::Static), true, r, k)
+            .ok);
+    EXPECT_LT(r.norm(), 1e-10) << "w = " << w;
+    EXPECT_LT(e.strainEnergy(), 1e-20);
+    const ElemVec dn = rigidMotion(x1, x2, w - 2.5, c, -t);  // below pi (Cayley)
+    StepRule rule = stepRule(Scheme::MidPoint, 0.1);
+    rule.ca = rule.av = rule.aa = 0;
+    ASSERT_TRUE(e.evaluate({d, dn, ElemVec::Zero(), ElemVec::Zero()}, rule, true, r, k).ok);
+    EXPECT_LT(r.norm(), 1e-10) << "w = " << w;
+  }
 }
 
 // EA = 2e4, GA = 8e3, EI = 1e2 (A = 2, I = 0.05 for the mass, density 0.5).
@@ -95,29 +127,13 @@ inline MaterialSet resultantMaterial(Kinematics kin, bool shear = true,
 // Stiff bars of unit mass per length (density 1, A = 1): EA = GA = 1e6,
 // EI = 1e4; the debris figures' test models.
 inline MaterialSet unitMassBarMaterial() {
-  MaterialSet m;
-  m.number = 1;
-  m.elementType = "FRAMe";
-  m.resEA = m.resGA = 1e6;
-  m.resEI = 1e4;
-  m.density = 1;
-  m.A = 1;
-  return m;
+  return resultantFrame(Kinematics::Small, 1e6, 1e6, 1e4, 1, 1, 0);
 }
 
 // A FINIte rod's set with the hinge laws: 10 kg/m, bilinear hardening to
 // Mu = 2.4 and softening Ks = -8 with the rupture rotation thetaR.
 inline MaterialSet hingedRodMaterial(double thetaR) {
-  MaterialSet m;
-  m.number = 1;
-  m.elementType = "FRAMe";
-  m.kinematics = Kinematics::Finite;
-  m.resEA = 1e6;
-  m.resGA = 5e5;
-  m.resEI = 1e3;
-  m.density = 1;
-  m.A = 10;
-  m.I = 1e-2;
+  MaterialSet m = resultantFrame(Kinematics::Finite, 1e6, 5e5, 1e3, 1, 10, 1e-2);
   m.hardening = HardeningData{{1.0, 2.0, 400, 40}};
   m.softening = SofteningData{2.4, -8, thetaR};
   return m;

@@ -12,6 +12,7 @@
 #include "elements/ElementFactory.h"
 #include "solvers/Analysis.h"
 #include "solvers/TimeIntegrator.h"
+#include "tests/unit/FrameMaterialSupport.h"
 
 namespace c2d {
 namespace {
@@ -22,17 +23,9 @@ constexpr double kPi = std::numbers::pi;
 // with the far end on a roller when simplySupported).
 Model beam(double l, int n, double ei, Kinematics kin, bool simplySupported, double rhoA = 0) {
   Model m;
-  MaterialSet mat;
-  mat.number = 1;
-  mat.elementType = "FRAMe";
-  mat.resEA = 1e7;
-  mat.resGA = 1e7;
-  mat.resEI = ei;
+  MaterialSet mat =
+      test::resultantFrame(kin, 1e7, 1e7, ei, rhoA > 0 ? 1.0 : 0.0, rhoA, rhoA > 0 ? 1e-6 : 0.0);
   mat.shear = kin == Kinematics::Finite;
-  mat.kinematics = kin;
-  mat.density = rhoA > 0 ? 1.0 : 0.0;
-  mat.A = rhoA;
-  mat.I = rhoA > 0 ? 1e-6 : 0.0;
   m.materials()[1] = mat;
   for (int i = 0; i <= n; ++i) m.addNode(Vec2(l * i / n, 0));
   for (int e = 0; e < n; ++e)

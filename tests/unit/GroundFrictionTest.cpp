@@ -208,25 +208,39 @@ TEST(GroundFriction, HeavyTableOnTwoLightFeetSlidesWithTheTiltMinusMu) {
   EXPECT_LT(r.worstBalance, 1e-9 * 21.4 * kGravity);
 }
 
+// A tilted beam of four rods (its nodes first..first+4) just above a ground
+// with a dashpot (zeta = 0.2) and friction (mu = 0.3), under gravity; returns
+// its first node.
+int tiltedBeam(Model& m) {
+  m.materials()[1] = rod(1, 1e6, 1e6, 1e3, 1.0, 1e-4);
+  const int first = newRod(m, Vec2(0, 0.05), Vec2(1, 0.15), 4);
+  m.ground() = Ground{0.0, 2e4, 0.2, 0.3};
+  m.gravity() = Vec2(0, -kGravity);
+  return first;
+}
+
+// The tilted beam thrown down and sideways: every node at (1.5, -1) m/s.
+void throwBeam(Analysis& an, int first) {
+  State& s = an.state();
+  s.resize(an.model().numNodes());
+  for (int n = first; n < first + 5; ++n) s.v.segment<2>(3 * n) = Vec2(1.5, -1.0);
+  s.vn = s.v;
+}
+
 TEST(GroundFriction, ImpactWithDissipationAndFrictionClosesTheEnergyBalance) {
   // A tilted beam thrown down and sideways onto the ground: the ground's
   // dashpot (zeta = 0.2) and friction (mu = 0.3) both take energy; total
   // energy plus contactDissipation stays constant.
   Model m;
-  m.materials()[1] = rod(1, 1e6, 1e6, 1e3, 1.0, 1e-4);
-  const int first = newRod(m, Vec2(0, 0.05), Vec2(1, 0.15), 4);
-  m.ground() = Ground{0.0, 2e4, 0.2, 0.3};
-  m.gravity() = Vec2(0, -kGravity);
+  const int first = tiltedBeam(m);
   Analysis an(m);
   an.setIntegrator(TimeIntegrator::midPoint(0, 0));
   an.setTolerance(1e-24);
   const double dt = 2e-3;
   an.setDt(dt);
   an.impactSteps().setEnabled(false);  // every step of dt booked here
+  throwBeam(an, first);
   State& s = an.state();
-  s.resize(m.numNodes());
-  for (int n = first; n < first + 5; ++n) s.v.segment<2>(3 * n) = Vec2(1.5, -1.0);
-  s.vn = s.v;
   const double e0 = an.energy().total();
   double dissipated = 0, worst = 0, friction = 0;
   for (int i = 0; i < 300; ++i) {
@@ -258,17 +272,11 @@ TEST(GroundFriction, TheBalanceClosesWhenTheNextStepIsLongerThanTheOneCommitted)
   // (TIME commits): the friction booked at the commit must be the one the step
   // was solved with.
   Model m;
-  m.materials()[1] = rod(1, 1e6, 1e6, 1e3, 1.0, 1e-4);
-  const int first = newRod(m, Vec2(0, 0.05), Vec2(1, 0.15), 4);
-  m.ground() = Ground{0.0, 2e4, 0.2, 0.3};
-  m.gravity() = Vec2(0, -kGravity);
+  const int first = tiltedBeam(m);
   Analysis an(m);
   an.setIntegrator(TimeIntegrator::midPoint(0.1, 0.1));
   an.setTolerance(1e-24);
-  State& s = an.state();
-  s.resize(m.numNodes());
-  for (int n = first; n < first + 5; ++n) s.v.segment<2>(3 * n) = Vec2(1.5, -1.0);
-  s.vn = s.v;
+  throwBeam(an, first);
   // The account starts at the first commit (the state set above is not booked).
   an.setDt(1e-3);
   ASSERT_TRUE(solveStep(an));

@@ -20,21 +20,13 @@
 namespace c2d {
 namespace {
 
+using test::staticKinematics;
 using test::tangentError;
 
 using namespace test::v2;
 constexpr double kL = 2.5;
 
 MaterialSet v2Material() { return material(3, 1.2e6); }
-
-ElementKinematics staticKin(const ElemVec& d) {
-  ElementKinematics k;
-  k.d = d;
-  k.dn.setZero();
-  k.vn.setZero();
-  k.an.setZero();
-  return k;
-}
 
 // Global displacements of an element of axis angle phi whose local dofs are dl.
 ElemVec toGlobal(const ElemVec& dl, double phi) {
@@ -68,7 +60,8 @@ TEST_P(InelasticFrameAngles, TangentMatchesFiniteDifferencesOnEveryBranch) {
   // Elastic and the two hardening branches from a virgin state.
   for (double M : {20.0, 150.0, 271.0, -200.0}) {
     InelasticFrame e(v2Material(), {0, 1}, x1, x2);
-    const ElementKinematics kin = staticKin(toGlobal(localState(l, 1e-4, 2e-4, kappaOf(std::abs(M)) * (M > 0 ? 1 : -1)), phi));
+    const ElementKinematics kin = staticKinematics(
+        toGlobal(localState(l, 1e-4, 2e-4, kappaOf(std::abs(M)) * (M > 0 ? 1 : -1)), phi));
     EXPECT_LT(tangentError(e, kin, stat), 1e-6) << "M = " << M;
     EXPECT_NEAR(e.sectionForces().M, M, 1e-6 * kMu);
     EXPECT_FALSE(e.hinge().active);
@@ -79,13 +72,14 @@ TEST_P(InelasticFrameAngles, TangentMatchesFiniteDifferencesOnEveryBranch) {
   const double kU = kappaOf(kMu);
   ElemVec r;
   ElemMat k;
-  ASSERT_TRUE(e.evaluate(staticKin(toGlobal(localState(l, 0, 0, kU), phi)), stat, true, r, k));
+  ASSERT_TRUE(
+      e.evaluate(staticKinematics(toGlobal(localState(l, 0, 0, kU), phi)), stat, true, r, k));
   e.commit();
   e.activateHinge();
   const double kpU = kU - kMu / kEI;
   // Bulk moment with alpha = 0 would be EI*(kappaD - kpU); a jump lowers it.
   const double kSoft = kU + 0.004;
-  const ElementKinematics soft = staticKin(toGlobal(localState(l, 1e-4, -1e-4, kSoft), phi));
+  const ElementKinematics soft = staticKinematics(toGlobal(localState(l, 1e-4, -1e-4, kSoft), phi));
   EXPECT_LT(tangentError(e, soft, stat), 1e-6);
   const HingeInfo hs = e.hinge();
   EXPECT_TRUE(hs.active);
@@ -97,7 +91,8 @@ TEST_P(InelasticFrameAngles, TangentMatchesFiniteDifferencesOnEveryBranch) {
   EXPECT_DOUBLE_EQ(hs.position, 0.5);
 
   const double kFail = kU + 0.1;
-  const ElementKinematics failed = staticKin(toGlobal(localState(l, 1e-4, -1e-4, kFail), phi));
+  const ElementKinematics failed =
+      staticKinematics(toGlobal(localState(l, 1e-4, -1e-4, kFail), phi));
   EXPECT_LT(tangentError(e, failed, stat), 1e-6);
   const HingeInfo hf = e.hinge();
   EXPECT_TRUE(hf.failed);
@@ -115,7 +110,7 @@ TEST_P(InelasticFrameAngles, TangentMatchesFiniteDifferencesOnEveryBranch) {
   heavy.A = 0.12;
   heavy.I = 1.6e-3;
   InelasticFrame d(heavy, {0, 1}, x1, x2);
-  ElementKinematics kin = staticKin(toGlobal(localState(l, 1e-4, 2e-4, kappaOf(150)), phi));
+  ElementKinematics kin = staticKinematics(toGlobal(localState(l, 1e-4, 2e-4, kappaOf(150)), phi));
   kin.vn.setConstant(0.3);
   kin.an.setConstant(-2.0);
   EXPECT_LT(tangentError(d, kin, nm), 1e-6);
@@ -152,7 +147,7 @@ TEST(InelasticFrame, ElasticRangeAgreesWithLinearFrameUnderEveryScheme) {
       ElemVec re, rf;
       ElemMat ke, kf;
       // The committed history belongs to d_n (the mid-point scheme takes M_n from it).
-      ASSERT_TRUE(e.evaluate(staticKin(kin.dn), stat, false, re, ke));
+      ASSERT_TRUE(e.evaluate(staticKinematics(kin.dn), stat, false, re, ke));
       e.commit();
       ASSERT_TRUE(e.evaluate(kin, rule, true, re, ke));
       ASSERT_TRUE(f.evaluate(kin, rule, true, rf, kf));
@@ -178,7 +173,7 @@ TEST(InelasticFrame, RigidBodyMotionIsStressFree) {
   }
   ElemVec r;
   ElemMat k;
-  ASSERT_TRUE(e.evaluate(staticKin(d), StepRule{}, true, r, k));
+  ASSERT_TRUE(e.evaluate(staticKinematics(d), StepRule{}, true, r, k));
   EXPECT_LT(r.norm(), 1e-9);
   EXPECT_LT((k * d).norm(), 1e-9 * k.norm());
   EXPECT_LT((k - k.transpose()).norm(), 1e-12 * k.norm());
@@ -189,7 +184,9 @@ TEST(InelasticFrame, CommitRevertRoundTripsAreExact) {
   InelasticFrame e(v2Material(), {0, 1}, Vec2(0, 0), Vec2(0.3, 0.4));
   const double phi = std::atan2(0.4, 0.3);
   const StepRule stat;
-  auto at = [&](double kd) { return staticKin(toGlobal(localState(l, 2e-4, 1e-4, kd), phi)); };
+  auto at = [&](double kd) {
+    return staticKinematics(toGlobal(localState(l, 2e-4, 1e-4, kd), phi));
+  };
   ElemVec r1, r2, r3, rb;
   ElemMat k1, k2, k3, kb;
   ASSERT_TRUE(e.evaluate(at(kappaOf(200)), stat, true, r1, k1));
@@ -239,24 +236,24 @@ TEST(InelasticFrame, HingeUnloadsRigidlyAndTheBulkElastically) {
   ElemVec r;
   ElemMat k;
   const double kU = kappaOf(kMu), kpU = kU - kMu / kEI;
-  ASSERT_TRUE(e.evaluate(staticKin(localState(l, 0, 0, kU)), stat, true, r, k));
+  ASSERT_TRUE(e.evaluate(staticKinematics(localState(l, 0, 0, kU)), stat, true, r, k));
   e.commit();
   e.activateHinge();
-  ASSERT_TRUE(e.evaluate(staticKin(localState(l, 0, 0, kU + 0.01)), stat, true, r, k));
+  ASSERT_TRUE(e.evaluate(staticKinematics(localState(l, 0, 0, kU + 0.01)), stat, true, r, k));
   e.commit();
   const HingeInfo h = e.hinge();
   const double cap = kMu + kKs * h.softening;
   EXPECT_NEAR(h.moment, cap, 1e-8);
   // Unload: the jump stays, the bulk follows EI with the frozen plastic curvature.
   const double kd = kU + 0.01 - 0.0005;
-  ASSERT_TRUE(e.evaluate(staticKin(localState(l, 0, 0, kd)), stat, true, r, k));
+  ASSERT_TRUE(e.evaluate(staticKinematics(localState(l, 0, 0, kd)), stat, true, r, k));
   EXPECT_EQ(e.hinge().jump, h.jump);
   EXPECT_NEAR(e.sectionForces().M, kEI * (kd - h.jump / l - kpU), 1e-8);
   EXPECT_NEAR(k(5, 5), kEI / l + 1.2e6 * l / 4, 1e-6 * kEI / l);  // elastic bulk bending + shear
   EXPECT_LT(e.sectionForces().M, cap);
   // Reverse loading reaches the reduced capacity in the other direction.
   const double kr = h.jump / l + kpU - (cap + 10) / kEI;
-  ASSERT_TRUE(e.evaluate(staticKin(localState(l, 0, 0, kr)), stat, true, r, k));
+  ASSERT_TRUE(e.evaluate(staticKinematics(localState(l, 0, 0, kr)), stat, true, r, k));
   EXPECT_LT(e.hinge().jump, h.jump);
   EXPECT_NEAR(e.sectionForces().M, -(kMu + kKs * e.hinge().softening), 1e-8);
 }
@@ -269,12 +266,13 @@ TEST(InelasticFrame, FrozenPlasticCurvatureIsTheOneAtMu) {
     InelasticFrame e(v2Material(), {0, 1}, Vec2(0, 0), Vec2(l, 0));
     ElemVec r;
     ElemMat k;
-    ASSERT_TRUE(e.evaluate(staticKin(localState(l, 0, 0, sign * kappaOf(270))), StepRule{}, true, r, k));
+    ASSERT_TRUE(e.evaluate(staticKinematics(localState(l, 0, 0, sign * kappaOf(270))), StepRule{},
+                           true, r, k));
     e.commit();
     const double kd = sign * (kappaOf(kMu) + 0.002);
-    ASSERT_TRUE(e.evaluate(staticKin(localState(l, 0, 0, kd)), StepRule{}, true, r, k));
+    ASSERT_TRUE(e.evaluate(staticKinematics(localState(l, 0, 0, kd)), StepRule{}, true, r, k));
     e.activateHinge();
-    ASSERT_TRUE(e.evaluate(staticKin(localState(l, 0, 0, kd)), StepRule{}, true, r, k));
+    ASSERT_TRUE(e.evaluate(staticKinematics(localState(l, 0, 0, kd)), StepRule{}, true, r, k));
     const HingeInfo h = e.hinge();
     EXPECT_NEAR(h.jump, sign * 0.002 * kEI / (kEI / l + kKs), 1e-12);
     EXPECT_NEAR(h.moment, sign * (kMu + kKs * h.softening), 1e-8);
@@ -288,7 +286,8 @@ TEST(InelasticFrame, TooLongElementWithSofteningFailsWithAMessage) {
   ElemVec r;
   ElemMat k;
   const StepRule stat;
-  const ElementKinematics kin = staticKin(toGlobal(localState(5.0, 0, 0, kappaOf(kMu)), std::numbers::pi / 2));
+  const ElementKinematics kin =
+      staticKinematics(toGlobal(localState(5.0, 0, 0, kappaOf(kMu)), std::numbers::pi / 2));
   ASSERT_TRUE(e.evaluate(kin, stat, true, r, k));
   e.activateHinge();
   const Status st = e.evaluate(kin, stat, true, r, k);
@@ -303,7 +302,8 @@ TEST(InelasticFrame, HingeDemandNeedsSoftening) {
   InelasticFrame e(m, {0, 1}, Vec2(0, 0), Vec2(1, 0));
   ElemVec r;
   ElemMat k;
-  ASSERT_TRUE(e.evaluate(staticKin(localState(1, 0, 0, kappaOf(300))), StepRule{}, true, r, k));
+  ASSERT_TRUE(
+      e.evaluate(staticKinematics(localState(1, 0, 0, kappaOf(300))), StepRule{}, true, r, k));
   EXPECT_NEAR(e.sectionForces().M, 300, 1e-8);
   EXPECT_EQ(e.hingeDemand(), 0.0);
   e.activateHinge();
@@ -313,7 +313,7 @@ TEST(InelasticFrame, HingeDemandNeedsSoftening) {
   MaterialSet s = v2Material();
   s.hardening.reset();
   InelasticFrame f(s, {0, 1}, Vec2(0, 0), Vec2(1, 0));
-  ASSERT_TRUE(f.evaluate(staticKin(localState(1, 0, 0, 137 / kEI)), StepRule{}, true, r, k));
+  ASSERT_TRUE(f.evaluate(staticKinematics(localState(1, 0, 0, 137 / kEI)), StepRule{}, true, r, k));
   EXPECT_NEAR(f.sectionForces().M, 137, 1e-9);
   EXPECT_NEAR(f.hingeDemand(), 0.5, 1e-12);
 }
@@ -347,10 +347,12 @@ TEST(InelasticFrame, MassBodyLoadAndEnergy) {
   ElemVec r;
   ElemMat k;
   const double phi = std::atan2(1.6, 1.2);
-  ASSERT_TRUE(e.evaluate(staticKin(toGlobal(localState(2, 0, 0, 30 / kEI), phi)), StepRule{}, true, r, k));
+  ASSERT_TRUE(e.evaluate(staticKinematics(toGlobal(localState(2, 0, 0, 30 / kEI), phi)), StepRule{},
+                         true, r, k));
   EXPECT_NEAR(e.strainEnergy(), 30 * 30 * 2 / (2 * kEI), 1e-12);
   // Axial + shear parts.
-  ASSERT_TRUE(e.evaluate(staticKin(toGlobal(localState(2, 1e-4, 2e-4, 0), phi)), StepRule{}, true, r, k));
+  ASSERT_TRUE(e.evaluate(staticKinematics(toGlobal(localState(2, 1e-4, 2e-4, 0), phi)), StepRule{},
+                         true, r, k));
   EXPECT_NEAR(e.strainEnergy(), 0.5 * 2 * (3.6e6 * 1e-8 + 1.2e6 * 4e-8), 1e-12);
   const SectionForces s = e.sectionForces();
   EXPECT_NEAR(s.N, 3.6e6 * 1e-4, 1e-8);
@@ -454,7 +456,7 @@ class Cantilever {
       const ElemVec de = d_.segment<6>(3 * i);
       ElemVec re;
       ElemMat ke;
-      const Status st = elems_[i]->evaluate(staticKin(de), StepRule{}, true, re, ke);
+      const Status st = elems_[i]->evaluate(staticKinematics(de), StepRule{}, true, re, ke);
       EXPECT_TRUE(st) << st.why;
       r.segment<6>(3 * i) += re;
       K.block<6, 6>(3 * i, 3 * i) += ke;

@@ -36,6 +36,21 @@ inline ElementKinematics trialKinematics(std::mt19937& gen, const Vec2& x1, cons
           randomVec(gen, 1.0), randomVec(gen, 5.0)};
 }
 
+// Evaluates e with its tangent under rule at three trial states, next(trial)
+// for trial = 0, 1, 2, and calls check(trial, kin, r, k) after each; stops at
+// the first fatal failure (call it under ASSERT_NO_FATAL_FAILURE).
+template <class Next, class Check>
+void checkAtTrials(Element& e, const StepRule& rule, Next next, Check check) {
+  for (int trial = 0; trial < 3; ++trial) {
+    const ElementKinematics kin = next(trial);
+    ElemVec r;
+    ElemMat k;
+    ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
+    check(trial, kin, r, k);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+}
+
 // The tangent k of e at kin against central differences of its residual,
 // within tol of k's largest entry.
 inline void expectTangentMatchesDifferences(Element& e, const ElementKinematics& kin,

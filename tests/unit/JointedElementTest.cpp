@@ -16,6 +16,7 @@
 #include "elements/ReissnerFrame.h"
 #include "tests/unit/ElementTestSupport.h"
 #include "tests/unit/JointTestSupport.h"
+#include "tests/unit/StubElementSupport.h"
 
 namespace c2d {
 namespace {
@@ -64,30 +65,31 @@ TEST_P(JointedElementTangent, CondensedTangentMatchesCentralDifferences) {
   EXPECT_EQ(e.nodes()[slaveEnd], 7);
   EXPECT_EQ(e.nodes()[1 - slaveEnd], slaveEnd == 0 ? 4 : 3);
   const StepRule rule = ruleFor(scheme);
-  for (int trial = 0; trial < 3; ++trial) {
-    const ElementKinematics kin = trialKinematics(gen, kind, trial);
-    ElemVec r;
-    ElemMat k;
-    ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
-    const int kr = 3 * slaveEnd + 2;
-    // No moment on the master's rotation, and the local equation solved to round-off.
-    EXPECT_LT(std::abs(r(kr)), 1e-12 * r.cwiseAbs().maxCoeff());
-    EXPECT_LT(k.row(kr).cwiseAbs().maxCoeff(), 1e-12 * k.cwiseAbs().maxCoeff());
-    ElemVec rin;
-    ElemMat kin6;
-    ASSERT_TRUE(
-        e.inner().evaluate(e.innerKinematics(kin, e.relativeRotation()), rule, true, rin, kin6).ok);
-    EXPECT_EQ((rin - r).cwiseAbs().maxCoeff(), 0.0);
-    EXPECT_NEAR(e.slaveRotation(), kin.d(kr) + e.relativeRotation(), 1e-15);
+  const auto next = [&](int trial) { return trialKinematics(gen, kind, trial); };
+  ASSERT_NO_FATAL_FAILURE(test::checkAtTrials(
+      e, rule, next,
+      [&](int trial, const ElementKinematics& kin, const ElemVec& r, const ElemMat& k) {
+        const int kr = 3 * slaveEnd + 2;
+        // No moment on the master's rotation, and the local equation solved to round-off.
+        EXPECT_LT(std::abs(r(kr)), 1e-12 * r.cwiseAbs().maxCoeff());
+        EXPECT_LT(k.row(kr).cwiseAbs().maxCoeff(), 1e-12 * k.cwiseAbs().maxCoeff());
+        ElemVec rin;
+        ElemMat kin6;
+        ASSERT_TRUE(
+            e.inner()
+                .evaluate(e.innerKinematics(kin, e.relativeRotation()), rule, true, rin, kin6)
+                .ok);
+        EXPECT_EQ((rin - r).cwiseAbs().maxCoeff(), 0.0);
+        EXPECT_NEAR(e.slaveRotation(), kin.d(kr) + e.relativeRotation(), 1e-15);
 
-    // Eq (68) from the wrapped element's tangent at the solution.
-    const ElemMat cond = kin6 - kin6.col(kr) * kin6.row(kr) / kin6(kr, kr);
-    EXPECT_LT((cond - k).cwiseAbs().maxCoeff(), 1e-13 * k.cwiseAbs().maxCoeff());
+        // Eq (68) from the wrapped element's tangent at the solution.
+        const ElemMat cond = kin6 - kin6.col(kr) * kin6.row(kr) / kin6(kr, kr);
+        EXPECT_LT((cond - k).cwiseAbs().maxCoeff(), 1e-13 * k.cwiseAbs().maxCoeff());
 
-    test::expectTangentMatchesDifferences(
-        e, kin, rule, k, 2e-7,
-        "scheme " + std::to_string(static_cast<int>(scheme)) + ", trial " + std::to_string(trial));
-  }
+        test::expectTangentMatchesDifferences(e, kin, rule, k, 2e-7,
+                                              "scheme " + std::to_string(static_cast<int>(scheme)) +
+                                                  ", trial " + std::to_string(trial));
+      }));
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -217,19 +219,18 @@ TEST(JointedElement, FrictionTangentMatchesCentralDifferences) {
         const double Mr = 40;
         e.setFriction(Mr, eps);
         const StepRule rule = ruleFor(scheme);
-        for (int trial = 0; trial < 3; ++trial) {
-          const ElementKinematics kin = trialKinematics(gen, kind, trial);
-          ElemVec r;
-          ElemMat k;
-          ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
-          const int kr = 5;
-          EXPECT_LE(std::abs(r(kr)), Mr);
-          EXPECT_GT(std::abs(r(kr)), 1e-3 * Mr);
-          test::expectTangentMatchesDifferences(e, kin, rule, k, 2e-6,
-                                                "scheme " +
-                                                    std::to_string(static_cast<int>(scheme)) +
-                                                    ", eps " + std::to_string(eps));
-        }
+        const auto next = [&](int trial) { return trialKinematics(gen, kind, trial); };
+        ASSERT_NO_FATAL_FAILURE(test::checkAtTrials(
+            e, rule, next,
+            [&](int /*trial*/, const ElementKinematics& kin, const ElemVec& r, const ElemMat& k) {
+              const int kr = 5;
+              EXPECT_LE(std::abs(r(kr)), Mr);
+              EXPECT_GT(std::abs(r(kr)), 1e-3 * Mr);
+              test::expectTangentMatchesDifferences(e, kin, rule, k, 2e-6,
+                                                    "scheme " +
+                                                        std::to_string(static_cast<int>(scheme)) +
+                                                        ", eps " + std::to_string(eps));
+            }));
       }
 }
 
@@ -344,13 +345,10 @@ TEST(JointedElement, KineticEnergyAndBodyLoadSeeTheSlave) {
 }
 
 // Inner element of the failure tests: residual r = K d + (0 ... atan(d_k) ... 0).
-class ScalarLawElement final : public Element {
+class ScalarLawElement final : public test::StubElement {
  public:
-  ScalarLawElement(double kkk, bool arctan) : kkk_(kkk), arctan_(arctan) {}
-  std::array<int, 2> nodes() const override { return nodes_; }
-  void setNodes(const std::array<int, 2>& n) override { nodes_ = n; }
-  int materialNumber() const override { return 1; }
-  std::string typeName() const override { return "scalar-law"; }
+  ScalarLawElement(double kkk, bool arctan)
+      : StubElement("scalar-law"), kkk_(kkk), arctan_(arctan) {}
   Status evaluate(const ElementKinematics& kin, const StepRule&, bool, ElemVec& r,
                   ElemMat& k) override {
     r = ElemVec::Zero();
@@ -359,15 +357,8 @@ class ScalarLawElement final : public Element {
     k(2, 2) = arctan_ ? 1.0 / (1.0 + kin.d(2) * kin.d(2)) : kkk_;
     return Status::success();
   }
-  ElemMat mass() const override { return ElemMat::Zero(); }
-  ElemVec bodyLoad(const Vec2&) const override { return ElemVec::Zero(); }
-  void commit() override {}
-  void revert() override {}
-  double strainEnergy() const override { return 0; }
-  SectionForces sectionForces() const override { return {}; }
 
  private:
-  std::array<int, 2> nodes_{0, 1};
   double kkk_;
   bool arctan_;
 };
@@ -401,13 +392,10 @@ TEST(JointedElement, LocalFailuresAreReturnedAsStatus) {
 // stiff in a core |x| <= e (a joint that sticks) and ever softer beyond it
 // (one that slips), f(x) = sign(x) |x|^p with p = 1/1.9: there Newton's step
 // from x lands at -0.9 x, on the other side of the root and hardly nearer.
-class KinkedLawElement final : public Element {
+class KinkedLawElement final : public test::StubElement {
  public:
   static constexpr double kCore = 1e-6, kPower = 1 / 1.9;
-  std::array<int, 2> nodes() const override { return nodes_; }
-  void setNodes(const std::array<int, 2>& n) override { nodes_ = n; }
-  int materialNumber() const override { return 1; }
-  std::string typeName() const override { return "kinked-law"; }
+  KinkedLawElement() : StubElement("kinked-law") {}
   Status evaluate(const ElementKinematics& kin, const StepRule&, bool, ElemVec& r,
                   ElemMat& k) override {
     double slope = 0;
@@ -423,15 +411,6 @@ class KinkedLawElement final : public Element {
     slope = kPower * std::pow(a, kPower - 1);
     return std::copysign(std::pow(a, kPower), x);
   }
-  ElemMat mass() const override { return ElemMat::Zero(); }
-  ElemVec bodyLoad(const Vec2&) const override { return ElemVec::Zero(); }
-  void commit() override {}
-  void revert() override {}
-  double strainEnergy() const override { return 0; }
-  SectionForces sectionForces() const override { return {}; }
-
- private:
-  std::array<int, 2> nodes_{0, 1};
 };
 
 // A hinge of Mu = 1 (softening over 1e6 rad: nearly constant) wrapping the

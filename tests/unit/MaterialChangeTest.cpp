@@ -23,20 +23,13 @@
 namespace c2d {
 namespace {
 
-ElementKinematics at(const ElemVec& d) {
-  ElementKinematics k;
-  k.d = d;
-  k.dn.setZero();
-  k.vn.setZero();
-  k.an.setZero();
-  return k;
-}
+using test::staticKinematics;
 
 // Evaluates e at d (static rule), commits, returns the residual.
 ElemVec evaluateAndCommit(Element& e, const ElemVec& d) {
   ElemVec r;
   ElemMat k;
-  EXPECT_TRUE(e.evaluate(at(d), StepRule{}, false, r, k).ok);
+  EXPECT_TRUE(e.evaluate(staticKinematics(d), StepRule{}, false, r, k).ok);
   e.commit();
   return r;
 }
@@ -44,7 +37,7 @@ ElemVec evaluateAndCommit(Element& e, const ElemVec& d) {
 ElemVec residual(Element& e, const ElemVec& d, ElemMat* tangent = nullptr) {
   ElemVec r;
   ElemMat k;
-  EXPECT_TRUE(e.evaluate(at(d), StepRule{}, tangent != nullptr, r, k).ok);
+  EXPECT_TRUE(e.evaluate(staticKinematics(d), StepRule{}, tangent != nullptr, r, k).ok);
   if (tangent) *tangent = k;
   return r;
 }
@@ -170,7 +163,7 @@ TEST(MaterialChange, InelasticFrameKeepsPlasticCurvatureAndUnloadsWithTheNewEI) 
   EXPECT_NEAR(e.sectionForces().M, m1 + 2 * kEI * kKh1 / (2 * kEI + kKh1) * up, 1e-7);
   // The tangent is still the exact derivative of the residual.
   ElemMat k;
-  const ElementKinematics kin = at(d1 + rotationIncrement(up * kL));
+  const ElementKinematics kin = staticKinematics(d1 + rotationIncrement(up * kL));
   residual(e, kin.d, &k);
   const ElemMat fd = test::centralDifferenceTangent(e, kin, StepRule{}, 1e-9);
   EXPECT_LT((k - fd).norm(), 1e-5 * k.norm());

@@ -4,7 +4,6 @@
 // and an element whose section forces and hinge state a test sets directly
 // (the temporary directory and a file's text: DeckTestSupport.h).
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <array>
@@ -22,6 +21,7 @@
 #include "core/Element.h"
 #include "core/Hinge.h"
 #include "tests/unit/DeckTestSupport.h"
+#include "tests/unit/StubElementSupport.h"
 
 namespace c2d::testing {
 
@@ -195,23 +195,15 @@ inline std::vector<double> numbers(const std::string& text) {
 }
 
 // An element that reports what the test sets: section forces and hinge state.
-class ReportingElement final : public Element, public HingeCarrier {
+class ReportingElement final : public test::StubElement, public HingeCarrier {
  public:
-  ReportingElement(int a, int b, int material) : nodes_{a, b}, material_(material) {}
-  std::array<int, 2> nodes() const override { return nodes_; }
-  void setNodes(const std::array<int, 2>& n) override { nodes_ = n; }
-  int materialNumber() const override { return material_; }
-  std::string typeName() const override { return "reporting"; }
-  Status evaluate(const ElementKinematics&, const StepRule&, bool, ElemVec& r, ElemMat& k) override {
+  ReportingElement(int a, int b, int material) : StubElement("reporting", material, {a, b}) {}
+  Status evaluate(const ElementKinematics&, const StepRule&, bool, ElemVec& r,
+                  ElemMat& k) override {
     r.setZero();
     k.setZero();
     return Status::success();
   }
-  ElemMat mass() const override { return ElemMat::Zero(); }
-  ElemVec bodyLoad(const Vec2&) const override { return ElemVec::Zero(); }
-  void commit() override {}
-  void revert() override {}
-  double strainEnergy() const override { return 0; }
   SectionForces sectionForces() const override { return forces; }
   double hingeDemand() const override { return 0; }
   void activateHinge() override { hingeInfo.active = true; }
@@ -219,10 +211,6 @@ class ReportingElement final : public Element, public HingeCarrier {
 
   SectionForces forces;
   HingeInfo hingeInfo;
-
- private:
-  std::array<int, 2> nodes_;
-  int material_;
 };
 
 }  // namespace c2d::testing

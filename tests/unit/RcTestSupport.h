@@ -1,7 +1,7 @@
 #pragma once
 // Shared by the RC tests: the C30/B500 materials, the column section of
-// verification.md V20 (with or without links), and a 0.3 x 0.5 m section with
-// the given bar layers (depth from the top face, area; kN, m), its laws derived.
+// verification.md V20 (with or without links), the T-beam of the decks, and a 0.3 x 0.5 m section
+// with the given bar layers (depth from the top face, area; kN, m), its laws derived.
 #include <cmath>
 #include <vector>
 
@@ -19,6 +19,20 @@ inline RcSectionData c30b500() {
   d.Es = 200e6;
   d.fu = 540e3;
   d.eu = 0.05;
+  return d;
+}
+
+// The T-beam of decks/rc/tee_beam.inp: bw 0.3, h 0.6, beff 1.2, hf 0.15; 6 bars
+// of 25 mm at 0.55, 10 of 16 mm in the slab at 0.04; C30, B500.
+inline RcSectionData teeBeam() {
+  const double a25 = M_PI * 0.0125 * 0.0125, a16 = M_PI * 0.008 * 0.008;
+  RcSectionData d = c30b500();
+  d.shape = SectionShapeKind::Tee;
+  d.b = 0.3;
+  d.h = 0.6;
+  d.flangeWidth = 1.2;
+  d.flangeDepth = 0.15;
+  d.bars = {{0.04, 10 * a16}, {0.55, 6 * a25}};
   return d;
 }
 

@@ -70,49 +70,49 @@ TEST_P(RigidJointTangent, FaceFollowsTheMasterAndTangentMatchesCentralDifference
   e.setRelativeState(0.3, 0.5, -0.2, Vec2(0.1, -0.2), Vec2(0.3, 0.4));
   const StepRule rule = ruleFor(scheme);
   const int t = 3 * slaveEnd, kr = t + 2;
-  for (int trial = 0; trial < 3; ++trial) {
-    const ElementKinematics kin = trialKinematics(gen, kind, trial);
-    ElemVec r;
-    ElemMat k;
-    ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
-    const double psiM = kin.d(kr), psiR = e.relativeRotation(), psiS = psiM + psiR;
-    EXPECT_NEAR(e.slaveRotation(), psiS, 1e-15);
-    // The wrapped element's face is where the master's arm puts it.
-    const ElementKinematics in = e.innerKinematics(kin, psiR);
-    EXPECT_NEAR(in.d(kr), psiS, 1e-15);
-    const Vec2 face = in.d.segment<2>(t) + armMotion(kind, a, psiS);
-    EXPECT_LT((face - kin.d.segment<2>(t) - armMotion(kind, a, psiM)).norm(), 1e-14);
-    // Its force at the face: no moment there (the joint), the face force on
-    // the master's translations, its moment about the node on the master's rotation.
-    ElemVec rin;
-    ElemMat kin6;
-    ASSERT_TRUE(e.inner().evaluate(in, rule, true, rin, kin6).ok);
-    const Vec2 f = rin.segment<2>(t);
-    // The wrapped element's nodal moment: the face's plus the face force's
-    // about its (shifted) node, by its own arm map (the exact or, under the
-    // mid-point scheme, the algorithmic lever; the linear one for SMALl).
-    auto lever = [&](double th, double thn) {
-      if (kind != Inner::Reissner) return Vec2(-a.y(), a.x());
-      if (scheme != Scheme::MidPoint) return Vec2(turned(th + 0.5 * M_PI, a));
-      return Vec2(std::cos(0.5 * (th - thn)) * turned(0.5 * (th + thn) + 0.5 * M_PI, a));
-    };
-    const double faceMoment = rin(kr) - lever(psiS, in.dn(kr)).dot(f);
-    EXPECT_LT(std::abs(faceMoment), 1e-10 * rin.cwiseAbs().maxCoeff()) << faceMoment;
-    EXPECT_LT((r.segment<2>(t) - f).norm(), 1e-12 * f.norm());
-    EXPECT_NEAR(r(kr), lever(psiM, kin.dn(kr)).dot(f), 1e-10 * rin.cwiseAbs().maxCoeff());
-    EXPECT_LT((r.segment<3>(3 - t) - rin.segment<3>(3 - t)).norm(), 1e-12 * rin.norm());
+  const auto next = [&](int trial) { return trialKinematics(gen, kind, trial); };
+  ASSERT_NO_FATAL_FAILURE(test::checkAtTrials(
+      e, rule, next,
+      [&](int trial, const ElementKinematics& kin, const ElemVec& r, const ElemMat& k) {
+        const double psiM = kin.d(kr), psiR = e.relativeRotation(), psiS = psiM + psiR;
+        EXPECT_NEAR(e.slaveRotation(), psiS, 1e-15);
+        // The wrapped element's face is where the master's arm puts it.
+        const ElementKinematics in = e.innerKinematics(kin, psiR);
+        EXPECT_NEAR(in.d(kr), psiS, 1e-15);
+        const Vec2 face = in.d.segment<2>(t) + armMotion(kind, a, psiS);
+        EXPECT_LT((face - kin.d.segment<2>(t) - armMotion(kind, a, psiM)).norm(), 1e-14);
+        // Its force at the face: no moment there (the joint), the face force on
+        // the master's translations, its moment about the node on the master's rotation.
+        ElemVec rin;
+        ElemMat kin6;
+        ASSERT_TRUE(e.inner().evaluate(in, rule, true, rin, kin6).ok);
+        const Vec2 f = rin.segment<2>(t);
+        // The wrapped element's nodal moment: the face's plus the face force's
+        // about its (shifted) node, by its own arm map (the exact or, under the
+        // mid-point scheme, the algorithmic lever; the linear one for SMALl).
+        auto lever = [&](double th, double thn) {
+          if (kind != Inner::Reissner) return Vec2(-a.y(), a.x());
+          if (scheme != Scheme::MidPoint) return Vec2(turned(th + 0.5 * M_PI, a));
+          return Vec2(std::cos(0.5 * (th - thn)) * turned(0.5 * (th + thn) + 0.5 * M_PI, a));
+        };
+        const double faceMoment = rin(kr) - lever(psiS, in.dn(kr)).dot(f);
+        EXPECT_LT(std::abs(faceMoment), 1e-10 * rin.cwiseAbs().maxCoeff()) << faceMoment;
+        EXPECT_LT((r.segment<2>(t) - f).norm(), 1e-12 * f.norm());
+        EXPECT_NEAR(r(kr), lever(psiM, kin.dn(kr)).dot(f), 1e-10 * rin.cwiseAbs().maxCoeff());
+        EXPECT_LT((r.segment<3>(3 - t) - rin.segment<3>(3 - t)).norm(), 1e-12 * rin.norm());
 
-    // The shift's rates follow the step rule.
-    const Vec2 ds = e.shiftAt(psiM, psiR) - e.shiftAt(kin.dn(kr), e.committedRelativeRotation());
-    EXPECT_LT((e.shiftVelocity() -
-               rule.velocity(ds, e.committedShiftVelocity(), e.committedShiftAcceleration()))
-                  .norm(),
-              1e-12);
-    EXPECT_LT((in.d.segment<2>(t) - kin.d.segment<2>(t) - e.shiftAt(psiM, psiR)).norm(), 1e-15);
-    test::expectTangentMatchesDifferences(
-        e, kin, rule, k, 2e-7,
-        "scheme " + std::to_string(static_cast<int>(scheme)) + ", trial " + std::to_string(trial));
-  }
+        // The shift's rates follow the step rule.
+        const Vec2 ds =
+            e.shiftAt(psiM, psiR) - e.shiftAt(kin.dn(kr), e.committedRelativeRotation());
+        EXPECT_LT((e.shiftVelocity() -
+                   rule.velocity(ds, e.committedShiftVelocity(), e.committedShiftAcceleration()))
+                      .norm(),
+                  1e-12);
+        EXPECT_LT((in.d.segment<2>(t) - kin.d.segment<2>(t) - e.shiftAt(psiM, psiR)).norm(), 1e-15);
+        test::expectTangentMatchesDifferences(e, kin, rule, k, 2e-7,
+                                              "scheme " + std::to_string(static_cast<int>(scheme)) +
+                                                  ", trial " + std::to_string(trial));
+      }));
 }
 
 INSTANTIATE_TEST_SUITE_P(RigidJoint, RigidJointTangent,
@@ -132,14 +132,13 @@ TEST(RigidJoint, FrictionAtAFaceTangentMatchesCentralDifferences) {
         const double Mr = 40;
         e.setFriction(Mr, 0.3);
         const StepRule rule = ruleFor(scheme);
-        for (int trial = 0; trial < 3; ++trial) {
-          const ElementKinematics kin = trialKinematics(gen, kind, trial);
-          ElemVec r;
-          ElemMat k;
-          ASSERT_TRUE(e.evaluate(kin, rule, true, r, k).ok);
-          test::expectTangentMatchesDifferences(
-              e, kin, rule, k, 2e-6, "scheme " + std::to_string(static_cast<int>(scheme)));
-        }
+        const auto next = [&](int trial) { return trialKinematics(gen, kind, trial); };
+        ASSERT_NO_FATAL_FAILURE(test::checkAtTrials(
+            e, rule, next,
+            [&](int /*trial*/, const ElementKinematics& kin, const ElemVec& r, const ElemMat& k) {
+              test::expectTangentMatchesDifferences(
+                  e, kin, rule, k, 2e-6, "scheme " + std::to_string(static_cast<int>(scheme)));
+            }));
       }
 }
 
@@ -156,23 +155,23 @@ TEST(RigidJoint, LinkWithZonesAtBothFacesTangentMatchesCentralDifferences) {
       link.setRelativeState(-0.2, -0.4, 0.3);
       ASSERT_TRUE(link.hasArm());
       const StepRule rule = ruleFor(scheme);
-      for (int trial = 0; trial < 3; ++trial) {
-        const ElementKinematics kin = trialKinematics(gen, kind, trial);
-        ElemVec r;
-        ElemMat k;
-        ASSERT_TRUE(link.evaluate(kin, rule, true, r, k).ok);
-        const auto& j = dynamic_cast<const JointedElement&>(link.inner());
-        const ElementKinematics in = j.innerKinematics(
-            link.innerKinematics(kin, link.relativeRotation()), j.relativeRotation());
-        for (int end : {0, 1}) {
-          const Vec2 a = end == 0 ? j.arm() : link.arm();
-          const int t = 3 * end;
-          const Vec2 face = in.d.segment<2>(t) + armMotion(kind, a, in.d(t + 2));
-          EXPECT_LT((face - kin.d.segment<2>(t) - armMotion(kind, a, kin.d(t + 2))).norm(), 1e-14);
-        }
-        test::expectTangentMatchesDifferences(link, kin, rule, k, 2e-7,
-                                              "scheme " + std::to_string(static_cast<int>(scheme)));
-      }
+      const auto next = [&](int trial) { return trialKinematics(gen, kind, trial); };
+      ASSERT_NO_FATAL_FAILURE(test::checkAtTrials(
+          link, rule, next,
+          [&](int /*trial*/, const ElementKinematics& kin, const ElemVec& r, const ElemMat& k) {
+            const auto& j = dynamic_cast<const JointedElement&>(link.inner());
+            const ElementKinematics in = j.innerKinematics(
+                link.innerKinematics(kin, link.relativeRotation()), j.relativeRotation());
+            for (int end : {0, 1}) {
+              const Vec2 a = end == 0 ? j.arm() : link.arm();
+              const int t = 3 * end;
+              const Vec2 face = in.d.segment<2>(t) + armMotion(kind, a, in.d(t + 2));
+              EXPECT_LT((face - kin.d.segment<2>(t) - armMotion(kind, a, kin.d(t + 2))).norm(),
+                        1e-14);
+            }
+            test::expectTangentMatchesDifferences(
+                link, kin, rule, k, 2e-7, "scheme " + std::to_string(static_cast<int>(scheme)));
+          }));
     }
 }
 

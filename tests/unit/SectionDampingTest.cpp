@@ -163,16 +163,7 @@ constexpr double kLength = 3.0;
 constexpr int kElements = 8;
 
 MaterialSet cantileverMaterial(Kinematics kin, bool laws, double a1) {
-  MaterialSet m;
-  m.number = 1;
-  m.elementType = "FRAMe";
-  m.kinematics = kin;
-  m.resEA = 3.6e6;
-  m.resGA = 1.2e6;
-  m.resEI = 48000;
-  m.A = 0.12;
-  m.I = 1.6e-3;
-  m.density = 2.5;
+  MaterialSet m = test::resultantFrame(kin, 3.6e6, 1.2e6, 48000, 2.5, 0.12, 1.6e-3);
   if (laws) {  // the paper's beams: elastic up to Mc = 30 kN m
     m.hardening = HardeningData{30, 150, 11190, 137};
     m.softening = SofteningData{170, -393, std::nullopt};

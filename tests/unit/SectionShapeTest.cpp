@@ -55,20 +55,8 @@ Hand solveDepth(double lo, double hi, double N, const std::function<double(doubl
 }
 
 // ---------------------------------------------------------------------------
-// T-beam (decks/rc/tee_beam.inp): bw 0.3, h 0.6, beff 1.2, hf 0.15; 6 bars of
-// 25 mm at 0.55, 10 of 16 mm in the slab at 0.04.
-const double kA25 = kPi * 0.0125 * 0.0125, kA16 = kPi * 0.008 * 0.008;
-
-RcSectionData teeBeam() {
-  RcSectionData d = c30b500();
-  d.shape = SectionShapeKind::Tee;
-  d.b = 0.3;
-  d.h = 0.6;
-  d.flangeWidth = 1.2;
-  d.flangeDepth = 0.15;
-  d.bars = {{0.04, 10 * kA16}, {0.55, 6 * kA25}};
-  return d;
-}
+// T-beam (decks/rc/tee_beam.inp): test::teeBeam().
+using test::teeBeam;
 
 // The block of a face strain e (17/21 and 99/238 at eps_cu2).
 void block(double e, double& alpha, double& beta) {
