@@ -258,6 +258,33 @@ TEST(Restart, MemberContactAndFrictionContinueBitForBit) {
   expectSameState(whole.out / "whole_end.rst", rest.out / "rest_end.rst");
 }
 
+// The same under DYNAmic,ENERgy's decay, saved while a ground node's impact
+// owes what the scheme took from it (State::owed): the restart continues bit
+// for bit.
+TEST(Restart, GroundImpactOwedContinuesBitForBit) {
+  const int saveStep = 60;  // inside the bar's first ground impact
+  DeckTempDir dir;
+  std::string deck = kContact;
+  deck.replace(deck.find("DYNAmic,ENERgy,0,0"), 18, "DYNAmic,ENERgy,0.1,0.1");
+  const std::string data = "disp,4,2\ndisp,6,1\nener\n\nSTOP\n";
+  const DeckResult whole =
+      runDeckText(dir, "whole.inp", deck + newtonLoop("TIME", 140) + "  SAVE,whole_end\nEND\n" + data);
+  expectRan(whole);
+  const DeckResult first =
+      runDeckText(dir, "first.inp", deck + newtonLoop("TIME", saveStep) + "  SAVE,mid\nEND\n" + data);
+  expectRan(first);
+  const DeckResult rest = runDeckText(
+      dir, "rest.inp",
+      deck.substr(0, deck.find("  DYNA")) + "  REST,mid\n  TPLOt\n" +
+          newtonLoop("TIME", 140 - saveStep) + "  SAVE,rest_end\nEND\n" + data);
+  expectRan(rest);
+  const Loaded mid(first.out / "mid.rst");
+  EXPECT_GT(mid.analysis->state().owed.maxCoeff(), 0.0);
+  expectSameTail(readText(whole.out / "whole_tplot.csv"), readText(first.out / "first_tplot.csv"),
+                 readText(rest.out / "rest_tplot.csv"));
+  expectSameState(whole.out / "whole_end.rst", rest.out / "rest_end.rst");
+}
+
 // An RC column (SECTion, FINIte) under axial force pushed at its tip: the base
 // hinge opens as a joint carrying the softening law that follows N. Saved
 // while that hinge softens, the restarted run continues bit for bit (the
