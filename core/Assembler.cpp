@@ -349,7 +349,7 @@ double Assembler::contactEnergy(const State& s) {
   return w;
 }
 
-double Assembler::commitContact(State& s, const StepRule& rule) {
+double Assembler::commitContact(State& s, const StepRule& rule, double* given) {
   const double released =
       members_ ? members_->commit(model_, s, pushedThrough_, pushedThroughEnergy_) : 0.0;
   const auto& ground = model_.ground();
@@ -357,8 +357,8 @@ double Assembler::commitContact(State& s, const StepRule& rule) {
   // A node whose turn fell inside the step gets the peak it came back from
   // (core/contact/CrushingLaw.h): the energy that takes from its contact is
   // dissipated. What the scheme's decay took from an impact is given back
-  // (groundImpactOwed): negative dissipation.
-  double crushed = 0;
+  // (groundImpactOwed), apart.
+  double crushed = 0, back = 0;
   const bool rates = s.v.size() == s.u.size() && s.vn.size() == s.u.size();
   for (int n = 0; n < model_.numNodes(); ++n) {
     const Eigen::Index i = static_cast<Eigen::Index>(n) * kNodeDofs;
@@ -375,7 +375,7 @@ double Assembler::commitContact(State& s, const StepRule& rule) {
                                             s.v[i + 1], rule);
       q = o.q;
       s.owed[n] = o.owed;
-      crushed -= o.given;
+      back += o.given;
     } else {
       s.owed[n] = 0;
     }
@@ -383,6 +383,7 @@ double Assembler::commitContact(State& s, const StepRule& rule) {
   }
   const Eigen::VectorXd& stretches = stretchesOf(s);
   if (&stretches != &s.stretch) s.stretch = stretches;
+  if (given) *given = back;
   return released + crushed;
 }
 

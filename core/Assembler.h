@@ -86,7 +86,9 @@ class Assembler {
   // is committed: the ground's loading points and friction stretches, the
   // member contact pairs' memory. Returns the energy that released without
   // work (MemberContact::commit).
-  double commitContact(State& s, const StepRule& rule = {});
+  // `given`: the energy the ground's contacts gave back of the scheme's decay
+  // (core/contact/GroundContact.h groundImpactOwed), not in the return value.
+  double commitContact(State& s, const StepRule& rule = {}, double* given = nullptr);
   // Member contact pairs whose node was pushed past the member's centre line
   // while in contact, since the assembler was made, and the energy released.
   int pushedThrough() const { return pushedThrough_; }

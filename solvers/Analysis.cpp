@@ -302,7 +302,9 @@ Status Analysis::commitEvaluated() {
     if (el) el->commit();
   infill_.afterCommit(model_, state_.t);
   hinges_.committed();
-  account_.released(assembler_.commitContact(state_, stepRule()));
+  double given = 0;
+  account_.released(assembler_.commitContact(state_, stepRule(), &given));
+  account_.restored(given);
   if (path_) {
     path_->endStep(stepInc_, stepDlambda_);
     path_->setStepScale(1.0);

@@ -75,20 +75,21 @@ Energy EnergyAccount::energy(Assembler& a, const State& s) const {
   e.contact = a.contactEnergy(s);
   e.external = external_;
   e.dissipated = dissipated_;
+  e.restored = restored_;
   return e;
 }
 
 void EnergyAccount::write(std::ostream& out) const {
   using namespace checkpoint;
   putTag(out, "ENGY");
-  for (double x : {external_, dissipated_, storedN_}) put(out, x);
+  for (double x : {external_, dissipated_, restored_, storedN_}) put(out, x);
   for (const Eigen::VectorXd* v : {&feN_, &fcN_, &rN_, &relN_}) putVector(out, *v);
 }
 
 void EnergyAccount::read(std::istream& in) {
   using namespace checkpoint;
   expectTag(in, "ENGY");
-  for (double* x : {&external_, &dissipated_, &storedN_}) *x = get<double>(in);
+  for (double* x : {&external_, &dissipated_, &restored_, &storedN_}) *x = get<double>(in);
   for (Eigen::VectorXd* v : {&feN_, &fcN_, &rN_, &relN_}) *v = getVector(in);
   if (feN_.size() != fcN_.size() || feN_.size() != rN_.size() || feN_.size() != relN_.size())
     throw CheckpointError("energy account vectors differ in size");

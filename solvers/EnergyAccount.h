@@ -33,7 +33,11 @@ namespace c2d {
 struct Energy {
   double kinetic = 0, strain = 0, contact = 0;
   double external = 0;    // work of loads, self-weight and reactions since the start
-  double dissipated = 0;  // since the start (see above)
+  double dissipated = 0;  // since the start (see above), net of `restored`
+  // What contacts gave back of the scheme's decay since the start
+  // (core/contact/GroundContact.h groundImpactOwed): part of `dissipated`
+  // taken back, not a gain without work.
+  double restored = 0;
   double total() const { return kinetic + strain + contact - external; }
   double balance() const { return total() + dissipated; }
 };
@@ -70,6 +74,13 @@ class EnergyAccount {
     storedN_ -= energy;
     dissipated_ += energy;
   }
+  // Energy a contact gave back at the commit of what the scheme's decay had
+  // taken from its impact: stored again, and the dissipation that took it
+  // is taken back.
+  void restored(double energy) {
+    released(-energy);
+    restored_ += energy;
+  }
   // Elements left the model at the committed state (solvers/MemberRemoval.h),
   // per node dof: their forces of the last commit and the constant loads that
   // left with them (weight, floor loads); `after`: the energies of the model
@@ -85,7 +96,7 @@ class EnergyAccount {
   void read(std::istream& in);
 
  private:
-  double external_ = 0, dissipated_ = 0;
+  double external_ = 0, dissipated_ = 0, restored_ = 0;
   double storedN_ = 0;            // kinetic + strain + contact at t_n
   Eigen::VectorXd feN_, fcN_, rN_;  // element forces, contact forces, residual at t_n
   Eigen::VectorXd relN_;            // released forces of removed elements at t_n

@@ -14,14 +14,17 @@ void EnergyWatch::onCommit(const Energy& en, bool dynamic, int step, double t) {
   if (!started_) {
     energy0_ = en.balance();
     dissipatedN_ = en.dissipated;
+    restoredN_ = en.restored;
     stored0_ = std::abs(en.kinetic) + std::abs(en.strain) + std::abs(en.contact);
     started_ = true;
   }
   input_ = std::max(input_, stored0_ + std::abs(en.external));
   scale_ = std::max(scale_, scale);
   if (scale_ > 0) error_ = std::max(error_, std::abs(en.balance() - energy0_) / scale_);
-  const double gain = dissipatedN_ - en.dissipated;
+  // A fall of the dissipation that the contacts restored is no gain.
+  const double gain = dissipatedN_ - en.dissipated - (en.restored - restoredN_);
   dissipatedN_ = en.dissipated;
+  restoredN_ = en.restored;
   if (!dynamic || !(gain > 0)) return;
   gained_ += gain;
   if (gainStep_ == 0 && gained_ > kGainTolerance * input_) {
@@ -33,7 +36,8 @@ void EnergyWatch::onCommit(const Energy& en, bool dynamic, int step, double t) {
 void EnergyWatch::save(std::ostream& out) const {
   using namespace checkpoint;
   putBool(out, started_);
-  for (double x : {energy0_, scale_, error_, stored0_, input_, dissipatedN_, gained_, gainTime_})
+  for (double x : {energy0_, scale_, error_, stored0_, input_, dissipatedN_, restoredN_, gained_,
+                   gainTime_})
     put(out, x);
   put(out, gainStep_);
 }
@@ -42,7 +46,8 @@ void EnergyWatch::load(std::istream& in) {
   using namespace checkpoint;
   started_ = getBool(in);
   for (double* x :
-       {&energy0_, &scale_, &error_, &stored0_, &input_, &dissipatedN_, &gained_, &gainTime_})
+       {&energy0_, &scale_, &error_, &stored0_, &input_, &dissipatedN_, &restoredN_, &gained_,
+        &gainTime_})
     *x = get<double>(in);
   gainStep_ = get<int>(in);
 }

@@ -53,6 +53,7 @@ class EnergyWatch {
   double energy0_ = 0, scale_ = 0, error_ = 0;
   double stored0_ = 0, input_ = 0;  // the energy put in (see gained())
   double dissipatedN_ = 0;  // the committed dissipation
+  double restoredN_ = 0;    // what contacts had restored of it (Energy::restored)
   double gained_ = 0;       // kJ
   int gainStep_ = 0;
   double gainTime_ = 0;

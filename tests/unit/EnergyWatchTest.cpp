@@ -50,6 +50,24 @@ TEST(EnergyWatch, CountsTheDissipationsDecreaseInDynamicStepsOnly) {
   EXPECT_EQ(w.gainStep(), 4);
 }
 
+TEST(EnergyWatch, WhatContactsRestoredOfTheSchemesDecayIsNoGain) {
+  EnergyWatch w;
+  w.onCommit(energy(0, 10, 0, 0), true, 0, 0);
+  // The scheme's decay takes 0.4 kJ from an impact ...
+  w.onCommit(energy(1, 8.6, 0, 0.4), true, 1, 0.1);
+  // ... and its contact gives 0.3 of it back at the next commit: the
+  // dissipation falls by 0.3, all of it restored.
+  Energy back = energy(1.3, 8.6, 0, 0.1);
+  back.restored = 0.3;
+  w.onCommit(back, true, 2, 0.2);
+  EXPECT_LT(w.gained(), 1e-15);
+  // A fall beyond what was restored is a gain: 0.05 of the 10 kJ put in.
+  Energy more = energy(1.45, 8.6, 0, -0.05);
+  more.restored = 0.4;
+  w.onCommit(more, true, 3, 0.3);
+  EXPECT_NEAR(w.gained(), 0.005, 1e-15);
+}
+
 TEST(EnergyWatch, TheRestartFileKeepsItsAccount) {
   EnergyWatch a;
   a.onCommit(energy(0, 10, 0, 0), true, 0, 0);
