@@ -57,7 +57,10 @@ using TangentCase = std::tuple<Scheme, Inner, int>;
 class JointedElementTangent : public ::testing::TestWithParam<TangentCase> {};
 
 TEST_P(JointedElementTangent, CondensedTangentMatchesCentralDifferences) {
-  const auto [scheme, kind, slaveEnd] = GetParam();
+  // Named copies, not structured bindings: lambdas capture them (clang 14).
+  const Scheme scheme = std::get<0>(GetParam());
+  const Inner kind = std::get<1>(GetParam());
+  const int slaveEnd = std::get<2>(GetParam());
   std::mt19937 gen(17 + 3 * static_cast<int>(kind) + slaveEnd);
   const std::unique_ptr<JointedElement> joint = trialJoint(kind, slaveEnd);
   JointedElement& e = *joint;
