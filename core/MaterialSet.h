@@ -90,6 +90,9 @@ struct MaterialSet {
   bool shear = true;  // SHEAr ON (Timoshenko) / OFF (Euler-Bernoulli)
   Kinematics kinematics = Kinematics::Small;
   double density = 0;  // mass per unit volume
+  // RADIus,,r: the member's contact radius (m) in place of its section's
+  // sqrt(3 I/A); 0: the section's (core/contact/ContactSearch.h sectionRadius).
+  double contactRadius = 0;
   MassType mass = MassType::Consistent;
   // DAMPing RAYLeigh 0 a1 / DAMPing RATIo zeta f: stiffness-proportional
   // damping of the section's strain rates, a1 in time units (s); 0: none

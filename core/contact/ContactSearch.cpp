@@ -80,6 +80,7 @@ class GroupGraph {
 
 double sectionRadius(const Model& model, int element) {
   const MaterialSet* m = model.material(model.element(element).materialNumber());
+  if (m && m->contactRadius > 0) return m->contactRadius;
   return m && m->A > 0 && m->I > 0 ? std::sqrt(3 * m->I / m->A) : 0.0;
 }
 

@@ -20,7 +20,8 @@ namespace c2d {
 // For every node: the representative of the nodes tied to it by joints.
 std::vector<int> jointGroups(const Model& model);
 
-// An element's contact radius from its section, sqrt(3 I / A) (half the depth
+// An element's contact radius: its material's RADIus when given, else from
+// its section, sqrt(3 I / A) (half the depth
 // of the rectangle with the section's A and I); 0 without a section.
 double sectionRadius(const Model& model, int element);
 

@@ -52,6 +52,7 @@ void echoMaterial(std::ostream& os, const MaterialSet& m) {
     line("Shear factor", m.kappa);
   }
   line("Density", m.density);
+  if (m.contactRadius > 0) line("Contact radius", m.contactRadius);
   os << "      Mass               " << (m.mass == MassType::Lumped ? "lumped" : "consistent")
      << "\n";
   if (m.dampingA1 > 0) line("Damping a1 (s)", m.dampingA1);
@@ -157,6 +158,17 @@ void readDensity(const MeshContext& ctx, const Record& r, const CommandSpec& s,
   got.density = &r;
 }
 
+// RADIus,,r: the contact radius in place of the section's.
+void readRadius(const MeshContext& ctx, const Record& r, const CommandSpec& s,
+                MaterialReading& got) {
+  const std::string syntax = "RADIus,,r";
+  subrecord::requireText(r, s.name, syntax);
+  if (!r.text(1).empty()) failAt(r, 1, "RADIus takes no option", "write " + syntax);
+  const auto v = subrecord::values(ctx, r, s.name, 1, 1, syntax);
+  if (!(v[0] > 0)) failAt(r, 2, "the contact radius must be positive");
+  got.mat.contactRadius = v[0];
+}
+
 // RESUltant STIFfness EA GA EI.
 void readResultant(const MeshContext& ctx, const Record& r, const CommandSpec& s,
                    MaterialReading& got) {
@@ -193,6 +205,8 @@ void readMaterialRecord(MeshContext& ctx, const Record& r, const CommandSpec& s,
     got.kinematics = &r;
   } else if (key == "dens") {
     readDensity(ctx, r, s, got);
+  } else if (key == "radi") {
+    readRadius(ctx, r, s, got);
   } else if (key == "damp") {
     got.mat.dampingA1 = readDamping(ctx, r);
   } else if (key == "mass") {

@@ -29,6 +29,11 @@ void registerMaterialSubRecords(CommandRegistry& r) {
   r.add(subSpec("FINIte", "Geometrically exact (Reissner) kinematics.", {}));
   r.add(subSpec("DENSity", "DENSity,,rho: mass per unit volume.",
                 {text("", "empty"), expr("rho", "density")}));
+  r.add(subSpec("RADIus",
+                "RADIus,,r: the members' contact radius (m) with each other and the one the "
+                "ground's burial check uses, in place of the section's half depth sqrt(3 I/A): "
+                "a wall in the plane whose own floors' arms lie within its half length.",
+                {text("", "empty"), expr("r", "contact radius (m)")}));
   r.add(subSpec("MASS", "MASS LUMPed or MASS CONSistent (default).",
                 {text("LUMPed/CONSistent", "", "CONSistent")}));
   r.add(subSpec(

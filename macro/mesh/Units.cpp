@@ -64,6 +64,8 @@ const std::vector<Field>& fields() {
       {S::SubRecord, "shea", "ON/OFF", ""},
       {S::SubRecord, "dens", "", ""},
       {S::SubRecord, "dens", "rho", "t/m^3"},
+      {S::SubRecord, "radi", "", ""},
+      {S::SubRecord, "radi", "r", "m"},
       {S::SubRecord, "mass", "LUMPed/CONSistent", ""},
       {S::SubRecord, "resu", "STIFfness", ""},
       {S::SubRecord, "resu", "EA", kForce},
