@@ -86,8 +86,13 @@ class Analysis {
   // (free dofs; prescribed ones take their values): the inertia term vanishes
   // there and a smooth motion leaves a residual of order dt^2, not dt. When an
   // iteration from the prediction fails or its energy grows past the first
-  // one, the step starts again from u_n (info.restarted, not converged).
+  // one, the step starts again from u_n (info.restarted, not converged);
+  // under keepPrediction(true) only when it fails.
   Status iterate(bool lineSearch, bool symmetric, IterationInfo& info);
+  // A rise of the energy from the prediction is no reason to start again from
+  // u_n (the step is at its smallest: from u_n its inertia residual would be
+  // 2 M v_n / dt, of the whole velocity, the larger the shorter the step).
+  void keepPrediction(bool on) { keepPrediction_ = on; }
   // FORM: residual at the current state; returns its norm over the free dofs.
   Status formResidual(double& norm);
   // SOLV: solve with the current factors for the current residual and update.
@@ -264,6 +269,7 @@ class Analysis {
   ImpactSteps impacts_;
   double stepEnd_ = 0;  // end of the step TIME began (sub-steps end on landing times before it)
   bool predicted_ = false;      // the current step started from the prediction
+  bool keepPrediction_ = false;  // an energy rise from it does not restart the step
   bool globalized_ = false;     // the step's plain Newton cycled: line search from then on
 };
 

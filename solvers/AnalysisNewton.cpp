@@ -93,7 +93,8 @@ Status Analysis::iterate(bool lineSearch, bool symmetric, IterationInfo& info) {
   // converges (a fast rotation extrapolated linearly stretches the members).
   // The step starts again from the committed state.
   if (predicted_ && !info.subStep &&
-      (!st || (!info.converged && info.iteration >= 2 && !(info.energy <= energy0_)))) {
+      (!st || (!keepPrediction_ && !info.converged && info.iteration >= 2 &&
+               !(info.energy <= energy0_)))) {
     for (auto& el : model_.elements())
       if (el) el->revert();
     state_.u = state_.un;

@@ -17,6 +17,7 @@ Flow ProblemRun::newtonIteration(const Macro& m, bool update, bool lineSearch, b
     return Flow::Next;
   }
   IterationInfo info;
+  analysis_->keepPrediction(steps_.atSmallestPredictedStep());
   const Status st = analysis_->iterate(lineSearch, symmetric, info);
   const State& s = analysis_->state();
   if (!st) {

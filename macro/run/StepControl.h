@@ -60,6 +60,10 @@ class StepControl {
   // diverged: cut instead (AUTO,CUT,,1) while a half step is at least dtmin:
   // the loop ends as diverged (true).
   bool cutsDivergingPrediction();
+  // The step is at its smallest with AUTO,CUT,,1, and below a thousandth of
+  // the nominal one: a predicted start whose energy rises is no longer cut or
+  // started again from u_n, and Newton goes on from it.
+  bool atSmallestPredictedStep() const;
   // The loop ends on the verdict (Stalled or Diverged): recorded for its report.
   Flow ends(NewtonVerdict verdict);
   // The last iteration diverged: the loop's passes stop.
