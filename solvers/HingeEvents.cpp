@@ -268,7 +268,10 @@ Status HingeEvents::bracketEvent(Bracket& b, double tEnd, bool lineSearch) {
     // residual, 2 M v / h from the committed state, is at h = 1e-9 dt beyond
     // what round-off lets Newton's method reduce (1e18 kN for the ten-storey
     // core), and from the prediction its energy is round-off from the start.
-    if (b.f < kShortestFraction && an_.integrator_.dynamic()) break;
+    if (b.f < kShortestFraction && an_.integrator_.dynamic()) {
+      b.sHi = b.f;  // so that a hinge not found opens at the start, not past Mu
+      break;
+    }
     st = solveBetween(b.f, b.sLo, b.sHi, tEnd, lineSearch);
     if (!st) break;
     const double d = maxDemand(b.element);
