@@ -35,10 +35,17 @@ decks/demolition/rc_felling_ensemble.inp
 decks/demolition/rc_felling_bare_ensemble.inp
 decks/demolition/rc_implosion_ensemble.inp
 decks/demolition/eight_story_plans.inp --set samples=4
+decks/demolition/ten_story_rc_felling_ensemble.inp
+decks/demolition/ten_story_rc_bare_ensemble.inp
+decks/demolition/ten_story_rc_implosion_ensemble.inp
 LIST
 
 # shellcheck disable=SC2086
 python3 "$here/tables.py" "$tmp" $stems >"$root/docs/figures.md.part"
 mv "$root/docs/figures.md.part" "$root/docs/figures.md"
 echo docs/figures.md
+# The gallery's ensemble pictures come from the studies' runs.
+for stem in six_story_demolition_ensemble felling_ensemble implosion_ensemble; do
+  cp "$tmp/${stem}_ensemble.svg" "$root/docs/gallery/"
+done
 sh "$root/docs/gallery/make.sh" "$exe"
