@@ -145,13 +145,20 @@ void readCrossSection(const MeshContext& ctx, const Record& r, const CommandSpec
   got.section = &r;
 }
 
+// The numbers of a record NAME,,v1 ...: no option in its second field, one
+// value at least, at most maxCount.
+std::vector<double> valuesWithoutOption(const MeshContext& ctx, const Record& r,
+                                        const CommandSpec& s, const std::string& syntax,
+                                        std::size_t maxCount) {
+  subrecord::requireText(r, s.name, syntax);
+  if (!r.text(1).empty()) failAt(r, 1, s.name + " takes no option", "write " + syntax);
+  return subrecord::values(ctx, r, s.name, maxCount, 1, syntax);
+}
+
 // DENSity,,rho [rotary inertia factor 1].
 void readDensity(const MeshContext& ctx, const Record& r, const CommandSpec& s,
                  MaterialReading& got) {
-  const std::string syntax = "DENSity,,rho";
-  subrecord::requireText(r, s.name, syntax);
-  if (!r.text(1).empty()) failAt(r, 1, "DENSity takes no option", "write " + syntax);
-  const auto v = subrecord::values(ctx, r, s.name, 2, 1, syntax);
+  const auto v = valuesWithoutOption(ctx, r, s, "DENSity,,rho", 2);
   if (v[0] < 0) failAt(r, 2, "density must not be negative");
   if (v[1] != 0 && v[1] != 1) failAt(r, 3, "a rotary inertia factor other than 1 is not available");
   got.mat.density = v[0];
@@ -161,10 +168,7 @@ void readDensity(const MeshContext& ctx, const Record& r, const CommandSpec& s,
 // RADIus,,r: the contact radius in place of the section's.
 void readRadius(const MeshContext& ctx, const Record& r, const CommandSpec& s,
                 MaterialReading& got) {
-  const std::string syntax = "RADIus,,r";
-  subrecord::requireText(r, s.name, syntax);
-  if (!r.text(1).empty()) failAt(r, 1, "RADIus takes no option", "write " + syntax);
-  const auto v = subrecord::values(ctx, r, s.name, 1, 1, syntax);
+  const auto v = valuesWithoutOption(ctx, r, s, "RADIus,,r", 1);
   if (!(v[0] > 0)) failAt(r, 2, "the contact radius must be positive");
   got.mat.contactRadius = v[0];
 }
