@@ -164,7 +164,7 @@ Status HingeEvents::solveBetween(double fraction, double sLo, double sHi, double
     return Status::success();
   // Then from the sub-step's constant-velocity prediction, whose inertia
   // residual is of order h^2; from the committed state (last) it is 2 M v_n / h,
-  // of the whole velocity: 1e18 for a sub-step of 1e-9 s of the ten-storey core.
+  // of the whole velocity (docs/history.md, the ten-storey building with a core).
   const State& s = an_.state_;
   start_ = s.un + (s.tn + fraction * (tEnd - s.tn) - s.tn) * s.vn;
   if (s.vn.size() == s.un.size() && solveFraction(fraction, tEnd, lineSearch, &start_))
@@ -266,8 +266,8 @@ Status HingeEvents::bracketEvent(Bracket& b, double tEnd, bool lineSearch) {
     // A dynamic trial inside the shortest sub-step of the step's start is not
     // solved: the event opens at the committed state (reachEvent). Its inertia
     // residual, 2 M v / h from the committed state, is at h = 1e-9 dt beyond
-    // what round-off lets Newton's method reduce (1e18 kN for the ten-storey
-    // core), and from the prediction its energy is round-off from the start.
+    // what round-off lets Newton's method reduce, and from the prediction its
+    // energy is round-off from the start.
     if (b.f < kShortestFraction && an_.integrator_.dynamic()) {
       b.sHi = b.f;  // so that a hinge not found opens at the start, not past Mu
       break;

@@ -97,8 +97,8 @@ bool StepControl::cutsDivergingPrediction() {
   // the loop ends and the step is cut anyway: a half step from the prediction
   // is cheaper. At the smallest step Newton goes on from the prediction
   // (atSmallestPredictedStep): from u_n a step of 1e-6 s starts with the
-  // inertia residual 2 M v_n / dt of a body falling at v_n (1e9 kN for the
-  // ten-storey core), where the prediction is all but the committed state.
+  // inertia residual 2 M v_n / dt of a body falling at v_n, where the
+  // prediction is all but the committed state.
   if (!(cutting_ && cutPrediction_ && 0.5 * analysis_->state().dt >= dtMin_)) return false;
   lastFailure_ = "the predicted start diverges";
   verdict_ = NewtonVerdict::Diverged;
